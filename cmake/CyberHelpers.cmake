@@ -1,0 +1,30 @@
+# Warnings are errors for the project's own targets (not for generated code).
+function(cyber_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Werror)
+endfunction()
+
+# One library per component: sources in src/, public headers in include/.
+function(cyber_component_library target)
+  cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
+  file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+  add_library(${target} STATIC ${srcs})
+  target_include_directories(${target} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  target_link_libraries(${target} PUBLIC ${ARG_LINK})
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  cyber_warnings(${target})
+endfunction()
+
+# Every *_test.cpp in DIR becomes its own GoogleTest executable, so one broken file cannot stop
+# the others from building; tests carry LABEL.
+function(cyber_test_dir dir label)
+  cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
+  file(GLOB srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)
+  foreach(src ${srcs})
+    get_filename_component(name ${src} NAME_WE)
+    add_executable(${name} ${src})
+    target_link_libraries(${name} PRIVATE ${ARG_LINK} GTest::gtest_main)
+    target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support)
+    cyber_warnings(${name})
+    gtest_discover_tests(${name} PROPERTIES LABELS ${label} DISCOVERY_TIMEOUT 60)
+  endforeach()
+endfunction()

@@ -1,0 +1,145 @@
+#pragma once
+// The robot description the planner works on: joints, polygons, scenes, drives and settings.
+// Plain values; the TOML loader (daemon/config) fills and validates them.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cyber/planner/convex_polygon.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::planner {
+
+struct JointRange {
+  double min = 0.0;
+  double max = 0.0;
+  [[nodiscard]] bool contains(double x, double tolerance = 0.0) const {
+    return x >= min - tolerance && x <= max + tolerance;
+  }
+};
+
+// The carriage rail: pivot(t) = base + t * (cos tilt, sin tilt)  (algorithm.md section 1).
+struct Rail {
+  Point2 base_m = Point2::Zero();
+  double tilt_rad = 0.0;
+};
+
+// Robot polygons in the arm frame (x along the arm from the pivot).
+struct RobotGeometry {
+  std::vector<ConvexPolygon> arm;    // always present
+  std::vector<ConvexPolygon> coral;  // added while coral is held
+  std::vector<ConvexPolygon> algae;  // added while algae is held
+};
+
+struct NamedPolygon {
+  std::string name;
+  ConvexPolygon polygon;  // world frame
+};
+
+// A named set of obstacles; the first scene of a model is its default.
+struct Scene {
+  std::string name;
+  std::vector<NamedPolygon> obstacles;
+};
+
+// DC motor figures as WPILib's DCMotor gives them.
+struct MotorParams {
+  double nominal_voltage_volts = 12.0;
+  double stall_torque_nm = 0.0;
+  double stall_current_amps = 0.0;
+  double free_current_amps = 0.0;
+  double free_speed_radps = 0.0;
+
+  [[nodiscard]] double resistanceOhms() const { return nominal_voltage_volts / stall_current_amps; }
+  // Kv in rad/s per volt of back-EMF.
+  [[nodiscard]] double kvRadpsPerVolt() const {
+    return free_speed_radps / (nominal_voltage_volts - resistanceOhms() * free_current_amps);
+  }
+  [[nodiscard]] double ktNmPerAmp() const { return stall_torque_nm / stall_current_amps; }
+};
+
+enum class GravityModel { kConstant, kCosine };  // elevator: g = 1; arm: g = cos(theta)
+
+// One joint's drive: WPILib feedforward, the motors behind it and its limits.
+// Joint units are m (elevator) or rad (arm); kV is V per unit/s, kA V per unit/s^2.
+struct DriveParams {
+  MotorParams motor;
+  int motor_count = 1;
+  double gearing = 1.0;  // motor rad per joint unit
+  double kS_volts = 0.0;
+  double kG_volts = 0.0;
+  double kV = 0.0;
+  double kA = 0.0;
+  GravityModel gravity = GravityModel::kConstant;
+  double voltage_limit_volts = 12.0;
+  double current_limit_amps = 0.0;               // per motor
+  std::optional<double> velocity_limit;          // joint units/s
+  std::optional<double> acceleration_limit;      // joint units/s^2
+
+  [[nodiscard]] double gravityFactor(double q) const;  // g(q) of algorithm.md section 3
+  // Feedforward voltage V(q, qdot, qddot) and the per-motor current it draws.
+  [[nodiscard]] double volts(double q, double qdot, double qddot) const;
+  [[nodiscard]] double amps(double volts, double qdot) const;
+};
+
+struct GridSettings {
+  double elevator_step_m = 0.02;
+  double arm_step_rad = 0.02;
+};
+
+struct SearchSettings {
+  double potential_weight = 2.0;   // weight of the potential in the A* step cost
+  double potential_range = 0.15;   // weighted C-space distance over which the potential decays
+};
+
+struct SmoothingSettings {
+  double waypoint_spacing = 0.05;  // weighted C-space spacing of the optimised waypoints
+  double obstacle_weight = 1.0;    // w_o  (eq. 8)
+  double obstacle_decay_m = 0.05;  // d0   (eq. 8)
+  double prior_weight = 0.1;       // w_p
+  double length_weight = 1.0;      // w_l
+  double smoothness_weight = 10.0; // w_s
+  int max_iterations = 200;
+  double gradient_tolerance = 1e-6;
+};
+
+struct ToppSettings {
+  int grid_points = 200;             // K
+  double primal_tolerance = 1e-6;
+  double dual_tolerance = 1e-4;
+  int max_outer_iterations = 50;     // a cap, never the stopping rule
+  int max_inner_iterations = 500;
+  double limit_check_step_s = 0.001; // the continuous trajectory is checked at this step
+};
+
+struct PlannerSettings {
+  JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
+  GridSettings grid;
+  SearchSettings search;
+  SmoothingSettings smoothing;
+  ToppSettings topp;
+};
+
+struct RobotModel {
+  std::string name;
+  JointRange elevator_range_m;
+  JointRange arm_range_rad;
+  Rail rail;
+  RobotGeometry geometry;
+  std::vector<Scene> scenes;  // scenes.front() is the default
+  double clearance_m = 0.0;
+  DriveParams elevator_drive;
+  DriveParams arm_drive;
+  PlannerSettings planner;
+
+  [[nodiscard]] JointRange range(int joint) const { return joint == kElevator ? elevator_range_m : arm_range_rad; }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return joint == kElevator ? elevator_drive : arm_drive; }
+  [[nodiscard]] bool withinLimits(const JointVector& q, double tolerance = 0.0) const {
+    return elevator_range_m.contains(q[kElevator], tolerance) && arm_range_rad.contains(q[kArm], tolerance);
+  }
+  // Index of a scene by name; -1 when there is none.
+  [[nodiscard]] int sceneIndex(const std::string& name) const;
+};
+
+}  // namespace cyber::planner
