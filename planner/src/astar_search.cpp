@@ -99,7 +99,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         const int b = j + dj;
         if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
         const int next = grid.cell(a, b);
-        if (grid.blocked(next) || closed[static_cast<size_t>(next)] != 0) continue;
+        if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(top.node, di, dj)) continue;
         const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next)));
         push(next, top.g + step, top.node);
       }

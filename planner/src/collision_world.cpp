@@ -63,57 +63,83 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
   }
 }
 
+bool CollisionWorld::pairDistance(size_t r, size_t o, const ArmPose& pose, double bound, PlacedPolygon& placed,
+                                  SignedDistance& out) const {
+  const RobotPart& part = robot_[r];
+  const Obstacle& obstacle = obstacles_[o];
+  const int n = static_cast<int>(part.vertices.size());
+  // Circle against box bounds the distance of separated shapes only, so it prunes only when
+  // positive (a penetration can be deeper than the circle's radius).
+  const double circle_bound = pointBoxDistance(pose.toWorld(part.centre), obstacle.box_min, obstacle.box_max) - part.radius;
+  if (circle_bound > 0.0 && circle_bound >= bound) {
+    out.value = circle_bound;
+    out.exact = false;
+    return false;
+  }
+  const WorldPolygonView obstacle_view{obstacle.vertices.data(), obstacle.normals.data(),
+                                       static_cast<int>(obstacle.vertices.size())};
+  PairDistance pair;
+  if (n <= kStackVertices) {
+    if (placed.placed_part != static_cast<int>(r)) {
+      for (int i = 0; i < n; ++i) {
+        placed.vertices[i] = pose.toWorld(part.vertices[static_cast<size_t>(i)]);
+        placed.normals[i] = pose.rotate(part.normals[static_cast<size_t>(i)]);
+      }
+      placed.placed_part = static_cast<int>(r);
+    }
+    pair = signedDistance(WorldPolygonView{placed.vertices, placed.normals, n}, obstacle_view, bound);
+  } else {
+    pair = signedDistance(ArmPolygonView{part.vertices.data(), part.normals.data(), n, &pose}, obstacle_view, bound);
+  }
+  out.value = pair.value;
+  out.exact = pair.exact && pair.value < bound;
+  if (!out.exact) return false;
+  out.witness_robot = pair.witness_a;
+  out.witness_obstacle = pair.witness_b;
+  out.robot_polygon = static_cast<int>(r);
+  out.obstacle = static_cast<int>(o);
+  // Rigid motion of the robot: d changes by -normal . (velocity of the robot's witness point),
+  // with normal pointing from the robot to the obstacle (envelope theorem for the separated
+  // case; for overlap the active axis and vertex move the same way).
+  out.gradient = -(pose.pointJacobian(pair.witness_a).transpose() * pair.normal);
+  return true;
+}
+
 SignedDistance CollisionWorld::distance(const JointVector& q, double cutoff) const {
-  SignedDistance out;
+  SignedDistance best;
   const ArmPose pose = poseAt(q);
   // `bound` is what a pair must beat: the best exact value so far, or the cutoff.
   double bound = cutoff;
   double smallest_lower_bound = std::numeric_limits<double>::infinity();
-  PairDistance best;
+  PlacedPolygon placed;
+  SignedDistance pair;
   for (size_t r = 0; r < robot_.size(); ++r) {
-    const RobotPart& part = robot_[r];
-    const Point2 centre = pose.toWorld(part.centre);
-    const ArmPolygonView robot_view{part.vertices.data(), part.normals.data(),
-                                    static_cast<int>(part.vertices.size()), &pose};
     for (size_t o = 0; o < obstacles_.size(); ++o) {
-      const Obstacle& obstacle = obstacles_[o];
-      // Circle against box bounds the distance of separated shapes only, so it prunes only when
-      // positive (a penetration can be deeper than the circle's radius).
-      const double circle_bound = pointBoxDistance(centre, obstacle.box_min, obstacle.box_max) - part.radius;
-      if (circle_bound > 0.0 && circle_bound >= bound) {
-        smallest_lower_bound = std::min(smallest_lower_bound, circle_bound);
-        continue;
-      }
-      const WorldPolygonView obstacle_view{obstacle.vertices.data(), obstacle.normals.data(),
-                                           static_cast<int>(obstacle.vertices.size())};
-      const PairDistance pair = signedDistance(robot_view, obstacle_view, bound);
-      if (!pair.exact || pair.value >= bound) {
-        smallest_lower_bound = std::min(smallest_lower_bound, pair.value);
-        continue;
-      }
-      {
+      if (pairDistance(r, o, pose, bound, placed, pair)) {
         bound = pair.value;
         best = pair;
-        out.robot_polygon = static_cast<int>(r);
-        out.obstacle = static_cast<int>(o);
+      } else {
+        smallest_lower_bound = std::min(smallest_lower_bound, pair.value);
       }
     }
   }
-  if (out.obstacle < 0) {
-    // Nothing below the cutoff: every pair was bounded below by at least the cutoff (+inf when
-    // there is nothing to collide with).
-    out.value = smallest_lower_bound;
-    return out;
+  // Nothing below the cutoff: every pair was bounded below by at least the cutoff (+inf when
+  // there is nothing to collide with).
+  if (!best.exact) best.value = smallest_lower_bound;
+  return best;
+}
+
+int CollisionWorld::closePairs(const JointVector& q, double cutoff, std::span<SignedDistance> out) const {
+  const ArmPose pose = poseAt(q);
+  PlacedPolygon placed;
+  int count = 0;
+  for (size_t r = 0; r < robot_.size(); ++r) {
+    for (size_t o = 0; o < obstacles_.size(); ++o) {
+      if (count == static_cast<int>(out.size())) return count;
+      if (pairDistance(r, o, pose, cutoff, placed, out[static_cast<size_t>(count)])) ++count;
+    }
   }
-  out.exact = true;
-  out.value = best.value;
-  out.witness_robot = best.witness_a;
-  out.witness_obstacle = best.witness_b;
-  // Rigid motion of the robot: d changes by -normal . (velocity of the robot's witness point),
-  // with normal pointing from the robot to the obstacle (envelope theorem for the separated
-  // case; for overlap the active axis and vertex move the same way).
-  out.gradient = -(pose.pointJacobian(best.witness_a).transpose() * best.normal);
-  return out;
+  return count;
 }
 
 }  // namespace cyber::planner

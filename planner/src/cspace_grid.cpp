@@ -3,18 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+
+#include "cyber/planner/path_clearance.hpp"
 
 namespace cyber::planner {
 
-GridAxis GridAxis::covering(const JointRange& range, double max_step) {
+GridAxis GridAxis::covering(const JointRange& range, double max_step, double inset) {
   GridAxis axis;
-  axis.min = range.min;
-  const double span = range.max - range.min;
+  const double span = range.max - range.min - 2.0 * inset;
   if (!(span > 0.0) || !(max_step > 0.0)) {
+    axis.min = 0.5 * (range.min + range.max);
     axis.count = 1;
     axis.step = 1.0;
     return axis;
   }
+  axis.min = range.min + inset;
   axis.count = static_cast<int>(std::ceil(span / max_step - 1e-9)) + 1;
   axis.step = span / (axis.count - 1);
   return axis;
@@ -28,25 +32,61 @@ CSpaceGrid::CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t
       metric_(metric),
       potential_weight_(search.potential_weight) {
   blocked_.resize(static_cast<size_t>(cellCount()), 0);
+  allowAllStepsBetweenFreeNodes();
   computePotential(search.potential_range);
+}
+
+void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
+  steps_.assign(static_cast<size_t>(cellCount()), 0);
+  for (int i = 0; i < elevator_.count; ++i) {
+    for (int j = 0; j < arm_.count; ++j) {
+      const int c = cell(i, j);
+      if (blocked(c)) continue;
+      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+        const int a = i + di, b = j + dj;
+        if (a >= elevator_.count || b < 0 || b >= arm_.count || blocked(cell(a, b))) continue;
+        steps_[static_cast<size_t>(c)] |= static_cast<std::uint8_t>(1U << kStepBit[di + 1][dj + 1]);
+      }
+    }
+  }
 }
 
 CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
   const GridSettings& settings = model.planner.grid;
-  const GridAxis elevator = GridAxis::covering(model.elevator_range_m, settings.elevator_step_m);
-  const GridAxis arm = GridAxis::covering(model.arm_range_rad, settings.arm_step_rad);
-  const double inflation = 0.5 * world.lipschitzBound(JointVector(elevator.step, arm.step));
-  const double threshold = model.clearance_m + inflation;
-  std::vector<std::uint8_t> blocked(static_cast<size_t>(elevator.count) * static_cast<size_t>(arm.count), 0);
+  const GridAxis elevator = GridAxis::covering(model.elevator_range_m, settings.elevator_step_m, kJointLimitMargin);
+  const GridAxis arm = GridAxis::covering(model.arm_range_rad, settings.arm_step_rad, kJointLimitMargin);
+  const double clearance = model.clearance_m;
+  // Half a diagonal step can lose at most this much distance; farther nodes need no exact value.
+  const double widest_margin = 0.5 * world.lipschitzBound(JointVector(elevator.step, arm.step));
+  const auto count = static_cast<size_t>(elevator.count) * static_cast<size_t>(arm.count);
+  std::vector<double> distance(count);
+  std::vector<std::uint8_t> blocked(count, 0);
   for (int i = 0; i < elevator.count; ++i) {
     for (int j = 0; j < arm.count; ++j) {
-      // The cutoff lets the distance stop as soon as it knows d >= threshold.
-      const SignedDistance d = world.distance(JointVector(elevator.at(i), arm.at(j)), threshold);
-      blocked[static_cast<size_t>(i) * static_cast<size_t>(arm.count) + static_cast<size_t>(j)] = d.value < threshold;
+      const size_t c = static_cast<size_t>(i) * static_cast<size_t>(arm.count) + static_cast<size_t>(j);
+      distance[c] = world.distance(JointVector(elevator.at(i), arm.at(j)), clearance + widest_margin).value;
+      blocked[c] = distance[c] < clearance;
     }
   }
   CSpaceGrid grid(elevator, arm, std::move(blocked), model.planner.metric, model.planner.search);
-  grid.block_threshold_m_ = threshold;
+  grid.clearance_m_ = clearance;
+  // Steps near obstacles: keep only those a continuous check clears.
+  for (int i = 0; i < elevator.count; ++i) {
+    for (int j = 0; j < arm.count; ++j) {
+      const int c = grid.cell(i, j);
+      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+        const int bit = kStepBit[di + 1][dj + 1];
+        if (((grid.steps_[static_cast<size_t>(c)] >> bit) & 1U) == 0) continue;
+        const int target = grid.cell(i + di, j + dj);
+        const double margin = 0.5 * world.lipschitzBound(JointVector(std::abs(di) * elevator.step, std::abs(dj) * arm.step));
+        if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin) continue;
+        ++grid.checked_steps_;
+        if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
+          grid.steps_[static_cast<size_t>(c)] &= static_cast<std::uint8_t>(~(1U << bit));
+        }
+      }
+    }
+  }
   return grid;
 }
 

@@ -3,6 +3,7 @@
 
 #include "cyber/planner/cspace_grid.hpp"
 
+#include <cstdio>
 #include <random>
 #include <vector>
 
@@ -32,15 +33,16 @@ const Grids& grids() {
   return g;
 }
 
-TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheThreshold) {
+TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheClearance) {
   for (int set = 0; set < kPieceSetCount; ++set) {
     const CSpaceGrid& grid = grids().grids[static_cast<size_t>(set)];
     const CollisionWorld& world = grids().worlds[static_cast<size_t>(set)];
-    EXPECT_GT(grid.blockThreshold_m(), model().clearance_m);
+    EXPECT_EQ(grid.clearance_m(), model().clearance_m);
+    EXPECT_GT(grid.checkedStepCount(), 0);
     EXPECT_LE(grid.elevatorAxis().step, model().planner.grid.elevator_step_m);
     EXPECT_LE(grid.armAxis().step, model().planner.grid.arm_step_rad);
     for (int c = 0; c < grid.cellCount(); c += 7) {
-      EXPECT_EQ(grid.blocked(c), world.distance(grid.node(c)).value < grid.blockThreshold_m()) << c;
+      EXPECT_EQ(grid.blocked(c), world.distance(grid.node(c)).value < model().clearance_m) << c;
       if (grid.blocked(c)) {
         EXPECT_FLOAT_EQ(grid.potential(c), 1.0F);
       }
@@ -53,7 +55,7 @@ TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheThreshold) {
   EXPECT_GT(grids().grids[1].blockedCount(), grids().grids[0].blockedCount());
 }
 
-TEST(CSpaceGrid, StepsBetweenFreeNeighboursKeepTheClearance) {
+TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
   std::mt19937 rng(31);
   for (int set = 0; set < kPieceSetCount; ++set) {
     const CSpaceGrid& grid = grids().grids[static_cast<size_t>(set)];
@@ -64,23 +66,34 @@ TEST(CSpaceGrid, StepsBetweenFreeNeighboursKeepTheClearance) {
     double closest = 1e9;
     while (checked < 1000) {
       const int a = any(rng);
-      const int i = grid.elevatorIndex(a) + offset(rng);
-      const int j = grid.armIndex(a) + offset(rng);
-      if (i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count) continue;
+      const int di = offset(rng), dj = offset(rng);
+      const int i = grid.elevatorIndex(a) + di, j = grid.armIndex(a) + dj;
+      if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count) continue;
       const int b = grid.cell(i, j);
-      if (a == b || grid.blocked(a) || grid.blocked(b)) continue;
-      // Only pairs near the obstacles say anything.
-      if (world.distance(grid.node(a)).value > grid.blockThreshold_m() + 0.03) continue;
+      // Only steps near the obstacles say anything.
+      if (grid.blocked(a) || grid.blocked(b) || world.distance(grid.node(a)).value > model().clearance_m + 0.02) continue;
+      EXPECT_EQ(grid.stepFree(a, di, dj), grid.stepFree(b, -di, -dj));
+      if (!grid.stepFree(a, di, dj)) continue;
       ++checked;
-      for (int k = 0; k <= 40; ++k) {
-        const JointVector q = grid.node(a) + (grid.node(b) - grid.node(a)) * (k / 40.0);
+      for (int k = 0; k <= 100; ++k) {
+        const JointVector q = grid.node(a) + (grid.node(b) - grid.node(a)) * (k / 100.0);
         const double d = world.distance(q).value;
         closest = std::min(closest, d);
         ASSERT_GE(d, model().clearance_m) << "set " << set << " between " << grid.node(a).transpose() << " and "
                                           << grid.node(b).transpose();
       }
     }
-    EXPECT_LT(closest, grid.blockThreshold_m() + 0.002) << "the sampled steps came near the threshold";
+    EXPECT_LT(closest, model().clearance_m + 0.002) << "the sampled steps came near the clearance";
+    int refused = 0;
+    for (int c = 0; c < grid.cellCount(); ++c) {
+      const int i = grid.elevatorIndex(c), j = grid.armIndex(c);
+      if (grid.blocked(c) || i + 1 >= grid.elevatorAxis().count || j + 1 >= grid.armAxis().count) continue;
+      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
+        if (!grid.blocked(grid.cell(i + di, j + dj)) && !grid.stepFree(c, di, dj)) ++refused;
+      }
+    }
+    std::printf("set %d: %d blocked nodes, %d steps checked, %d refused\n", set, grid.blockedCount(),
+                grid.checkedStepCount(), refused);
   }
 }
 

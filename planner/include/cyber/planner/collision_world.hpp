@@ -3,6 +3,7 @@
 // the signed distance d(q) of algorithm.md section 1 with its gradient dd/dq.
 
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "cyber/planner/pose_transform.hpp"
@@ -35,6 +36,11 @@ class CollisionWorld {
   [[nodiscard]] SignedDistance distance(const JointVector& q,
                                         double cutoff = std::numeric_limits<double>::infinity()) const;
 
+  // Every robot polygon x obstacle pair with signed distance below cutoff, each with its own
+  // gradient (at most out.size() of them; returns how many were written). Unlike distance(), a
+  // sum over these is smooth where the closest pair switches.
+  int closePairs(const JointVector& q, double cutoff, std::span<SignedDistance> out) const;
+
   // Largest distance of any robot point from the pivot [m]. Moving from q by dq moves every robot
   // point by at most |dt| + reach * |dtheta|, so d is Lipschitz with these constants.
   [[nodiscard]] double reach_m() const { return reach_m_; }
@@ -61,6 +67,18 @@ class CollisionWorld {
     Point2 box_min = Point2::Zero();
     Point2 box_max = Point2::Zero();
   };
+
+  // The arm polygons placed in the world once per query when small enough for this buffer (the
+  // usual case); larger ones are transformed on the fly.
+  static constexpr int kStackVertices = 16;
+  struct PlacedPolygon {
+    Point2 vertices[kStackVertices];
+    Point2 normals[kStackVertices];
+    int placed_part = -1;
+  };
+  // Signed distance of robot part r and obstacle o, or a lower bound >= bound (exact == false).
+  [[nodiscard]] bool pairDistance(size_t r, size_t o, const ArmPose& pose, double bound, PlacedPolygon& placed,
+                                  SignedDistance& out) const;
 
   HeldPieces pieces_;
   Point2 rail_base_m_ = Point2::Zero();

@@ -102,6 +102,12 @@ struct SmoothingSettings {
   double smoothness_weight = 10.0; // w_s
   int max_iterations = 200;
   double gradient_tolerance = 1e-6;
+  // L-BFGS also stops when a step lowers J by less than this fraction of max(1, |J|) (0: off).
+  double relative_cost_tolerance = 1e-9;
+  // With a start velocity v0 the path first runs straight along v0 for |v0|_Sigma * lead_in_time_s
+  // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
+  double lead_in_time_s = 0.1;
+  double max_lead_in = 0.3;
 };
 
 struct ToppSettings {

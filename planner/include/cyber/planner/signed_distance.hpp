@@ -87,14 +87,19 @@ inline Point2 closestOnSegment(const Point2& x, const Point2& a, const Point2& b
 }
 
 // Smallest distance from the vertices of P to the edges of Q; updates `out` (witness order A, B
-// depends on p_is_a).
+// depends on p_is_a). A vertex behind an edge's line is skipped: when the polygons are separated,
+// the closest pair has its vertex in front of the edge it is closest to (or, for a closest
+// vertex of Q, in front of one of its two edges), so nothing is lost. The small tolerance keeps
+// touching contacts, where that "in front" is lost in roundoff.
 template <class P, class Q>
 void vertexEdgeDistances(const P& p, const Q& q, bool p_is_a, double* best2, PairDistance* out) {
   for (int j = 0; j < q.size(); ++j) {
     const Point2 a = q.vertex(j);
     const Point2 b = q.vertex(j + 1 == q.size() ? 0 : j + 1);
+    const Point2 n = q.normal(j);
     for (int i = 0; i < p.size(); ++i) {
       const Point2 x = p.vertex(i);
+      if (n.dot(x - a) < -1e-9) continue;
       const Point2 c = closestOnSegment(x, a, b);
       const double d2 = (x - c).squaredNorm();
       if (d2 < *best2) {
@@ -116,6 +121,10 @@ PairDistance signedDistance(const A& a, const B& b,
   PairDistance out;
   int edge_a = 0, vertex_b = 0, edge_b = 0, vertex_a = 0;
   const double gap_a = detail::largestEdgeGap(a, b, &edge_a, &vertex_b);
+  if (gap_a >= cutoff) {
+    out.value = gap_a;
+    return out;
+  }
   const double gap_b = detail::largestEdgeGap(b, a, &edge_b, &vertex_a);
   const double gap = std::max(gap_a, gap_b);
   if (gap >= cutoff) {
