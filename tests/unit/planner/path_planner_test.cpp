@@ -26,6 +26,17 @@ const PathPlanner& planner() {
   return p;
 }
 
+// The reference robot with the code's default smoothing settings (the tuned values recommended
+// for the configuration file).
+const PathPlanner& defaultSmoothingPlanner() {
+  static const PathPlanner p = [] {
+    RobotModel m = model();
+    m.planner.smoothing = SmoothingSettings{};
+    return PathPlanner(m, m.scenes.front());
+  }();
+  return p;
+}
+
 struct DenseCheck {
   double min_distance = std::numeric_limits<double>::infinity();
   double max_step = 0.0;  // largest max(|dt|, |dtheta|) between consecutive samples
@@ -113,12 +124,12 @@ const Components& components(HeldPieces pieces) {
   return *slot;
 }
 
-TEST(PathPlanner, EveryPublicMoveKeepsTheClearanceOrProvablyHasNoPath) {
+void checkEveryPublicMove(const PathPlanner& planner) {
   const auto& moves = test::publicMoves();
   ASSERT_EQ(moves.size(), 144U);
   int searched = 0, planned_count = 0, disconnected = 0;
   for (const test::PublicMove& move : moves) {
-    const auto result = planner().plan(move.from, move.to, move.pieces);
+    const auto result = planner.plan(move.from, move.to, move.pieces);
     if (!result.ok()) {
       // Only a goal in another component of the free space may be refused.
       ASSERT_EQ(result.status(), PlanStatus::kNoPath) << move.label << ": " << result.error().reason;
@@ -135,7 +146,7 @@ TEST(PathPlanner, EveryPublicMoveKeepsTheClearanceOrProvablyHasNoPath) {
     EXPECT_EQ(planned.waypoints.back(), move.to);
     EXPECT_EQ(planned.search_waypoints.front(), move.from);
     EXPECT_EQ(planned.search_waypoints.back(), move.to);
-    const DenseCheck check = denseCheck(path, planner().world(move.pieces));
+    const DenseCheck check = denseCheck(path, planner.world(move.pieces));
     EXPECT_LE(check.max_step, 1e-3) << move.label;
     EXPECT_GE(check.min_distance, model().clearance_m) << move.label << " via " << planned.method;
     EXPECT_TRUE(check.within_limits) << move.label;
@@ -152,6 +163,10 @@ TEST(PathPlanner, EveryPublicMoveKeepsTheClearanceOrProvablyHasNoPath) {
   EXPECT_EQ(disconnected, 18);
   EXPECT_EQ(planned_count, 126);
 }
+
+TEST(PathPlanner, EveryPublicMoveKeepsTheClearanceOrProvablyHasNoPath) { checkEveryPublicMove(planner()); }
+
+TEST(PathPlanner, EveryPublicMoveWithTheDefaultSmoothingSettings) { checkEveryPublicMove(defaultSmoothingPlanner()); }
 
 TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
   // Poses between grid nodes: the path starts and ends exactly there.
