@@ -5,6 +5,7 @@
 #include "cyber/planner/path_planner.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -277,6 +278,71 @@ TEST(PathPlanner, StartVelocitySetsTheStartDirectionWithUnitSpeed) {
   const DenseCheck check = denseCheck(*result.value().path, planner().world(HeldPieces{}));
   EXPECT_GE(check.min_distance, model().clearance_m);
   EXPECT_TRUE(check.within_limits);
+}
+
+TEST(PathPlanner, StartVelocityIntoALimitShortensTheLeadIn) {
+  // Moving down fast near the bottom of the rail: the lead-in is halved until it fits.
+  const JointVector start(0.2, 1.57), goal(1.2, 1.57), v0(-5.0, 0.0);
+  const auto result = planner().plan(start, goal, HeldPieces{}, v0);
+  ASSERT_TRUE(result.ok()) << result.error().reason;
+  EXPECT_TRUE(result.value().lead_in);
+  const JointVector lead = result.value().waypoints[1];
+  EXPECT_LT(lead[0], start[0]);
+  EXPECT_GE(lead[0], 0.0);
+  EXPECT_NEAR(lead[1], start[1], 1e-12);
+  const DenseCheck check = denseCheck(*result.value().path, planner().world(HeldPieces{}));
+  EXPECT_GE(check.min_distance, model().clearance_m);
+  EXPECT_TRUE(check.within_limits);
+}
+
+TEST(PathPlanner, MovingStartWithTheSameGoalGoesOutAndBack) {
+  const JointVector q(1.0, 1.57), v0(0.5, 1.0);
+  const auto result = planner().plan(q, q, HeldPieces{}, v0);
+  ASSERT_TRUE(result.ok()) << result.error().reason;
+  const GeometricPath& path = *result.value().path;
+  EXPECT_GT(path.length(), 0.0);
+  EXPECT_NEAR((path.at(path.length()).q - q).norm(), 0.0, 1e-12);
+  EXPECT_GT(path.at(0.0).dq_ds.dot(v0), 0.0);
+}
+
+TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
+  std::mt19937 rng(1234);
+  std::uniform_real_distribution<double> t(0.0, 2.0), th(0.0, 6.1), v(-3.0, 3.0);
+  std::uniform_int_distribution<int> set(0, 3);
+  int ok = 0, refused = 0, no_path = 0;
+  while (ok + refused < 40) {
+    const HeldPieces pieces = HeldPieces::fromIndex(set(rng));
+    const JointVector start(t(rng), th(rng)), goal(t(rng), th(rng));
+    const CollisionWorld& world = planner().world(pieces);
+    if (world.distance(start).value < model().clearance_m || world.distance(goal).value < model().clearance_m) continue;
+    const JointVector v0 = (ok + refused) % 2 == 0 ? JointVector::Zero() : JointVector(v(rng), 3.0 * v(rng));
+    const auto result = planner().plan(start, goal, pieces, v0);
+    if (!result.ok()) {
+      ++refused;
+      no_path += result.status() == PlanStatus::kNoPath ? 1 : 0;
+      EXPECT_TRUE(result.status() == PlanStatus::kNoPath || result.status() == PlanStatus::kClearanceNotMet)
+          << toString(result.status()) << ": " << result.error().reason;
+      EXPECT_FALSE(result.error().reason.empty());
+      if (result.status() == PlanStatus::kNoPath && v0.isZero()) {
+        EXPECT_NE(components(pieces).of(start), components(pieces).of(goal)) << start.transpose() << " -> " << goal.transpose();
+      }
+      continue;
+    }
+    ++ok;
+    const GeometricPath& path = *result.value().path;
+    EXPECT_EQ(path.at(0.0).q, start);
+    EXPECT_NEAR((path.at(path.length()).q - goal).norm(), 0.0, 1e-12);
+    if (!v0.isZero()) {
+      const JointVector& m = model().planner.metric;
+      const double speed = std::sqrt(m[0] * v0[0] * v0[0] + m[1] * v0[1] * v0[1]);
+      EXPECT_NEAR((path.at(0.0).dq_ds - v0 / speed).norm(), 0.0, 1e-9);
+    }
+    const DenseCheck check = denseCheck(path, world);
+    EXPECT_GE(check.min_distance, model().clearance_m) << start.transpose() << " -> " << goal.transpose();
+    EXPECT_TRUE(check.within_limits) << start.transpose() << " -> " << goal.transpose();
+  }
+  std::printf("%d planned, %d refused (%d no path)\n", ok, refused, no_path);
+  EXPECT_GT(ok, 20);
 }
 
 TEST(PathPlanner, HeldPiecesShapeThePath) {
