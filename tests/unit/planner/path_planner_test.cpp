@@ -38,8 +38,11 @@ const PathPlanner& defaultSmoothingPlanner() {
   return p;
 }
 
+// Distances above this are not needed exactly (the dense check only looks at the closest part).
+constexpr double kDenseCutoff = 0.1;
+
 struct DenseCheck {
-  double min_distance = std::numeric_limits<double>::infinity();
+  double min_distance = std::numeric_limits<double>::infinity();  // exact when below kDenseCutoff
   double max_step = 0.0;  // largest max(|dt|, |dtheta|) between consecutive samples
   bool within_limits = true;
 };
@@ -54,7 +57,7 @@ DenseCheck denseCheck(const GeometricPath& path, const CollisionWorld& world) {
   for (int i = 0; i <= samples; ++i) {
     const JointVector q = path.at(path.length() * i / samples).q;
     out.max_step = std::max(out.max_step, (q - previous).cwiseAbs().maxCoeff());
-    out.min_distance = std::min(out.min_distance, world.distance(q).value);
+    out.min_distance = std::min(out.min_distance, world.distance(q, kDenseCutoff).value);
     out.within_limits = out.within_limits && model().withinLimits(q);
     previous = q;
   }
@@ -154,7 +157,11 @@ void checkEveryPublicMove(const PathPlanner& planner) {
     // The planner's own minimum (certified steps, then a dense scan around the closest sample)
     // agrees with the dense one to within the sampling.
     EXPECT_GE(planned.min_clearance_m, model().clearance_m) << move.label;
-    EXPECT_NEAR(planned.min_clearance_m, check.min_distance, 2e-3) << move.label;
+    if (check.min_distance < kDenseCutoff) {
+      EXPECT_NEAR(planned.min_clearance_m, check.min_distance, 2e-3) << move.label;
+    } else {
+      EXPECT_GE(planned.min_clearance_m, kDenseCutoff - 2e-3) << move.label;
+    }
     if (!planned.direct) ++searched;
   }
   EXPECT_GT(searched, 20) << "the public moves exercise the grid search";
@@ -352,7 +359,7 @@ TEST(PathPlanner, HeldPiecesShapeThePath) {
   const HeldPieces coral{true, false};
   int bare_path_too_close = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
-    if (!move.pieces.coral) continue;
+    if (!move.pieces.coral || bare_path_too_close > 0) continue;
     const auto with_coral = planner().plan(move.from, move.to, coral);
     const auto bare = planner().plan(move.from, move.to, HeldPieces{});
     if (!with_coral.ok() || !bare.ok()) continue;
