@@ -11,7 +11,6 @@
 #include <cerrno>
 #include <cstring>
 
-#include "cyber/can/frc_id.hpp"
 #include "cyber/can/linux_frame.hpp"
 
 namespace cyber::can {
@@ -31,28 +30,6 @@ SocketError openError(OpenError kind, int error_number, std::string_view ifname,
   return SocketError{kind, error_number, std::move(message)};
 }
 
-can_filter toKernelFilter(const IdFilter& filter) {
-  // Match the format flag and RTR (so only data frames pass) besides the id bits.
-  can_filter out{};
-  if (filter.extended) {
-    out.can_id = (filter.id & CAN_EFF_MASK) | CAN_EFF_FLAG;
-    out.can_mask = (filter.mask & CAN_EFF_MASK) | CAN_EFF_FLAG | CAN_RTR_FLAG;
-  } else {
-    out.can_id = filter.id & CAN_SFF_MASK;
-    out.can_mask = (filter.mask & CAN_SFF_MASK) | CAN_EFF_FLAG | CAN_RTR_FLAG;
-  }
-  return out;
-}
-
-IoResult ioFailure(int error_number) {
-  switch (error_number) {
-    case EAGAIN: return IoResult{IoStatus::kWouldBlock, error_number};
-    case ENOBUFS: return IoResult{IoStatus::kNoBufferSpace, error_number};
-    case ENETDOWN: return IoResult{IoStatus::kNetworkDown, error_number};
-    default: return IoResult{IoStatus::kError, error_number};
-  }
-}
-
 bool validInterfaceName(std::string_view name) {
   if (name.empty() || name.size() >= IFNAMSIZ) return false;
   for (char c : name) {
@@ -63,9 +40,13 @@ bool validInterfaceName(std::string_view name) {
 
 }  // namespace
 
-std::vector<IdFilter> daemonReceiveFilters() {
-  return {IdFilter::exact(kHeartbeatId, true), IdFilter::exact(kBroadcastDisableId, true),
-          IdFilter::exact(kBroadcastDisableId, false)};
+IoResult ioResultFromErrno(int error_number) {
+  switch (error_number) {
+    case EAGAIN: return IoResult{IoStatus::kWouldBlock, error_number};
+    case ENOBUFS: return IoResult{IoStatus::kNoBufferSpace, error_number};
+    case ENETDOWN: return IoResult{IoStatus::kNetworkDown, error_number};
+    default: return IoResult{IoStatus::kError, error_number};
+  }
 }
 
 std::string IoResult::message() const {
@@ -161,7 +142,7 @@ IoResult CanSocket::read(Frame& frame) {
   do {
     got = ::read(fd_, &raw, sizeof raw);
   } while (got < 0 && errno == EINTR);
-  if (got < 0) return ioFailure(errno);
+  if (got < 0) return ioResultFromErrno(errno);
   // A raw socket hands over whole frames; anything shorter is not a classic CAN frame.
   if (static_cast<std::size_t>(got) != sizeof raw) return IoResult{IoStatus::kError, EMSGSIZE};
   const auto converted = fromLinuxFrame(raw);
@@ -176,7 +157,7 @@ IoResult CanSocket::write(const Frame& frame) {
   do {
     put = ::write(fd_, &raw, sizeof raw);
   } while (put < 0 && errno == EINTR);
-  if (put < 0) return ioFailure(errno);
+  if (put < 0) return ioResultFromErrno(errno);
   if (static_cast<std::size_t>(put) != sizeof raw) return IoResult{IoStatus::kError, EMSGSIZE};
   return IoResult{};
 }

@@ -15,7 +15,8 @@ bool isDefinedMode(std::uint8_t mode) {
 
 std::uint16_t saturateTimeRemainingMs(double seconds) {
   if (!(seconds > 0.0)) return 0;  // also NaN
-  const double ms = std::ceil(seconds * 1000.0);
+  // The 1e-6 ms slack keeps decimal inputs such as 0.85 s from rounding up to 851 ms.
+  const double ms = std::ceil(seconds * 1000.0 - 1e-6);
   if (ms >= 65535.0) return 65535;
   return static_cast<std::uint16_t>(ms);
 }

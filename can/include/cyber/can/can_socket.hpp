@@ -9,24 +9,10 @@
 #include <vector>
 
 #include "cyber/can/frame.hpp"
+#include "cyber/can/id_filter.hpp"
 #include "cyber/can/result.hpp"
 
 namespace cyber::can {
-
-// Receive frames whose id matches `id` on the bits of `mask`, in one format (data frames only).
-struct IdFilter {
-  std::uint32_t id = 0;
-  std::uint32_t mask = 0;
-  bool extended = true;
-
-  static IdFilter exact(std::uint32_t id, bool extended) {
-    return IdFilter{id, extended ? kExtendedIdMask : kStandardIdMask, extended};
-  }
-  bool operator==(const IdFilter&) const = default;
-};
-
-// What the daemon reads: the roboRIO heartbeat and broadcast disable (id 0 in both formats).
-std::vector<IdFilter> daemonReceiveFilters();
 
 struct SocketOptions {
   // nullopt: receive every data frame; an empty list: receive none.
@@ -63,6 +49,9 @@ struct IoResult {
   bool ok() const { return status == IoStatus::kOk; }
   std::string message() const;  // allocates: for logs, not for the streaming path
 };
+
+// The IoResult of a failed read()/write() with this errno.
+IoResult ioResultFromErrno(int error_number);
 
 class CanSocket {
  public:
