@@ -164,18 +164,17 @@ Result<LogRecord, LogParseError> parseLogLine(std::string_view line) {
   std::string_view rest = line;
   const std::string_view time_token = nextToken(rest);
   if (time_token.empty()) return fail("empty line");
+  auto time = parseTime(time_token);
+  if (!time) return time.error();
   const std::string_view iface = nextToken(rest);
   const std::string_view frame_token = nextToken(rest);
   if (frame_token.empty()) return fail("expected: (time) interface id#data");
+  if (iface.size() > kMaxIfaceLength) return fail("interface name longer than 15 characters");
   const std::string_view direction = nextToken(rest);
   if (!direction.empty() && direction != "T" && direction != "R") {
     return fail("unexpected text after the frame");
   }
   if (!nextToken(rest).empty()) return fail("unexpected text after the frame");
-  if (iface.size() > kMaxIfaceLength) return fail("interface name longer than 15 characters");
-
-  auto time = parseTime(time_token);
-  if (!time) return time.error();
   auto frame = parseFrame(frame_token);
   if (!frame) return frame.error();
   return LogRecord{time.value(), std::string(iface), frame.value()};

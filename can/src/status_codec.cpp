@@ -13,6 +13,17 @@ bool isDefinedMode(std::uint8_t mode) {
 }
 }  // namespace
 
+std::string_view toString(Mode mode) {
+  switch (mode) {
+    case Mode::kNoState: return "no-state";
+    case Mode::kHolding: return "holding";
+    case Mode::kMoving: return "moving";
+    case Mode::kFault: return "fault";
+    case Mode::kRobotDisabled: return "robot-disabled";
+  }
+  return "undefined";
+}
+
 std::uint16_t saturateTimeRemainingMs(double seconds) {
   if (!(seconds > 0.0)) return 0;  // also NaN
   // The 1e-6 ms slack keeps decimal inputs such as 0.85 s from rounding up to 851 ms.

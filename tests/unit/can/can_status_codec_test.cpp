@@ -26,6 +26,9 @@ TEST(StatusCodec, ModeNumbersAreTheContract) {
   EXPECT_EQ(static_cast<int>(Mode::kMoving), 2);
   EXPECT_EQ(static_cast<int>(Mode::kFault), 3);
   EXPECT_EQ(static_cast<int>(Mode::kRobotDisabled), 4);
+  EXPECT_EQ(toString(Mode::kMoving), "moving");
+  EXPECT_EQ(toString(Mode::kRobotDisabled), "robot-disabled");
+  EXPECT_EQ(toString(static_cast<Mode>(9)), "undefined");
 }
 
 TEST(StatusCodec, RandomStatusesRoundTrip) {

@@ -8,6 +8,7 @@
 //   byte 7    sequence number (wraps)
 
 #include <cstdint>
+#include <string_view>
 
 #include "cyber/can/codec_error.hpp"
 #include "cyber/can/frame.hpp"
@@ -25,6 +26,9 @@ enum class Mode : std::uint8_t {
   kFault = 3,          // stopped by a fault (fault bits say which)
   kRobotDisabled = 4,  // heartbeat says disabled, is stale, or a broadcast disable arrived
 };
+
+// "no-state", "holding", "moving", "fault", "robot-disabled".
+std::string_view toString(Mode mode);
 
 // Fault bits of byte 5. Bits 0x20, 0x40, 0x80 are reserved (sent as 0).
 namespace fault {
