@@ -163,6 +163,7 @@ TEST(LcmTypes, TrajectoryRoundTrip) {
 TEST(LcmTypes, FullTrajectoryStaysUnder60kB) {
   Values v(5);
   const arm_trajectory_t full = randomTrajectory(v, arm_trajectory_t::MAX_SAMPLES);
+  EXPECT_EQ(full.getEncodedSize(), 56052);  // docs/lcm.md quotes this number
   EXPECT_LT(full.getEncodedSize(), 60000);
   EXPECT_EQ(static_cast<int>(encode(full).size()), full.getEncodedSize());
 }
