@@ -27,7 +27,7 @@ args_for() {
     prepare) args=(--prepare) ;;
     smoke) args=(--auto --bin "$probe" --out "$out" --run tests/hil/vcan_smoke.sh) ;;
     failure_propagates) args=(--auto --out "$out" --run tests/hil/vcan_exit3.sh) ;;
-    script_timeout) args=(--auto --timeout 60 --script-timeout 3 --out "$out" --run tests/hil/vcan_hang.sh) ;;
+    script_timeout) args=(--auto --timeout 90 --script-timeout 3 --out "$out" --run tests/hil/vcan_hang.sh) ;;
     host_mode)
       args=(--vm --bin /usr/bin/bash --bin /usr/bin/unshare --bin /usr/bin/timeout --bin /usr/bin/setpriv
         --bin "$probe" --file tools/vcan-vm --file tests/hil/vcan_smoke.sh --file tests/hil/vcan_exit3.sh

@@ -14,7 +14,7 @@ wait_for_frame() {
   tries=0
   until grep -qs " $CAN_IFACE $1\$" "$log"; do
     tries=$((tries + 1))
-    if [ "$tries" -gt 200 ]; then
+    if [ "$tries" -gt 600 ]; then
       echo "smoke: $1 never reached the capture" >&2
       exit 1
     fi
