@@ -12,8 +12,9 @@ source "$(dirname "$0")/lib.sh"
 record='lcm-logger --channel='"'"'ARM_.*'"'"' --force arm-session.lcmlog'
 replay='lcm-logplayer arm-session.lcmlog'
 replay_some='lcm-logplayer --speed=4 --regexp='"'"'ARM_(SETPOINT|TRAJECTORY)'"'"' arm-session.lcmlog'
+replay_aside='lcm-logplayer --lcm-url='"'"'udpm://239.255.76.67:7668?ttl=0'"'"' arm-session.lcmlog'
 if [[ ${1:-} == --print-doc-commands ]]; then
-  printf '%s\n' "$record" "$replay" "$replay_some"
+  printf '%s\n' "$record" "$replay" "$replay_some" "$replay_aside"
   exit 0
 fi
 [[ $# -eq 1 ]] || { echo "usage: $0 BUILD_DIR | --print-doc-commands" >&2; exit 2; }
@@ -28,9 +29,10 @@ mkdir -p "$work"
 cd "$work"
 channels=(ARM_DAEMON_STATUS ARM_GOAL ARM_PLAN_STATUS ARM_SETPOINT ARM_STATE ARM_TRAJECTORY)
 
-# Starts the listener in the background (counts go to $1) and waits until it is subscribed.
+# Starts a listener in the background (counts go to $1, for at most $2 s, on URL $3 or $url)
+# and waits until it is subscribed; its pid is $listener.
 start_listener() {
-  "$traffic" listen --lcm-url "$url" --duration-s "$2" --quiet-s 1 >"$1" &
+  "$traffic" listen --lcm-url "${3:-$url}" --duration-s "$2" --quiet-s 1 >"$1" &
   listener=$!
   for _ in $(seq 100); do
     grep -qx listening "$1" && return 0
@@ -82,5 +84,20 @@ for channel in "${channels[@]}"; do
     ARM_SETPOINT|ARM_TRAJECTORY) ((n >= 20)) || fail "$channel: only $n messages replayed" ;;
     *) ((n == 0)) || fail "$channel: $n messages replayed although --regexp leaves it out" ;;
   esac
+done
+# 4. Replay on another port: all of it arrives there, nothing on the default URL.
+aside_url='udpm://239.255.76.67:7668?ttl=0'
+start_listener default.counts 6
+default_listener=$listener
+start_listener aside.counts 20 "$aside_url"
+run_shown "$replay_aside"
+wait "$listener"
+wait "$default_listener"
+cat aside.counts
+for channel in "${channels[@]}"; do
+  n=$(received aside.counts "$channel")
+  ((n >= 20)) || fail "$channel: only $n messages replayed on $aside_url"
+  n=$(received default.counts "$channel")
+  ((n == 0)) || fail "$channel: $n messages reached the default URL during a replay on $aside_url"
 done
 echo "lcm_record_replay: recorded and replayed all six channels"
