@@ -16,7 +16,9 @@ source "$(dirname "$0")/lib.sh"
 
 max_exposure=2.5
 commands() {
-  stage_install='DESTDIR="$PWD/'$build'/stage" cmake --install '$build' --prefix /usr'
+  local root='$PWD/'$build
+  [[ $build == /* ]] && root=$build  # a build dir outside the source tree
+  stage_install='DESTDIR="'$root'/stage" cmake --install '$build' --prefix /usr'
   security='systemd-analyze security --offline=yes systemd/cyber-planner.service'
 }
 if [[ ${1:-} == --print-doc-commands ]]; then
