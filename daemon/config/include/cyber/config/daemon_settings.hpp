@@ -1,0 +1,39 @@
+#pragma once
+// The [daemon] section: how the daemon talks to LCM and CAN and how fast it streams.
+
+#include <string>
+
+namespace cyber::config {
+
+struct DeviceNumbers {
+  int elevator = 1;  // setpoint frames of the elevator controller
+  int arm = 2;       // setpoint frames of the arm controller
+  int status = 3;    // the daemon's own status frame
+};
+
+struct ChannelNames {
+  std::string goal = "ARM_GOAL";
+  std::string state = "ARM_STATE";
+  std::string plan_status = "ARM_PLAN_STATUS";
+  std::string trajectory = "ARM_TRAJECTORY";
+  std::string setpoint = "ARM_SETPOINT";
+  std::string daemon_status = "ARM_DAEMON_STATUS";
+};
+
+struct DaemonSettings {
+  std::string lcm_url = "udpm://239.255.76.67:7667?ttl=0";
+  std::string can_interface = "can0";
+  double stream_rate_hz = 200.0;
+  double state_timeout_s = 0.25;       // ARM_STATE older than this is stale: no motion
+  double heartbeat_timeout_s = 0.1;    // robot-enabled gate (design.md: 100 ms)
+  bool require_robot_enabled = true;   // false only for bench use without a roboRIO
+  double planning_budget_s = 0.03;     // how far ahead a mid-motion replan starts
+  double status_rate_hz = 10.0;
+  double setpoint_echo_rate_hz = 50.0; // ARM_SETPOINT copies for lcm-spy
+  double trajectory_step_s = 0.01;     // ARM_TRAJECTORY sample step
+  std::string log_level = "info";
+  DeviceNumbers devices;
+  ChannelNames channels;
+};
+
+}  // namespace cyber::config

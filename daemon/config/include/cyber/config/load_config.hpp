@@ -1,0 +1,38 @@
+#pragma once
+// Loading the TOML robot description. Start-up only: errors are exceptions that name the key.
+
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include "cyber/config/daemon_settings.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::config {
+
+struct Config {
+  planner::RobotModel robot;
+  DaemonSettings daemon;
+};
+
+// Thrown for any invalid configuration; what() reads "<source>: <key>: <problem>".
+class ConfigError : public std::runtime_error {
+ public:
+  ConfigError(std::string key, const std::string& message)
+      : std::runtime_error(message), key_(std::move(key)) {}
+  [[nodiscard]] const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
+// Parses TOML text; `source_name` only labels messages.
+Config parseConfig(std::string_view toml_text, std::string_view source_name);
+// Reads and parses a file.
+Config loadConfigFile(const std::string& path);
+// The reference robot, compiled into the binary from config/reefscape-2025.toml.
+std::string_view embeddedDefaultConfig();
+std::string_view embeddedDefaultConfigName();
+Config loadEmbeddedDefaultConfig();
+
+}  // namespace cyber::config

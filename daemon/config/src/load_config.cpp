@@ -1,0 +1,270 @@
+#include "cyber/config/load_config.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "table_reader.hpp"
+
+namespace cyber::config {
+namespace {
+
+using detail::Bounds;
+using detail::kNonNegative;
+using detail::kPositive;
+using detail::TableReader;
+using planner::RobotModel;
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+void readJoints(TableReader joints, RobotModel& robot) {
+  TableReader elevator = joints.table("elevator");
+  robot.elevator_range_m.min = elevator.number("min_m");
+  robot.elevator_range_m.max = elevator.number("max_m", Bounds{robot.elevator_range_m.min, 1e300, true});
+  robot.rail.tilt_rad = elevator.number("tilt_deg", Bounds{-180.0, 180.0}) * kDegToRad;
+  robot.rail.base_m = elevator.vector2("base_m");
+  elevator.finish();
+
+  TableReader arm = joints.table("arm");
+  robot.arm_range_rad.min = arm.number("min_rad");
+  robot.arm_range_rad.max = arm.number("max_rad", Bounds{robot.arm_range_rad.min, 1e300, true});
+  if (robot.arm_range_rad.max - robot.arm_range_rad.min > 2.0 * std::numbers::pi + 1e-9) {
+    arm.fail("max_rad", "the arm range may span at most one turn (no wrap-around)");
+  }
+  arm.finish();
+  joints.finish();
+}
+
+void readRobot(TableReader robot_table, RobotModel& robot) {
+  robot.geometry.arm = robot_table.polygons("arm");
+  if (robot_table.has("coral")) robot.geometry.coral = robot_table.polygons("coral");
+  if (robot_table.has("algae")) robot.geometry.algae = robot_table.polygons("algae");
+  robot_table.finish();
+}
+
+void readScenes(TableReader& root, const std::map<std::string, planner::ConvexPolygon>& obstacles,
+                RobotModel& robot) {
+  const toml::array& scenes = root.array("scenes");
+  if (scenes.empty()) root.fail("scenes", "expected at least one scene");
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    const std::string path = "scenes[" + std::to_string(i) + "]";
+    TableReader scene = detail::tableAt(scenes[i], path);
+    planner::Scene out;
+    out.name = scene.string("name");
+    if (out.name.empty()) scene.fail("name", "must not be empty");
+    if (robot.sceneIndex(out.name) >= 0) scene.fail("name", "duplicate scene name \"" + out.name + "\"");
+    for (const std::string& name : scene.strings("obstacles")) {
+      const auto it = obstacles.find(name);
+      if (it == obstacles.end()) scene.fail("obstacles", "unknown obstacle \"" + name + "\"");
+      out.obstacles.push_back({name, it->second});
+    }
+    scene.finish();
+    robot.scenes.push_back(std::move(out));
+  }
+}
+
+planner::MotorParams readMotor(TableReader motor) {
+  planner::MotorParams m;
+  m.nominal_voltage_volts = motor.number("nominal_voltage_volts", kPositive);
+  m.stall_torque_nm = motor.number("stall_torque_nm", kPositive);
+  m.stall_current_amps = motor.number("stall_current_amps", kPositive);
+  m.free_current_amps = motor.number("free_current_amps", Bounds{0.0, m.stall_current_amps, false});
+  m.free_speed_radps = motor.number("free_speed_rpm", kPositive) * 2.0 * std::numbers::pi / 60.0;
+  motor.finish();
+  return m;
+}
+
+planner::DriveParams readDrive(TableReader drive, const std::map<std::string, planner::MotorParams>& motors,
+                               planner::GravityModel expected_gravity) {
+  planner::DriveParams d;
+  const std::string motor = drive.string("motor");
+  const auto it = motors.find(motor);
+  if (it == motors.end()) drive.fail("motor", "unknown motor \"" + motor + "\" (define it under [motors])");
+  d.motor = it->second;
+  d.motor_count = static_cast<int>(drive.integer("count", 1, 16));
+  d.gearing = drive.number("gearing", kPositive);
+  const std::string gravity = drive.string("gravity");
+  if (gravity == "constant") {
+    d.gravity = planner::GravityModel::kConstant;
+  } else if (gravity == "cosine") {
+    d.gravity = planner::GravityModel::kCosine;
+  } else {
+    drive.fail("gravity", "expected \"constant\" or \"cosine\", got \"" + gravity + "\"");
+  }
+  if (d.gravity != expected_gravity) {
+    drive.fail("gravity", expected_gravity == planner::GravityModel::kConstant
+                              ? "the elevator carries a constant gravity load: use \"constant\""
+                              : "the arm's gravity load varies with its angle: use \"cosine\"");
+  }
+  d.kS_volts = drive.number("kS_volts", kNonNegative);
+  d.kG_volts = drive.number("kG_volts");
+  d.kV = drive.number("kV", kPositive);
+  d.kA = drive.number("kA", kPositive);
+  d.voltage_limit_volts = drive.number("voltage_limit_volts", Bounds{0.0, d.motor.nominal_voltage_volts * 2.0, true});
+  d.current_limit_amps = drive.number("current_limit_amps", Bounds{0.0, d.motor.stall_current_amps, true});
+  d.velocity_limit = drive.optionalNumber("velocity_limit", kPositive);
+  d.acceleration_limit = drive.optionalNumber("acceleration_limit", kPositive);
+  // The mechanism must be able to hold itself against gravity within both limits.
+  if (std::abs(d.kS_volts) + std::abs(d.kG_volts) >= d.voltage_limit_volts) {
+    drive.fail("voltage_limit_volts", "must exceed kS_volts + |kG_volts| or the joint cannot hold against gravity");
+  }
+  if ((std::abs(d.kS_volts) + std::abs(d.kG_volts)) / d.motor.resistanceOhms() >= d.current_limit_amps) {
+    drive.fail("current_limit_amps", "too small to hold the joint against gravity (kG / R)");
+  }
+  drive.finish();
+  return d;
+}
+
+void readPlanner(TableReader p, planner::PlannerSettings& s) {
+  s.metric = p.vector2("metric", kPositive);
+  {
+    TableReader g = p.table("grid");
+    s.grid.elevator_step_m = g.number("elevator_step_m", Bounds{1e-4, 0.5});
+    s.grid.arm_step_rad = g.number("arm_step_rad", Bounds{1e-4, 0.5});
+    g.finish();
+  }
+  {
+    TableReader g = p.table("search");
+    s.search.potential_weight = g.number("potential_weight", kNonNegative);
+    s.search.potential_range = g.number("potential_range", kPositive);
+    g.finish();
+  }
+  {
+    TableReader g = p.table("smoothing");
+    s.smoothing.waypoint_spacing = g.number("waypoint_spacing", Bounds{1e-3, 1.0});
+    s.smoothing.obstacle_weight = g.number("obstacle_weight", kNonNegative);
+    s.smoothing.obstacle_decay_m = g.number("obstacle_decay_m", kPositive);
+    s.smoothing.prior_weight = g.number("prior_weight", kNonNegative);
+    s.smoothing.length_weight = g.number("length_weight", kNonNegative);
+    s.smoothing.smoothness_weight = g.number("smoothness_weight", kNonNegative);
+    s.smoothing.max_iterations = static_cast<int>(g.integer("max_iterations", 0, 100000));
+    s.smoothing.gradient_tolerance = g.number("gradient_tolerance", kPositive);
+    g.finish();
+  }
+  {
+    TableReader g = p.table("topp");
+    s.topp.grid_points = static_cast<int>(g.integer("grid_points", 8, 100000));
+    s.topp.primal_tolerance = g.number("primal_tolerance", kPositive);
+    s.topp.dual_tolerance = g.number("dual_tolerance", kPositive);
+    s.topp.max_outer_iterations = static_cast<int>(g.integer("max_outer_iterations", 1, 100000));
+    s.topp.max_inner_iterations = static_cast<int>(g.integer("max_inner_iterations", 1, 1000000));
+    s.topp.limit_check_step_s = g.number("limit_check_step_s", Bounds{1e-5, 0.01});
+    g.finish();
+  }
+  p.finish();
+}
+
+DaemonSettings readDaemon(TableReader d) {
+  DaemonSettings s;
+  s.lcm_url = d.string("lcm_url");
+  s.can_interface = d.string("can_interface");
+  if (s.can_interface.empty() || s.can_interface.size() > 15) {
+    d.fail("can_interface", "an interface name of 1 to 15 characters, e.g. \"can0\"");
+  }
+  s.stream_rate_hz = d.number("stream_rate_hz", Bounds{1.0, 1000.0});
+  s.state_timeout_s = d.number("state_timeout_s", Bounds{0.001, 10.0});
+  s.heartbeat_timeout_s = d.number("heartbeat_timeout_s", Bounds{0.001, 10.0});
+  s.require_robot_enabled = d.boolean("require_robot_enabled");
+  s.planning_budget_s = d.number("planning_budget_s", Bounds{0.0, 1.0});
+  s.status_rate_hz = d.number("status_rate_hz", Bounds{0.1, 100.0});
+  s.setpoint_echo_rate_hz = d.number("setpoint_echo_rate_hz", Bounds{0.1, 1000.0});
+  s.trajectory_step_s = d.number("trajectory_step_s", Bounds{0.001, 1.0});
+  s.log_level = d.string("log_level");
+  static const char* kLevels[] = {"trace", "debug", "info", "warn", "error", "critical", "off"};
+  if (std::find(std::begin(kLevels), std::end(kLevels), s.log_level) == std::end(kLevels)) {
+    d.fail("log_level", "expected one of trace, debug, info, warn, error, critical, off");
+  }
+  {
+    TableReader dev = d.table("devices");
+    // FRC CAN device numbers are 6 bits; 63 is the broadcast device.
+    s.devices.elevator = static_cast<int>(dev.integer("elevator", 0, 62));
+    s.devices.arm = static_cast<int>(dev.integer("arm", 0, 62));
+    s.devices.status = static_cast<int>(dev.integer("status", 0, 62));
+    if (s.devices.elevator == s.devices.arm || s.devices.status == s.devices.arm ||
+        s.devices.status == s.devices.elevator) {
+      dev.fail("status", "elevator, arm and status device numbers must differ");
+    }
+    dev.finish();
+  }
+  {
+    TableReader ch = d.table("channels");
+    for (auto [key, field] : {std::pair{"goal", &s.channels.goal}, std::pair{"state", &s.channels.state},
+                              std::pair{"plan_status", &s.channels.plan_status},
+                              std::pair{"trajectory", &s.channels.trajectory}, std::pair{"setpoint", &s.channels.setpoint},
+                              std::pair{"daemon_status", &s.channels.daemon_status}}) {
+      *field = ch.string(key);
+      if (field->empty()) ch.fail(key, "channel name must not be empty");
+    }
+    ch.finish();
+  }
+  d.finish();
+  return s;
+}
+
+Config readRoot(const toml::table& root_table) {
+  Config config;
+  RobotModel& robot = config.robot;
+  TableReader root(root_table, "");
+  robot.name = root.string("name");
+  robot.clearance_m = root.number("clearance_m", Bounds{0.0, 1.0});
+  readJoints(root.table("joints"), robot);
+  readRobot(root.table("robot"), robot);
+
+  std::map<std::string, planner::ConvexPolygon> obstacles;
+  {
+    TableReader t = root.table("obstacles");
+    for (const std::string& name : t.keys()) obstacles.emplace(name, t.polygon(name));
+    t.finish();
+  }
+  readScenes(root, obstacles, robot);
+
+  std::map<std::string, planner::MotorParams> motors;
+  {
+    TableReader t = root.table("motors");
+    for (const std::string& name : t.keys()) motors.emplace(name, readMotor(t.table(name)));
+    if (motors.empty()) t.fail("", "define at least one motor");
+    t.finish();
+  }
+  {
+    TableReader drives = root.table("drives");
+    robot.elevator_drive = readDrive(drives.table("elevator"), motors, planner::GravityModel::kConstant);
+    robot.arm_drive = readDrive(drives.table("arm"), motors, planner::GravityModel::kCosine);
+    drives.finish();
+  }
+  readPlanner(root.table("planner"), robot.planner);
+  config.daemon = readDaemon(root.table("daemon"));
+  root.finish();
+  return config;
+}
+
+}  // namespace
+
+Config parseConfig(std::string_view toml_text, std::string_view source_name) {
+  toml::table root;
+  try {
+    root = toml::parse(toml_text, source_name);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream out;
+    out << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw ConfigError("", out.str());
+  }
+  try {
+    return readRoot(root);
+  } catch (const ConfigError& e) {
+    throw ConfigError(e.key(), std::string(source_name) + ": " + e.what());
+  }
+}
+
+Config loadConfigFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw ConfigError("", path + ": cannot open the configuration file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseConfig(text.str(), path);
+}
+
+Config loadEmbeddedDefaultConfig() { return parseConfig(embeddedDefaultConfig(), embeddedDefaultConfigName()); }
+
+}  // namespace cyber::config

@@ -1,0 +1,149 @@
+#include "table_reader.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace cyber::config::detail {
+namespace {
+
+[[noreturn]] void failAt(const std::string& path, const std::string& problem) {
+  throw ConfigError(path, path + ": " + problem);
+}
+
+std::string describe(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+double numberFrom(const toml::node& node, const std::string& path, Bounds bounds) {
+  if (!node.is_number()) failAt(path, "expected a number");
+  const double x = node.is_integer() ? static_cast<double>(*node.value<int64_t>()) : *node.value<double>();
+  if (!std::isfinite(x)) failAt(path, "must be a finite number, got " + describe(x));
+  const bool below = bounds.min_exclusive ? x <= bounds.min : x < bounds.min;
+  if (below || x > bounds.max) {
+    std::string range = bounds.min_exclusive ? "> " + describe(bounds.min) : ">= " + describe(bounds.min);
+    if (bounds.max < 1e300) range += " and <= " + describe(bounds.max);
+    failAt(path, "out of range: must be " + range + ", got " + describe(x));
+  }
+  return x;
+}
+
+Eigen::Vector2d pointFrom(const toml::node& node, const std::string& path, Bounds bounds = kAny) {
+  const toml::array* a = node.as_array();
+  if (a == nullptr || a->size() != 2) failAt(path, "expected a pair [x, y] of numbers");
+  return {numberFrom((*a)[0], path + "[0]", bounds), numberFrom((*a)[1], path + "[1]", bounds)};
+}
+
+}  // namespace
+
+TableReader::TableReader(const toml::table& table, std::string path) : table_(table), path_(std::move(path)) {}
+
+std::string TableReader::pathOf(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+void TableReader::fail(const std::string& key, const std::string& problem) const { failAt(pathOf(key), problem); }
+
+const toml::node& TableReader::require(const std::string& key) {
+  const toml::node* node = table_.get(key);
+  if (node == nullptr) fail(key, "missing key");
+  used_.insert(key);
+  return *node;
+}
+
+double TableReader::number(const std::string& key, Bounds bounds) {
+  return numberFrom(require(key), pathOf(key), bounds);
+}
+
+std::optional<double> TableReader::optionalNumber(const std::string& key, Bounds bounds) {
+  if (!has(key)) return std::nullopt;
+  return number(key, bounds);
+}
+
+long long TableReader::integer(const std::string& key, long long min, long long max) {
+  const toml::node& node = require(key);
+  if (!node.is_integer()) fail(key, "expected an integer");
+  const long long x = *node.value<int64_t>();
+  if (x < min || x > max) {
+    fail(key, "out of range: must be in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                  std::to_string(x));
+  }
+  return x;
+}
+
+bool TableReader::boolean(const std::string& key) {
+  const toml::node& node = require(key);
+  if (!node.is_boolean()) fail(key, "expected true or false");
+  return *node.value<bool>();
+}
+
+std::string TableReader::string(const std::string& key) {
+  const toml::node& node = require(key);
+  if (!node.is_string()) fail(key, "expected a string");
+  return *node.value<std::string>();
+}
+
+std::vector<std::string> TableReader::strings(const std::string& key) {
+  const toml::array& a = array(key);
+  std::vector<std::string> out;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (!a[i].is_string()) fail(key, "element " + std::to_string(i) + " must be a string");
+    out.push_back(*a[i].value<std::string>());
+  }
+  return out;
+}
+
+Eigen::Vector2d TableReader::vector2(const std::string& key, Bounds bounds) {
+  return pointFrom(require(key), pathOf(key), bounds);
+}
+
+const toml::array& TableReader::array(const std::string& key) {
+  const toml::array* a = require(key).as_array();
+  if (a == nullptr) fail(key, "expected an array");
+  return *a;
+}
+
+std::vector<planner::ConvexPolygon> TableReader::polygons(const std::string& key) {
+  const toml::array& list = array(key);
+  if (list.empty()) fail(key, "expected at least one polygon");
+  std::vector<planner::ConvexPolygon> out;
+  for (size_t i = 0; i < list.size(); ++i) out.push_back(polygonFrom(list[i], pathOf(key) + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+planner::ConvexPolygon TableReader::polygon(const std::string& key) { return polygonFrom(require(key), pathOf(key)); }
+
+TableReader TableReader::table(const std::string& key) { return tableAt(require(key), pathOf(key)); }
+
+std::vector<std::string> TableReader::keys() {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : table_) {
+    out.emplace_back(k.str());
+  }
+  return out;
+}
+
+void TableReader::finish() const {
+  for (const auto& [k, v] : table_) {
+    const std::string key(k.str());
+    if (!used_.contains(key)) fail(key, "unknown key");
+  }
+}
+
+TableReader tableAt(const toml::node& node, const std::string& path) {
+  const toml::table* t = node.as_table();
+  if (t == nullptr) failAt(path, "expected a table");
+  return TableReader(*t, path);
+}
+
+planner::ConvexPolygon polygonFrom(const toml::node& node, const std::string& path) {
+  const toml::array* a = node.as_array();
+  if (a == nullptr) failAt(path, "expected a polygon: an array of [x, y] vertices");
+  std::vector<planner::Point2> vertices;
+  for (size_t i = 0; i < a->size(); ++i) vertices.push_back(pointFrom((*a)[i], path + "[" + std::to_string(i) + "]"));
+  std::string why;
+  planner::ConvexPolygon polygon = planner::ConvexPolygon::fromVertices(std::move(vertices), &why);
+  if (polygon.empty()) failAt(path, why);
+  return polygon;
+}
+
+}  // namespace cyber::config::detail

@@ -1,0 +1,64 @@
+#pragma once
+// Strict reading of one TOML table: every key read is remembered, so finish() can reject the
+// keys nobody asked for. All problems throw ConfigError naming the full key path.
+
+#include <toml++/toml.h>
+
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cyber/config/load_config.hpp"
+
+namespace cyber::config::detail {
+
+struct Bounds {
+  double min = -1e300;
+  double max = 1e300;
+  bool min_exclusive = false;
+};
+inline constexpr Bounds kPositive{0.0, 1e300, true};
+inline constexpr Bounds kNonNegative{0.0, 1e300, false};
+inline constexpr Bounds kAny{};
+
+class TableReader {
+ public:
+  TableReader(const toml::table& table, std::string path);
+
+  [[nodiscard]] double number(const std::string& key, Bounds bounds = kAny);
+  [[nodiscard]] std::optional<double> optionalNumber(const std::string& key, Bounds bounds = kAny);
+  [[nodiscard]] long long integer(const std::string& key, long long min, long long max);
+  [[nodiscard]] bool boolean(const std::string& key);
+  [[nodiscard]] std::string string(const std::string& key);
+  [[nodiscard]] std::vector<std::string> strings(const std::string& key);
+  // A 2-vector [x, y] of finite numbers.
+  [[nodiscard]] Eigen::Vector2d vector2(const std::string& key, Bounds bounds = kAny);
+  // A list of convex polygons [[[x, y], ...], ...] (at least one).
+  [[nodiscard]] std::vector<planner::ConvexPolygon> polygons(const std::string& key);
+  // One convex polygon [[x, y], ...].
+  [[nodiscard]] planner::ConvexPolygon polygon(const std::string& key);
+  [[nodiscard]] bool has(const std::string& key) const { return table_.contains(key); }
+  [[nodiscard]] TableReader table(const std::string& key);
+  [[nodiscard]] const toml::array& array(const std::string& key);
+  // Every key of this table, for tables whose keys are names (obstacles, motors).
+  [[nodiscard]] std::vector<std::string> keys();
+
+  // Rejects keys that were never read.
+  void finish() const;
+
+  [[nodiscard]] std::string pathOf(const std::string& key) const;
+  [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+
+ private:
+  const toml::node& require(const std::string& key);
+
+  const toml::table& table_;
+  std::string path_;
+  std::set<std::string> used_;
+};
+
+TableReader tableAt(const toml::node& node, const std::string& path);
+planner::ConvexPolygon polygonFrom(const toml::node& node, const std::string& path);
+
+}  // namespace cyber::config::detail

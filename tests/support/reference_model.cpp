@@ -1,0 +1,22 @@
+#include "reference_model.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "cyber/config/load_config.hpp"
+
+namespace cyber::test {
+
+const planner::RobotModel& referenceModel() {
+  static const planner::RobotModel model = [] {
+    try {
+      return config::loadEmbeddedDefaultConfig().robot;
+    } catch (const config::ConfigError& e) {
+      std::fprintf(stderr, "embedded default configuration is invalid: %s\n", e.what());
+      std::abort();
+    }
+  }();
+  return model;
+}
+
+}  // namespace cyber::test

@@ -1,0 +1,153 @@
+// The TOML loader: the reference robot loads with its exact numbers, and every kind of bad file
+// fails at load with a message that names the key and the problem.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <string>
+
+#include "cyber/config/load_config.hpp"
+
+namespace cyber::config {
+namespace {
+
+std::string defaultText() { return std::string(embeddedDefaultConfig()); }
+
+// Replaces the first occurrence of `from` (which must exist) in the default text.
+std::string mutated(const std::string& from, const std::string& to) {
+  std::string text = defaultText();
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "fixture text not found: " << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(LoadConfig, EmbeddedDefaultIsTheReferenceRobot) {
+  const Config config = loadEmbeddedDefaultConfig();
+  const planner::RobotModel& r = config.robot;
+  EXPECT_EQ(r.name, "reefscape-2025");
+  EXPECT_DOUBLE_EQ(r.clearance_m, 0.03);
+  EXPECT_DOUBLE_EQ(r.elevator_range_m.max, 2.0);
+  EXPECT_DOUBLE_EQ(r.arm_range_rad.max, 6.108652381980153);
+  EXPECT_NEAR(r.rail.tilt_rad, 80.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(r.rail.base_m, planner::Point2(-0.4, 0.2));
+  ASSERT_EQ(r.geometry.arm.size(), 1u);
+  EXPECT_EQ(r.geometry.arm[0].size(), 4);
+  EXPECT_EQ(r.geometry.algae[0].size(), 8);
+  ASSERT_EQ(r.scenes.size(), 2u);
+  EXPECT_EQ(r.scenes[0].name, "reef");
+  EXPECT_EQ(r.scenes[0].obstacles.size(), 8u);
+  // Robot polygons are clockwise in the file; the model stores them counter-clockwise.
+  const auto& v = r.geometry.arm[0].vertices();
+  double twice_area = 0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const auto& a = v[i];
+    const auto& b = v[(i + 1) % v.size()];
+    twice_area += a.x() * b.y() - a.y() * b.x();
+  }
+  EXPECT_NEAR(twice_area, 2 * 0.45 * 0.15, 1e-12);  // trapezoid of heights 0.1 and 0.2 over 0.45 m
+
+  const planner::DriveParams& e = r.elevator_drive;
+  EXPECT_EQ(e.motor_count, 2);
+  EXPECT_DOUBLE_EQ(e.gearing, 200.0);
+  EXPECT_DOUBLE_EQ(e.kV, 3.93);
+  EXPECT_DOUBLE_EQ(e.current_limit_amps, 80.0);
+  EXPECT_EQ(e.gravity, planner::GravityModel::kConstant);
+  EXPECT_EQ(r.arm_drive.gravity, planner::GravityModel::kCosine);
+  // Derived motor constants of the Kraken X60 FOC as WPILib gives them.
+  EXPECT_NEAR(e.motor.resistanceOhms(), 12.0 / 483.0, 1e-15);
+  EXPECT_NEAR(e.motor.kvRadpsPerVolt(), (5800.0 * 2 * std::numbers::pi / 60.0) / (12.0 - 2.0 * 12.0 / 483.0), 1e-9);
+  EXPECT_FALSE(e.velocity_limit.has_value());
+
+  EXPECT_EQ(config.daemon.devices.elevator, 1);
+  EXPECT_EQ(config.daemon.channels.goal, "ARM_GOAL");
+  EXPECT_DOUBLE_EQ(config.daemon.stream_rate_hz, 200.0);
+  EXPECT_DOUBLE_EQ(config.daemon.heartbeat_timeout_s, 0.1);
+}
+
+TEST(LoadConfig, LoadsTheSameFromAFile) {
+  const std::string path = ::testing::TempDir() + "/robot.toml";
+  {
+    std::ofstream out(path);
+    out << defaultText();
+  }
+  const Config config = loadConfigFile(path);
+  EXPECT_EQ(config.robot.name, "reefscape-2025");
+  std::remove(path.c_str());
+}
+
+TEST(LoadConfig, MissingFileIsAnError) {
+  try {
+    (void)loadConfigFile("/nonexistent/robot.toml");
+    FAIL() << "expected ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot open"), std::string::npos) << e.what();
+  }
+}
+
+struct BadCase {
+  const char* name;
+  const char* from;
+  const char* to;
+  const char* key;      // must appear in the message
+  const char* problem;  // must appear in the message
+};
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class BadConfig : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadConfig, FailsNamingKeyAndProblem) {
+  const BadCase& c = GetParam();
+  try {
+    (void)parseConfig(mutated(c.from, c.to), "robot.toml");
+    FAIL() << "expected ConfigError for " << c.name;
+  } catch (const ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(c.key), std::string::npos) << message;
+    EXPECT_NE(message.find(c.problem), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("robot.toml", 0), 0u) << message;
+  }
+}
+
+const BadCase kBadCases[] = {
+    {"UnknownTopKey", "clearance_m = 0.03", "clearance_m = 0.03\nclearence = 1", "clearence", "unknown key"},
+    {"UnknownNestedKey", "kS_volts = 0.15", "kS_volts = 0.15\nks = 0.1", "drives.elevator.ks", "unknown key"},
+    {"MissingKey", "clearance_m = 0.03\n", "", "clearance_m", "missing key"},
+    {"MissingNestedKey", "tilt_deg = 80.0\n", "", "joints.elevator.tilt_deg", "missing key"},
+    {"WrongType", "clearance_m = 0.03", "clearance_m = \"thin\"", "clearance_m", "expected a number"},
+    {"WrongTypeInteger", "count = 2", "count = 2.5", "drives.elevator.count", "expected an integer"},
+    {"NotANumber", "kV = 3.93", "kV = nan", "drives.elevator.kV", "finite"},
+    {"Infinite", "max_m = 2.0", "max_m = inf", "joints.elevator.max_m", "finite"},
+    {"NegativeClearance", "clearance_m = 0.03", "clearance_m = -0.01", "clearance_m", "out of range"},
+    {"InvertedRange", "max_m = 2.0", "max_m = -1.0", "joints.elevator.max_m", "out of range"},
+    {"ZeroGearing", "gearing = 200.0", "gearing = 0.0", "drives.elevator.gearing", "out of range"},
+    {"StreamRate", "stream_rate_hz = 200.0", "stream_rate_hz = 0.0", "daemon.stream_rate_hz", "out of range"},
+    {"DeviceNumber", "elevator = 1\n", "elevator = 64\n", "daemon.devices.elevator", "out of range"},
+    {"NonConvex", "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.248, 0.514], [0.0, 0.454]]",
+     "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.1, 0.1], [0.248, 0.514], [0.0, 0.454]]", "obstacles.l1_trough",
+     "not convex"},
+    {"TwoVertices", "l4_post = [[0.03, 1.637], [0.072, 1.637], [0.072, 1.81], [0.03, 1.81]]",
+     "l4_post = [[0.03, 1.637], [0.072, 1.637]]", "obstacles.l4_post", "at least 3 vertices"},
+    {"BadVertex", "[0.25, 0.1], [0.25, -0.1]", "[0.25, 0.1, 0.3], [0.25, -0.1]", "robot.arm[0][1]", "pair"},
+    {"EmptyRobot", "arm = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "arm = []",
+     "robot.arm", "at least one polygon"},
+    {"UnknownObstacleInScene", "obstacles = [\"drivetrain_keepout\", \"floor\"]",
+     "obstacles = [\"drivetrain_keepout\", \"flor\"]", "scenes[1].obstacles", "unknown obstacle \"flor\""},
+    {"UnknownMotor", "motor = \"kraken_x60_foc\"", "motor = \"neo\"", "drives.elevator.motor", "unknown motor"},
+    {"WrongGravity", "gravity = \"cosine\"", "gravity = \"constant\"", "drives.arm.gravity", "cosine"},
+    {"CannotHold", "current_limit_amps = 60.0", "current_limit_amps = 0.5", "drives.arm.current_limit_amps",
+     "hold"},
+    {"BadLogLevel", "log_level = \"info\"", "log_level = \"loud\"", "daemon.log_level", "expected one of"},
+    {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
+    {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, BadConfig, ::testing::ValuesIn(kBadCases),
+                         [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace cyber::config

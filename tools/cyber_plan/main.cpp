@@ -1,0 +1,86 @@
+// cyber-plan: plans one move with the planner core and writes what design.md promises.
+// Exit status: 0 planned, 2 bad input, 3 no feasible motion; a one-line reason on stderr.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/planner/motion_planner.hpp"
+#include "plan_arguments.hpp"
+#include "plan_output.hpp"
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::fprintf(stderr, "cyber-plan: %s\n", message.c_str());
+  return code;
+}
+
+std::string poseText(const cyber::planner::JointVector& q) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.3f m, %.3f rad)", q[0], q[1]);
+  return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cyber;
+  std::string error;
+  const auto args = tools::parsePlanArguments(std::vector<std::string>(argv + 1, argv + argc), &error);
+  if (!args) return fail(2, error);
+  if (args->help) {
+    std::fputs(tools::planUsage(), stdout);
+    return 0;
+  }
+
+  config::Config config;
+  try {
+    config = args->config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args->config_path);
+  } catch (const config::ConfigError& e) {
+    return fail(2, e.what());
+  }
+  const planner::RobotModel& robot = config.robot;
+  int scene = 0;
+  if (!args->scene.empty()) {
+    scene = robot.sceneIndex(args->scene);
+    if (scene < 0) return fail(2, "unknown scene \"" + args->scene + "\"");
+  }
+
+  auto planner = planner::MotionPlanner::create(robot);
+  if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().reason);
+
+  planner::PlanRequest request;
+  request.start = args->from;
+  request.goal = args->to;
+  request.start_velocity = args->from_velocity;
+  request.pieces = args->pieces;
+  request.scene = scene;
+  const auto plan = planner.value().plan(request);
+  if (!plan) {
+    return fail(planner::exitCodeOf(plan.status()),
+                std::string(planner::toString(plan.status())) + ": " + plan.error().reason);
+  }
+
+  if (!args->csv_path.empty() && !tools::writeTrajectoryCsv(*plan.value().trajectory, args->csv_path, &error)) {
+    return fail(2, error);
+  }
+  if (!args->plot_path.empty()) {
+    const std::string title = "cyber-plan " + poseText(args->from) + " -> " + poseText(args->to) +
+                              (args->pieces.coral ? " +coral" : "") + (args->pieces.algae ? " +algae" : "");
+    if (!plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, args->pieces, title), args->plot_path,
+                                   &error)) {
+      return fail(2, error);
+    }
+  }
+  if (args->json) {
+    std::printf("%s\n", tools::planSummaryJson(plan.value()).c_str());
+  } else {
+    const auto& p = plan.value();
+    std::printf("planned %s -> %s: %.3f s, min clearance %.4f m, plan %.2f ms (search %.2f, smooth %.2f, topp %.2f)\n",
+                poseText(args->from).c_str(), poseText(args->to).c_str(), p.trajectory->duration_s(),
+                p.min_clearance_m, p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
+  }
+  return 0;
+}

@@ -1,0 +1,77 @@
+#include "plan_output.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+namespace cyber::tools {
+namespace {
+
+// Sample times 0, 1 ms, 2 ms, ... and the exact end, so the last row is the goal at rest.
+template <class F>
+void forEachSample(const planner::Trajectory& trajectory, F&& f) {
+  const double duration = trajectory.duration_s();
+  const long steps = static_cast<long>(std::floor(duration / kCsvStepS + 1e-9));
+  for (long k = 0; k <= steps; ++k) f(trajectory.sample(static_cast<double>(k) * kCsvStepS));
+  if (duration - static_cast<double>(steps) * kCsvStepS > 1e-9) f(trajectory.sample(duration));
+}
+
+}  // namespace
+
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string& path, std::string* error) {
+  std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
+  if (!file) {
+    *error = path + ": cannot open for writing";
+    return false;
+  }
+  std::fputs("t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,"
+             "elevator_amps,arm_amps\n",
+             file.get());
+  forEachSample(trajectory, [&](const planner::TrajectorySample& s) {
+    std::fprintf(file.get(), "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.t, s.q[0], s.qdot[0],
+                 s.qddot[0], s.q[1], s.qdot[1], s.qddot[1], s.volts[0], s.volts[1], s.amps[0], s.amps[1]);
+  });
+  if (std::ferror(file.get()) != 0) {
+    *error = path + ": write failed";
+    return false;
+  }
+  return true;
+}
+
+std::string planSummaryJson(const planner::Plan& plan) {
+  std::ostringstream o;
+  o.precision(9);
+  const auto& t = plan.times_ms;
+  const auto& r = plan.solver;
+  o << "{\"status\":\"ok\",\"duration_s\":" << plan.trajectory->duration_s() << ",\"grid_ms\":" << t.grid
+    << ",\"search_ms\":" << t.search << ",\"smooth_ms\":" << t.smooth << ",\"topp_ms\":" << t.topp
+    << ",\"total_ms\":" << t.total << ",\"primal_residual\":" << r.primal_residual
+    << ",\"dual_residual\":" << r.dual_residual << ",\"outer_iterations\":" << r.outer_iterations
+    << ",\"inner_iterations\":" << r.inner_iterations << ",\"min_clearance_m\":" << plan.min_clearance_m
+    << ",\"waypoints\":" << plan.waypoints.size() << "}";
+  return o.str();
+}
+
+plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::RobotModel& robot, int scene,
+                                    planner::HeldPieces pieces, const std::string& title) {
+  plot::TrajectoryPlotData d;
+  d.title = title;
+  d.cspace = plot::sampleCSpace(robot, scene, pieces);
+  forEachSample(*plan.trajectory, [&](const planner::TrajectorySample& s) {
+    d.time_s.push_back(s.t);
+    for (int j = 0; j < 2; ++j) {
+      d.joints[j].position.push_back(s.q[j]);
+      d.joints[j].velocity.push_back(s.qdot[j]);
+      d.joints[j].volts.push_back(s.volts[j]);
+      d.joints[j].amps.push_back(s.amps[j]);
+    }
+  });
+  for (int j = 0; j < 2; ++j) {
+    d.voltage_limit_volts[j] = robot.drive(j).voltage_limit_volts;
+    d.current_limit_amps[j] = robot.drive(j).current_limit_amps;
+  }
+  return d;
+}
+
+}  // namespace cyber::tools

@@ -1,0 +1,22 @@
+#pragma once
+// What cyber-plan writes: the 1 ms CSV of design.md, the JSON summary, the plot.
+
+#include <string>
+
+#include "cyber/planner/motion_planner.hpp"
+#include "cyber/plot/trajectory_plot.hpp"
+
+namespace cyber::tools {
+
+inline constexpr double kCsvStepS = 0.001;
+
+// Header and one row per 1 ms sample, plus the final sample at the exact duration.
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string& path, std::string* error);
+
+// One JSON object on one line.
+std::string planSummaryJson(const planner::Plan& plan);
+
+plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::RobotModel& robot, int scene,
+                                    planner::HeldPieces pieces, const std::string& title);
+
+}  // namespace cyber::tools
