@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 
 #include "cyber/planner/topp_reachability.hpp"
@@ -14,7 +13,7 @@ namespace {
 using topp::LimitKind;
 
 constexpr int kMinGridPoints = 3;          // rest to rest needs one node in between
-constexpr double kMinGridSpacing = 1e-3;   // short paths get fewer points, never closer than this
+constexpr double kMinGridSpacing = 1e-4;   // short paths get fewer points, never closer than this
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -172,9 +171,8 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   al.penalty_initial = settings_.penalty_initial;
   al.penalty_growth = settings_.penalty_growth;
   al.penalty_max = settings_.penalty_max;
-  if (std::getenv("REFRESH")) al.refresh_interval = std::atoi(std::getenv("REFRESH"));
   topp::initialGuess(problem_, profile_, state_.x);
-  if (std::getenv("NOESTIMATE")) state_.multipliers.reset(problem_); else topp::estimateMultipliers(problem_, state_.x, state_.multipliers);
+  topp::estimateMultipliers(problem_, state_.x, state_.multipliers);
   state_.penalty = 0.0;
 
   const topp::VariableLayout layout{grid_points};

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <cstdio>
-#include <cstdlib>
-#include <iterator>
 #include <vector>
 
 #include "cyber/planner/second_order_cone.hpp"
@@ -22,8 +19,7 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
   const VariableLayout v{problem.gridPoints()};
   const int kk = problem.gridPoints();
   double residual = 0.0;
-  static int where = 0; int counter = 0;
-  auto track = [&](double change) { ++counter; if (std::abs(change) / rho > residual) where = counter; residual = std::max(residual, std::abs(change) / rho); };
+  auto track = [&](double change) { residual = std::max(residual, std::abs(change) / rho); };
   for (int k = 0; k + 1 < kk; ++k) {
     const double sigma = x[v.c(k)] + x[v.c(k + 1)];
     const double d = x[v.d(k)];
@@ -78,7 +74,6 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
       m.row_lower[static_cast<Eigen::Index>(i)] = low;
     }
   }
-  if (std::getenv("TOPP_DEBUG")) std::fprintf(stderr, "  residual at track #%d of %d (K=%d rows=%zu)\n", where, counter, kk, problem.rows.size());
   return residual;
 }
 
@@ -292,46 +287,55 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
     if (row.node == n) value += 2.0 * c * row.beta + row.gamma;
     return value;
   };
-  const Eigen::Index unknowns = static_cast<Eigen::Index>(active.size());
-  if (unknowns == 0) return 0;
-  // Bandwidth of J'J: rows sharing an equation lie in the same or adjacent intervals.
-  int bandwidth = 0;
-  for (size_t i = 0, first = 0; i < active.size(); ++i) {
-    const int interval = problem.rows[static_cast<size_t>(active[i].row)].interval;
-    while (problem.rows[static_cast<size_t>(active[first].row)].interval < interval - 1) ++first;
-    bandwidth = std::max(bandwidth, static_cast<int>(i - first));
-  }
-  BandedCholesky normal;
-  normal.reset(unknowns, bandwidth);
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
-  // Accumulate J'J and J'R equation by equation (each equation touches a contiguous run of rows).
-  size_t first = 0;
-  for (int n = 1; n + 1 < kk; ++n) {
-    while (first < active.size() && problem.rows[static_cast<size_t>(active[first].row)].interval < n - 1) ++first;
-    size_t last = first;
-    while (last < active.size() && problem.rows[static_cast<size_t>(active[last].row)].interval <= n) ++last;
-    for (size_t i = first; i < last; ++i) {
-      const double ci = coefficient(problem.rows[static_cast<size_t>(active[i].row)], n);
-      rhs[static_cast<Eigen::Index>(i)] += ci * pull[static_cast<size_t>(n)];
-      for (size_t j = first; j <= i; ++j) {
-        const double cj = coefficient(problem.rows[static_cast<size_t>(active[j].row)], n);
-        normal.add(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j), ci * cj);
+  // Least squares over the active rows; a row whose multiplier comes out with the wrong sign is
+  // dropped (its multiplier is zero) and the rest solved again: a few passes of an active-set
+  // non-negative least squares, each O(K).
+  Eigen::VectorXd rhs;
+  for (int pass = 0; pass < 8 && !active.empty(); ++pass) {
+    const auto unknowns = static_cast<Eigen::Index>(active.size());
+    // Bandwidth of J'J: rows sharing an equation lie in the same or adjacent intervals.
+    int bandwidth = 0;
+    for (size_t i = 0, first = 0; i < active.size(); ++i) {
+      const int interval = problem.rows[static_cast<size_t>(active[i].row)].interval;
+      while (problem.rows[static_cast<size_t>(active[first].row)].interval < interval - 1) ++first;
+      bandwidth = std::max(bandwidth, static_cast<int>(i - first));
+    }
+    BandedCholesky normal;
+    normal.reset(unknowns, bandwidth);
+    rhs = Eigen::VectorXd::Zero(unknowns);
+    // J'J and J'R equation by equation (each equation touches a contiguous run of rows).
+    size_t first = 0;
+    for (int n = 1; n + 1 < kk; ++n) {
+      while (first < active.size() && problem.rows[static_cast<size_t>(active[first].row)].interval < n - 1) ++first;
+      size_t last = first;
+      while (last < active.size() && problem.rows[static_cast<size_t>(active[last].row)].interval <= n) ++last;
+      for (size_t i = first; i < last; ++i) {
+        const double ci = coefficient(problem.rows[static_cast<size_t>(active[i].row)], n);
+        rhs[static_cast<Eigen::Index>(i)] += ci * pull[static_cast<size_t>(n)];
+        for (size_t j = first; j <= i; ++j) {
+          const double cj = coefficient(problem.rows[static_cast<size_t>(active[j].row)], n);
+          normal.add(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j), ci * cj);
+        }
       }
     }
-  }
-  double max_diag = 0.0;
-  for (Eigen::Index i = 0; i < unknowns; ++i) max_diag = std::max(max_diag, normal.entry(i, i));
-  for (Eigen::Index i = 0; i < unknowns; ++i) normal.add(i, i, 1e-10 * max_diag + 1e-300);
-  normal.factor();
-  normal.solveLower(rhs);
-  normal.solveUpper(rhs);
-
-  if (std::getenv("TOPP_EST")) {
+    double max_diag = 0.0;
+    for (Eigen::Index i = 0; i < unknowns; ++i) max_diag = std::max(max_diag, normal.entry(i, i));
+    for (Eigen::Index i = 0; i < unknowns; ++i) normal.add(i, i, 1e-10 * max_diag + 1e-300);
+    normal.factor();
+    normal.solveLower(rhs);
+    normal.solveUpper(rhs);
+    size_t kept = 0;
     for (size_t i = 0; i < active.size(); ++i) {
-      const LinearRow& row = problem.rows[static_cast<size_t>(active[i].row)];
-      std::fprintf(stderr, "  est row %d int %d node %d kind %d j %d sign %+.0f zeta %.4g a %.4f c %.4f\n", active[i].row, row.interval, row.node, (int)row.kind, row.joint, active[i].sign, rhs[static_cast<Eigen::Index>(i)], x[v.a(row.interval)], x[v.c(row.node)]);
+      if (active[i].sign * rhs[static_cast<Eigen::Index>(i)] >= 0.0) {
+        rhs[static_cast<Eigen::Index>(kept)] = rhs[static_cast<Eigen::Index>(i)];
+        active[kept++] = active[i];
+      }
     }
+    if (kept == active.size()) break;
+    active.resize(kept);
   }
+  if (active.empty()) rhs.resize(0);
+
   // Keep the sign each active side allows; derive lambda and nu from the a- and b-equations.
   std::vector<double> a_sum(static_cast<size_t>(kk - 1), 0.0);
   std::vector<double> b_sum(static_cast<size_t>(kk), 0.0);
@@ -361,7 +365,7 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
   m.equality[kk] = -a_sum[last - 1] / (2.0 * problem.ds(kk - 2)) - b_sum[last];
   m.equality[kk + 1] = pull[0] - c_sum[0];
   m.equality[kk + 2] = pull[last] - c_sum[last];
-  return static_cast<int>(unknowns);
+  return static_cast<int>(active.size());
 }
 
 void assembleHessian(const Problem& problem, const Multipliers& m, double rho, const Eigen::VectorXd& x,
@@ -427,8 +431,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
     const double r = row.alpha * x[index[0]] + row.beta * x[index[1]] + row.gamma * x[index[2]];
     // Rows at or near their bound count as active: the minimiser is about to push past them,
     // and a row that just stepped inside still bounds how far the next step may go.
-    static const double band = std::getenv("BAND") ? std::atof(std::getenv("BAND")) : 1e-9;
-    const double near = band * (1.0 + std::abs(r));
+    const double near = 1e-9 * (1.0 + std::abs(r));
     const bool active = r - row.hi + m.row_upper[static_cast<Eigen::Index>(i)] * inv_rho > -near ||
                         row.lo - r + m.row_lower[static_cast<Eigen::Index>(i)] * inv_rho > -near;
     for (int p = 0; p < 3; ++p) {
@@ -438,32 +441,6 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
         if (coef[p] != 0.0 && coef[q] != 0.0) h.add(index[p], index[q], rho * coef[p] * coef[q]);
       }
     }
-  }
-  if (std::getenv("TOPP_ACTIVE")) {
-    static std::vector<int> prev;
-    std::vector<int> now;
-    for (size_t i = 0; i < problem.rows.size(); ++i) {
-      const LinearRow& row = problem.rows[i];
-      const double r = row.alpha * x[v.a(row.interval)] + row.beta * x[v.b(row.node)] + row.gamma * x[v.c(row.node)];
-      const double near = 1e-9 * (1.0 + std::abs(r));
-      if (r - row.hi + m.row_upper[i] * inv_rho > -near) now.push_back(static_cast<int>(2 * i));
-      if (row.lo - r + m.row_lower[i] * inv_rho > -near) now.push_back(static_cast<int>(2 * i + 1));
-    }
-    int cones_boundary = 0, cones_in = 0, cones_zero = 0;
-    for (int k = 0; k + 1 < kk; ++k) {
-      const double sigma = x[v.c(k)] + x[v.c(k + 1)];
-      const double d = x[v.d(k)];
-      const double* mu = m.time_cone.data() + 3 * k;
-      const Cone3 arg{mu[0] * inv_rho - (sigma + d), mu[1] * inv_rho - (sigma - d), mu[2] * inv_rho - 2.0};
-      const double norm = std::sqrt(arg.x1 * arg.x1 + arg.x2 * arg.x2);
-      if (norm < arg.t) ++cones_in; else if (norm < -arg.t) ++cones_zero; else ++cones_boundary;
-    }
-    std::vector<int> diff;
-    std::set_symmetric_difference(prev.begin(), prev.end(), now.begin(), now.end(), std::back_inserter(diff));
-    std::fprintf(stderr, "   active rows %zu changed %zu time cones in %d mid %d zero %d :", now.size(), diff.size(), cones_in, cones_boundary, cones_zero);
-    for (size_t i = 0; i < diff.size() && i < 12; ++i) { const LinearRow& row = problem.rows[diff[i] / 2]; std::fprintf(stderr, " %d/%d/k%d/j%d/%s", row.interval, row.node, (int)row.kind, row.joint, diff[i] % 2 ? "lo" : "hi"); }
-    std::fprintf(stderr, "\n");
-    prev = now;
   }
   constexpr double kFloor = 1e-6;
   for (Eigen::Index i = 0; i < floor.size(); ++i) h.add(i, i, kFloor * rho * floor[i]);
@@ -492,7 +469,6 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
     const double value = augmentedLagrangian(problem, state.multipliers, rho, x, w.gradient);
     gz = w.gradient;
     w.hessian.solveLower(gz);
-    if (std::getenv("TOPP_EVAL")) std::fprintf(stderr, "      eval f %.12f |gx| %.3g |gz| %.3g |z| %.3g\n", value, w.gradient.lpNorm<Eigen::Infinity>(), gz.norm(), z.norm());
     return value;
   };
 
@@ -533,7 +509,6 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
     }
     report.inner_iterations += inner_used;
     if (r.status == LbfgsStatus::kNonFinite) break;
-    if (std::getenv("TOPP_DEBUG")) std::fprintf(stderr, "outer %d rho %.3g inner %d status %d\n", outer, rho, inner_used, static_cast<int>(r.status));
 
     augmentedLagrangian(problem, state.multipliers, rho, x, w.gradient);
     ++report.evaluations;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 namespace cyber::planner::topp {
@@ -63,7 +62,7 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
   const double inf = std::numeric_limits<double>::infinity();
   for (int k = 0; k < intervals; ++k) {
     problem.row_begin[static_cast<size_t>(k)] = static_cast<int>(problem.rows.size());
-    for (int end = 0; end < (std::getenv("LEFTONLY") && k + 1 < intervals ? 1 : 2); ++end) {
+    for (int end = 0; end < 2; ++end) {
       const int node = k + end;
       const PathPoint& p = problem.points[static_cast<size_t>(node)];
       const bool pinned_at_rest =

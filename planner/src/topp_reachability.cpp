@@ -9,23 +9,9 @@
 namespace cyber::planner::topp {
 namespace {
 
-constexpr int kBisections = 48;
 constexpr double kMaxSpeed = 1e3;        // upper bound on c = sqrt(b) searched for [path units/s]
 constexpr double kRowTolerance = 1e-11;  // rows are normalised to order one
 constexpr int kMaxCandidates = 64;
-
-// Largest c in [0, c_max] with pred(c) true, assuming pred holds on an interval starting at 0.
-template <class Pred>
-double largestTrue(Pred pred, double c_max, int bisections = kBisections) {
-  if (pred(c_max)) return c_max;
-  double lo = 0.0;
-  double hi = c_max;
-  for (int i = 0; i < bisections; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (pred(mid) ? lo : hi) = mid;
-  }
-  return lo;
-}
 
 // A row of interval k as a quadratic q(t) = A t^2 + B t + C in the free end's speed t.
 struct Quadratic {
@@ -78,28 +64,77 @@ int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward, 
 
 // Largest t in [0, t_max] where every quadratic is within its bounds; -1 when none is. The
 // feasible set is a finite union of closed intervals whose ends are roots or 0 or t_max.
-double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max) {
-  std::array<double, kMaxCandidates> candidates{};
-  int count = 0;
-  candidates[static_cast<size_t>(count++)] = t_max;
-  candidates[static_cast<size_t>(count++)] = 0.0;
-  for (int i = 0; i < rows; ++i) {
-    const Quadratic& r = q[static_cast<size_t>(i)];
-    addRoots(r.a, r.b, r.c - r.hi, t_max, candidates, count);
-    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t_max, candidates, count);
-  }
-  std::sort(candidates.begin(), candidates.begin() + count, std::greater<>());
-  for (int i = 0; i < count; ++i) {
-    const double t = candidates[static_cast<size_t>(i)];
-    bool ok = true;
-    for (int j = 0; j < rows && ok; ++j) {
+double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max, bool any = false) {
+  auto feasible = [&](double t) {
+    for (int j = 0; j < rows; ++j) {
       const Quadratic& r = q[static_cast<size_t>(j)];
       const double v = r.at(t);
-      ok = v <= r.hi + kRowTolerance && v >= r.lo - kRowTolerance;
+      if (v > r.hi + kRowTolerance || v < r.lo - kRowTolerance) return false;
     }
-    if (ok) return t;
+    return true;
+  };
+  if (feasible(t_max)) return t_max;
+  std::array<double, kMaxCandidates> candidates{};
+  int count = 0;
+  for (int i = 0; i < rows; ++i) {
+    const Quadratic& r = q[static_cast<size_t>(i)];
+    const int before = count;
+    addRoots(r.a, r.b, r.c - r.hi, t_max, candidates, count);
+    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t_max, candidates, count);
+    if (any) {
+      for (int c = before; c < count; ++c) {
+        if (feasible(candidates[static_cast<size_t>(c)])) return candidates[static_cast<size_t>(c)];
+      }
+    }
+  }
+  if (any) return feasible(0.0) ? 0.0 : -1.0;
+  candidates[static_cast<size_t>(count++)] = 0.0;
+  std::sort(candidates.begin(), candidates.begin() + count, std::greater<>());
+  for (int i = 0; i < count; ++i) {
+    if (feasible(candidates[static_cast<size_t>(i)])) return candidates[static_cast<size_t>(i)];
   }
   return -1.0;
+}
+
+// Some c_{k+1} in [0, c_next_max] admits every row of interval k with c_k = c_now.
+bool reachable(const Problem& problem, int interval, double c_now, double c_next_max) {
+  std::array<Quadratic, kMaxCandidates> q{};
+  const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
+  return largestFeasible(q, rows, c_next_max, true) >= 0.0;
+}
+
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-8: C_k is a cap
+// for the forward pass, and the optimiser absorbs anything below that.
+template <class Pred>
+double bisect(Pred pred, double lo, double hi) {
+  while (hi - lo > 1e-8 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (pred(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// Largest c in [known, c_max] with pred(c) true, pred(known) true, searched near `guess`: the
+// controllable speed varies little from node to node, so a geometric search from the guess
+// brackets it in a few steps (assumes pred holds on an interval).
+template <class Pred>
+double largestTrueNear(Pred pred, double known, double guess, double c_max) {
+  guess = std::clamp(guess, known, c_max);
+  double step = 1e-4 * std::max(guess, 1e-3);
+  if (guess > known && !pred(guess)) {
+    double hi = guess;
+    for (double c = guess - step; c > known; step *= 4.0, c = guess - step) {
+      if (pred(c)) return bisect(pred, c, hi);
+      hi = c;
+    }
+    return bisect(pred, known, hi);
+  }
+  double lo = guess;
+  for (double c = lo + step; c < c_max; step *= 4.0, c = lo + step) {
+    if (!pred(c)) return bisect(pred, lo, c);
+    lo = c;
+  }
+  return pred(c_max) ? c_max : bisect(pred, lo, c_max);
 }
 
 }  // namespace
@@ -140,27 +175,40 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
   const int last = k_points - 1;
 
   controllable[static_cast<size_t>(last)] = problem.b_end;
+  double previous = 0.0;  // C of the node after: the starting guess for this one
   for (int k = last - 1; k >= 0; --k) {
-    const double ds = problem.ds(k);
-    const double next = controllable[static_cast<size_t>(k) + 1];
-    const double c_next = std::sqrt(next);
-    // First the cheap bound from the left-end rows alone (a linear interval in a)...
-    auto stoppable_left = [&](double c) {
-      const AccelInterval a = admissibleAcceleration(problem, k, k, c * c);
-      return !a.empty() && c * c + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
-    };
-    // ...then all rows: some reachable c_{k+1} <= sqrt(C_{k+1}) must exist.
-    auto stoppable = [&](double c) { return fastestNextSpeed(problem, k, c, c_next) >= 0.0; };
-    if (!stoppable(0.0)) {
-      char text[160];
-      std::snprintf(text, sizeof text, "the path cannot be followed even slowly near s = %.4f",
-                    problem.s[static_cast<size_t>(k)]);
-      result.status = ReachabilityStatus::kNotControllable;
-      result.reason = text;
-      return result;
+    const double c_next = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
+    // Usually the largest c_k is the one that lands exactly on sqrt(C_{k+1}) (braking binds);
+    // where c_k is limited by its own limits a harder braking may allow more, so search above.
+    auto stoppable = [&](double c) { return reachable(problem, k, c, c_next); };
+    std::array<Quadratic, kMaxCandidates> q{};
+    const int rows = rowsAsQuadratics(problem, k, c_next, false, q);
+    double c = largestFeasible(q, rows, kMaxSpeed);
+    if (c < 0.0) {
+      if (!stoppable(0.0)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the path cannot be followed even slowly near s = %.4f",
+                      problem.s[static_cast<size_t>(k)]);
+        result.status = ReachabilityStatus::kNotControllable;
+        result.reason = text;
+        return result;
+      }
+      c = 0.0;
     }
-    const double c_left = largestTrue(stoppable_left, kMaxSpeed);
-    const double c = stoppable(c_left) ? c_left : largestTrue(stoppable, c_left, 40);
+    if (stoppable(c * (1.0 + 1e-9) + 1e-12)) {
+      // The left-end rows alone (a linear interval in a) bound c_k cheaply from above; all rows
+      // are checked there and searched below it only when the right-end rows cut it down.
+      const double next = c_next * c_next;
+      const double ds = problem.ds(k);
+      auto stoppable_left = [&](double cc) {
+        const AccelInterval a = admissibleAcceleration(problem, k, k, cc * cc);
+        return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
+      };
+      const double guess = std::max(c, previous);
+      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, kMaxSpeed) : c;
+      c = stoppable(c_left) ? c_left : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left);
+    }
+    previous = c;
     controllable[static_cast<size_t>(k)] = c * c;
   }
   result.controllable_start_b = controllable[0];

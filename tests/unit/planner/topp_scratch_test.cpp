@@ -1,6 +1,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -44,8 +45,53 @@ TEST(ToppScratch, Print) {
 }  // namespace cyber::planner
 namespace cyber::planner {
 namespace {
+TEST(ToppScratch, Wiggle) {
+  run("wiggle", std::make_shared<testing::WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0), 0.0);
+}
 TEST(ToppScratch, Short2) {
   run("short2", std::make_shared<testing::LinePath>(JointVector(0.5, 1.0), JointVector(0.6, 1.2)), 0.0);
+}
+}  // namespace
+}  // namespace cyber::planner
+#include "cyber/planner/topp_reachability.hpp"
+namespace cyber::planner {
+namespace {
+TEST(ToppScratch, HessianCheck) {
+  auto path = std::make_shared<testing::WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  topp::Problem problem;
+  topp::LimitMargins margins;
+  topp::sampleGrid(*path, 200, problem);
+  margins.reset(problem.intervals());
+  const std::array<DriveParams, 2> drives{testing::elevatorDrive(), testing::armDrive()};
+  topp::buildRows(drives, margins, problem, nullptr);
+  std::vector<double> b, c;
+  topp::forwardBackward(problem, b, c);
+  Eigen::VectorXd x;
+  topp::initialGuess(problem, b, x);
+  problem.cost_scale = 1.0 / 0.6777;
+  topp::Multipliers m;
+  topp::estimateMultipliers(problem, x, m);
+  const double rho = 1000.0;
+  BandedCholesky h;
+  topp::assembleHessian(problem, m, rho, x, h);
+  Eigen::VectorXd g0(x.size()), g1(x.size());
+  topp::augmentedLagrangian(problem, m, rho, x, g0);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> nd;
+  for (double eps : {1e-6, 1e-8}) {
+    Eigen::VectorXd d(x.size());
+    for (int i = 0; i < d.size(); ++i) d[i] = nd(rng);
+    Eigen::VectorXd xe = x + eps * d;
+    topp::augmentedLagrangian(problem, m, rho, xe, g1);
+    Eigen::VectorXd fd = (g1 - g0) / eps;
+    Eigen::VectorXd hd = Eigen::VectorXd::Zero(x.size());
+    for (int i = 0; i < x.size(); ++i)
+      for (int j = std::max(0, i - 6); j <= std::min<int>(x.size() - 1, i + 6); ++j) hd[i] += h.entry(i, j) * d[j];
+    Eigen::Index at;
+    (fd - hd).cwiseAbs().maxCoeff(&at);
+    { Eigen::Index mi; m.speed_square.cwiseAbs().maxCoeff(&mi); std::printf("max |nu| %.4g at node %ld; nu at 6 %.4g at 198 %.4g; c at 6 %.4g\n", m.speed_square[mi], (long)mi, m.speed_square[6], m.speed_square[198], x[26]); }
+    std::printf("eps %g |fd| %.4g |hd| %.4g |diff| %.4g max diff at %ld (node %ld slot %ld): fd %.6g hd %.6g\n", eps, fd.norm(), hd.norm(), (fd - hd).norm(), (long)at, (long)at / 4, (long)at % 4, fd[at], hd[at]);
+  }
 }
 }  // namespace
 }  // namespace cyber::planner

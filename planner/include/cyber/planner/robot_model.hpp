@@ -113,7 +113,7 @@ struct ToppSettings {
   double limit_check_step_s = 0.001; // the continuous trajectory is checked at this step
   double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
   int max_limit_refinements = 8;     // re-solves with tightened limits after a failed check
-  double penalty_initial = 10.0;     // rho_0 of the augmented Lagrangian
+  double penalty_initial = 1e3;      // rho_0 of the augmented Lagrangian (cost scaled to order one)
   double penalty_growth = 1.0;       // gamma: rho <- min((1 + gamma) rho, beta)
   double penalty_max = 1e6;          // beta
 };

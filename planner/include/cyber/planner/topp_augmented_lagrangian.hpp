@@ -49,11 +49,11 @@ struct AlSettings {
   double dual_tolerance = 1e-4;
   int max_outer_iterations = 50;
   int max_inner_iterations = 500;
-  double penalty_initial = 10.0;
+  double penalty_initial = 1e3;
   double penalty_growth = 1.0;  // gamma: rho <- min((1 + gamma) rho, beta)
   double penalty_max = 1e6;     // beta
   int lbfgs_memory = 8;
-  int refresh_interval = 10;  // L-BFGS iterations before the preconditioner is refactored
+  int refresh_interval = 50;  // L-BFGS iterations before the preconditioner is refactored
 };
 
 struct AlReport {
