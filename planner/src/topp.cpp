@@ -14,6 +14,9 @@ using topp::LimitKind;
 
 constexpr int kMinGridPoints = 3;          // rest to rest needs one node in between
 constexpr double kMinGridSpacing = 1e-4;   // short paths get fewer points, never closer than this
+constexpr double kMaxMargin = 0.05;        // limits are lowered by at most this fraction
+constexpr double kRefineAbove = 0.02;      // overshoots beyond this fraction refine the grid instead
+constexpr int kMaxGridFactor = 8;          // the grid may grow to this multiple of grid_points
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -73,6 +76,7 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
     int interval, joint;
     LimitKind kind;
     double amount;
+    double limit;
   };
   // Few intervals exceed at once; a small fixed buffer would do, but the count is unbounded.
   std::vector<Excess> excesses;
@@ -88,7 +92,7 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
         peak = std::max(peak, ratio);
         if (ratio > 1.0 + tolerance) within = false;
         if (ratio > 1.0 + 0.5 * tolerance) {
-          excesses.push_back({static_cast<int>(k), j, kind, std::abs(value) - limit});
+          excesses.push_back({static_cast<int>(k), j, kind, std::abs(value) - limit, limit});
         }
       };
       judge(sample.volts[j], d.voltage_limit_volts, LimitKind::kVoltage, report.peak_voltage_ratio);
@@ -104,7 +108,7 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
     // so lowering the end limits by the excess (plus a little) brings the peak to the limit.
     for (const Excess& e : excesses) {
       double& margin = margins.at(e.interval, e.joint, e.kind);
-      margin = std::max(margin, margin + 1.1 * e.amount + 1e-6);
+      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, kMaxMargin * e.limit);
     }
   }
   return within;
@@ -139,29 +143,25 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
     return Trajectory::create(std::move(path), elevator, arm, {0.0}, {0.0});
   }
 
-  const int max_points = std::max(kMinGridPoints, settings_.grid_points);
+  const int most_points = std::max(kMinGridPoints, settings_.grid_points);
   const double wanted = std::ceil(length / kMinGridSpacing) + 1.0;
-  const int grid_points = wanted < max_points ? std::max(kMinGridPoints, static_cast<int>(wanted)) : max_points;
-  report.grid_points = grid_points;
+  const int grid_points = wanted < most_points ? std::max(kMinGridPoints, static_cast<int>(wanted)) : most_points;
   problem_.b_start = b_start;
   problem_.b_end = 0.0;
-  topp::sampleGrid(*path, grid_points, problem_);
-  for (const PathPoint& p : problem_.points) {
-    if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
-      return fail(PlanStatus::kInvalidInput, "the path returns non-finite values");
+  // Samples the path on `points` grid points and builds the rows without margins.
+  auto prepare = [&](int points) {
+    report.grid_points = points;
+    topp::sampleGrid(*path, points, problem_);
+    for (const PathPoint& p : problem_.points) {
+      if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
+        error = "the path returns non-finite values";
+        return false;
+      }
     }
-  }
-  margins_.reset(problem_.intervals());
-  if (!topp::buildRows(drives, margins_, problem_, &error)) return fail(PlanStatus::kInvalidInput, error);
-
-  const topp::ReachabilityResult reach = topp::forwardBackward(problem_, profile_, controllable_);
-  report.controllable_start_b = reach.controllable_start_b;
-  if (reach.status == topp::ReachabilityStatus::kStartNotControllable) {
-    return fail(PlanStatus::kInfeasibleStart, reach.reason);
-  }
-  if (reach.status != topp::ReachabilityStatus::kOk) return fail(PlanStatus::kInvalidInput, reach.reason);
-  report.warm_start_duration_s = profileDuration(problem_, profile_);
-  problem_.cost_scale = report.warm_start_duration_s > 0.0 ? 1.0 / report.warm_start_duration_s : 1.0;
+    margins_.reset(problem_.intervals());
+    return topp::buildRows(drives, margins_, problem_, &error);
+  };
+  if (!prepare(grid_points)) return fail(PlanStatus::kInvalidInput, error);
 
   topp::AlSettings al;
   al.primal_tolerance = settings_.primal_tolerance;
@@ -171,18 +171,52 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   al.penalty_initial = settings_.penalty_initial;
   al.penalty_growth = settings_.penalty_growth;
   al.penalty_max = settings_.penalty_max;
-  topp::initialGuess(problem_, profile_, state_.x);
-  topp::estimateMultipliers(problem_, state_.x, state_.multipliers);
-  state_.penalty = 0.0;
+  const int max_points = std::max(grid_points, kMaxGridFactor * settings_.grid_points);
+  bool tightened = false;  // the rows carry margins from a failed continuous check
 
-  const topp::VariableLayout layout{grid_points};
   for (int refinement = 0;; ++refinement) {
+    // A tightened problem that turned out infeasible or hard is given up for a finer grid:
+    // between closer grid points the trajectory stays closer to the limits it meets at them.
+    auto refineGrid = [&]() {
+      const int points = std::min(max_points, 2 * problem_.gridPoints() - 1);
+      tightened = false;
+      return points > problem_.gridPoints() && prepare(points);
+    };
+    // Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
+    // multipliers that make it stationary. Repeated after every refinement: a feasible start is
+    // cheaper to polish than a stale one.
+    const topp::ReachabilityResult reach = topp::forwardBackward(problem_, profile_, controllable_);
+    if (reach.status != topp::ReachabilityStatus::kOk) {
+      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+        ++report.refinements;
+        continue;
+      }
+      if (reach.status == topp::ReachabilityStatus::kStartNotControllable) {
+        return fail(PlanStatus::kInfeasibleStart, reach.reason);
+      }
+      return fail(PlanStatus::kInvalidInput, reach.reason);
+    }
+    if (refinement == 0) report.controllable_start_b = reach.controllable_start_b;
+    const double warm_duration = profileDuration(problem_, profile_);
+    if (refinement == 0) report.warm_start_duration_s = warm_duration;
+    problem_.cost_scale = warm_duration > 0.0 ? 1.0 / warm_duration : 1.0;
+    topp::initialGuess(problem_, profile_, state_.x);
+    topp::estimateMultipliers(problem_, state_.x, state_.multipliers);
+    state_.penalty = 0.0;
+
     const topp::AlReport solved = topp::solveAugmentedLagrangian(problem_, al, state_, workspace_);
     accumulate(report, solved);
     if (!solved.converged) {
+      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+        ++report.refinements;
+        continue;
+      }
       return fail(PlanStatus::kSolverNotConverged, "time-optimal parameterisation did not converge: " + residualText(solved));
     }
-    for (int k = 0; k < grid_points; ++k) profile_[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]);
+    const topp::VariableLayout layout{problem_.gridPoints()};
+    for (int k = 0; k < problem_.gridPoints(); ++k) {
+      profile_[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]);
+    }
     profile_.front() = b_start;
     profile_.back() = 0.0;
     Result<Trajectory> trajectory =
@@ -200,7 +234,15 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       return fail(PlanStatus::kSolverNotConverged, text);
     }
     ++report.refinements;
-    if (!topp::buildRows(drives, margins_, problem_, &error)) return fail(PlanStatus::kInvalidInput, error);
+    const double overshoot = std::max({report.peak_voltage_ratio, report.peak_current_ratio,
+                                       report.peak_velocity_ratio, report.peak_acceleration_ratio}) - 1.0;
+    if (overshoot > kRefineAbove && refineGrid()) continue;
+    // Small overshoots: lower the limits of the intervals concerned (checkLimits set the margins).
+    if (!topp::buildRows(drives, margins_, problem_, &error)) {
+      if (!refineGrid()) return fail(PlanStatus::kInvalidInput, error);
+      continue;
+    }
+    tightened = true;
   }
 }
 

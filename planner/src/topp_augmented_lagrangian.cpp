@@ -10,9 +10,10 @@
 namespace cyber::planner::topp {
 namespace {
 
-// The b-a relation is imposed as (b_{k+1} - b_k - 2 ds a_k) / (2 ds): rows of order one whatever
-// the grid spacing (an equivalent scaling of the same equality).
-double equalityWeight(double ds) { return 1.0 / (2.0 * ds); }
+// The b-a relation is imposed as (b_{k+1} - b_k - 2 ds a_k) / sqrt(2 ds): between the rows of
+// order one in a (weight 1/(2 ds)) and in b (weight 1), so that neither the curvature rho w^2 in
+// b (roundoff in the gradient on fine grids) nor the weak coupling of a dominates.
+double equalityWeight(double ds) { return 1.0 / std::sqrt(2.0 * ds); }
 
 // The multiplier-update pass of the outer loop: new multipliers and the primal residual.
 double updateMultipliers(const Problem& problem, Multipliers& m, double rho, const Eigen::VectorXd& x) {

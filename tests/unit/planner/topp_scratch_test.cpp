@@ -95,3 +95,10 @@ TEST(ToppScratch, HessianCheck) {
 }
 }  // namespace
 }  // namespace cyber::planner
+namespace cyber::planner {
+namespace {
+TEST(ToppScratch, ShortOnly) {
+  run("short", std::make_shared<testing::LinePath>(JointVector(0.5, 1.0), JointVector(0.51, 1.0)), 0.0);
+}
+}  // namespace
+}  // namespace cyber::planner
