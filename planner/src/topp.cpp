@@ -13,7 +13,7 @@ namespace {
 using topp::LimitKind;
 
 constexpr int kMinGridPoints = 3;          // rest to rest needs one node in between
-constexpr double kMinGridSpacing = 1e-4;   // short paths get fewer points, never closer than this
+constexpr double kSpeedBound = 1e3;        // path units/s: far beyond any motor (reachability search)
 constexpr double kMaxMargin = 0.05;        // limits are lowered by at most this fraction
 constexpr double kRefineAbove = 0.02;      // overshoots beyond this fraction refine the grid instead
 constexpr int kMaxGridFactor = 8;          // the grid may grow to this multiple of grid_points
@@ -143,11 +143,14 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
     return Trajectory::create(std::move(path), elevator, arm, {0.0}, {0.0});
   }
 
-  const int most_points = std::max(kMinGridPoints, settings_.grid_points);
-  const double wanted = std::ceil(length / kMinGridSpacing) + 1.0;
-  const int grid_points = wanted < most_points ? std::max(kMinGridPoints, static_cast<int>(wanted)) : most_points;
-  problem_.b_start = b_start;
+  // The problem is normalised to unit length, so short paths need no special grid.
+  const int grid_points = std::max(kMinGridPoints, settings_.grid_points);
+  // The problem is solved on the unit-length path (s / length): b scales by 1 / length^2.
+  const double length_squared = length * length;
+  problem_.b_start = b_start / length_squared;
   problem_.b_end = 0.0;
+  problem_.cost_scale = 1.0;
+  problem_.speed_bound = kSpeedBound / length;
   // Samples the path on `points` grid points and builds the rows without margins.
   auto prepare = [&](int points) {
     report.grid_points = points;
@@ -196,15 +199,18 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       }
       return fail(PlanStatus::kInvalidInput, reach.reason);
     }
-    if (refinement == 0) report.controllable_start_b = reach.controllable_start_b;
+    if (refinement == 0) report.controllable_start_b = reach.controllable_start_b * length_squared;
+    // Time in units of the warm start's duration: the optimiser sees a duration of about one.
     const double warm_duration = profileDuration(problem_, profile_);
     if (refinement == 0) report.warm_start_duration_s = warm_duration;
-    problem_.cost_scale = warm_duration > 0.0 ? 1.0 / warm_duration : 1.0;
-    topp::initialGuess(problem_, profile_, state_.x);
-    topp::estimateMultipliers(problem_, state_.x, state_.multipliers);
+    const double time_scale = warm_duration > 0.0 && std::isfinite(warm_duration) ? warm_duration : 1.0;
+    topp::scaleTime(problem_, time_scale, scaled_);
+    for (double& b : profile_) b *= time_scale * time_scale;
+    topp::initialGuess(scaled_, profile_, state_.x);
+    topp::estimateMultipliers(scaled_, state_.x, state_.multipliers);
     state_.penalty = 0.0;
 
-    const topp::AlReport solved = topp::solveAugmentedLagrangian(problem_, al, state_, workspace_);
+    const topp::AlReport solved = topp::solveAugmentedLagrangian(scaled_, al, state_, workspace_);
     accumulate(report, solved);
     if (!solved.converged) {
       if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
@@ -214,13 +220,18 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       return fail(PlanStatus::kSolverNotConverged, "time-optimal parameterisation did not converge: " + residualText(solved));
     }
     const topp::VariableLayout layout{problem_.gridPoints()};
+    // Back to path units: b = (ds/dt)^2 = b_scaled length^2 / T^2.
+    const double to_path_units = length_squared / (time_scale * time_scale);
+    std::vector<double> s_grid(problem_.s.size());
+    std::vector<double> b_grid(problem_.s.size());
     for (int k = 0; k < problem_.gridPoints(); ++k) {
-      profile_[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]);
+      s_grid[static_cast<size_t>(k)] = problem_.s[static_cast<size_t>(k)] * length;
+      b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
     }
-    profile_.front() = b_start;
-    profile_.back() = 0.0;
-    Result<Trajectory> trajectory =
-        Trajectory::create(path, elevator, arm, std::vector<double>(problem_.s), std::vector<double>(profile_));
+    s_grid.back() = length;
+    b_grid.front() = b_start;
+    b_grid.back() = 0.0;
+    Result<Trajectory> trajectory = Trajectory::create(path, elevator, arm, std::move(s_grid), std::move(b_grid));
     if (!trajectory) {
       return fail(PlanStatus::kInternalError, "the solved profile is not a valid trajectory: " + trajectory.error().reason);
     }

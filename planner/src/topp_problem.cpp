@@ -48,10 +48,31 @@ void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem) {
   problem.s.resize(static_cast<size_t>(k_points));
   problem.points.resize(static_cast<size_t>(k_points));
   for (int k = 0; k < k_points; ++k) {
-    const double s = k + 1 == k_points ? length : length * static_cast<double>(k) / (k_points - 1);
-    problem.s[static_cast<size_t>(k)] = s;
-    problem.points[static_cast<size_t>(k)] = path.at(s);
+    const double u = k + 1 == k_points ? 1.0 : static_cast<double>(k) / (k_points - 1);
+    problem.s[static_cast<size_t>(k)] = u;
+    PathPoint p = path.at(k + 1 == k_points ? length : length * u);
+    p.dq_ds *= length;
+    p.d2q_ds2 *= length * length;
+    problem.points[static_cast<size_t>(k)] = p;
   }
+}
+
+void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
+  const double t2 = time_scale_s * time_scale_s;
+  out.s = in.s;
+  out.points.clear();
+  out.rows = in.rows;
+  out.row_begin = in.row_begin;
+  for (LinearRow& row : out.rows) {
+    // alpha a + beta b + gamma c with a = a'/T^2, b = b'/T^2, c = c'/T.
+    row.alpha /= t2;
+    row.beta /= t2;
+    row.gamma /= time_scale_s;
+  }
+  out.b_start = in.b_start * t2;
+  out.b_end = in.b_end * t2;
+  out.cost_scale = in.cost_scale;  // sum 2 ds d is now the duration in units of the time scale
+  out.speed_bound = in.speed_bound * time_scale_s;
 }
 
 bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,

@@ -9,7 +9,6 @@
 namespace cyber::planner::topp {
 namespace {
 
-constexpr double kMaxSpeed = 1e3;        // upper bound on c = sqrt(b) searched for [path units/s]
 constexpr double kRowTolerance = 1e-11;  // rows are normalised to order one
 constexpr int kMaxCandidates = 64;
 
@@ -183,7 +182,7 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     auto stoppable = [&](double c) { return reachable(problem, k, c, c_next); };
     std::array<Quadratic, kMaxCandidates> q{};
     const int rows = rowsAsQuadratics(problem, k, c_next, false, q);
-    double c = largestFeasible(q, rows, kMaxSpeed);
+    double c = largestFeasible(q, rows, problem.speed_bound);
     if (c < 0.0) {
       if (!stoppable(0.0)) {
         char text[160];
@@ -205,7 +204,7 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
         return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
       };
       const double guess = std::max(c, previous);
-      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, kMaxSpeed) : c;
+      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, problem.speed_bound) : c;
       c = stoppable(c_left) ? c_left : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left);
     }
     previous = c;

@@ -172,7 +172,7 @@ class FineReference {
 
   [[nodiscard]] double controllableStart() const {
     double lo = 0.0, hi = 1e3;
-    for (int it = 0; it < 60; ++it) {
+    for (int it = 0; it < 36; ++it) {
       const double mid = 0.5 * (lo + hi);
       (std::isnan(duration(mid)) ? hi : lo) = mid;
     }

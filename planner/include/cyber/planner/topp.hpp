@@ -52,7 +52,8 @@ class ToppSolver {
 
  private:
   ToppSettings settings_;
-  topp::Problem problem_;
+  topp::Problem problem_;       // unit length, seconds
+  topp::Problem scaled_;        // unit length, time in units of the warm start's duration
   topp::LimitMargins margins_;
   std::vector<double> profile_;
   std::vector<double> controllable_;

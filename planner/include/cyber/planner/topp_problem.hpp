@@ -53,8 +53,11 @@ class LimitMargins {
   std::vector<double> values_;
 };
 
+// Units: the grid runs over s/L in [0, 1] (L the path length), so b is (ds/dt)^2 / L^2 and the
+// path derivatives are scaled to match (q' L, q'' L^2); scaleTime() further measures time in
+// units of a time scale. The optimiser then sees numbers of order one for any path.
 struct Problem {
-  std::vector<double> s;          // K grid points, s[0] = 0, s[K-1] = length
+  std::vector<double> s;          // K grid points, s[0] = 0, s[K-1] = 1
   std::vector<PathPoint> points;  // path samples at s
   std::vector<LinearRow> rows;    // sorted by interval; within an interval the left node first
   std::vector<int> row_begin;     // rows of interval k: [row_begin[k], row_begin[k+1])
@@ -63,13 +66,21 @@ struct Problem {
   // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
   // problem, with multipliers of the same size whatever the length of the path.
   double cost_scale = 1.0;
+  // No speed c = sqrt(b) above this is searched for (a bound far above any motor's reach, in
+  // the problem's units).
+  double speed_bound = 1e3;
   [[nodiscard]] int gridPoints() const { return static_cast<int>(s.size()); }
   [[nodiscard]] int intervals() const { return gridPoints() - 1; }
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
 };
 
-// Samples the path on a uniform grid of `grid_points` (>= 2) points.
+// Samples the path (length > 0) on a uniform grid of `grid_points` (>= 2) points, normalised to
+// unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
 void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem);
+
+// `out` = `in` with time measured in units of time_scale_s: b and c^2 scale by T^2, a by T^2.
+// Copies grid and rows (no path samples); the cost sum 2 ds d becomes the duration divided by T.
+void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 
 // Builds the limit rows of algorithm.md section 3 for the sampled grid. The Coulomb term
 // kS*sgn(qdot) uses every sign qdot takes on the interval (both when q'_j changes sign in it, 0 at
