@@ -89,7 +89,8 @@ LbfgsResult minimizeLbfgs(const LbfgsObjective& f, Eigen::VectorXd& x, const Lbf
       slope = w.gradient.dot(w.direction);
     }
     // Without curvature information the first trial step moves a unit distance.
-    double step = stored == 0 ? std::min(1.0, 1.0 / w.direction.norm()) : 1.0;
+    double step = 1.0;
+    if (stored == 0) step = settings.first_step > 0.0 ? settings.first_step : std::min(1.0, 1.0 / w.direction.norm());
 
     // Lewis-Overton bracketing: [lo, hi] contains weak-Wolfe points; double until an upper
     // bound is found, then bisect.

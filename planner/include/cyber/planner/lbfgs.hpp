@@ -23,6 +23,9 @@ struct LbfgsSettings {
   // Optional second stopping rule (0 disables it): stop as converged when an accepted step lowers
   // the cost by less than this fraction of max(1, |cost|). Useful for inner solves.
   double relative_cost_tolerance = 0.0;
+  // Length of the first trial step as a multiple of -gradient; 0 picks a unit-length move. A
+  // preconditioned problem (Hessian near identity) wants 1: the Newton step.
+  double first_step = 0.0;
 };
 
 enum class LbfgsStatus { kConverged, kMaxIterations, kLineSearchFailed, kNonFinite };
