@@ -259,9 +259,7 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
       mirror_ = Program::holdAt(event.epoch, event.position);
       return;
     case StreamEventKind::kHolding: {
-      if (event.hold_cause == HoldCause::kFault) {
-        cancelScheduled("fault: a setpoint could not be streamed; holding the measured position");
-      } else if (event.hold_cause == HoldCause::kShutdown) {
+      if (event.hold_cause == HoldCause::kShutdown) {
         cancelScheduled("daemon shutting down");
       }
       stopped_ = false;

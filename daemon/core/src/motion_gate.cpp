@@ -10,6 +10,7 @@ std::string_view toString(GateReason reason) {
     case GateReason::kRobotDisabled: return "robot disabled (heartbeat without system-watchdog bit)";
     case GateReason::kNoHeartbeat: return "no fresh roboRIO heartbeat";
     case GateReason::kBroadcastDisable: return "broadcast disable received";
+    case GateReason::kFault: return "fault: a setpoint was not finite or did not fit its frame";
   }
   return "unknown";
 }

@@ -129,12 +129,15 @@ bool Streamer::withinLimits(const JointSetpoints& s) const {
 
 void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out) {
   out.reset();
-  const GateVerdict verdict = evaluateGate(inputs, now, settings_.gate);
+  GateVerdict verdict = evaluateGate(inputs, now, settings_.gate);
+  if (verdict.open() && now < fault_until_ns_) verdict.reason = GateReason::kFault;
   out.gate_reason = verdict.reason;
   if (!verdict.open()) {
     if (running_) stop(now, verdict.reason, out);
     if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
-    out.mode = isRobotDisabledReason(verdict.reason) ? StreamMode::kRobotDisabled : StreamMode::kNoState;
+    out.mode = verdict.reason == GateReason::kFault       ? StreamMode::kFault
+               : isRobotDisabledReason(verdict.reason) ? StreamMode::kRobotDisabled
+                                                       : StreamMode::kNoState;
     out.request_id = last_request_;
     return;
   }
@@ -149,22 +152,20 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   }
   if (offered != nullptr) consider(now, offered, out);
 
-  ProgramSample sample = program_->sample(now, hold_);
+  const ProgramSample sample = program_->sample(now, hold_);
   if (!withinLimits(sample.setpoints)) {
+    // Never send a wrapped or NaN value: stop streaming, then hold the measured position.
     StreamEvent fault;
     fault.kind = StreamEventKind::kFault;
     fault.time_ns = now;
     fault.request_id = sample.request_id;
     out.push(fault);
-    fault_until_ns_ = now + secondsToNs(settings_.fault_report_s);
-    holdOwn(now, inputs.measured_q, HoldCause::kFault, out);
-    sample = program_->sample(now, hold_);
-    if (!withinLimits(sample.setpoints)) {
-      // Even the measured position cannot be sent: stream nothing until the inputs change.
-      stop(now, GateReason::kOpen, out);
-      out.mode = StreamMode::kFault;
-      return;
-    }
+    fault_until_ns_ = now + secondsToNs(settings_.fault_stop_s);
+    stop(now, GateReason::kFault, out);
+    out.gate_reason = GateReason::kFault;
+    out.mode = StreamMode::kFault;
+    out.request_id = last_request_;
+    return;
   }
 
   if (sample.request_id >= 0 && sample.request_id != executing_request_) {
@@ -204,7 +205,7 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   last_position_ = sample.setpoints.position;
   out.send_setpoints = true;
   out.setpoints = sample.setpoints;
-  out.mode = now < fault_until_ns_ ? StreamMode::kFault : (sample.moving ? StreamMode::kMoving : StreamMode::kHolding);
+  out.mode = sample.moving ? StreamMode::kMoving : StreamMode::kHolding;
   out.request_id = last_request_;
   out.segment_time_s = sample.segment_time_s;
   const MonoNs end = program_->endNs();

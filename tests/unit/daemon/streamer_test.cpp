@@ -249,7 +249,7 @@ class NanTrajectory final : public SetpointSource {
   }
 };
 
-TEST_F(StreamerTest, ASetpointThatCannotBeSentIsAFaultAndTheMeasuredPositionIsHeld) {
+TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPositionIsHeld) {
   const JointVector a(0.2, 1.0);
   feed(a);
   tick();
@@ -257,18 +257,37 @@ TEST_F(StreamerTest, ASetpointThatCannotBeSentIsAFaultAndTheMeasuredPositionIsHe
   std::vector<std::int64_t> dropped;
   ASSERT_TRUE(Program::splice(Program::holdAt(streamer.epoch(), a), now,
                               Segment{std::make_shared<NanTrajectory>(), 5, 0}, true, 1, *p, dropped));
+  int sent = 0, faulted = 0;
   TickOutput out;
-  for (int i = 0; i < 10; ++i) {
+  const MonoNs begin = now;
+  while (now < begin + 900 * kMs) {  // the fault stops streaming for 1 s
     feed(JointVector(0.21, 1.0));
-    out = tick(i == 0 ? p : nullptr);
-    ASSERT_TRUE(out.send_setpoints);
-    EXPECT_TRUE(std::isfinite(out.setpoints.position[0]));
+    out = tick(now == begin ? p : nullptr);
+    if (out.send_setpoints) {
+      ++sent;
+      EXPECT_TRUE(std::isfinite(out.setpoints.position[0]));
+    } else {
+      EXPECT_EQ(out.mode, StreamMode::kFault);
+      EXPECT_EQ(out.gate_reason, GateReason::kFault);
+      ++faulted;
+    }
   }
-  EXPECT_EQ(out.mode, StreamMode::kFault);
-  EXPECT_EQ(out.setpoints.position, JointVector(0.21, 1.0));
-  bool fault = false;
-  for (const auto& e : events) fault |= e.kind == StreamEventKind::kFault && e.request_id == 5;
+  EXPECT_EQ(sent, 5);  // t = 0 .. 20 ms of the program were finite
+  EXPECT_GT(faulted, 150);
+  bool fault = false, stopped = false;
+  for (const auto& e : events) {
+    fault |= e.kind == StreamEventKind::kFault && e.request_id == 5;
+    stopped |= e.kind == StreamEventKind::kStopped && e.gate_reason == GateReason::kFault && e.request_id == 5;
+  }
   EXPECT_TRUE(fault);
+  EXPECT_TRUE(stopped);
+  while (now < begin + 1100 * kMs) {
+    feed(JointVector(0.21, 1.0));
+    out = tick();
+  }
+  ASSERT_TRUE(out.send_setpoints);
+  EXPECT_EQ(out.mode, StreamMode::kHolding);
+  EXPECT_EQ(out.setpoints.position, JointVector(0.21, 1.0));
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ enum class GateReason {
   kRobotDisabled,      // the latest heartbeat lacks the system-watchdog bit
   kNoHeartbeat,        // no heartbeat, or it is older than heartbeat_timeout_s
   kBroadcastDisable,   // a broadcast disable arrived and no enabled heartbeat since
+  kFault,              // not from evaluateGate: the streamer stopped on a setpoint it could not send
 };
 
 std::string_view toString(GateReason reason);

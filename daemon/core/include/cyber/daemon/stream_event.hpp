@@ -16,7 +16,7 @@ enum class StreamEventKind {
   kExecuting,   // request_id's segment is being streamed
   kDone,        // request_id's segment finished; holding its end position
   kStopped,     // motion stopped (gate closed, reason): nothing is streamed; new epoch
-  kHolding,     // the streamer holds `position` on its own (re-enable, fault, shutdown); new epoch
+  kHolding,     // the streamer holds `position` on its own (enabled again, shutdown); new epoch
   kFault,       // a setpoint could not be streamed (non-finite or out of the frame's range)
 };
 
@@ -25,7 +25,7 @@ enum class RejectReason {
   kStaleBase,  // the program was built on a program or epoch that is no longer running
 };
 
-enum class HoldCause { kEnabled, kFault, kShutdown };
+enum class HoldCause { kEnabled, kShutdown };
 
 struct StreamEvent {
   StreamEventKind kind = StreamEventKind::kAdopted;

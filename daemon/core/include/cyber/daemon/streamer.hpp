@@ -30,7 +30,7 @@ struct SetpointLimits {
 struct StreamerSettings {
   GateSettings gate;
   SetpointLimits limits;
-  double fault_report_s = 1.0;  // the status mode shows "fault" this long after one
+  double fault_stop_s = 1.0;  // after a fault nothing is streamed this long, then the measured position is held
 };
 
 struct TickOutput {
