@@ -17,7 +17,7 @@
 namespace cyber::can {
 namespace {
 
-// Reference device numbers (the [daemon] section of config/reefscape-2025.toml).
+// Reference device numbers ([daemon.devices] of config/reefscape-2025.toml).
 constexpr std::uint8_t kElevatorDevice = 1;
 constexpr std::uint8_t kArmDevice = 2;
 constexpr std::uint8_t kDaemonDevice = 3;

@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# cyber-plan's command-line contract (design.md): outputs, exit codes and one-line reasons.
+# Usage: cyber_plan_cli_test.sh PATH/TO/cyber-plan CONFIG.toml
+set -u
+plan=$1
+config=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failures=0
+passes=0
+check() {  # check NAME EXPECTED_EXIT ARGS... ; stderr must then be one line
+  local name=$1 want=$2
+  shift 2
+  "$plan" "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" -ne "$want" ]; then
+    echo "FAIL $name: exit $got, want $want; stderr: $(cat "$tmp/err")"
+    failures=$((failures + 1))
+  elif [ "$want" -ne 0 ] && [ "$(wc -l <"$tmp/err")" -ne 1 ]; then
+    echo "FAIL $name: want exactly one line on stderr, got: $(cat "$tmp/err")"
+    failures=$((failures + 1))
+  else
+    echo "ok   $name: exit $got $(head -c 160 "$tmp/err")"
+    passes=$((passes + 1))
+  fi
+}
+expect_in() {  # expect_in NAME FILE TEXT
+  if ! grep -qF -- "$3" "$2"; then
+    echo "FAIL $1: '$3' not in $2: $(head -c 300 "$2")"
+    failures=$((failures + 1))
+  fi
+}
+
+check "plans a public move" 0 --config "$config" --from 0.20,1.57 --to 1.97,5.17 --csv "$tmp/t.csv" --json
+expect_in "json keys" "$tmp/out" '"duration_s":'
+for key in grid_ms search_ms smooth_ms topp_ms total_ms primal_residual dual_residual min_clearance_m; do
+  expect_in "json $key" "$tmp/out" "\"$key\":"
+done
+header='t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,elevator_amps,arm_amps'
+if [ "$(head -n 1 "$tmp/t.csv")" != "$header" ]; then
+  echo "FAIL csv header: $(head -n 1 "$tmp/t.csv")"; failures=$((failures + 1))
+fi
+# 1 ms rows from t = 0 to the duration; the last row is the goal.
+python3 - "$tmp/t.csv" "$tmp/out" <<'PY' || failures=$((failures + 1))
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+summary = json.loads(open(sys.argv[2]).read())
+t = [float(r['t']) for r in rows]
+gaps = [b - a for a, b in zip(t, t[1:])]
+assert t[0] == 0.0 and max(gaps) <= 0.0010001 and min(gaps) > 0, 'rows are not 1 ms apart'
+assert abs(t[-1] - summary['duration_s']) < 1e-6, (t[-1], summary['duration_s'])
+assert abs(float(rows[-1]['elevator_m']) - 1.97) < 1e-4 and abs(float(rows[-1]['arm_rad']) - 5.17) < 1e-4
+assert summary['min_clearance_m'] >= 0.03 - 1e-9, summary
+print('ok   csv: %d rows, %.3f s' % (len(rows), t[-1]))
+PY
+check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.98,5.39 --coral --plot "$tmp/p.png"
+if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a" ]; then
+  echo "FAIL plot: not a PNG"; failures=$((failures + 1))
+fi
+check "embedded default config" 0 --from 0.58,2.97 --to 1.93,1.71 --algae
+check "moving start" 0 --config "$config" --from 0.8,1.57 --to 1.5,1.57 --from-velocity 0.5,0.0
+check "zero-length move" 0 --config "$config" --from 0.2,1.57 --to 0.2,1.57
+check "help" 0 --help
+
+check "NaN start" 2 --config "$config" --from nan,1.57 --to 1.97,5.17
+check "inf goal" 2 --config "$config" --from 0.2,1.57 --to 1.97,inf
+check "malformed pair" 2 --config "$config" --from 0.2 --to 1.97,5.17
+check "missing --to" 2 --config "$config" --from 0.2,1.57
+check "unknown argument" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --fast
+check "missing config" 2 --config "$tmp/none.toml" --from 0.2,1.57 --to 1.97,5.17
+printf 'name = "x"\n' >"$tmp/bad.toml"
+check "invalid config" 2 --config "$tmp/bad.toml" --from 0.2,1.57 --to 1.97,5.17
+check "unknown scene" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene nowhere
+check "goal out of range" 3 --config "$config" --from 0.2,1.57 --to 2.5,1.57
+check "start out of range" 3 --config "$config" --from 0.2,-1 --to 1.97,5.17
+check "goal in collision" 3 --config "$config" --from 0.2,1.57 --to 0.0,0.0
+expect_in "collision reason" "$tmp/err" "collision"
+check "unwritable csv" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --csv /nonexistent/dir/t.csv
+
+echo "$passes passed, $failures failed"
+[ "$failures" -eq 0 ]
