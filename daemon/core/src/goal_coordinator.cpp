@@ -53,18 +53,29 @@ void GoalCoordinator::finish(std::int64_t request_id, GoalStatus status, std::st
   }
 }
 
+// A goal refused on arrival: answered at once, without touching a goal of the same id in progress.
+void GoalCoordinator::reject(std::int64_t request_id, std::string reason) {
+  StatusUpdate update;
+  update.request_id = request_id;
+  update.status = GoalStatus::kRejected;
+  update.reason = std::move(reason);
+  sink_.publishStatus(update);
+  ++counters_.goals_rejected;
+}
+
 void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict gate) {
   ++counters_.goals_received;
   auto valid = validateGoal(goal, robot_);
   if (!valid) {
-    open_[goal.request_id] = OpenGoal{};
-    finish(goal.request_id, GoalStatus::kRejected,
-           std::string(planner::toString(valid.error().status)) + ": " + valid.error().reason);
+    reject(goal.request_id, std::string(planner::toString(valid.error().status)) + ": " + valid.error().reason);
+    return;
+  }
+  if (shut_down_) {
+    reject(goal.request_id, "daemon shutting down");
     return;
   }
   if (!gate.open()) {
-    open_[goal.request_id] = OpenGoal{};
-    finish(goal.request_id, GoalStatus::kRejected, "no motion allowed: " + std::string(toString(gate.reason)));
+    reject(goal.request_id, "no motion allowed: " + std::string(toString(gate.reason)));
     return;
   }
   // A sender that reuses an id still open replaces that goal.
@@ -277,6 +288,7 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
 void GoalCoordinator::onTimer(MonoNs now) { tryStart(now); }
 
 void GoalCoordinator::onShutdown(MonoNs /*now*/) {
+  shut_down_ = true;
   pending_.reset();
   std::vector<std::int64_t> ids;
   for (const auto& [id, goal] : open_) ids.push_back(id);

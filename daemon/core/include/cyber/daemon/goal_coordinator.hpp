@@ -74,7 +74,7 @@ class GoalCoordinator {
   void onStreamEvent(const StreamEvent& event, MonoNs now);
   // Periodic retry of a goal that waits for room in the program chain.
   void onTimer(MonoNs now);
-  // Shutdown: every open goal is cancelled.
+  // Shutdown: every open goal is cancelled and later goals are rejected.
   void onShutdown(MonoNs now);
 
   [[nodiscard]] const CoordinatorCounters& counters() const { return counters_; }
@@ -115,6 +115,7 @@ class GoalCoordinator {
   void replan(const Pending& pending, bool late, MonoNs now, const std::string& why);
   void publish(std::int64_t request_id, GoalStatus status, std::string reason = {});
   void finish(std::int64_t request_id, GoalStatus status, std::string reason);
+  void reject(std::int64_t request_id, std::string reason);
   void cancelScheduled(const std::string& reason);
 
   planner::RobotModel robot_;
@@ -125,6 +126,7 @@ class GoalCoordinator {
 
   Program mirror_;
   bool stopped_ = true;  // the streamer streams nothing (no state, disabled)
+  bool shut_down_ = false;
   std::string stop_reason_ = "no ARM_STATE received yet";
 
   std::optional<Pending> pending_;
