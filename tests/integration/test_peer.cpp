@@ -192,6 +192,13 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   while (Clock::now() < settle) lcm.handleTimeout(50);
   long long duplicates = 0;
   for (const auto& [id, n] : tally.finals) duplicates += n > 1 ? 1 : 0;
+  int listed = 0;
+  for (long long id = tally.first; id < tally.first + tally.count && listed < 20; ++id) {
+    if (tally.finals.count(id) == 0) {
+      std::printf("no final status for request %lld\n", id);
+      ++listed;
+    }
+  }
   std::printf("final statuses for %zu of %lld ids; duplicates %lld; done %lld rejected %lld failed %lld cancelled %lld\n",
               tally.finals.size(), args.count, duplicates, tally.by_status[3], tally.by_status[4], tally.by_status[5],
               tally.by_status[6]);

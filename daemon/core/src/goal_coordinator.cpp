@@ -225,7 +225,7 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
       const std::int64_t id = posted.pending.goal.request_id;
       for (std::int64_t dropped : posted.dropped) finish(dropped, GoalStatus::kCancelled, superseded(id));
       const Segment& added = mirror_.segment(mirror_.segmentCount() - 1);
-      sink_.publishTrajectory(id, *added.source, added.start_ns);
+      sink_.publishTrajectory(id, added.source, added.start_ns);
       tryStart(now);
       return;
     }
@@ -246,6 +246,10 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
     case StreamEventKind::kExecuting: {
       if (executing_ && *executing_ != event.request_id) {
         finish(*executing_, GoalStatus::kCancelled, superseded(event.request_id));
+      }
+      // Segments before this one that no tick sampled (spliced less than a period apart) are over.
+      for (int i = 0; i < mirror_.segmentCount() && mirror_.segment(i).request_id != event.request_id; ++i) {
+        finish(mirror_.segment(i).request_id, GoalStatus::kCancelled, superseded(event.request_id));
       }
       if (auto it = open_.find(event.request_id); it != open_.end() && !it->second.executing) {
         it->second.executing = true;

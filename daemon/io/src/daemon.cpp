@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+
+#include <unistd.h>
 
 #include "cyber/can/frame_kind.hpp"
 #include "cyber/can/robot_frames.hpp"
@@ -21,6 +24,7 @@ constexpr MonoNs kSecond = 1'000'000'000;
 constexpr double kShutdownHoldS = 0.05;     // hold setpoints streamed before exiting
 constexpr double kWorkerJoinS = 0.3;        // a plan still running after this is abandoned
 constexpr int kMaxMessagesPerWake = 64;
+constexpr MonoNs kTrajectoryInterval = 100'000'000;  // at most 10 ARM_TRAJECTORY messages per second
 
 GateSettings gateOf(const DaemonOptions& options) {
   GateSettings gate;
@@ -56,9 +60,35 @@ CoordinatorSettings coordinatorSettingsOf(const DaemonOptions& options) {
   return out;
 }
 
+// liblcm reports why it cannot open a URL on stderr itself, over several lines. Capture that text
+// so a start-up failure stays one line, with LCM's reason in it.
 std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
+  std::FILE* capture = std::tmpfile();
+  const int saved = capture != nullptr ? ::dup(STDERR_FILENO) : -1;
+  if (saved >= 0) {
+    std::fflush(stderr);
+    ::dup2(::fileno(capture), STDERR_FILENO);
+  }
   auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw StartupError("cannot open LCM at '" + url + "' (bad URL, or no multicast route: see docs/operations.md)");
+  std::string text;
+  if (saved >= 0) {
+    std::fflush(stderr);
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+    std::rewind(capture);
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, capture) != nullptr) {
+      std::string line(buffer);
+      while (!line.empty() && (line.back() == '\n' || line.back() == '\r' || line.back() == ' ')) line.pop_back();
+      if (line.empty()) continue;
+      text += (text.empty() ? "" : "; ") + line;
+    }
+  }
+  if (capture != nullptr) std::fclose(capture);
+  if (!lcm->good()) {
+    throw StartupError("cannot open LCM at '" + url + "'" + (text.empty() ? std::string() : ": " + text));
+  }
+  if (!text.empty()) spdlog::warn("LCM: {}", text);
   return lcm;
 }
 
@@ -319,12 +349,22 @@ void Daemon::publishStatus(const StatusUpdate& update) {
   if (isFinal(update.status)) goal_received_ns_.erase(id);
 }
 
-void Daemon::publishTrajectory(std::int64_t request_id, const SetpointSource& trajectory, MonoNs start_ns) {
-  const MonoNs now = monotonicNow();
+void Daemon::publishTrajectory(std::int64_t request_id, const SharedSetpointSource& trajectory, MonoNs start_ns) {
+  pending_trajectory_ = PendingTrajectory{request_id, trajectory, start_ns};
+  flushTrajectory(monotonicNow(), false);
+}
+
+void Daemon::flushTrajectory(MonoNs now, bool force) {
+  if (!pending_trajectory_) return;
+  if (!force && last_trajectory_ns_ != kNever && now - last_trajectory_ns_ < kTrajectoryInterval) return;
+  last_trajectory_ns_ = now;
   const std::int64_t wall = wallMicros();
+  const PendingTrajectory pending = std::move(*pending_trajectory_);
+  pending_trajectory_.reset();
   bridge_->publish(bridge_->channels().trajectory,
-                   trajectoryMessage(request_id, trajectory, monoToWallMicros(start_ns, now, wall),
-                                     options_.settings.trajectory_step_s, wall));
+                   trajectoryMessage(pending.request_id, *pending.trajectory,
+                                     monoToWallMicros(pending.start_ns, now, wall), options_.settings.trajectory_step_s,
+                                     wall));
 }
 
 void Daemon::startPlanning(const PlanJob& job) { worker_.submit(job); }
@@ -365,6 +405,7 @@ void Daemon::onStatusTimer() {
   status_timer_.consume();
   const MonoNs now = monotonicNow();
   coordinator_.onTimer(now);
+  flushTrajectory(now, false);
   if (can_ && can_suspended_until_ != kNever && now >= can_suspended_until_) {
     can_suspended_until_ = kNever;
     loop_.add(can_->fd(), [this] { onCanReadable(); });

@@ -218,6 +218,30 @@ TEST(GoalCoordinator, AGoalDuringMotionIsSplicedWithContinuousPositionAndVelocit
   EXPECT_LT((request.start - h.coordinator().mirror().segment(0).source->at(0).position).norm(), 1.0);
 }
 
+TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenTheNextOneStarts) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  h.goal(2, kLow);
+  h.step();  // plan 2 is back and adopted: it starts 30 ms after its goal
+  h.step();
+  h.goal(3, kStow);
+  h.step();
+  h.step();  // plan 3 adopted, starting after plan 2
+  ASSERT_EQ(h.coordinator().mirror().segmentCount(), 3);
+  EXPECT_FALSE(isFinal(h.sink.last(2)->status));
+  // Had plan 3 started less than a period after plan 2, no tick would have streamed plan 2.
+  StreamEvent executing;
+  executing.kind = StreamEventKind::kExecuting;
+  executing.request_id = 3;
+  h.coordinator().onStreamEvent(executing, h.now);
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+  EXPECT_EQ(h.sink.last(2)->status, S::kCancelled);
+  EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  EXPECT_EQ(h.sink.last(3)->status, S::kExecuting);
+}
+
 TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {
   Harness h(false, 0.002);
   h.start(kStow);

@@ -37,7 +37,7 @@ class CoordinatorSink {
   virtual ~CoordinatorSink() = default;
   virtual void publishStatus(const StatusUpdate& update) = 0;
   // Once the streamer has adopted the plan: sample 0 is commanded at start_ns.
-  virtual void publishTrajectory(std::int64_t request_id, const SetpointSource& trajectory, MonoNs start_ns) = 0;
+  virtual void publishTrajectory(std::int64_t request_id, const SharedSetpointSource& trajectory, MonoNs start_ns) = 0;
   // Hand a job to the planning worker; its result comes back through onPlanResult.
   virtual void startPlanning(const PlanJob& job) = 0;
   // Hand a program to the streamer; it answers with an adopted or rejected event.
