@@ -83,12 +83,10 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
   open_[goal.request_id] = OpenGoal{};
   publish(goal.request_id, GoalStatus::kAccepted);
 
-  // Latest wins: a goal waiting for the worker and one being planned are both superseded.
+  // Latest wins among the goals waiting for the worker. The plan being computed is not thrown
+  // away: it runs when ready and the newest goal is spliced into it, so a steady stream of goals
+  // faster than the planner still moves the mechanism instead of starving it.
   if (pending_) finish(pending_->goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
-  if (in_flight_ && !in_flight_->superseded) {
-    in_flight_->superseded = true;
-    finish(in_flight_->pending.goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
-  }
   pending_ = Pending{valid.value(), 0, false};
   tryStart(now);
 }
@@ -157,10 +155,6 @@ void GoalCoordinator::onPlanResult(std::uint64_t job_id, planner::Result<Planned
   budget_.record(plan_time_s);
   const std::int64_t id = job.pending.goal.request_id;
 
-  if (job.superseded) {  // already answered "cancelled"
-    tryStart(now);
-    return;
-  }
   if (stopped_) {
     finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + stop_reason_);
     return;

@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <sys/prctl.h>
 
 namespace cyber::daemon::io {
 
@@ -35,6 +36,8 @@ void StreamerThread::run() {
   if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) {
     channels_.realtime_priority.store(param.sched_priority);
   }
+  // Without this, a normal thread's timer wake-ups may be deferred by the default 50 us slack.
+  prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
 
   MonoNs scheduled = (monotonicNow() / period_ns_ + 1) * period_ns_;
   timer_.startPeriodic(scheduled, period_ns_);

@@ -5,13 +5,22 @@
 //  2. streamer wake-up jitter at 200 Hz, idle and under a flood of 1000 goals/s. Target p99 <= 200 us.
 // The real daemon (event loop, worker and streamer threads, real planner) on memq://, no CAN socket.
 
+#include <pthread.h>
+#include <sched.h>
+#include <sys/prctl.h>
+
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <future>
+#include <mutex>
+#include <string>
 #include <thread>
 #include <vector>
+
+#include <spdlog/spdlog.h>
 
 #include "cyber/config/load_config.hpp"
 #include "cyber/daemon/io/daemon.hpp"
@@ -25,6 +34,14 @@ namespace {
 
 using namespace std::chrono_literals;
 using cyber::daemon::io::Daemon;
+
+void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
+  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n",
+              label, static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
+              channels.jitter.percentileUs(0.99), channels.jitter.maxUs(),
+              static_cast<long long>(channels.overruns.load()),
+              channels.realtime_priority.load() > 0 ? "on" : "refused");
+}
 
 // Runs a daemon on its own thread and plays the robot: ARM_STATE follows the commanded position
 // (or a forced one), goals go in through LCM, final statuses are counted.
@@ -76,8 +93,13 @@ class Rig {
     forced_q_[0].store(q[0]);
     forced_q_[1].store(q[1]);
     paused_.store(false);
-    while (daemon_->channels().snapshot.load().mode != cyber::daemon::StreamMode::kHolding ||
-           std::abs(daemon_->channels().snapshot.load().elevator.position - q[0]) > 1e-4) {
+    const auto end = std::chrono::steady_clock::now() + 5s;
+    while (std::chrono::steady_clock::now() < end) {
+      const auto snapshot = daemon_->channels().snapshot.load();
+      if (snapshot.mode == cyber::daemon::StreamMode::kHolding && std::abs(snapshot.elevator.position - q[0]) < 1e-4 &&
+          std::abs(snapshot.arm.position - q[1]) < 1e-4) {
+        break;
+      }
       std::this_thread::sleep_for(1ms);
     }
     forced_.store(false);
@@ -92,11 +114,20 @@ class Rig {
     return false;
   }
   [[nodiscard]] int lastFinalStatus() const { return final_status_.load(); }
+  std::string lastReason() {
+    std::lock_guard<std::mutex> lock(reason_mutex_);
+    return last_reason_;
+  }
   Daemon& daemon() { return *daemon_; }
 
  private:
+  // "Answered": executing (its first setpoint is out) or a final status.
   void onStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_plan_status_t* m) {
-    if (m->status >= cyberplanner::arm_plan_status_t::STATUS_DONE && m->request_id > final_id_.load()) {
+    if (m->status >= cyberplanner::arm_plan_status_t::STATUS_EXECUTING && m->request_id > final_id_.load()) {
+      {
+        std::lock_guard<std::mutex> lock(reason_mutex_);
+        last_reason_ = std::to_string(m->status) + " " + m->reason;
+      }
       final_status_.store(m->status);
       final_id_.store(m->request_id);
     }
@@ -121,18 +152,41 @@ class Rig {
   std::atomic<double> forced_q_[2] = {0.20, 1.57};
   std::atomic<std::int64_t> final_id_{-1};
   std::atomic<int> final_status_{-1};
+  std::mutex reason_mutex_;
+  std::string last_reason_;
 };
 
-void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
-  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld\n", label,
-              static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
-              channels.jitter.percentileUs(0.99), channels.jitter.maxUs(),
-              static_cast<long long>(channels.overruns.load()));
+// The machine's own timer latency: a bare SCHED_FIFO thread on a 200 Hz timerfd, no daemon.
+void printTimerBaseline(double seconds) {
+  cyber::daemon::io::StreamerChannels channels;
+  std::thread thread([&] {
+    sched_param param{};
+    param.sched_priority = 50;
+    if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) channels.realtime_priority.store(50);
+    prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
+    constexpr cyber::daemon::MonoNs kPeriod = 5'000'000;
+    cyber::daemon::io::TimerFd timer(true);
+    cyber::daemon::MonoNs scheduled = (cyber::daemon::monotonicNow() / kPeriod + 1) * kPeriod;
+    timer.startPeriodic(scheduled, kPeriod);
+    const auto ticks = static_cast<int>(seconds * 200);
+    for (int i = 0; i < ticks; ++i) {
+      const std::uint64_t expirations = timer.wait();
+      const cyber::daemon::MonoNs now = cyber::daemon::monotonicNow();
+      scheduled += static_cast<cyber::daemon::MonoNs>(expirations - 1) * kPeriod;
+      channels.jitter.record(cyber::daemon::nsToSeconds(now - scheduled) * 1e6);
+      if (expirations > 1) channels.overruns.fetch_add(static_cast<std::int64_t>(expirations - 1));
+      scheduled += kPeriod;
+    }
+  });
+  thread.join();
+  printJitter("timer baseline, no daemon (3 s):", channels);
 }
+
 
 }  // namespace
 
 int main() {
+  spdlog::set_level(spdlog::level::err);
   const cyber::config::Config config = cyber::config::loadEmbeddedDefaultConfig();
   auto planning = cyber::daemon::makeMotionPlannerService(config.robot);
   if (!planning) {
@@ -150,21 +204,28 @@ int main() {
       rig.teleport(move.from, kStateTimeout);
       rig.goal(id, move.to, move.pieces);
       if (!rig.waitFinal(id, 30.0)) {
-        std::fprintf(stderr, "%s: no final status\n", move.label.c_str());
+        std::fprintf(stderr, "%s: no answer\n", move.label.c_str());
         return 1;
       }
-      (rig.lastFinalStatus() == cyberplanner::arm_plan_status_t::STATUS_DONE ? done : other) += 1;
+      if (rig.lastFinalStatus() == cyberplanner::arm_plan_status_t::STATUS_EXECUTING) {
+        ++done;
+      } else {
+        ++other;
+        std::printf("  %s: answered %s\n", move.label.c_str(), rig.lastReason().c_str());
+      }
       ++id;
     }
     const auto& latency = rig.daemon().goalToSetpointLatency();
-    std::printf("goal -> first setpoint, %lld public moves from rest (%d done, %d not): median %.2f ms  p99 %.2f ms  "
+    std::printf("goal -> first setpoint, %lld public moves from rest (%d executed, %d not): median %.2f ms  p99 %.2f ms  "
                 "max %.2f ms\n",
                 static_cast<long long>(latency.count()), done, other, latency.percentileUs(0.5) * 1e-3,
                 latency.percentileUs(0.99) * 1e-3, latency.maxUs() * 1e-3);
     printJitter("stream jitter while moving:", rig.daemon().channels());
   }
 
-  // 2. Jitter idle, then under a goal flood (1000 goals/s for 3 s among the public poses).
+  // 2. Jitter: the machine's own timer latency, the daemon idle, then under a goal flood
+  //    (1000 goals/s for 3 s among the public poses).
+  printTimerBaseline(3.0);
   {
     Rig rig(config.robot, *planning.value(), 0.25);
     std::this_thread::sleep_for(3s);
