@@ -117,7 +117,7 @@ case "$case_name" in
     sleep 0.5
     errors=$(status_value decode_errors)
     echo "decode_errors=$errors"
-    [ "$errors" -ge 150 ] || fail "decode_errors $errors: garbage not counted"
+    [ "$errors" -ge 190 ] || fail "decode_errors $errors: garbage not counted"
     kill -0 "$daemon_pid" || fail "the daemon died of garbage"
     expect_goal 0 "request 31 done" --to 1.22,5.69 --id 31
     ;;
