@@ -45,14 +45,15 @@ start_daemon() {
   pids+=("$daemon_pid")
   ip netns exec "$ns" "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
   pids+=("$!")
-  for _ in $(seq 1 150); do
+  # The planner builds its grids at start-up: allow for a loaded machine.
+  for _ in $(seq 1 600); do
     kill -0 "$daemon_pid" 2>/dev/null || fail "the daemon exited during start-up"
     if in_ns "$peer" status --timeout 0.5 >"$tmp/status" 2>/dev/null && grep -qx 'mode=1' "$tmp/status"; then
       return 0
     fi
     sleep 0.1
   done
-  fail "the daemon did not start holding within 15 s"
+  fail "the daemon did not start holding within 60 s"
 }
 
 status_value() {  # status_value KEY -> value from a fresh ARM_DAEMON_STATUS
