@@ -14,6 +14,7 @@
 #include "cyber/can/status_codec.hpp"
 #include "cyber/daemon/io/lcm_messages.hpp"
 #include "cyber/daemon/io/logging.hpp"
+#include "cyber/notify/notifier.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 
 namespace cyber::daemon::io {
@@ -146,12 +147,23 @@ int Daemon::run() {
   spdlog::info("cyber-plannerd: robot '{}', LCM '{}', CAN {}, {} Hz streaming, robot-enabled gate {}", robot_.name,
                s.lcm_url, options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'",
                s.stream_rate_hz, gate_.require_robot_enabled ? "on" : "off");
+  // Opens the service manager's socket here, not on the streaming thread (no-op without systemd).
+  notify::notifyStatus("starting");
+  const auto watchdog = notify::watchdogInterval();
+  if (watchdog.count() > 0) {
+    const MonoNs interval = static_cast<MonoNs>(watchdog.count()) * 1000;
+    channels_.watchdog_period_ns.store(std::min(interval / 2, MonoNs{500'000'000}));
+    channels_.loop_alive_limit_ns.store(interval / 2);
+  }
+  channels_.loop_alive_ns.store(monotonicNow());
   worker_.start();
   streamer_thread_.start();
   const MonoNs now = monotonicNow();
   status_timer_.startPeriodic(now + periodOf(s.status_rate_hz), periodOf(s.status_rate_hz));
   echo_timer_.startPeriodic(now + periodOf(s.setpoint_echo_rate_hz), periodOf(s.setpoint_echo_rate_hz));
 
+  // LCM is open and the CAN socket bound (both in the constructor): ready.
+  notify::notifyReadyWithStatus(serviceStatus());
   loop_.run();
 
   streamer_thread_.stop();
@@ -175,6 +187,7 @@ void Daemon::beginShutdown(const char* why) {
   if (shutting_down_) return;
   shutting_down_ = true;
   spdlog::info("{}: holding the commanded position and exiting", why);
+  notify::notifyStopping();
   channels_.stop_requested.store(true);
   coordinator_.onShutdown(monotonicNow());
   exit_timer_.startOnce(monotonicNow() + secondsToNs(kShutdownHoldS));
@@ -395,6 +408,16 @@ void Daemon::note(NoteLevel level, const std::string& text) {
 
 // ---- periodic ----
 
+std::string Daemon::serviceStatus() const {
+  const StreamSnapshot snapshot = channels_.snapshot.load();
+  const CoordinatorCounters& c = coordinator_.counters();
+  return fmt::format("{}, request {}, {} goals, {} plans, {} failed or rejected, {} CAN errors, {} decode errors",
+                     toString(snapshot.mode), snapshot.request_id, c.goals_received, c.plans_succeeded,
+                     c.plans_failed + c.goals_rejected,
+                     channels_.write_failures.load() + counters_.bus_errors + counters_.can_read_errors,
+                     counters_.lcm_decode_errors + counters_.bad_states + counters_.can_decode_errors);
+}
+
 bool Daemon::robotEnabled(MonoNs now) const {
   if (!gate_.require_robot_enabled) return true;
   const GateReason reason = evaluateGate(inputs_.toInputs(), now, gate_).reason;
@@ -404,8 +427,13 @@ bool Daemon::robotEnabled(MonoNs now) const {
 void Daemon::onStatusTimer() {
   status_timer_.consume();
   const MonoNs now = monotonicNow();
+  channels_.loop_alive_ns.store(now, std::memory_order_relaxed);
   coordinator_.onTimer(now);
   flushTrajectory(now, false);
+  if (last_service_status_ns_ == kNever || now - last_service_status_ns_ >= kSecond) {
+    last_service_status_ns_ = now;
+    notify::notifyStatus(serviceStatus());
+  }
   if (can_ && can_suspended_until_ != kNever && now >= can_suspended_until_) {
     can_suspended_until_ = kNever;
     loop_.add(can_->fd(), [this] { onCanReadable(); });

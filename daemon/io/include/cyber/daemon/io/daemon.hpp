@@ -94,6 +94,7 @@ class Daemon final : private CoordinatorSink {
   void flushTrajectory(MonoNs now, bool force);
   void storeInputs() { channels_.inputs.store(inputs_); }
   [[nodiscard]] bool robotEnabled(MonoNs now) const;
+  [[nodiscard]] std::string serviceStatus() const;  // one line for systemd's STATUS=
 
   planner::RobotModel robot_;
   DaemonOptions options_;
@@ -132,6 +133,7 @@ class Daemon final : private CoordinatorSink {
   };
   std::optional<PendingTrajectory> pending_trajectory_;
   MonoNs last_trajectory_ns_ = kNever;
+  MonoNs last_service_status_ns_ = kNever;
   bool last_goal_failed_ = false;
   MonoNs bus_error_ns_ = kNever;
   MonoNs can_suspended_until_ = kNever;
