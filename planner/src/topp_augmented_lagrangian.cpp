@@ -15,6 +15,11 @@ namespace {
 // b (roundoff in the gradient on fine grids) nor the weak coupling of a dominates.
 double equalityWeight(double ds) { return 1.0 / std::sqrt(2.0 * ds); }
 
+// The end nodes' b and c are fixed by the boundary values, which imply the speed cone, c^2 = b
+// and b >= 0 there; those redundant (and, at rest, degenerate: c^2 = b has no first-order hold
+// on c at 0) rows are left out at the two end nodes.
+constexpr int kFirstFree = 1;
+
 // The multiplier-update pass of the outer loop: new multipliers and the primal residual.
 double updateMultipliers(const Problem& problem, Multipliers& m, double rho, const Eigen::VectorXd& x) {
   const VariableLayout v{problem.gridPoints()};
@@ -33,7 +38,7 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
     mu[1] = p.x1;
     mu[2] = p.x2;
   }
-  for (int k = 0; k < kk; ++k) {
+  for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
     double* mu = m.speed_cone.data() + 3 * k;
@@ -65,7 +70,8 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
   }
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const double r = row.alpha * x[v.a(row.interval)] + row.beta * x[v.b(row.node)] + row.gamma * x[v.c(row.node)];
+    const int k = row.interval;
+    const double r = row.value(x[v.a(k)], x[v.b(k)], x[v.b(k + 1)], x[v.c(k)], x[v.c(k + 1)]);
     const double up = std::max(m.row_upper[static_cast<Eigen::Index>(i)] + rho * (r - row.hi), 0.0);
     track(up - m.row_upper[static_cast<Eigen::Index>(i)]);
     m.row_upper[static_cast<Eigen::Index>(i)] = up;
@@ -173,7 +179,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
     g[v.d(k)] -= rho * (p.t - p.x1);
   }
   // Speed cones, c^2 = b, b >= 0.
-  for (int k = 0; k < kk; ++k) {
+  for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = xs[v.b(k)];
     const double c = xs[v.c(k)];
     const double* mu = m.speed_cone.data() + 3 * k;
@@ -222,10 +228,13 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   const size_t rows = problem.rows.size();
   for (size_t i = 0; i < rows; ++i) {
     const LinearRow& row = problem.rows[i];
-    const int ia = v.a(row.interval);
-    const int ib = v.b(row.node);
-    const int ic = v.c(row.node);
-    const double r = row.alpha * xs[ia] + row.beta * xs[ib] + row.gamma * xs[ic];
+    const int k = row.interval;
+    const int ia = v.a(k);
+    const int ib0 = v.b(k);
+    const int ib1 = v.b(k + 1);
+    const int ic0 = v.c(k);
+    const int ic1 = v.c(k + 1);
+    const double r = row.value(xs[ia], xs[ib0], xs[ib1], xs[ic0], xs[ic1]);
     double t = r - row.hi + up[i] * inv_rho;
     if (t <= 0.0) t = 0.0;
     double l = row.lo - r + low[i] * inv_rho;  // -inf for one-sided rows
@@ -233,9 +242,13 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
     if (t > 0.0 || l > 0.0) {
       value += 0.5 * rho * (t * t + l * l);
       const double coef = rho * (t - l);
+      const double w1 = row.at;
+      const double w0 = 1.0 - w1;
       g[ia] += coef * row.alpha;
-      g[ib] += coef * row.beta;
-      g[ic] += coef * row.gamma;
+      g[ib0] += coef * row.beta * w0;
+      g[ib1] += coef * row.beta * w1;
+      g[ic0] += coef * row.gamma * w0;
+      g[ic1] += coef * row.gamma * w1;
     }
   }
   return value;
@@ -257,7 +270,8 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
   active.reserve(problem.rows.size());
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const double r = row.alpha * x[v.a(row.interval)] + row.beta * x[v.b(row.node)] + row.gamma * x[v.c(row.node)];
+    const int k = row.interval;
+    const double r = row.value(x[v.a(k)], x[v.b(k)], x[v.b(k + 1)], x[v.c(k)], x[v.c(k + 1)]);
     if (r >= row.hi - kActive) {
       active.push_back({static_cast<int>(i), 1.0});
     } else if (std::isfinite(row.lo) && r <= row.lo + kActive) {
@@ -285,7 +299,8 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
     const double c = x[v.c(n)];
     const double inv = 1.0 / (2.0 * problem.ds(row.interval));
     double value = (n == row.interval + 1 ? 1.0 : -1.0) * 2.0 * c * row.alpha * inv;
-    if (row.node == n) value += 2.0 * c * row.beta + row.gamma;
+    const double weight = n == row.interval ? 1.0 - row.at : row.at;  // of node n in b_at, c_at
+    value += weight * (2.0 * c * row.beta + row.gamma);
     return value;
   };
   // Least squares over the active rows; a row whose multiplier comes out with the wrong sign is
@@ -347,7 +362,8 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
     const double eta = std::max(0.0, active[i].sign * zeta);
     (active[i].sign > 0.0 ? m.row_upper : m.row_lower)[row_index] = eta;
     a_sum[static_cast<size_t>(row.interval)] += active[i].sign * eta * row.alpha;
-    b_sum[static_cast<size_t>(row.node)] += active[i].sign * eta * row.beta;
+    b_sum[static_cast<size_t>(row.interval)] += active[i].sign * eta * row.beta * (1.0 - row.at);
+    b_sum[static_cast<size_t>(row.interval) + 1] += active[i].sign * eta * row.beta * row.at;
   }
   for (int k = 0; k + 1 < kk; ++k) m.equality[k] = a_sum[static_cast<size_t>(k)];
   for (int n = 1; n + 1 < kk; ++n) {
@@ -359,7 +375,8 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
   for (size_t i = 0; i < active.size(); ++i) {
     const LinearRow& row = problem.rows[static_cast<size_t>(active[i].row)];
     const double eta = (active[i].sign > 0.0 ? m.row_upper : m.row_lower)[active[i].row];
-    c_sum[static_cast<size_t>(row.node)] += active[i].sign * eta * row.gamma;
+    c_sum[static_cast<size_t>(row.interval)] += active[i].sign * eta * row.gamma * (1.0 - row.at);
+    c_sum[static_cast<size_t>(row.interval) + 1] += active[i].sign * eta * row.gamma * row.at;
   }
   const auto last = static_cast<size_t>(kk - 1);
   m.equality[kk - 1] = a_sum[0] / (2.0 * problem.ds(0)) - b_sum[0];
@@ -399,7 +416,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
       for (int j = 0; j <= i; ++j) h.add(eq_index[i], eq_index[j], rho * eq[i] * eq[j]);
     }
   }
-  for (int k = 0; k < kk; ++k) {
+  for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
     const double* mu = m.speed_cone.data() + 3 * k;
@@ -427,19 +444,21 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
 
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const int index[3] = {v.a(row.interval), v.b(row.node), v.c(row.node)};
-    const double coef[3] = {row.alpha, row.beta, row.gamma};
-    const double r = row.alpha * x[index[0]] + row.beta * x[index[1]] + row.gamma * x[index[2]];
+    const int k = row.interval;
+    const int index[5] = {v.a(k), v.b(k), v.b(k + 1), v.c(k), v.c(k + 1)};
+    const double coef[5] = {row.alpha, row.beta * (1.0 - row.at), row.beta * row.at, row.gamma * (1.0 - row.at),
+                            row.gamma * row.at};
+    const double r = row.value(x[index[0]], x[index[1]], x[index[2]], x[index[3]], x[index[4]]);
     // Rows at or near their bound count as active: the minimiser is about to push past them,
     // and a row that just stepped inside still bounds how far the next step may go.
     const double near = 1e-9 * (1.0 + std::abs(r));
     const bool active = r - row.hi + m.row_upper[static_cast<Eigen::Index>(i)] * inv_rho > -near ||
                         row.lo - r + m.row_lower[static_cast<Eigen::Index>(i)] * inv_rho > -near;
-    for (int p = 0; p < 3; ++p) {
+    for (int p = 0; p < 5; ++p) {
       floor[index[p]] += coef[p] * coef[p];
-      if (!active) continue;
+      if (!active || coef[p] == 0.0) continue;
       for (int q = 0; q <= p; ++q) {
-        if (coef[p] != 0.0 && coef[q] != 0.0) h.add(index[p], index[q], rho * coef[p] * coef[q]);
+        if (coef[q] != 0.0) h.add(index[p], index[q], rho * coef[p] * coef[q]);
       }
     }
   }
@@ -474,9 +493,10 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
   };
 
   double primal = std::numeric_limits<double>::infinity();
+  double gradient_scale = cost_gradient;
   for (int outer = 0; outer < settings.max_outer_iterations; ++outer) {
     // Early outer steps need no more accuracy than their constraint violation.
-    const double target = std::max(settings.dual_tolerance, std::min(1e-2, 0.1 * primal)) * cost_gradient;
+    const double target = std::max(settings.dual_tolerance, std::min(1e-2, 0.1 * primal)) * gradient_scale;
     LbfgsResult r{LbfgsStatus::kMaxIterations, 0, 0, 0.0, 0.0};
     int inner_used = 0;
     // The preconditioner is the Hessian where a run starts; when the active set moves on, a
@@ -513,7 +533,16 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
 
     augmentedLagrangian(problem, state.multipliers, rho, x, w.gradient);
     ++report.evaluations;
-    report.dual_residual = w.gradient.lpNorm<Eigen::Infinity>() / cost_gradient;
+    // Relative to the larger of the two parts of the Lagrangian's gradient (cost, constraints):
+    // with large multipliers (sharp bends) the gradient cannot be resolved below their roundoff.
+    double constraint_part = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const int k = i / 4;
+      const double cost = (i % 4 == 3 && k + 1 < problem.gridPoints()) ? problem.cost_scale * 2.0 * problem.ds(k) : 0.0;
+      constraint_part = std::max(constraint_part, std::abs(w.gradient[i] - cost));
+    }
+    gradient_scale = std::max(cost_gradient, constraint_part);
+    report.dual_residual = w.gradient.lpNorm<Eigen::Infinity>() / gradient_scale;
     primal = updateMultipliers(problem, state.multipliers, rho, x);
     report.primal_residual = primal;
     report.outer_iterations = outer + 1;
