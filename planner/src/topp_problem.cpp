@@ -130,12 +130,16 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
         const DriveParams& d = drives[static_cast<size_t>(j)];
         const double qp = p.dq_ds[j];
         const double qpp = p.d2q_ds2[j];
-        // The sign of qdot_j where the row sits (both where q'_j vanishes; 0 too where the profile
-        // is pinned at rest). Where q'_j changes sign inside an interval, Coulomb friction flips
-        // between the rows; the continuous check catches any overshoot there and tightens.
-        int sign_lo = signOf(qp);
-        int sign_hi = sign_lo;
-        if (sign_lo == 0) {
+        // Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and
+        // the rows must hold on either side of the flip; both signs where q'_j vanishes; 0 too
+        // where the profile is pinned at rest).
+        int sign_lo = 1;
+        int sign_hi = -1;
+        for (const PathPoint* q : samples) {
+          sign_lo = std::min(sign_lo, signOf(q->dq_ds[j]));
+          sign_hi = std::max(sign_hi, signOf(q->dq_ds[j]));
+        }
+        if (sign_lo == 0 && sign_hi == 0) {
           sign_lo = -1;
           sign_hi = 1;
         }
