@@ -17,7 +17,9 @@ namespace {
 std::atomic<long> g_allocations{0};
 }  // namespace
 
-// Counts every global allocation of this test binary.
+// Counts every global allocation of this test binary (new/delete forward to malloc/free).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t size) {
   g_allocations.fetch_add(1, std::memory_order_relaxed);
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
@@ -25,6 +27,7 @@ void* operator new(std::size_t size) {
 }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 
 namespace cyber::planner {
 namespace {
