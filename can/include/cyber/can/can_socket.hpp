@@ -1,0 +1,84 @@
+#pragma once
+// A non-blocking SocketCAN raw socket bound to one interface. No exceptions: open() returns a
+// typed error, read()/write() an IoResult the caller can count without allocating.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cyber/can/frame.hpp"
+#include "cyber/can/id_filter.hpp"
+#include "cyber/can/result.hpp"
+
+namespace cyber::can {
+
+struct SocketOptions {
+  // nullopt: receive every data frame; an empty list: receive none.
+  std::optional<std::vector<IdFilter>> filters = daemonReceiveFilters();
+  // Deliver error frames for bus-off, controller problems, tx timeouts and restarts.
+  bool receive_bus_errors = true;
+};
+
+enum class OpenError {
+  kInvalidName,       // empty, too long, or containing '/' or white space
+  kKernelWithoutCan,  // socket(PF_CAN) not supported: no can / can-raw modules
+  kNoSuchInterface,   // no network interface of that name
+  kSetupFailed,       // a socket option or bind() failed
+};
+
+struct SocketError {
+  OpenError kind = OpenError::kSetupFailed;
+  int error_number = 0;  // errno, 0 when not from a system call
+  std::string message;   // names the interface and the cause
+};
+
+enum class IoStatus {
+  kOk,
+  kWouldBlock,     // EAGAIN: nothing to read / transmit queue full for now
+  kNoBufferSpace,  // ENOBUFS: the driver's queue is full (bus down or flooded)
+  kNetworkDown,    // ENETDOWN: the interface is down
+  kError,          // anything else; error_number tells
+};
+
+struct IoResult {
+  IoStatus status = IoStatus::kOk;
+  int error_number = 0;  // errno for kNoBufferSpace/kNetworkDown/kError; EMSGSIZE for short I/O
+
+  bool ok() const { return status == IoStatus::kOk; }
+  std::string message() const;  // allocates: for logs, not for the streaming path
+};
+
+// The IoResult of a failed read()/write() with this errno.
+IoResult ioResultFromErrno(int error_number);
+
+class CanSocket {
+ public:
+  static Result<CanSocket, SocketError> open(std::string_view ifname,
+                                             const SocketOptions& options = {});
+  // Takes ownership of an already open descriptor (tests use a socketpair in place of CAN).
+  static CanSocket adopt(int fd) { return CanSocket(fd); }
+
+  CanSocket(CanSocket&& other) noexcept;
+  CanSocket& operator=(CanSocket&& other) noexcept;
+  CanSocket(const CanSocket&) = delete;
+  CanSocket& operator=(const CanSocket&) = delete;
+  ~CanSocket();
+
+  int fd() const { return fd_; }  // for poll/epoll; stays owned by this object
+
+  // One frame, without blocking. Frames the kernel hands over are always accepted: error frames
+  // come back with frame.error set.
+  IoResult read(Frame& frame);
+  // One frame, without blocking. The frame should be well-formed (isWellFormed).
+  IoResult write(const Frame& frame);
+
+ private:
+  explicit CanSocket(int fd) : fd_(fd) {}
+  void close();
+
+  int fd_ = -1;
+};
+
+}  // namespace cyber::can

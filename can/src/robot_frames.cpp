@@ -1,0 +1,49 @@
+#include "cyber/can/robot_frames.hpp"
+
+#include "cyber/can/frc_id.hpp"
+#include "wire.hpp"
+
+namespace cyber::can {
+
+Result<Heartbeat, CodecError> decodeHeartbeat(const Frame& frame) {
+  if (const auto problem =
+          wire::checkDataFrame(frame, frame.id == kHeartbeatId, kHeartbeatLength)) {
+    return *problem;
+  }
+  const std::uint8_t flags = frame.data[kHeartbeatFlagsByte];
+  Heartbeat out;
+  out.red_alliance = (flags & heartbeat_bit::kRedAlliance) != 0;
+  out.enabled = (flags & heartbeat_bit::kEnabled) != 0;
+  out.autonomous = (flags & heartbeat_bit::kAutonomous) != 0;
+  out.test = (flags & heartbeat_bit::kTest) != 0;
+  out.system_watchdog = (flags & heartbeat_bit::kSystemWatchdog) != 0;
+  return out;
+}
+
+Frame encodeHeartbeat(const Heartbeat& heartbeat) {
+  Frame frame;
+  frame.id = kHeartbeatId;
+  frame.extended = true;
+  frame.dlc = kHeartbeatLength;
+  std::uint8_t flags = 0;
+  if (heartbeat.red_alliance) flags |= heartbeat_bit::kRedAlliance;
+  if (heartbeat.enabled) flags |= heartbeat_bit::kEnabled;
+  if (heartbeat.autonomous) flags |= heartbeat_bit::kAutonomous;
+  if (heartbeat.test) flags |= heartbeat_bit::kTest;
+  if (heartbeat.system_watchdog) flags |= heartbeat_bit::kSystemWatchdog;
+  frame.data[kHeartbeatFlagsByte] = flags;
+  return frame;
+}
+
+bool isBroadcastDisable(const Frame& frame) {
+  return !frame.error && frame.id == kBroadcastDisableId;
+}
+
+Frame makeBroadcastDisable() {
+  Frame frame;
+  frame.id = kBroadcastDisableId;
+  frame.extended = true;
+  return frame;
+}
+
+}  // namespace cyber::can

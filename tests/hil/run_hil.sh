@@ -1,0 +1,97 @@
+#!/usr/bin/env bash
+# Host side of the HIL tests (ctest label hil): runs tools/vcan-vm for one case from the source
+# root, the same command docs/testing.md shows, and checks its exit status and what came out.
+# Usage: tests/hil/run_hil.sh [--print] CASE BUILD_DIR
+#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode
+#   --print: only print the tools/vcan-vm command of the case (for the docs check)
+set -uo pipefail
+
+print_only=0
+[[ ${1:-} == --print ]] && print_only=1 && shift
+[[ $# -eq 2 ]] || { echo "usage: $0 [--print] CASE BUILD_DIR" >&2; exit 2; }
+src=$(cd "$(dirname "$0")/../.." && pwd)
+build_abs=$(realpath -m "$2")
+cd "$src" || exit 2
+# Relative to the source root when inside it, so the commands read as in docs/testing.md.
+build=$(realpath -m --relative-base="$src" "$build_abs")
+export CYBER_VCAN_CACHE=$build/vcan-vm
+probe=$build/tests/hil/vcan_probe
+out=$build/hil/$1
+log=$build/hil/$1.log
+
+fail() { echo "run_hil: FAIL ($1): ${*:2}" >&2; exit 1; }
+
+# The tools/vcan-vm arguments of each case, in the array args.
+args_for() {
+  case $1 in
+    prepare) args=(--prepare) ;;
+    smoke) args=(--auto --bin "$probe" --out "$out" --run tests/hil/vcan_smoke.sh) ;;
+    failure_propagates) args=(--auto --out "$out" --run tests/hil/vcan_exit3.sh) ;;
+    script_timeout) args=(--auto --timeout 90 --script-timeout 3 --out "$out" --run tests/hil/vcan_hang.sh) ;;
+    host_mode)
+      args=(--vm --bin /usr/bin/bash --bin /usr/bin/unshare --bin /usr/bin/timeout --bin /usr/bin/setpriv
+        --bin "$probe" --file tools/vcan-vm --file tests/hil/vcan_smoke.sh --file tests/hil/vcan_exit3.sh
+        --out "$out" --run tests/hil/vcan_host_mode.sh)
+      ;;
+    *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
+  esac
+}
+
+# Runs tools/vcan-vm for the case; sets $status, keeps its output in $log.
+vcan_vm() {
+  mkdir -p "$build/hil"
+  rm -rf "$out"
+  echo "+ tools/vcan-vm ${args[*]}"
+  tools/vcan-vm "${args[@]}" >"$log" 2>&1
+  status=$?
+  cat "$log"
+  echo "run_hil: tools/vcan-vm exited with status $status"
+}
+
+# Every frame the smoke script sends must be in the capture DIR/smoke.log, in candump -L form.
+check_capture() {
+  local capture=$1/smoke.log f
+  [[ -s $capture ]] || fail smoke "no capture at $capture"
+  for f in 0A080041#0102030405060708 123#DEADBEEF 001#11 '7FF#' 1FFFFFFF#CAFE 456#R 1F334455#CAFE000102030405; do
+    grep -Eq "^\([0-9]+\.[0-9]{6}\) vcan0 $f\$" "$capture" || fail smoke "frame $f missing from $capture"
+  done
+  [[ $(grep -Ec '^\([0-9]+\.[0-9]{6}\) vcan0 321#[0-9A-F]{4}$' "$capture") -eq 20 ]] ||
+    fail smoke "$capture does not hold the 20 cangen frames"
+}
+
+args_for "$1"
+if ((print_only)); then
+  echo "tools/vcan-vm ${args[*]}"
+  exit 0
+fi
+
+case $1 in
+  prepare)
+    vcan_vm
+    [[ $status -eq 0 ]] || fail prepare "kernel fetch or check failed"
+    ;;
+  smoke)
+    vcan_vm
+    [[ $status -eq 0 ]] || fail smoke "the guest script failed"
+    check_capture "$out"
+    grep -q "vcan_probe: ok" "$out/console.log" || fail smoke "vcan_probe did not report ok"
+    ;;
+  failure_propagates)
+    vcan_vm
+    [[ $status -eq 3 ]] || fail failure_propagates "expected status 3 from the failing guest script"
+    grep -q "exit3: failing on purpose" "$out/console.log" || fail failure_propagates "the script's output is not in console.log"
+    ;;
+  script_timeout)
+    vcan_vm
+    [[ $status -eq 124 ]] || fail script_timeout "expected status 124 from a script that never ends"
+    grep -q "script timed out after 3 s" "$log" || fail script_timeout "not stopped by --script-timeout"
+    ;;
+  host_mode)
+    vcan_vm
+    [[ $status -eq 0 ]] || fail host_mode "host mode failed inside the VM"
+    grep -q "auto: using host mode" "$out/console.log" || fail host_mode "--auto did not pick host mode"
+    check_capture "$out/root"
+    check_capture "$out/user"
+    ;;
+esac
+echo "run_hil: $1 passed"

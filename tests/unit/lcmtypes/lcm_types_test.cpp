@@ -1,0 +1,419 @@
+#include <gtest/gtest.h>
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "cyber/can/status_codec.hpp"
+#include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyberplanner/arm_daemon_status_t.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+
+namespace {
+
+using namespace cyberplanner;  // NOLINT: the generated types' package
+
+template <class Message>
+std::vector<std::uint8_t> encode(const Message& message) {
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(message.getEncodedSize()));
+  const int written = message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  EXPECT_EQ(written, static_cast<int>(bytes.size()));
+  return bytes;
+}
+
+template <class Message>
+Message decodeOk(const std::vector<std::uint8_t>& bytes) {
+  Message out{};
+  EXPECT_EQ(out.decode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  return out;
+}
+
+class Values {
+ public:
+  explicit Values(unsigned seed) : rng_(seed) {}
+  double real() { return std::uniform_real_distribution<double>(-1e3, 1e3)(rng_); }
+  std::int64_t integer() { return std::uniform_int_distribution<std::int64_t>(INT64_MIN, INT64_MAX)(rng_); }
+  std::int8_t small(int high) { return static_cast<std::int8_t>(std::uniform_int_distribution<int>(0, high)(rng_)); }
+  bool flag() { return std::bernoulli_distribution(0.5)(rng_); }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+arm_goal_t randomGoal(Values& v) {
+  arm_goal_t m{};
+  m.utime = v.integer();
+  m.request_id = v.integer();
+  m.elevator_m = v.real();
+  m.arm_rad = v.real();
+  m.held_coral = v.flag();
+  m.held_algae = v.flag();
+  m.scene_name = v.flag() ? "" : "reef-left";
+  return m;
+}
+
+TEST(LcmTypes, GoalRoundTrip) {
+  Values v(1);
+  for (int i = 0; i < 200; ++i) {
+    const arm_goal_t in = randomGoal(v);
+    const auto out = decodeOk<arm_goal_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.request_id, in.request_id);
+    ASSERT_EQ(out.elevator_m, in.elevator_m);
+    ASSERT_EQ(out.arm_rad, in.arm_rad);
+    ASSERT_EQ(out.held_coral, in.held_coral);
+    ASSERT_EQ(out.held_algae, in.held_algae);
+    ASSERT_EQ(out.scene_name, in.scene_name);
+  }
+}
+
+TEST(LcmTypes, StateRoundTrip) {
+  Values v(2);
+  for (int i = 0; i < 200; ++i) {
+    arm_state_t in{};
+    in.utime = v.integer();
+    in.elevator_m = v.real();
+    in.elevator_mps = v.real();
+    in.arm_rad = v.real();
+    in.arm_radps = v.real();
+    in.held_coral = v.flag();
+    in.held_algae = v.flag();
+    const auto out = decodeOk<arm_state_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.elevator_m, in.elevator_m);
+    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
+    ASSERT_EQ(out.arm_rad, in.arm_rad);
+    ASSERT_EQ(out.arm_radps, in.arm_radps);
+    ASSERT_EQ(out.held_coral, in.held_coral);
+    ASSERT_EQ(out.held_algae, in.held_algae);
+  }
+}
+
+TEST(LcmTypes, PlanStatusRoundTrip) {
+  Values v(3);
+  for (int i = 0; i < 200; ++i) {
+    arm_plan_status_t in{};
+    in.utime = v.integer();
+    in.request_id = v.integer();
+    in.status = v.small(arm_plan_status_t::STATUS_CANCELLED);
+    in.reason = v.flag() ? "" : "goal in collision: arm vs. reef pipe, clearance 0.012 m < 0.03 m";
+    in.grid_ms = v.real();
+    in.search_ms = v.real();
+    in.smooth_ms = v.real();
+    in.topp_ms = v.real();
+    in.total_ms = v.real();
+    in.duration_s = v.real();
+    const auto out = decodeOk<arm_plan_status_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.request_id, in.request_id);
+    ASSERT_EQ(out.status, in.status);
+    ASSERT_EQ(out.reason, in.reason);
+    ASSERT_EQ(out.grid_ms, in.grid_ms);
+    ASSERT_EQ(out.search_ms, in.search_ms);
+    ASSERT_EQ(out.smooth_ms, in.smooth_ms);
+    ASSERT_EQ(out.topp_ms, in.topp_ms);
+    ASSERT_EQ(out.total_ms, in.total_ms);
+    ASSERT_EQ(out.duration_s, in.duration_s);
+  }
+}
+
+arm_trajectory_t randomTrajectory(Values& v, int samples) {
+  arm_trajectory_t m{};
+  m.utime = v.integer();
+  m.request_id = v.integer();
+  m.start_utime = v.integer();
+  m.duration_s = v.real();
+  m.dt_s = v.real();
+  m.num_samples = samples;
+  for (auto* column : {&m.t_s, &m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps,
+                       &m.elevator_volts, &m.arm_volts}) {
+    column->resize(static_cast<std::size_t>(samples));
+    for (double& x : *column) x = v.real();
+  }
+  return m;
+}
+
+TEST(LcmTypes, TrajectoryRoundTrip) {
+  Values v(4);
+  for (int samples : {0, 1, 2, 17, 999, static_cast<int>(arm_trajectory_t::MAX_SAMPLES)}) {
+    const arm_trajectory_t in = randomTrajectory(v, samples);
+    const auto out = decodeOk<arm_trajectory_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.request_id, in.request_id);
+    ASSERT_EQ(out.start_utime, in.start_utime);
+    ASSERT_EQ(out.duration_s, in.duration_s);
+    ASSERT_EQ(out.dt_s, in.dt_s);
+    ASSERT_EQ(out.num_samples, in.num_samples);
+    ASSERT_EQ(out.t_s, in.t_s);
+    ASSERT_EQ(out.elevator_m, in.elevator_m);
+    ASSERT_EQ(out.arm_rad, in.arm_rad);
+    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
+    ASSERT_EQ(out.arm_radps, in.arm_radps);
+    ASSERT_EQ(out.elevator_volts, in.elevator_volts);
+    ASSERT_EQ(out.arm_volts, in.arm_volts);
+  }
+}
+
+TEST(LcmTypes, FullTrajectoryStaysUnder60kB) {
+  Values v(5);
+  const arm_trajectory_t full = randomTrajectory(v, arm_trajectory_t::MAX_SAMPLES);
+  EXPECT_EQ(full.getEncodedSize(), 56052);  // docs/lcm.md quotes this number
+  EXPECT_LT(full.getEncodedSize(), 60000);
+  EXPECT_EQ(static_cast<int>(encode(full).size()), full.getEncodedSize());
+}
+
+TEST(LcmTypes, SetpointRoundTrip) {
+  Values v(6);
+  for (int i = 0; i < 200; ++i) {
+    arm_setpoint_t in{};
+    in.utime = v.integer();
+    in.mode = v.small(arm_setpoint_t::MODE_ROBOT_DISABLED);
+    in.request_id = v.integer();
+    in.trajectory_t_s = v.real();
+    in.elevator_m = v.real();
+    in.elevator_mps = v.real();
+    in.elevator_volts = v.real();
+    in.elevator_sequence = static_cast<std::uint8_t>(v.integer());
+    in.arm_rad = v.real();
+    in.arm_radps = v.real();
+    in.arm_volts = v.real();
+    in.arm_sequence = static_cast<std::uint8_t>(v.integer());
+    const auto out = decodeOk<arm_setpoint_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.mode, in.mode);
+    ASSERT_EQ(out.request_id, in.request_id);
+    ASSERT_EQ(out.trajectory_t_s, in.trajectory_t_s);
+    ASSERT_EQ(out.elevator_m, in.elevator_m);
+    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
+    ASSERT_EQ(out.elevator_volts, in.elevator_volts);
+    ASSERT_EQ(out.elevator_sequence, in.elevator_sequence);
+    ASSERT_EQ(out.arm_rad, in.arm_rad);
+    ASSERT_EQ(out.arm_radps, in.arm_radps);
+    ASSERT_EQ(out.arm_volts, in.arm_volts);
+    ASSERT_EQ(out.arm_sequence, in.arm_sequence);
+  }
+}
+
+TEST(LcmTypes, DaemonStatusRoundTrip) {
+  Values v(7);
+  for (int i = 0; i < 200; ++i) {
+    arm_daemon_status_t in{};
+    in.utime = v.integer();
+    in.mode = v.small(arm_daemon_status_t::MODE_ROBOT_DISABLED);
+    in.robot_enabled = v.flag();
+    in.motion_allowed = v.flag();
+    in.active_request_id = v.integer();
+    in.state_age_ms = v.real();
+    in.heartbeat_age_ms = v.real();
+    in.goals_received = v.integer();
+    in.plans_succeeded = v.integer();
+    in.plans_failed = v.integer();
+    in.frames_sent = v.integer();
+    in.can_errors = v.integer();
+    in.decode_errors = v.integer();
+    in.stream_overruns = v.integer();
+    in.plan_time_p50_ms = v.real();
+    in.plan_time_p99_ms = v.real();
+    in.plan_time_max_ms = v.real();
+    in.stream_jitter_p50_us = v.real();
+    in.stream_jitter_p99_us = v.real();
+    in.stream_jitter_max_us = v.real();
+    const auto out = decodeOk<arm_daemon_status_t>(encode(in));
+    ASSERT_EQ(out.utime, in.utime);
+    ASSERT_EQ(out.mode, in.mode);
+    ASSERT_EQ(out.robot_enabled, in.robot_enabled);
+    ASSERT_EQ(out.motion_allowed, in.motion_allowed);
+    ASSERT_EQ(out.active_request_id, in.active_request_id);
+    ASSERT_EQ(out.state_age_ms, in.state_age_ms);
+    ASSERT_EQ(out.heartbeat_age_ms, in.heartbeat_age_ms);
+    ASSERT_EQ(out.goals_received, in.goals_received);
+    ASSERT_EQ(out.plans_succeeded, in.plans_succeeded);
+    ASSERT_EQ(out.plans_failed, in.plans_failed);
+    ASSERT_EQ(out.frames_sent, in.frames_sent);
+    ASSERT_EQ(out.can_errors, in.can_errors);
+    ASSERT_EQ(out.decode_errors, in.decode_errors);
+    ASSERT_EQ(out.stream_overruns, in.stream_overruns);
+    ASSERT_EQ(out.plan_time_p50_ms, in.plan_time_p50_ms);
+    ASSERT_EQ(out.plan_time_p99_ms, in.plan_time_p99_ms);
+    ASSERT_EQ(out.plan_time_max_ms, in.plan_time_max_ms);
+    ASSERT_EQ(out.stream_jitter_p50_us, in.stream_jitter_p50_us);
+    ASSERT_EQ(out.stream_jitter_p99_us, in.stream_jitter_p99_us);
+    ASSERT_EQ(out.stream_jitter_max_us, in.stream_jitter_max_us);
+  }
+}
+
+TEST(LcmTypes, ModeConstantsMatchTheCanStatusModes) {
+  using cyber::can::Mode;
+  EXPECT_EQ(arm_setpoint_t::MODE_NO_STATE, static_cast<int>(Mode::kNoState));
+  EXPECT_EQ(arm_setpoint_t::MODE_HOLDING, static_cast<int>(Mode::kHolding));
+  EXPECT_EQ(arm_setpoint_t::MODE_MOVING, static_cast<int>(Mode::kMoving));
+  EXPECT_EQ(arm_setpoint_t::MODE_FAULT, static_cast<int>(Mode::kFault));
+  EXPECT_EQ(arm_setpoint_t::MODE_ROBOT_DISABLED, static_cast<int>(Mode::kRobotDisabled));
+  EXPECT_EQ(arm_daemon_status_t::MODE_NO_STATE, static_cast<int>(Mode::kNoState));
+  EXPECT_EQ(arm_daemon_status_t::MODE_HOLDING, static_cast<int>(Mode::kHolding));
+  EXPECT_EQ(arm_daemon_status_t::MODE_MOVING, static_cast<int>(Mode::kMoving));
+  EXPECT_EQ(arm_daemon_status_t::MODE_FAULT, static_cast<int>(Mode::kFault));
+  EXPECT_EQ(arm_daemon_status_t::MODE_ROBOT_DISABLED, static_cast<int>(Mode::kRobotDisabled));
+}
+
+TEST(LcmTypes, FingerprintMismatchFails) {
+  Values v(8);
+  const auto goal_bytes = encode(randomGoal(v));
+  arm_state_t state{};
+  EXPECT_LT(state.decode(goal_bytes.data(), 0, static_cast<int>(goal_bytes.size())), 0);
+  arm_plan_status_t status{};
+  EXPECT_LT(status.decode(goal_bytes.data(), 0, static_cast<int>(goal_bytes.size())), 0);
+  EXPECT_LT(cyber::lcmtypes::safeDecode(state, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0);
+  // Every type has its own fingerprint.
+  const std::int64_t hashes[] = {arm_goal_t::getHash(),        arm_state_t::getHash(),
+                                 arm_plan_status_t::getHash(), arm_trajectory_t::getHash(),
+                                 arm_setpoint_t::getHash(),    arm_daemon_status_t::getHash()};
+  for (std::size_t i = 0; i < std::size(hashes); ++i) {
+    for (std::size_t j = i + 1; j < std::size(hashes); ++j) EXPECT_NE(hashes[i], hashes[j]);
+  }
+}
+
+TEST(LcmTypes, TruncatedMessagesFail) {
+  Values v(9);
+  const auto bytes = encode(randomGoal(v));
+  for (std::size_t length = 0; length < bytes.size(); ++length) {
+    arm_goal_t goal{};
+    ASSERT_LT(cyber::lcmtypes::safeDecode(goal, bytes.data(), static_cast<int>(length)), 0) << length;
+  }
+  const auto trajectory_bytes = encode(randomTrajectory(v, 10));
+  for (std::size_t length = 0; length < trajectory_bytes.size(); ++length) {
+    arm_trajectory_t trajectory{};
+    ASSERT_LT(cyber::lcmtypes::safeDecode(trajectory, trajectory_bytes.data(), static_cast<int>(length)), 0);
+  }
+}
+
+TEST(LcmTypes, GarbageBytesFailCleanly) {
+  std::mt19937 rng(10);
+  std::uniform_int_distribution<int> byte(0, 255), length(0, 300);
+  for (int i = 0; i < 2000; ++i) {
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(length(rng)));
+    for (auto& b : bytes) b = static_cast<std::uint8_t>(byte(rng));
+    arm_goal_t goal{};
+    arm_trajectory_t trajectory{};
+    arm_daemon_status_t status{};
+    ASSERT_LT(cyber::lcmtypes::safeDecode(goal, bytes.data(), static_cast<int>(bytes.size())), 0);
+    ASSERT_LT(cyber::lcmtypes::safeDecode(trajectory, bytes.data(), static_cast<int>(bytes.size())), 0);
+    ASSERT_LT(cyber::lcmtypes::safeDecode(status, bytes.data(), static_cast<int>(bytes.size())), 0);
+  }
+}
+
+// Write a big-endian int32 at offset (LCM's wire order).
+void putInt32(std::vector<std::uint8_t>& bytes, std::size_t offset, std::int32_t value) {
+  const auto bits = static_cast<std::uint32_t>(value);
+  for (int i = 0; i < 4; ++i) bytes[offset + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(bits >> (24 - 8 * i));
+}
+
+std::int32_t getInt32(const std::vector<std::uint8_t>& bytes, std::size_t offset) {
+  std::uint32_t bits = 0;
+  for (int i = 0; i < 4; ++i) bits = (bits << 8) | bytes[offset + static_cast<std::size_t>(i)];
+  return static_cast<std::int32_t>(bits);
+}
+
+TEST(LcmTypes, SafeDecodeKnowsWhereTheLengthFieldsAre) {
+  namespace d = cyber::lcmtypes::detail;
+  Values v(13);
+  arm_goal_t goal = randomGoal(v);
+  goal.scene_name = "reef-left";
+  EXPECT_EQ(getInt32(encode(goal), d::kGoalSceneNameLengthAt), 10);  // with the NUL
+  arm_plan_status_t status{};
+  status.reason = "no path";
+  EXPECT_EQ(getInt32(encode(status), d::kPlanStatusReasonLengthAt), 8);
+  EXPECT_EQ(getInt32(encode(randomTrajectory(v, 37)), d::kTrajectoryCountAt), 37);
+}
+
+TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
+  namespace d = cyber::lcmtypes::detail;
+  Values v(11);
+  arm_goal_t goal = randomGoal(v);
+  goal.scene_name = "reef";
+  auto goal_bytes = encode(goal);
+  for (std::int32_t bad : {0, -1, -100, INT32_MIN, 6, 1000, INT32_MAX}) {
+    putInt32(goal_bytes, d::kGoalSceneNameLengthAt, bad);
+    arm_goal_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0)
+        << bad;
+  }
+
+  arm_plan_status_t status{};
+  status.reason = "x";
+  auto status_bytes = encode(status);
+  for (std::int32_t bad : {0, INT32_MIN, 3, INT32_MAX}) {
+    putInt32(status_bytes, d::kPlanStatusReasonLengthAt, bad);
+    arm_plan_status_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, status_bytes.data(), static_cast<int>(status_bytes.size())), 0)
+        << bad;
+  }
+
+  auto trajectory_bytes = encode(randomTrajectory(v, 3));
+  for (std::int32_t bad : {-1, INT32_MIN, 4, static_cast<int>(arm_trajectory_t::MAX_SAMPLES) + 1, INT32_MAX}) {
+    putInt32(trajectory_bytes, d::kTrajectoryCountAt, bad);
+    arm_trajectory_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, trajectory_bytes.data(), static_cast<int>(trajectory_bytes.size())), 0)
+        << bad;
+  }
+}
+
+TEST(LcmTypes, SafeDecodeAcceptsEveryValidMessage) {
+  Values v(14);
+  for (int i = 0; i < 50; ++i) {
+    const auto goal_bytes = encode(randomGoal(v));
+    arm_goal_t goal{};
+    ASSERT_EQ(cyber::lcmtypes::safeDecode(goal, goal_bytes.data(), static_cast<int>(goal_bytes.size())),
+              static_cast<int>(goal_bytes.size()));
+  }
+  arm_plan_status_t empty_reason{};
+  const auto status_bytes = encode(empty_reason);
+  arm_plan_status_t status{};
+  EXPECT_EQ(cyber::lcmtypes::safeDecode(status, status_bytes.data(), static_cast<int>(status_bytes.size())),
+            static_cast<int>(status_bytes.size()));
+  const auto full_bytes = encode(randomTrajectory(v, arm_trajectory_t::MAX_SAMPLES));
+  arm_trajectory_t full{};
+  EXPECT_EQ(cyber::lcmtypes::safeDecode(full, full_bytes.data(), static_cast<int>(full_bytes.size())),
+            static_cast<int>(full_bytes.size()));
+  EXPECT_EQ(full.num_samples, arm_trajectory_t::MAX_SAMPLES);
+}
+
+class GoalCatcher {
+ public:
+  void onGoal(const lcm::ReceiveBuffer* /*buffer*/, const std::string& channel, const arm_goal_t* goal) {
+    channels.push_back(channel);
+    goals.push_back(*goal);
+  }
+  std::vector<std::string> channels;
+  std::vector<arm_goal_t> goals;
+};
+
+TEST(LcmTypes, MemqPublishSubscribe) {
+  lcm::LCM lcm("memq://");
+  ASSERT_TRUE(lcm.good());
+  GoalCatcher catcher;
+  ASSERT_NE(lcm.subscribe("ARM_GOAL", &GoalCatcher::onGoal, &catcher), nullptr);
+
+  Values v(12);
+  const arm_goal_t sent = randomGoal(v);
+  ASSERT_EQ(lcm.publish("ARM_GOAL", &sent), 0);
+  arm_state_t other{};
+  ASSERT_EQ(lcm.publish("ARM_STATE", &other), 0);  // no subscriber: not delivered to us
+  EXPECT_GT(lcm.handleTimeout(1000), 0);
+  EXPECT_EQ(lcm.handleTimeout(0), 0);  // only the subscribed message was queued for us
+
+  ASSERT_EQ(catcher.goals.size(), 1u);
+  EXPECT_EQ(catcher.channels[0], "ARM_GOAL");
+  EXPECT_EQ(catcher.goals[0].request_id, sent.request_id);
+  EXPECT_EQ(catcher.goals[0].elevator_m, sent.elevator_m);
+  EXPECT_EQ(catcher.goals[0].arm_rad, sent.arm_rad);
+  EXPECT_EQ(catcher.goals[0].scene_name, sent.scene_name);
+}
+
+}  // namespace
