@@ -55,11 +55,12 @@ void BandedCholesky::solveLower(Eigen::VectorXd& x) const {
 }
 
 void BandedCholesky::solveUpper(Eigen::VectorXd& x) const {
+  // Column-oriented: once x_i is final, remove its contribution from the rows above (row i of
+  // L is contiguous in the band storage).
   for (Eigen::Index i = n_ - 1; i >= 0; --i) {
-    double v = x[i];
-    const Eigen::Index last = std::min<Eigen::Index>(n_ - 1, i + w_);
-    for (Eigen::Index k = i + 1; k <= last; ++k) v -= at(k, i) * x[k];
-    x[i] = v / at(i, i);
+    const double xi = x[i] / at(i, i);
+    x[i] = xi;
+    for (Eigen::Index k = std::max<Eigen::Index>(0, i - w_); k < i; ++k) x[k] -= at(i, k) * xi;
   }
 }
 

@@ -9,6 +9,7 @@ namespace cyber::planner::topp {
 namespace {
 
 constexpr double kTinyCoefficient = 1e-14;
+constexpr double kMaxCurvatureWeight = 1e4;  // |q''| (unit-length path) beyond which density stops growing
 
 int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); }
 
@@ -31,7 +32,10 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
   if (std::abs(row.alpha) < kTinyCoefficient && std::abs(row.beta) < kTinyCoefficient &&
       std::abs(row.gamma) < kTinyCoefficient) {
     if (row.lo > 0.0 || row.hi < 0.0) {
-      if (error) *error = describe(row.kind, row.joint, problem.s[static_cast<size_t>(row.node)]);
+      if (error) {
+        const double s0 = problem.s[static_cast<size_t>(row.interval)];
+        *error = describe(row.kind, row.joint, s0 + row.at * problem.ds(row.interval));
+      }
       return false;
     }
     return true;
@@ -45,15 +49,45 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
 void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem) {
   const int k_points = std::max(2, grid_points);
   const double length = path.length();
-  problem.s.resize(static_cast<size_t>(k_points));
-  problem.points.resize(static_cast<size_t>(k_points));
-  for (int k = 0; k < k_points; ++k) {
-    const double u = k + 1 == k_points ? 1.0 : static_cast<double>(k) / (k_points - 1);
-    problem.s[static_cast<size_t>(k)] = u;
-    PathPoint p = path.at(k + 1 == k_points ? length : length * u);
+  auto sample = [&](double u) {
+    PathPoint p = path.at(u >= 1.0 ? length : length * u);
     p.dq_ds *= length;
     p.d2q_ds2 *= length * length;
-    problem.points[static_cast<size_t>(k)] = p;
+    return p;
+  };
+  // Grid density 1 + sqrt(|q''| L) (unit-length q'' here): where the path bends sharply the limits
+  // change fast along s and the optimum dips, so the points gather there (a straight path keeps
+  // a uniform grid). The density is sampled at 4 K points and its integral inverted.
+  const int fine = 4 * (k_points - 1);
+  std::vector<double>& cumulative = problem.density_workspace;
+  cumulative.assign(static_cast<size_t>(fine) + 1, 0.0);
+  double previous = 0.0;
+  for (int i = 0; i <= fine; ++i) {
+    const PathPoint p = sample(static_cast<double>(i) / fine);
+    const double density = 1.0 + std::sqrt(std::min(p.d2q_ds2.norm(), kMaxCurvatureWeight));
+    if (i > 0) cumulative[static_cast<size_t>(i)] = cumulative[static_cast<size_t>(i) - 1] + 0.5 * (density + previous);
+    previous = density;
+  }
+  const double total = cumulative.back();
+  problem.s.resize(static_cast<size_t>(k_points));
+  problem.points.resize(static_cast<size_t>(k_points));
+  problem.midpoints.resize(static_cast<size_t>(k_points) - 1);
+  size_t cell = 0;
+  for (int k = 0; k < k_points; ++k) {
+    double u = 1.0;
+    if (k + 1 < k_points) {
+      const double target = total * k / (k_points - 1);
+      while (cell + 1 < cumulative.size() && cumulative[cell + 1] < target) ++cell;
+      const double span = cumulative[cell + 1] - cumulative[cell];
+      const double fraction = span > 0.0 ? (target - cumulative[cell]) / span : 0.0;
+      u = (static_cast<double>(cell) + std::clamp(fraction, 0.0, 1.0)) / fine;
+    }
+    problem.s[static_cast<size_t>(k)] = u;
+    problem.points[static_cast<size_t>(k)] = sample(u);
+  }
+  for (int k = 0; k + 1 < k_points; ++k) {
+    problem.midpoints[static_cast<size_t>(k)] =
+        sample(0.5 * (problem.s[static_cast<size_t>(k)] + problem.s[static_cast<size_t>(k) + 1]));
   }
 }
 
@@ -61,6 +95,7 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
   const double t2 = time_scale_s * time_scale_s;
   out.s = in.s;
   out.points.clear();
+  out.midpoints.clear();
   out.rows = in.rows;
   out.row_begin = in.row_begin;
   for (LinearRow& row : out.rows) {
@@ -83,20 +118,31 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
   const double inf = std::numeric_limits<double>::infinity();
   for (int k = 0; k < intervals; ++k) {
     problem.row_begin[static_cast<size_t>(k)] = static_cast<int>(problem.rows.size());
-    for (int end = 0; end < 2; ++end) {
-      const int node = k + end;
-      const PathPoint& p = problem.points[static_cast<size_t>(node)];
-      const bool pinned_at_rest =
-          (node == 0 && problem.b_start == 0.0) || (node == intervals && problem.b_end == 0.0);
+    const PathPoint* samples[3] = {&problem.points[static_cast<size_t>(k)], &problem.points[static_cast<size_t>(k) + 1],
+                                   &problem.midpoints[static_cast<size_t>(k)]};
+    constexpr double kAt[3] = {0.0, 1.0, 0.5};
+    for (int place = 0; place < 3; ++place) {
+      const double at = kAt[place];
+      const PathPoint& p = *samples[place];
+      const bool pinned_at_rest = (place == 0 && k == 0 && problem.b_start == 0.0) ||
+                                  (place == 1 && k + 1 == intervals && problem.b_end == 0.0);
       for (int j = 0; j < kJointCount; ++j) {
         const DriveParams& d = drives[static_cast<size_t>(j)];
         const double qp = p.dq_ds[j];
         const double qpp = p.d2q_ds2[j];
-        // Signs of qdot_j on the interval: a sign change of q'_j means it passes through zero.
-        int sign_lo = std::min(signOf(problem.points[static_cast<size_t>(k)].dq_ds[j]),
-                               signOf(problem.points[static_cast<size_t>(k) + 1].dq_ds[j]));
-        int sign_hi = std::max(signOf(problem.points[static_cast<size_t>(k)].dq_ds[j]),
-                               signOf(problem.points[static_cast<size_t>(k) + 1].dq_ds[j]));
+        // Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and
+        // the rows must hold on either side of the flip; both signs where q'_j vanishes; 0 too
+        // where the profile is pinned at rest).
+        int sign_lo = 1;
+        int sign_hi = -1;
+        for (const PathPoint* q : samples) {
+          sign_lo = std::min(sign_lo, signOf(q->dq_ds[j]));
+          sign_hi = std::max(sign_hi, signOf(q->dq_ds[j]));
+        }
+        if (sign_lo == 0 && sign_hi == 0) {
+          sign_lo = -1;
+          sign_hi = 1;
+        }
         if (pinned_at_rest) {
           sign_lo = std::min(sign_lo, 0);
           sign_hi = std::max(sign_hi, 0);
@@ -108,7 +154,7 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
 
         // Voltage: V = kS sgn + kG g + kV q' c + kA (q'' b + q' a), |V| <= Vmax.
         const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
-        LinearRow voltage{k, node, d.kA * qp, d.kA * qpp, d.kV * qp, -v_limit - gravity - coulomb_lo,
+        LinearRow voltage{k, at, d.kA * qp, d.kA * qpp, d.kV * qp, -v_limit - gravity - coulomb_lo,
                           v_limit - gravity - coulomb_hi, joint, LimitKind::kVoltage};
         if (!addRow(problem, voltage, d.voltage_limit_volts, error)) return false;
 
@@ -116,20 +162,20 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
         const double r = d.motor.resistanceOhms();
         const double back_emf = d.gearing / d.motor.kvRadpsPerVolt();
         const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
-        LinearRow current{k, node, d.kA * qp, d.kA * qpp, (d.kV - back_emf) * qp,
+        LinearRow current{k, at, d.kA * qp, d.kA * qpp, (d.kV - back_emf) * qp,
                           -r * i_limit - gravity - coulomb_lo, r * i_limit - gravity - coulomb_hi, joint,
                           LimitKind::kCurrent};
         if (!addRow(problem, current, r * d.current_limit_amps, error)) return false;
 
         if (d.acceleration_limit) {
           const double a_limit = *d.acceleration_limit - margins.get(k, j, LimitKind::kAcceleration);
-          LinearRow accel{k, node, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
+          LinearRow accel{k, at, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
           if (!addRow(problem, accel, *d.acceleration_limit, error)) return false;
         }
-        // The velocity limit involves b only: once per node.
-        if (d.velocity_limit && (end == 0 || k + 1 == intervals)) {
+        // The velocity limit involves b only: once per node (and at the midpoints).
+        if (d.velocity_limit && (place != 1 || k + 1 == intervals)) {
           const double v_max = std::max(0.0, *d.velocity_limit - margins.get(k, j, LimitKind::kVelocity));
-          LinearRow velocity{k, node, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
+          LinearRow velocity{k, at, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
           if (!addRow(problem, velocity, *d.velocity_limit * *d.velocity_limit, error)) return false;
         }
       }

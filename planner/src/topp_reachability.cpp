@@ -43,18 +43,18 @@ int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward, 
   int count = 0;
   for (int i = begin; i < end && count < kMaxCandidates; ++i) {
     const LinearRow& r = problem.rows[static_cast<size_t>(i)];
-    const bool left = r.node == k;
+    const double w = r.at;
     const double f2 = fixed * fixed;
     Quadratic out{0.0, 0.0, 0.0, r.lo, r.hi};
-    // value = alpha (c1^2 - c0^2) inv + beta c_node^2 + gamma c_node
+    // value = alpha (c1^2 - c0^2) inv + beta ((1-w) c0^2 + w c1^2) + gamma ((1-w) c0 + w c1)
     if (forward) {
-      out.a = r.alpha * inv + (left ? 0.0 : r.beta);
-      out.b = left ? 0.0 : r.gamma;
-      out.c = -r.alpha * f2 * inv + (left ? r.beta * f2 + r.gamma * fixed : 0.0);
+      out.a = r.alpha * inv + r.beta * w;
+      out.b = r.gamma * w;
+      out.c = -r.alpha * f2 * inv + (1.0 - w) * (r.beta * f2 + r.gamma * fixed);
     } else {
-      out.a = -r.alpha * inv + (left ? r.beta : 0.0);
-      out.b = left ? r.gamma : 0.0;
-      out.c = r.alpha * f2 * inv + (left ? 0.0 : r.beta * f2 + r.gamma * fixed);
+      out.a = -r.alpha * inv + r.beta * (1.0 - w);
+      out.b = r.gamma * (1.0 - w);
+      out.c = r.alpha * f2 * inv + w * (r.beta * f2 + r.gamma * fixed);
     }
     q[static_cast<size_t>(count++)] = out;
   }
@@ -138,14 +138,14 @@ double largestTrueNear(Pred pred, double known, double guess, double c_max) {
 
 }  // namespace
 
-AccelInterval admissibleAcceleration(const Problem& problem, int interval, int node, double b) {
+AccelInterval admissibleAcceleration(const Problem& problem, int interval, double b) {
   const double c = std::sqrt(std::max(0.0, b));
   AccelInterval out{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   const int begin = problem.row_begin[static_cast<size_t>(interval)];
   const int end = problem.row_begin[static_cast<size_t>(interval) + 1];
   for (int i = begin; i < end; ++i) {
     const LinearRow& row = problem.rows[static_cast<size_t>(i)];
-    if (row.node != node) continue;
+    if (row.at != 0.0) continue;
     const double rest = row.beta * b + row.gamma * c;
     if (row.alpha > 0.0) {
       out.lo = std::max(out.lo, (row.lo - rest) / row.alpha);
@@ -200,7 +200,7 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
       const double next = c_next * c_next;
       const double ds = problem.ds(k);
       auto stoppable_left = [&](double cc) {
-        const AccelInterval a = admissibleAcceleration(problem, k, k, cc * cc);
+        const AccelInterval a = admissibleAcceleration(problem, k, cc * cc);
         return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
       };
       const double guess = std::max(c, previous);

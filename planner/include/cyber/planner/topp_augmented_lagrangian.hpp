@@ -53,7 +53,7 @@ struct AlSettings {
   double penalty_growth = 1.0;  // gamma: rho <- min((1 + gamma) rho, beta)
   double penalty_max = 1e6;     // beta
   int lbfgs_memory = 8;
-  int refresh_interval = 50;  // L-BFGS iterations before the preconditioner is refactored
+  int refresh_interval = 5;  // L-BFGS iterations before the preconditioner is refactored
 };
 
 struct AlReport {
@@ -65,7 +65,7 @@ struct AlReport {
   // complementarity (for an equality it is exactly the violation).
   double primal_residual = 0.0;
   // Largest gradient entry of the Lagrangian at the new multipliers, relative to the largest
-  // entry of the cost gradient (2 ds).
+  // entry of either of its parts: the cost gradient or the constraints' (multiplier-weighted).
   double dual_residual = 0.0;
   double penalty = 0.0;
   double cost = 0.0;  // sum 2 ds_k d_k at the solution

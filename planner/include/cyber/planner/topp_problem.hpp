@@ -20,11 +20,13 @@ namespace cyber::planner::topp {
 enum class LimitKind : std::uint8_t { kVoltage = 0, kCurrent = 1, kAcceleration = 2, kVelocity = 3 };
 inline constexpr int kLimitKindCount = 4;
 
-// lo <= alpha * a[interval] + beta * b[node] + gamma * c[node] <= hi, divided by the size of its
-// limit so every row is of order one. lo may be -infinity (one-sided rows).
+// A limit on interval k at the fraction `at` of the way from node k to node k+1 (0, 1/2 or 1):
+// lo <= alpha a_k + beta b_at + gamma c_at <= hi, b_at = (1 - at) b_k + at b_{k+1} (exact: b is
+// linear in s), c_at likewise (the chord of sqrt(b), exact at the nodes). Divided by the size of
+// its limit so every row is of order one; lo may be -infinity (one-sided rows).
 struct LinearRow {
   int interval = 0;
-  int node = 0;
+  double at = 0.0;
   double alpha = 0.0;
   double beta = 0.0;
   double gamma = 0.0;
@@ -32,6 +34,10 @@ struct LinearRow {
   double hi = 0.0;
   std::int8_t joint = 0;
   LimitKind kind = LimitKind::kVoltage;
+
+  [[nodiscard]] double value(double a, double b0, double b1, double c0, double c1) const {
+    return alpha * a + beta * ((1.0 - at) * b0 + at * b1) + gamma * ((1.0 - at) * c0 + at * c1);
+  }
 };
 
 // Per interval, joint and kind: how much the limit is lowered (volts for voltage, R*amps for
@@ -59,7 +65,9 @@ class LimitMargins {
 struct Problem {
   std::vector<double> s;          // K grid points, s[0] = 0, s[K-1] = 1
   std::vector<PathPoint> points;  // path samples at s
-  std::vector<LinearRow> rows;    // sorted by interval; within an interval the left node first
+  std::vector<PathPoint> midpoints;  // path samples halfway between consecutive grid points
+  std::vector<double> density_workspace;  // sampleGrid's buffer
+  std::vector<LinearRow> rows;    // sorted by interval
   std::vector<int> row_begin;     // rows of interval k: [row_begin[k], row_begin[k+1])
   double b_start = 0.0;
   double b_end = 0.0;
@@ -74,17 +82,17 @@ struct Problem {
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
 };
 
-// Samples the path (length > 0) on a uniform grid of `grid_points` (>= 2) points, normalised to
-// unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
+// Samples the path (length > 0) on `grid_points` (>= 2) points, denser where the path bends,
+// normalised to unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
 void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem);
 
 // `out` = `in` with time measured in units of time_scale_s: b and c^2 scale by T^2, a by T^2.
 // Copies grid and rows (no path samples); the cost sum 2 ds d becomes the duration divided by T.
 void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 
-// Builds the limit rows of algorithm.md section 3 for the sampled grid. The Coulomb term
-// kS*sgn(qdot) uses every sign qdot takes on the interval (both when q'_j changes sign in it, 0 at
-// a node where the profile is pinned at rest). Returns false with `error` set when a limit
+// Builds the limit rows of algorithm.md section 3 for the sampled grid, at both ends and the
+// middle of every interval. The Coulomb term kS*sgn(qdot) uses every sign qdot takes on the
+// interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with `error` set when a limit
 // cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
 bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
                std::string* error);

@@ -20,8 +20,9 @@ struct AccelInterval {
   [[nodiscard]] bool empty() const { return lo > hi; }
 };
 
-// The a admitted at `node` with b there, by the rows of `interval` that sit on that node.
-AccelInterval admissibleAcceleration(const Problem& problem, int interval, int node, double b);
+// The a admitted on `interval` with b at its left node, by the rows at that node only (an outer
+// bound: the rows further along the interval can only narrow it).
+AccelInterval admissibleAcceleration(const Problem& problem, int interval, double b);
 
 // Largest speed c_{k+1} in [0, c_next_max] such that every row of interval k holds with
 // c_k = c_now; negative when there is none.

@@ -1,0 +1,266 @@
+// The pieces of the time-optimal parameterisation, each against brute force: the banded
+// Cholesky against a dense factorisation, the cone projection against its defining properties,
+// the limit rows against the drive model, the reachability profile against every row, the
+// augmented Lagrangian's gradient against finite differences, its multiplier estimate against
+// stationarity, and the solver from a cold start against the warm-started one.
+
+#include <cmath>
+#include <random>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "cyber/planner/banded_cholesky.hpp"
+#include "cyber/planner/second_order_cone.hpp"
+#include "cyber/planner/topp_augmented_lagrangian.hpp"
+#include "cyber/planner/topp_problem.hpp"
+#include "cyber/planner/topp_reachability.hpp"
+#include "topp_fixtures.hpp"
+
+namespace cyber::planner {
+namespace {
+
+using testing::armDrive;
+using testing::elevatorDrive;
+
+TEST(BandedCholesky, MatchesDenseFactorisationOnRandomBandMatrices) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 5 + trial * 7;
+    const int w = 1 + trial % 6;
+    Eigen::MatrixXd a = Eigen::MatrixXd::Zero(n, n);
+    BandedCholesky band;
+    band.reset(n, w);
+    for (int i = 0; i < n; ++i) {
+      for (int j = std::max(0, i - w); j <= i; ++j) {
+        const double v = i == j ? 2.0 * w + 1.0 + u(rng) : u(rng);  // diagonally dominant: SPD
+        a(i, j) += v;
+        if (i != j) a(j, i) += v;
+        band.add(i, j, v);
+      }
+    }
+    EXPECT_EQ(band.factor(), 0);
+    const Eigen::MatrixXd l = a.llt().matrixL();
+    Eigen::VectorXd rhs(n);
+    for (int i = 0; i < n; ++i) rhs[i] = u(rng);
+    Eigen::VectorXd lower = rhs;
+    band.solveLower(lower);
+    EXPECT_LT((lower - l.triangularView<Eigen::Lower>().solve(rhs)).norm(), 1e-10);
+    Eigen::VectorXd upper = rhs;
+    band.solveUpper(upper);
+    EXPECT_LT((upper - l.transpose().triangularView<Eigen::Upper>().solve(rhs)).norm(), 1e-10);
+    Eigen::VectorXd full = rhs;
+    band.solveLower(full);
+    band.solveUpper(full);
+    EXPECT_LT((a * full - rhs).norm(), 1e-9);
+  }
+}
+
+TEST(BandedCholesky, SingularMatricesStillGiveAUsableFactor) {
+  BandedCholesky band;
+  band.reset(3, 1);
+  band.add(0, 0, 1.0);
+  band.add(1, 0, 1.0);
+  band.add(1, 1, 1.0);  // rows 0 and 1 equal: singular
+  band.add(2, 2, 4.0);
+  EXPECT_EQ(band.factor(), 1);
+  Eigen::VectorXd x = Eigen::VectorXd::Ones(3);
+  band.solveLower(x);
+  band.solveUpper(x);
+  EXPECT_TRUE(x.allFinite());
+}
+
+TEST(SecondOrderCone, ProjectionHasTheDefiningProperties) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g(0.0, 2.0);
+  auto norm = [](const Cone3& c) { return std::sqrt(c.x1 * c.x1 + c.x2 * c.x2); };
+  for (int i = 0; i < 1000; ++i) {
+    const Cone3 v{g(rng), g(rng), g(rng)};
+    const Cone3 p = projectOntoSecondOrderCone(v);
+    EXPECT_LE(norm(p), p.t + 1e-12);  // in the cone
+    const Cone3 again = projectOntoSecondOrderCone(p);
+    EXPECT_NEAR(again.t, p.t, 1e-12);  // idempotent
+    // Moreau: v = P(v) - P(-v) with P(v) orthogonal to P(-v).
+    const Cone3 m = projectOntoSecondOrderCone({-v.t, -v.x1, -v.x2});
+    EXPECT_NEAR(p.t - m.t, v.t, 1e-12);
+    EXPECT_NEAR(p.x1 - m.x1, v.x1, 1e-12);
+    EXPECT_NEAR(p.x2 - m.x2, v.x2, 1e-12);
+    EXPECT_NEAR(p.t * m.t + p.x1 * m.x1 + p.x2 * m.x2, 0.0, 1e-9);
+  }
+  const Cone3 inside = projectOntoSecondOrderCone({2.0, 1.0, 1.0});
+  EXPECT_EQ(inside.t, 2.0);
+  const Cone3 polar = projectOntoSecondOrderCone({-2.0, 1.0, 1.0});
+  EXPECT_EQ(polar.t, 0.0);
+  EXPECT_EQ(polar.x1, 0.0);
+}
+
+// A sampled, normalised problem on the S-curve (q' of the arm changes sign).
+topp::Problem makeProblem(int points, double b_start = 0.0) {
+  const testing::WigglePath path(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  topp::Problem problem;
+  problem.b_start = b_start;
+  topp::sampleGrid(path, points, problem);
+  topp::LimitMargins margins;
+  margins.reset(problem.intervals());
+  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
+  EXPECT_TRUE(topp::buildRows(drives, margins, problem, nullptr));
+  problem.speed_bound = 1e3 / path.length();
+  return problem;
+}
+
+TEST(ToppProblem, GridIsDenserWhereThePathBends) {
+  const topp::Problem p = makeProblem(200);
+  EXPECT_EQ(p.s.front(), 0.0);
+  EXPECT_EQ(p.s.back(), 1.0);
+  double smallest = 1.0, largest = 0.0;
+  for (int k = 0; k < p.intervals(); ++k) {
+    ASSERT_GT(p.ds(k), 0.0);
+    smallest = std::min(smallest, p.ds(k));
+    largest = std::max(largest, p.ds(k));
+  }
+  EXPECT_GT(largest / smallest, 1.5);
+  // A straight line keeps a uniform grid.
+  topp::Problem line;
+  topp::sampleGrid(testing::LinePath(JointVector(0.0, 0.0), JointVector(1.0, 1.0)), 50, line);
+  for (int k = 0; k < line.intervals(); ++k) EXPECT_NEAR(line.ds(k), 1.0 / 49.0, 1e-12);
+}
+
+TEST(ToppProblem, RowsAreTheDriveModelAtTheirSamplePoints) {
+  // On a line whose joints never change direction each row is the drive's own volts or amps.
+  const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.8, 4.0));
+  topp::Problem p;
+  p.b_start = 0.0;
+  topp::sampleGrid(path, 20, p);
+  topp::LimitMargins margins;
+  margins.reset(p.intervals());
+  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
+  ASSERT_TRUE(topp::buildRows(drives, margins, p, nullptr));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.1, 3.0), ua(-20.0, 20.0);
+  const double length = path.length();
+  for (const topp::LinearRow& row : p.rows) {
+    if (row.interval == 0 && row.at == 0.0) continue;  // pinned at rest: Coulomb band, checked elsewhere
+    const double s = (p.s[static_cast<size_t>(row.interval)] + row.at * p.ds(row.interval)) * length;
+    const PathPoint pt = path.at(s);
+    const DriveParams& d = drives[static_cast<size_t>(row.joint)];
+    // Physical speed sdot and path acceleration sddot; the problem's b = sdot^2 / L^2, a = sddot / L.
+    const double sdot = u(rng), sddot = ua(rng);
+    const double b = sdot * sdot / (length * length), a = sddot / length, c = std::sqrt(b);
+    const double qdot = pt.dq_ds[row.joint] * sdot;
+    const double qddot = pt.d2q_ds2[row.joint] * sdot * sdot + pt.dq_ds[row.joint] * sddot;
+    const double v = d.volts(pt.q[row.joint], qdot, qddot);
+    const double scale = row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts
+                                                               : d.motor.resistanceOhms() * d.current_limit_amps;
+    const double value = row.value(a, b, b, c, c) * scale;  // b, c equal at both nodes: the sample's own
+    const double physical = row.kind == topp::LimitKind::kVoltage ? v : d.amps(v, qdot) * d.motor.resistanceOhms();
+    // value = physical - (constant terms), the constants sit in the bounds: compare the bounds.
+    EXPECT_NEAR(row.hi * scale - value, (row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts
+                                                                                : scale) - physical,
+                1e-9 * (1.0 + std::abs(physical)));
+  }
+}
+
+TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
+  const topp::Problem p = makeProblem(150);
+  std::vector<double> b, controllable;
+  const topp::ReachabilityResult r = topp::forwardBackward(p, b, controllable);
+  ASSERT_EQ(r.status, topp::ReachabilityStatus::kOk) << r.reason;
+  EXPECT_EQ(b.front(), 0.0);
+  EXPECT_EQ(b.back(), 0.0);
+  for (int k = 0; k < p.intervals(); ++k) {
+    EXPECT_LE(b[static_cast<size_t>(k)], controllable[static_cast<size_t>(k)] * (1 + 1e-9) + 1e-12);
+    const double a = (b[static_cast<size_t>(k) + 1] - b[static_cast<size_t>(k)]) / (2.0 * p.ds(k));
+    const double c0 = std::sqrt(b[static_cast<size_t>(k)]), c1 = std::sqrt(b[static_cast<size_t>(k) + 1]);
+    for (int i = p.row_begin[static_cast<size_t>(k)]; i < p.row_begin[static_cast<size_t>(k) + 1]; ++i) {
+      const topp::LinearRow& row = p.rows[static_cast<size_t>(i)];
+      const double v = row.value(a, b[static_cast<size_t>(k)], b[static_cast<size_t>(k) + 1], c0, c1);
+      EXPECT_LE(v, row.hi + 1e-7) << "interval " << k << " at " << row.at;
+      EXPECT_GE(v, row.lo - 1e-7) << "interval " << k << " at " << row.at;
+    }
+  }
+  // A start faster than C_0 is reported as such.
+  topp::Problem fast = makeProblem(150, 1.5 * r.controllable_start_b);
+  EXPECT_EQ(topp::forwardBackward(fast, b, controllable).status, topp::ReachabilityStatus::kStartNotControllable);
+}
+
+TEST(ToppAugmentedLagrangian, GradientMatchesFiniteDifferences) {
+  topp::Problem p = makeProblem(40);
+  std::vector<double> b, controllable;
+  ASSERT_EQ(topp::forwardBackward(p, b, controllable).status, topp::ReachabilityStatus::kOk);
+  Eigen::VectorXd x;
+  topp::initialGuess(p, b, x);
+  topp::Multipliers m;
+  topp::estimateMultipliers(p, x, m);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g(0.0, 1.0);
+  // Perturb away from kinks (active-set boundaries) so the central difference is meaningful.
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += 1e-3 * g(rng);
+  for (Eigen::Index i = 0; i < m.row_upper.size(); ++i) m.row_upper[i] += 1e-3 * std::abs(g(rng));
+  const double rho = 50.0;
+  Eigen::VectorXd grad(x.size()), scratch(x.size());
+  topp::augmentedLagrangian(p, m, rho, x, grad);
+  const double h = 1e-6;
+  int checked = 0;
+  for (Eigen::Index i = 0; i < x.size(); i += 3) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp[i] += h;
+    xm[i] -= h;
+    const double fd = (topp::augmentedLagrangian(p, m, rho, xp, scratch) - topp::augmentedLagrangian(p, m, rho, xm, scratch)) / (2 * h);
+    EXPECT_NEAR(grad[i], fd, 1e-5 * (1.0 + std::abs(fd))) << "variable " << i;
+    ++checked;
+  }
+  EXPECT_GT(checked, 40);
+}
+
+TEST(ToppAugmentedLagrangian, EstimatedMultipliersMakeTheWarmStartNearlyStationary) {
+  topp::Problem p = makeProblem(120);
+  std::vector<double> b, controllable;
+  ASSERT_EQ(topp::forwardBackward(p, b, controllable).status, topp::ReachabilityStatus::kOk);
+  Eigen::VectorXd x;
+  topp::initialGuess(p, b, x);
+  topp::Multipliers estimated, zero;
+  EXPECT_GT(topp::estimateMultipliers(p, x, estimated), 0);
+  zero.reset(p);
+  Eigen::VectorXd g_estimated(x.size()), g_zero(x.size());
+  topp::augmentedLagrangian(p, estimated, 1e3, x, g_estimated);
+  topp::augmentedLagrangian(p, zero, 1e3, x, g_zero);
+  // The multipliers balance (most of) the cost gradient at the reachability profile.
+  EXPECT_LT(g_estimated.lpNorm<1>(), 0.2 * g_zero.lpNorm<1>());
+  for (Eigen::Index i = 0; i < estimated.row_upper.size(); ++i) {
+    EXPECT_GE(estimated.row_upper[i], 0.0);
+    EXPECT_GE(estimated.row_lower[i], 0.0);
+  }
+}
+
+TEST(ToppAugmentedLagrangian, ColdStartReachesTheSameOptimumAsTheWarmStart) {
+  topp::Problem p = makeProblem(60);
+  std::vector<double> b, controllable;
+  ASSERT_EQ(topp::forwardBackward(p, b, controllable).status, topp::ReachabilityStatus::kOk);
+  topp::AlSettings settings;
+  settings.max_outer_iterations = 200;
+  settings.max_inner_iterations = 2000;
+
+  topp::AlState warm;
+  topp::initialGuess(p, b, warm.x);
+  topp::estimateMultipliers(p, warm.x, warm.multipliers);
+  topp::AlWorkspace workspace;
+  const topp::AlReport w = topp::solveAugmentedLagrangian(p, settings, warm, workspace);
+  ASSERT_TRUE(w.converged);
+
+  // Cold: zero multipliers, the reachability profile slowed down to 80 %.
+  topp::AlState cold;
+  std::vector<double> slow = b;
+  for (double& v : slow) v *= 0.64;
+  topp::initialGuess(p, slow, cold.x);
+  cold.multipliers.reset(p);
+  const topp::AlReport c = topp::solveAugmentedLagrangian(p, settings, cold, workspace);
+  ASSERT_TRUE(c.converged) << c.primal_residual << " " << c.dual_residual;
+  EXPECT_GT(c.inner_iterations, w.inner_iterations);  // the warm start saves work
+  EXPECT_NEAR(c.cost, w.cost, 1e-4 * w.cost);
+  EXPECT_LE(c.primal_residual, settings.primal_tolerance);
+  EXPECT_LE(c.dual_residual, settings.dual_tolerance);
+}
+
+}  // namespace
+}  // namespace cyber::planner

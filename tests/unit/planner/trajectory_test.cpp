@@ -1,0 +1,168 @@
+// Trajectory: validation, the exact constant-acceleration kinematics between grid points, the
+// time map and its inverse, and sample() without heap allocation (the 200 Hz streamer calls it).
+
+#include "cyber/planner/trajectory.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <new>
+
+#include <gtest/gtest.h>
+
+#include "topp_fixtures.hpp"
+
+namespace {
+std::atomic<long> g_allocations{0};
+}  // namespace
+
+// Counts every global allocation of this test binary (new/delete forward to malloc/free).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
+
+namespace cyber::planner {
+namespace {
+
+using testing::armDrive;
+using testing::elevatorDrive;
+using testing::LinePath;
+using testing::WigglePath;
+
+std::shared_ptr<const GeometricPath> wiggle() {
+  return std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 2.0, 2.0);
+}
+
+// An arbitrary valid profile: up, along, down, with uneven spacing.
+Trajectory makeTrajectory(std::shared_ptr<const GeometricPath> path) {
+  const double l = path->length();
+  std::vector<double> s{0.0, 0.1 * l, 0.25 * l, 0.5 * l, 0.8 * l, 0.95 * l, l};
+  std::vector<double> b{0.0, 0.8, 2.0, 2.5, 1.5, 0.4, 0.0};
+  return Trajectory::create(std::move(path), elevatorDrive(), armDrive(), s, b).value();
+}
+
+TEST(Trajectory, InvalidProfilesAreTypedErrors) {
+  const auto path = std::make_shared<LinePath>(JointVector(0.0, 0.0), JointVector(1.0, 0.0));
+  auto make = [&](std::vector<double> s, std::vector<double> b) {
+    return Trajectory::create(path, elevatorDrive(), armDrive(), std::move(s), std::move(b)).status();
+  };
+  EXPECT_EQ(Trajectory::create(nullptr, elevatorDrive(), armDrive(), {0.0, 1.0}, {0.0, 0.0}).status(),
+            PlanStatus::kInvalidInput);
+  EXPECT_EQ(make({}, {}), PlanStatus::kInvalidInput);
+  EXPECT_EQ(make({0.0, 1.0}, {0.0}), PlanStatus::kInvalidInput);
+  EXPECT_EQ(make({0.0, 0.5}, {0.0, 1.0}), PlanStatus::kInvalidInput);             // does not reach the end
+  EXPECT_EQ(make({0.0, 0.6, 0.6, 1.0}, {0.0, 1.0, 1.0, 0.0}), PlanStatus::kInvalidInput);  // not increasing
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, -1.0, 0.0}), PlanStatus::kInvalidInput);  // negative b
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, NAN, 0.0}), PlanStatus::kInvalidInput);
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, 0.0, 1.0}), PlanStatus::kInvalidInput);   // at rest over an interval
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, 1.0, 0.0}), PlanStatus::kOk);
+}
+
+TEST(Trajectory, DurationIsTheExactSumOverIntervals) {
+  const auto path = wiggle();
+  const Trajectory t = makeTrajectory(path);
+  double expected = 0.0;
+  for (size_t k = 0; k + 1 < t.sGrid().size(); ++k) {
+    expected += 2.0 * (t.sGrid()[k + 1] - t.sGrid()[k]) / (std::sqrt(t.bGrid()[k]) + std::sqrt(t.bGrid()[k + 1]));
+  }
+  EXPECT_NEAR(t.duration_s(), expected, 1e-12);
+}
+
+TEST(Trajectory, ConstantPathAccelerationBetweenGridPoints) {
+  const auto path = wiggle();
+  const Trajectory t = makeTrajectory(path);
+  for (int i = 0; i <= 1000; ++i) {
+    const double time = t.duration_s() * i / 1000.0;
+    const TrajectorySample s = t.sample(time);
+    // b = sdot^2 is linear in s on each interval: the interpolated grid value.
+    size_t k = 0;
+    while (k + 2 < t.sGrid().size() && t.sGrid()[k + 1] <= s.s) ++k;
+    const double u = (s.s - t.sGrid()[k]) / (t.sGrid()[k + 1] - t.sGrid()[k]);
+    EXPECT_NEAR(s.sdot * s.sdot, (1.0 - u) * t.bGrid()[k] + u * t.bGrid()[k + 1], 1e-9);
+    // sddot is the interval's constant (b_{k+1} - b_k) / (2 ds).
+    EXPECT_NEAR(s.sddot, (t.bGrid()[k + 1] - t.bGrid()[k]) / (2.0 * (t.sGrid()[k + 1] - t.sGrid()[k])), 1e-9);
+    // Chain rule (eq. 11): qdot = q' sdot, qddot = q'' sdot^2 + q' sddot.
+    const PathPoint p = path->at(s.s);
+    EXPECT_LT((s.q - p.q).norm(), 1e-12);
+    EXPECT_LT((s.qdot - p.dq_ds * s.sdot).norm(), 1e-12);
+    EXPECT_LT((s.qddot - (p.d2q_ds2 * s.sdot * s.sdot + p.dq_ds * s.sddot)).norm(), 1e-9);
+  }
+}
+
+TEST(Trajectory, DerivativesMatchFiniteDifferencesInsideIntervals) {
+  const auto path = wiggle();
+  const Trajectory t = makeTrajectory(path);
+  const double h = 1e-6;
+  for (int i = 1; i < 200; ++i) {
+    const double time = t.duration_s() * (i + 0.37) / 200.0;
+    const TrajectorySample a = t.sample(time - h);
+    const TrajectorySample b = t.sample(time + h);
+    const TrajectorySample m = t.sample(time);
+    if (t.pathParameterAt(time - h) < t.sGrid()[1] && t.pathParameterAt(time + h) > t.sGrid()[1]) continue;
+    EXPECT_LT(((b.q - a.q) / (2 * h) - m.qdot).norm(), 1e-5) << time;
+    EXPECT_LT(((b.qdot - a.qdot) / (2 * h) - m.qddot).norm(), 1e-3 * (1.0 + m.qddot.norm())) << time;
+  }
+}
+
+TEST(Trajectory, TimeMapAndItsInverseAgree) {
+  const Trajectory t = makeTrajectory(wiggle());
+  for (int i = 0; i <= 500; ++i) {
+    const double time = t.duration_s() * i / 500.0;
+    // Near a stop (sdot -> 0) a roundoff in s is a larger error in t (t ~ sqrt(s)): 1e-7 s.
+    EXPECT_NEAR(t.timeAt(t.pathParameterAt(time)), time, 1e-7);
+    EXPECT_NEAR(t.sample(time).s, t.pathParameterAt(time), 1e-12);
+  }
+  for (size_t k = 0; k < t.sGrid().size(); ++k) EXPECT_NEAR(t.timeAt(t.sGrid()[k]), t.tGrid()[k], 1e-12);
+  EXPECT_EQ(t.timeAt(-1.0), 0.0);
+  EXPECT_NEAR(t.timeAt(1e9), t.duration_s(), 1e-12);
+}
+
+TEST(Trajectory, EndsAndOutOfRangeTimes) {
+  const auto path = wiggle();
+  const Trajectory t = makeTrajectory(path);
+  const TrajectorySample before = t.sample(-3.0);
+  EXPECT_EQ(before.t, 0.0);
+  EXPECT_EQ(before.q, path->at(0.0).q);
+  EXPECT_EQ(before.qdot, JointVector::Zero());
+  const TrajectorySample end = t.sample(t.duration_s());
+  EXPECT_LT((end.q - path->at(path->length()).q).norm(), 1e-9);
+  EXPECT_LT(end.qdot.norm(), 1e-6);
+  // After the end the goal is held at rest (gravity feedforward only).
+  const TrajectorySample after = t.sample(t.duration_s() + 1.0);
+  EXPECT_LT((after.q - path->at(path->length()).q).norm(), 1e-12);
+  EXPECT_EQ(after.qdot, JointVector::Zero());
+  EXPECT_EQ(after.qddot, JointVector::Zero());
+  EXPECT_NEAR(after.volts[kElevator], elevatorDrive().kG_volts, 1e-12);
+  const TrajectorySample nan = t.sample(std::nan(""));
+  EXPECT_TRUE(nan.q.allFinite());
+}
+
+TEST(Trajectory, VoltsAndAmpsFollowTheDriveModel) {
+  const Trajectory t = makeTrajectory(wiggle());
+  for (int i = 0; i <= 100; ++i) {
+    const TrajectorySample s = t.sample(t.duration_s() * i / 100.0);
+    EXPECT_DOUBLE_EQ(s.volts[kArm], armDrive().volts(s.q[kArm], s.qdot[kArm], s.qddot[kArm]));
+    EXPECT_DOUBLE_EQ(s.amps[kArm], armDrive().amps(s.volts[kArm], s.qdot[kArm]));
+    EXPECT_DOUBLE_EQ(s.volts[kElevator], elevatorDrive().volts(s.q[kElevator], s.qdot[kElevator], s.qddot[kElevator]));
+  }
+}
+
+TEST(Trajectory, SampleDoesNotAllocate) {
+  const Trajectory t = makeTrajectory(wiggle());
+  const long before = g_allocations.load();
+  double sum = 0.0;
+  for (int i = 0; i < 1000; ++i) sum += t.sample(t.duration_s() * i / 999.0).volts.sum();
+  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_TRUE(std::isfinite(sum));
+}
+
+}  // namespace
+}  // namespace cyber::planner
