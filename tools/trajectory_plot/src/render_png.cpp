@@ -199,8 +199,10 @@ void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const 
                 const std::string& elevator_name, const std::string& arm_name, bool with_xlabel) {
   const auto& s0 = pick(d.joints[0]);
   const auto& s1 = pick(d.joints[1]);
-  std::initializer_list<double> lim = limits ? std::initializer_list<double>{-(*limits)[0], (*limits)[0]} : std::initializer_list<double>{0.0};
-  auto [lo, hi] = rangeOf({&s0, &s1}, lim);
+  // Both joints' limits stay in view (zero when there are none).
+  const double l0 = limits != nullptr ? (*limits)[0] : 0.0;
+  const double l1 = limits != nullptr ? (*limits)[1] : 0.0;
+  auto [lo, hi] = rangeOf({&s0, &s1}, {-l0, l0, -l1, l1});
   const double t1 = d.time_s.empty() ? 1.0 : std::max(1e-3, d.time_s.back());
   Axes ax{box, 0.0, t1, lo, hi};
   drawFrame(cr, ax, title, with_xlabel ? "time [s]" : "", ylabel);
