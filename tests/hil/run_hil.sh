@@ -2,7 +2,7 @@
 # Host side of the HIL tests (ctest label hil): runs tools/vcan-vm for one case from the source
 # root, the same command docs/testing.md shows, and checks its exit status and what came out.
 # Usage: tests/hil/run_hil.sh [--print] CASE BUILD_DIR
-#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode
+#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode | plant_sim
 #   --print: only print the tools/vcan-vm command of the case (for the docs check)
 set -uo pipefail
 
@@ -16,6 +16,7 @@ cd "$src" || exit 2
 build=$(realpath -m --relative-base="$src" "$build_abs")
 export CYBER_VCAN_CACHE=$build/vcan-vm
 probe=$build/tests/hil/vcan_probe
+plant_sim=$build/tools/cyber-plant-sim/cyber-plant-sim
 out=$build/hil/$1
 log=$build/hil/$1.log
 
@@ -32,6 +33,10 @@ args_for() {
       args=(--vm --bin /usr/bin/bash --bin /usr/bin/unshare --bin /usr/bin/timeout --bin /usr/bin/setpriv
         --bin "$probe" --file tools/vcan-vm --file tests/hil/vcan_smoke.sh --file tests/hil/vcan_exit3.sh
         --out "$out" --run tests/hil/vcan_host_mode.sh)
+      ;;
+    plant_sim)
+      args=(--auto --bin "$plant_sim" --bin /usr/bin/lcm-logger --file "$build/hil/plant_sim.setpoints.log:setpoints.log"
+        --out "$out" --run tests/hil/plant_sim.sh)
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
   esac
@@ -92,6 +97,13 @@ case $1 in
     grep -q "auto: using host mode" "$out/console.log" || fail host_mode "--auto did not pick host mode"
     check_capture "$out/root"
     check_capture "$out/user"
+    ;;
+  plant_sim)
+    mkdir -p "$build/hil"
+    tests/hil/plant_sim_check.py setpoints "$build/hil/plant_sim.setpoints.log" || fail plant_sim "cannot write the setpoint stream"
+    vcan_vm
+    [[ $status -eq 0 ]] || fail plant_sim "the guest script failed"
+    tests/hil/plant_sim_check.py check "$out" || fail plant_sim "the results do not hold (see the checks above)"
     ;;
 esac
 echo "run_hil: $1 passed"

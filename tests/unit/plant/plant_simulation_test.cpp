@@ -175,6 +175,18 @@ TEST(PlantSimulation, GoesNeutralAfterTheSetpointTimeout) {
   EXPECT_LT(sim.positions()[kElevator], 0.995);
 }
 
+TEST(PlantSimulation, RestsAtTheInitialPoseUntilTheFirstSetpoint) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 0.3));
+  sim.advanceTo(2.0);  // gravity would pull both down in neutral
+  EXPECT_EQ(sim.positions(), planner::JointVector(1.0, 0.3));
+  EXPECT_EQ(sim.velocities(), planner::JointVector(0.0, 0.0));
+  // A setpoint for the elevator only: the elevator is driven, the arm still rests.
+  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 2.0);
+  sim.advanceTo(2.5);  // past the timeout: neutral, sliding
+  EXPECT_LT(sim.positions()[kElevator], 0.99);
+  EXPECT_EQ(sim.positions()[kArm], 0.3);
+}
+
 TEST(PlantSimulation, BroadcastDisableIsNeutralAtOnceUntilTheNextSetpoint) {
   PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
   sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 0.0);

@@ -47,6 +47,7 @@ planner::JointVector PlantSimulation::velocities() const {
 void PlantSimulation::step() {
   const double now_s = time_s();
   for (int joint = 0; joint < kJointCount; ++joint) {
+    if (!latest_[joint]) continue;  // resting at the initial pose until its first setpoint
     const JointPlant& plant = settings_.plants[joint];
     const auto command = effectiveCommand(joint, now_s);
     applied_volts_[joint] =

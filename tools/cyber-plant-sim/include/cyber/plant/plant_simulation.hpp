@@ -3,7 +3,9 @@
 // Each controller tracks the latest setpoint it received, its position advanced by its velocity
 // since it arrived (the frames come every 5 ms; holding the position still would lag by v * 5 ms).
 // A controller that has heard nothing for setpoint_timeout_s, or that saw a broadcast disable since
-// its latest setpoint, goes neutral (0 V, brake mode). Pure: time is whatever the caller passes.
+// its latest setpoint, goes neutral (0 V, brake mode). Until its first setpoint a joint rests at
+// its initial pose (as on a latch), so a test starts from a known pose however long the daemon
+// takes to come up. Pure: time is whatever the caller passes.
 
 #include <array>
 #include <optional>

@@ -1,0 +1,198 @@
+#!/usr/bin/env python3
+"""Host side of hil.plant_sim: makes the setpoint stream the guest replays with canplayer, and
+checks what cyber-plant-sim did with it (docs/testing.md, "Plant simulator").
+
+  plant_sim_check.py setpoints FILE   write the candump -L log canplayer replays
+  plant_sim_check.py check OUT_DIR    check the results the guest wrote (exit 1 on a failure)
+"""
+
+import math
+import os
+import statistics
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hil_lib as hil  # noqa: E402
+
+SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PERIOD_S = 0.005
+HOLD_BEFORE_S, MOVE_S, HOLD_AFTER_S = 0.3, 1.0, 0.5
+ELEVATOR_FROM, ELEVATOR_TO, ARM_AT = 0.5, 1.0, 1.57
+# The faults of the guest script, relative to the first moving setpoint (tests/hil/plant_sim.sh).
+HEARTBEAT_GAP = (0.4, 0.6)
+HEARTBEAT_DISABLED = (0.8, 0.9)
+SILENT = (1.0, 1.2)
+DISABLE_AT = 1.3
+# Data frames the guest sends with our setpoint ids but a wrong length (its remote request is
+# dropped by the receive filter, which passes data frames only).
+MALFORMED_SENT = 2
+
+
+def drive(name):
+    with open(os.path.join(SOURCE, "config", "reefscape-2025.toml"), "rb") as f:
+        return tomllib.load(f)["drives"][name]
+
+
+def volts(d, q, v, a, cosine):
+    sign = (v > 0) - (v < 0)
+    return d["kS_volts"] * sign + d["kG_volts"] * (math.cos(q) if cosine else 1.0) + d["kV"] * v + d["kA"] * a
+
+
+def elevator_plan(t):
+    """Rest-to-rest quintic from ELEVATOR_FROM to ELEVATOR_TO starting at HOLD_BEFORE_S."""
+    s = min(max((t - HOLD_BEFORE_S) / MOVE_S, 0.0), 1.0)
+    d = ELEVATOR_TO - ELEVATOR_FROM
+    q = ELEVATOR_FROM + d * s ** 3 * (10 - 15 * s + 6 * s * s)
+    v = d * 30 * s * s * (1 - s) ** 2 / MOVE_S
+    a = d * 60 * s * (1 - s) * (1 - 2 * s) / MOVE_S ** 2
+    return q, v, a
+
+
+def write_setpoints(path):
+    elevator, arm = drive("elevator"), drive("arm")
+    lines = []
+    n = int(round((HOLD_BEFORE_S + MOVE_S + HOLD_AFTER_S) / PERIOD_S)) + 1
+    for k in range(n):
+        t = k * PERIOD_S
+        q, v, a = elevator_plan(t)
+        stamp = 1000.0 + t
+        lines.append(hil.candump_line(stamp, "can0", hil.setpoint_id(1),
+                                      hil.encode_setpoint(q, v, volts(elevator, q, v, a, False), k)))
+        lines.append(hil.candump_line(stamp + 50e-6, "can0", hil.setpoint_id(2),
+                                      hil.encode_setpoint(ARM_AT, 0.0, volts(arm, ARM_AT, 0, 0, True), k)))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def silent_window(c, what, times, window):
+    """True when nothing was seen inside the scheduled window (a few ms inside its edges) and
+    something was seen within 50 ms of both edges. Other gaps are reported: on the emulated guest
+    the whole VM sometimes stalls."""
+    start, end = window
+    inside = [t for t in times if start + 0.01 < t < end - 0.01]
+    before = [t for t in times if start - 0.05 <= t <= start + 0.01]
+    after = [t for t in times if end - 0.01 <= t <= end + 0.05]
+    gaps = sorted(((b - a, a) for a, b in zip(times, times[1:]) if not (a <= start + 0.01 and b >= end - 0.01)), reverse=True)
+    if gaps:
+        c.note(f"{what}: longest gap outside the window {gaps[0][0] * 1e3:.1f} ms at motion{gaps[0][1]:+.3f} s")
+    return not inside and before and after
+
+
+def regular_before(frames, i, window_s):
+    """True when the frames in the window_s before frames[i] came at 5 +- 2 ms periods."""
+    j = i
+    while j > 0 and frames[i].t - frames[j - 1].t <= window_s:
+        if abs(frames[j].t - frames[j - 1].t - PERIOD_S) > 0.002:
+            return False
+        j -= 1
+    return True
+
+
+def interpolate(rows, key, utime):
+    """Linear interpolation of a CSV column at a wall-clock time (us)."""
+    lo, hi = 0, len(rows) - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if rows[mid]["utime"] <= utime:
+            lo = mid
+        else:
+            hi = mid
+    a, b = rows[lo], rows[hi]
+    if b["utime"] == a["utime"]:
+        return a[key]
+    w = min(max((utime - a["utime"]) / (b["utime"] - a["utime"]), 0.0), 1.0)
+    return a[key] + w * (b[key] - a[key])
+
+
+def check(out):
+    c = hil.Checks("plant_sim")
+    frames = hil.read_candump(os.path.join(out, "bus.log"))
+    rows = hil.read_plant_csv(os.path.join(out, "plant.csv"))
+    summary = hil.plant_summary(os.path.join(out, "plant_sim.err"))
+    states = [hil.decode_arm_state(d) for _, ch, d in hil.read_lcm_log(os.path.join(out, "lcm.log")) if ch == "ARM_STATE"]
+
+    elevator_sp = [f for f in frames if f.extended and f.id == hil.setpoint_id(1) and len(f.data) == 8]
+    arm_sp = [f for f in frames if f.extended and f.id == hil.setpoint_id(2) and len(f.data) == 8]
+    moving = [f for f in elevator_sp if abs(hil.decode_setpoint(f)[1]) >= 0.001]
+    if not c.check(moving, f"replayed setpoints captured ({len(elevator_sp)} elevator, {len(arm_sp)} arm)"):
+        return c.status()
+    motion_t = moving[0].t
+
+    # Heartbeat: every 20 ms, enabled + watchdog (0x48) except in the disabled window, and a gap.
+    beats = [f for f in frames if f.extended and f.id == hil.HEARTBEAT_ID]
+    c.check(all(len(f.data) == 8 for f in beats), f"{len(beats)} heartbeats, all 8 bytes")
+    periods = [b.t - a.t for a, b in zip(beats, beats[1:])]
+    c.check(abs(statistics.median(periods) - 0.020) < 0.002,
+            f"heartbeat period median {statistics.median(periods) * 1e3:.2f} ms (20 ms)")
+    c.check(silent_window(c, "heartbeat", [f.t - motion_t for f in beats], HEARTBEAT_GAP), "heartbeat stopped as scheduled")
+    off = [f.t - motion_t for f in beats if f.data[4] != 0x48]
+    c.check(all(f.data[4] in (0x48, 0x00) for f in beats) and off and
+            HEARTBEAT_DISABLED[0] - 0.03 < min(off) and max(off) < HEARTBEAT_DISABLED[1] + 0.03,
+            f"{len(off)} heartbeats without the enabled/watchdog bits, within {HEARTBEAT_DISABLED} s after motion")
+    c.check(summary["heartbeats"] == len(beats), f"simulator sent {summary['heartbeats']:.0f} heartbeats, capture has {len(beats)}")
+
+    # Broadcast disable: exactly one, extended id 0, no data, when scheduled.
+    disables = [f for f in frames if f.id == 0]
+    c.check(len(disables) == 1 and disables[0].extended and disables[0].data == b"" and
+            abs(disables[0].t - motion_t - DISABLE_AT) < 0.05,
+            f"one broadcast disable 00000000# at motion+{DISABLE_AT} s")
+
+    # ARM_STATE: 100 Hz, silent for the scheduled window, pieces as given (none).
+    state_t = [s["utime"] * 1e-6 for s in states]
+    state_periods = [b - a for a, b in zip(state_t, state_t[1:])]
+    c.check(states and abs(statistics.median(state_periods) - 0.010) < 0.001,
+            f"{len(states)} ARM_STATE messages, period median {statistics.median(state_periods) * 1e3:.2f} ms (10 ms)")
+    c.check(silent_window(c, "ARM_STATE", [t - motion_t for t in state_t], SILENT), "ARM_STATE silent as scheduled")
+    published = [r["utime"] * 1e-6 - motion_t for r in rows if r["state_published"]]
+    c.check(silent_window(c, "simulator CSV, published", published, SILENT), "the simulator logged the same silent window")
+    c.check(not any(s["held_coral"] or s["held_algae"] for s in states), "ARM_STATE reports no held pieces")
+    c.check(summary["states_published"] >= len(states) > 0, "every logged ARM_STATE was counted as published")
+
+    # Tracking: the simulated elevator follows the replayed move (the plant's own CSV). Judged on
+    # frames canplayer delivered on time (the 60 ms before them at 5 +- 2 ms periods): after a
+    # stall of the emulated guest a burst of late frames makes the command jump, which says nothing
+    # about the plant.
+    on_time = [f for i, f in enumerate(elevator_sp) if i > 0 and regular_before(elevator_sp, i, 0.06)
+               and rows[0]["utime"] <= f.t * 1e6 <= rows[-1]["utime"]]
+    errors = [abs(interpolate(rows, "elevator_m", f.t * 1e6) - hil.decode_setpoint(f)[0]) for f in on_time]
+    c.note(f"{len(on_time)} of {len(elevator_sp)} elevator setpoints were replayed on time")
+    c.check(len(on_time) >= 20 and max(errors) < 0.003,
+            f"elevator tracks the on-time setpoints: max error {max(errors, default=0) * 1e3:.2f} mm, "
+            f"p50 {hil.percentile(errors, 50) * 1e3:.2f} mm (< 3 mm, >= 20 frames)")
+    last = elevator_sp[-1].t * 1e6
+    final_e = interpolate(rows, "elevator_m", last)
+    final_a = interpolate(rows, "arm_rad", last)
+    c.check(abs(final_e - ELEVATOR_TO) <= 0.001 and abs(final_a - ARM_AT) <= 0.0026,
+            f"at the last setpoint: elevator {final_e:.5f} m (target {ELEVATOR_TO}), arm {final_a:.5f} rad (target {ARM_AT})")
+
+    # After the stream ends the controllers go neutral and the elevator slides in brake mode.
+    elevator = drive("elevator")
+    slide = -(elevator["kG_volts"] - elevator["kS_volts"]) / elevator["kV"]
+    end = rows[-1]
+    c.check(end["elevator_cmd_m"] is None and end["elevator_volts"] == 0.0 and abs(end["elevator_mps"] - slide) < 0.02 * abs(slide),
+            f"neutral at the end: 0 V, elevator sliding at {end['elevator_mps']:.4f} m/s (brake mode {slide:.4f})")
+    c.check(abs(end["arm_rad"] - ARM_AT) < 0.003, f"arm near vertical stays put in neutral ({end['arm_rad']:.4f} rad)")
+
+    # Counters: every replayed setpoint in order, the malformed ones counted.
+    c.check(summary["setpoints_elevator"] == len(elevator_sp) and summary["setpoints_arm"] == len(arm_sp),
+            f"simulator took {summary['setpoints_elevator']:.0f}/{summary['setpoints_arm']:.0f} setpoints")
+    c.check(summary["sequence_gaps"] == 0, "no sequence gaps")
+    c.check(summary["malformed"] == MALFORMED_SENT, f"malformed frames counted: {summary['malformed']:.0f} (sent {MALFORMED_SENT})")
+    c.check(summary["other"] == 0 and summary["write_failures"] == 0 and summary["publish_failures"] == 0,
+            "no other frames past the filter, no write or publish failures")
+    return c.status()
+
+
+def main(argv):
+    if len(argv) == 3 and argv[1] == "setpoints":
+        write_setpoints(argv[2])
+        return 0
+    if len(argv) == 3 and argv[1] == "check":
+        return check(argv[2])
+    print(__doc__, file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
