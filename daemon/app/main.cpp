@@ -1,0 +1,78 @@
+// cyber-plannerd: the motion-planning daemon (docs/operations.md).
+//   cyber-plannerd --config FILE [--can IFACE|none] [--lcm-url URL]
+// Exit codes: 0 stopped by SIGTERM/SIGINT, 2 bad command line or configuration, 1 any other
+// start-up failure (LCM, CAN interface, planner set-up). Each failure is one line on stderr.
+
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/daemon/io/command_line.hpp"
+#include "cyber/daemon/io/daemon.hpp"
+#include "cyber/daemon/io/fd.hpp"
+#include "cyber/daemon/io/logging.hpp"
+#include "cyber/daemon/motion_planner_service.hpp"
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::cerr << "cyber-plannerd: " << message << "\n";
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cyber;
+  const auto parsed = daemon::io::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
+  if (const auto* error = std::get_if<daemon::io::CommandLineError>(&parsed)) {
+    std::cerr << "cyber-plannerd: " << error->message << "\n" << daemon::io::usage();
+    return 2;
+  }
+  const auto& command = std::get<daemon::io::CommandLine>(parsed);
+  if (command.help) {
+    std::cout << daemon::io::usage();
+    return 0;
+  }
+
+  // Before any thread exists, so every thread inherits the blocked mask and the signals arrive
+  // only through this descriptor.
+  daemon::io::SignalFd signals({SIGTERM, SIGINT});
+
+  config::Config config;
+  try {
+    config = config::loadConfigFile(command.config_path);
+  } catch (const config::ConfigError& error) {
+    return fail(2, error.what());
+  }
+  daemon::io::DaemonOptions options;
+  options.settings = config.daemon;
+  if (command.lcm_url) options.settings.lcm_url = *command.lcm_url;
+  if (command.can_interface) {
+    if (*command.can_interface == "none") {
+      options.simulate_can = true;
+    } else {
+      options.settings.can_interface = *command.can_interface;
+    }
+  }
+  if (!daemon::io::setupLogging(options.settings.log_level)) {
+    return fail(2, "log_level '" + options.settings.log_level + "' is not a spdlog level");
+  }
+
+  auto planning = daemon::makeMotionPlannerService(config.robot);
+  if (!planning) return fail(1, "planner set-up failed: " + planning.error().reason);
+  try {
+    daemon::io::Daemon daemon(config.robot, options, *planning.value(), &signals);
+    return daemon.run();
+  } catch (const daemon::io::StartupError& error) {
+    daemon::io::flushLogging();
+    return fail(1, error.what());
+  } catch (const std::exception& error) {
+    daemon::io::flushLogging();
+    return fail(1, std::string("start-up failed: ") + error.what());
+  }
+}

@@ -1,0 +1,54 @@
+#pragma once
+// The motion gate: may the daemon stream motion at "now"? Closed without fresh measured state,
+// while the roboRIO heartbeat lacks the system-watchdog bit or is older than its timeout, and after
+// a broadcast disable (design.md, CAN section).
+
+#include <string_view>
+
+#include "cyber/daemon/mono_time.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::daemon {
+
+struct GateSettings {
+  double state_timeout_s = 0.25;
+  double heartbeat_timeout_s = 0.1;
+  bool require_robot_enabled = true;  // false: bench use without a roboRIO
+};
+
+// Latest inputs as the event loop saw them (receive times on the monotonic clock).
+struct RobotInputs {
+  MonoNs state_ns = kNever;  // arrival of the latest valid ARM_STATE
+  planner::JointVector measured_q = planner::JointVector::Zero();
+  planner::JointVector measured_qdot = planner::JointVector::Zero();
+  MonoNs heartbeat_ns = kNever;       // arrival of the latest roboRIO heartbeat
+  bool heartbeat_watchdog = false;    // its system-watchdog bit
+  MonoNs broadcast_disable_ns = kNever;  // arrival of the latest broadcast disable
+};
+
+enum class GateReason {
+  kOpen,
+  kNoState,            // no ARM_STATE yet
+  kStateStale,         // the latest ARM_STATE is older than state_timeout_s
+  kRobotDisabled,      // the latest heartbeat lacks the system-watchdog bit
+  kNoHeartbeat,        // no heartbeat, or it is older than heartbeat_timeout_s
+  kBroadcastDisable,   // a broadcast disable arrived and no enabled heartbeat since
+  kFault,              // not from evaluateGate: the streamer stopped on a setpoint it could not send
+};
+
+std::string_view toString(GateReason reason);
+
+// True for reasons that mean "the robot is disabled" (CAN status mode 4) rather than "no state".
+bool isRobotDisabledReason(GateReason reason);
+
+struct GateVerdict {
+  GateReason reason = GateReason::kNoState;
+  [[nodiscard]] bool open() const { return reason == GateReason::kOpen; }
+};
+
+// With require_robot_enabled, a broadcast disable holds until a heartbeat with the watchdog bit
+// arrives after it; without (bench use, no roboRIO), until heartbeat_timeout_s has passed since
+// the latest disable. Robot reasons take precedence over state reasons.
+GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettings& settings);
+
+}  // namespace cyber::daemon

@@ -1,0 +1,40 @@
+#pragma once
+// The seam between the daemon and the planner: one blocking call per plan, made on the worker
+// thread. RealPlanningService (planner_adapter.hpp) wraps planner::MotionPlanner; tests use fakes.
+
+#include "cyber/daemon/setpoint_source.hpp"
+#include "cyber/planner/result.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::daemon {
+
+struct MotionRequest {
+  JointVector start = JointVector::Zero();
+  JointVector goal = JointVector::Zero();
+  JointVector start_velocity = JointVector::Zero();  // non-zero for a splice into a running motion
+  planner::HeldPieces pieces;
+  int scene = 0;
+};
+
+struct StageTimesMs {
+  double grid = 0.0;
+  double search = 0.0;
+  double smooth = 0.0;
+  double topp = 0.0;
+  double total = 0.0;
+};
+
+struct PlannedMotion {
+  SharedSetpointSource trajectory;
+  StageTimesMs times_ms;
+  double min_clearance_m = 0.0;
+};
+
+class PlanningService {
+ public:
+  virtual ~PlanningService() = default;
+  // Thread-safe; called from the planning worker only.
+  [[nodiscard]] virtual planner::Result<PlannedMotion> plan(const MotionRequest& request) const = 0;
+};
+
+}  // namespace cyber::daemon

@@ -1,0 +1,100 @@
+#pragma once
+// The setpoint streamer's logic, one call per timer period. Single-threaded and allocation-free:
+// programs arrive as pointers the caller owns the memory of, and leave through `retired` for the
+// caller to free elsewhere. The gate is evaluated on every tick, so a stale heartbeat stops motion
+// within one period even when the event loop is busy.
+
+#include <array>
+#include <cstdint>
+
+#include "cyber/daemon/hold_model.hpp"
+#include "cyber/daemon/mono_time.hpp"
+#include "cyber/daemon/motion_gate.hpp"
+#include "cyber/daemon/program.hpp"
+#include "cyber/daemon/stream_event.hpp"
+
+namespace cyber::daemon {
+
+// Status-frame modes (docs/can-protocol.md; same numbers as cyber::can::Mode).
+enum class StreamMode : std::uint8_t { kNoState = 0, kHolding = 1, kMoving = 2, kFault = 3, kRobotDisabled = 4 };
+
+std::string_view toString(StreamMode mode);
+
+// What one setpoint frame can carry (wire ranges of the setpoint frame); anything else is a fault.
+struct SetpointLimits {
+  double position = 83.0;   // signed 24-bit at 1e-5
+  double velocity = 32.0;   // int16 at 1e-3
+  double volts = 32.0;      // int16 mV
+};
+
+struct StreamerSettings {
+  GateSettings gate;
+  SetpointLimits limits;
+  double fault_stop_s = 1.0;  // after a fault nothing is streamed this long, then the measured position is held
+};
+
+struct TickOutput {
+  static constexpr int kMaxEvents = 8;
+  static constexpr int kMaxRetired = 3;
+
+  bool send_setpoints = false;
+  JointSetpoints setpoints;
+  StreamMode mode = StreamMode::kNoState;
+  GateReason gate_reason = GateReason::kNoState;
+  std::int64_t request_id = -1;  // segment streamed, or the last one (held target); -1 none
+  double segment_time_s = 0.0;
+  double remaining_s = 0.0;      // until the program comes to rest
+
+  std::array<StreamEvent, kMaxEvents> events{};
+  int event_count = 0;
+  std::array<Program*, kMaxRetired> retired{};
+  int retired_count = 0;
+
+  void reset();
+  void push(const StreamEvent& event);
+  void retire(Program* program);
+};
+
+class Streamer {
+ public:
+  Streamer(const HoldModel& hold, const StreamerSettings& settings);
+  ~Streamer();
+  Streamer(const Streamer&) = delete;
+  Streamer& operator=(const Streamer&) = delete;
+
+  // One period at `now`. `offered` (may be null) is the newest program handed over since the last
+  // tick; the streamer either adopts it or returns it in out.retired. `stop_requested` holds the
+  // commanded position (shutdown). Never allocates.
+  void tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out);
+
+  // Gives back the program it still owns (on shutdown), or null.
+  Program* releaseProgram();
+
+  [[nodiscard]] std::uint64_t epoch() const { return epoch_; }
+  [[nodiscard]] bool running() const { return running_; }
+
+ private:
+  void stop(MonoNs now, GateReason reason, TickOutput& out);
+  void holdOwn(MonoNs now, const JointVector& q, HoldCause cause, TickOutput& out);
+  void consider(MonoNs now, Program* offered, TickOutput& out);
+  void reject(MonoNs now, Program* offered, RejectReason reason, TickOutput& out);
+  [[nodiscard]] bool withinLimits(const JointSetpoints& setpoints) const;
+  void dropOwned(TickOutput& out);
+
+  HoldModel hold_;
+  StreamerSettings settings_;
+  Program own_;                // the streamer's own hold program, reused
+  Program* program_ = &own_;   // own_ or an adopted one (owned until retired)
+  bool running_ = false;       // streaming (holding or moving); false while the gate is closed
+  bool shutdown_hold_ = false;
+  std::uint64_t epoch_ = 0;
+  MonoNs last_sample_ns_ = kNever;
+  JointVector last_position_ = JointVector::Zero();
+  std::int64_t executing_request_ = -1;
+  MonoNs executing_end_ns_ = kNever;
+  std::int64_t last_request_ = -1;
+  bool done_reported_ = true;
+  MonoNs fault_until_ns_ = kNever;
+};
+
+}  // namespace cyber::daemon

@@ -1,0 +1,41 @@
+#include "cyber/daemon/motion_gate.hpp"
+
+namespace cyber::daemon {
+
+std::string_view toString(GateReason reason) {
+  switch (reason) {
+    case GateReason::kOpen: return "open";
+    case GateReason::kNoState: return "no ARM_STATE received yet";
+    case GateReason::kStateStale: return "ARM_STATE is stale";
+    case GateReason::kRobotDisabled: return "robot disabled (heartbeat without system-watchdog bit)";
+    case GateReason::kNoHeartbeat: return "no fresh roboRIO heartbeat";
+    case GateReason::kBroadcastDisable: return "broadcast disable received";
+    case GateReason::kFault: return "fault: a setpoint was not finite or did not fit its frame";
+  }
+  return "unknown";
+}
+
+bool isRobotDisabledReason(GateReason reason) {
+  return reason == GateReason::kRobotDisabled || reason == GateReason::kNoHeartbeat ||
+         reason == GateReason::kBroadcastDisable;
+}
+
+GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettings& settings) {
+  const MonoNs heartbeat_timeout = secondsToNs(settings.heartbeat_timeout_s);
+  const bool disabled_seen = inputs.broadcast_disable_ns != kNever;
+  if (settings.require_robot_enabled) {
+    if (inputs.heartbeat_ns == kNever || now - inputs.heartbeat_ns >= heartbeat_timeout) {
+      return {GateReason::kNoHeartbeat};
+    }
+    if (!inputs.heartbeat_watchdog) return {GateReason::kRobotDisabled};
+    // Only an enabled heartbeat that arrived after the disable lifts it.
+    if (disabled_seen && inputs.broadcast_disable_ns >= inputs.heartbeat_ns) return {GateReason::kBroadcastDisable};
+  } else if (disabled_seen && now - inputs.broadcast_disable_ns < heartbeat_timeout) {
+    return {GateReason::kBroadcastDisable};
+  }
+  if (inputs.state_ns == kNever) return {GateReason::kNoState};
+  if (now - inputs.state_ns > secondsToNs(settings.state_timeout_s)) return {GateReason::kStateStale};
+  return {GateReason::kOpen};
+}
+
+}  // namespace cyber::daemon

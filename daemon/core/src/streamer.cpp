@@ -1,0 +1,215 @@
+#include "cyber/daemon/streamer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cyber::daemon {
+
+std::string_view toString(StreamMode mode) {
+  switch (mode) {
+    case StreamMode::kNoState: return "no-state";
+    case StreamMode::kHolding: return "holding";
+    case StreamMode::kMoving: return "moving";
+    case StreamMode::kFault: return "fault";
+    case StreamMode::kRobotDisabled: return "robot-disabled";
+  }
+  return "unknown";
+}
+
+void TickOutput::reset() {
+  send_setpoints = false;
+  mode = StreamMode::kNoState;
+  gate_reason = GateReason::kNoState;
+  request_id = -1;
+  segment_time_s = 0.0;
+  remaining_s = 0.0;
+  event_count = 0;
+  retired_count = 0;
+}
+
+void TickOutput::push(const StreamEvent& event) {
+  if (event_count < kMaxEvents) events[static_cast<size_t>(event_count++)] = event;
+}
+
+void TickOutput::retire(Program* program) {
+  if (program != nullptr && retired_count < kMaxRetired) retired[static_cast<size_t>(retired_count++)] = program;
+}
+
+Streamer::Streamer(const HoldModel& hold, const StreamerSettings& settings) : hold_(hold), settings_(settings) {}
+
+Streamer::~Streamer() {
+  if (program_ != &own_) delete program_;
+}
+
+Program* Streamer::releaseProgram() {
+  if (program_ == &own_) return nullptr;
+  Program* released = program_;
+  program_ = &own_;
+  return released;
+}
+
+void Streamer::dropOwned(TickOutput& out) {
+  if (program_ != &own_) out.retire(program_);
+  program_ = &own_;
+}
+
+void Streamer::stop(MonoNs now, GateReason reason, TickOutput& out) {
+  StreamEvent event;
+  event.kind = StreamEventKind::kStopped;
+  event.time_ns = now;
+  event.request_id = executing_request_;
+  event.gate_reason = reason;
+  event.position = last_position_;
+  dropOwned(out);
+  running_ = false;
+  ++epoch_;
+  own_.resetToHold(epoch_, last_position_);
+  executing_request_ = -1;
+  done_reported_ = true;
+  event.epoch = epoch_;
+  out.push(event);
+}
+
+void Streamer::holdOwn(MonoNs now, const JointVector& q, HoldCause cause, TickOutput& out) {
+  StreamEvent event;
+  event.kind = StreamEventKind::kHolding;
+  event.time_ns = now;
+  event.request_id = executing_request_;
+  event.hold_cause = cause;
+  event.position = q;
+  dropOwned(out);
+  ++epoch_;
+  own_.resetToHold(epoch_, q);
+  executing_request_ = -1;
+  done_reported_ = true;
+  event.epoch = epoch_;
+  out.push(event);
+}
+
+void Streamer::reject(MonoNs now, Program* offered, RejectReason reason, TickOutput& out) {
+  StreamEvent event;
+  event.kind = StreamEventKind::kRejected;
+  event.time_ns = now;
+  event.program_id = offered->id;
+  event.epoch = epoch_;
+  event.reject_reason = reason;
+  out.retire(offered);
+  out.push(event);
+}
+
+void Streamer::consider(MonoNs now, Program* offered, TickOutput& out) {
+  StreamEvent event;
+  event.time_ns = now;
+  event.program_id = offered->id;
+  event.epoch = epoch_;
+  const bool same_base = offered->epoch == epoch_ && offered->base_id == program_->id && !shutdown_hold_;
+  if (!same_base || (!offered->floating && offered->splice_ns <= last_sample_ns_)) {
+    reject(now, offered, same_base ? RejectReason::kLate : RejectReason::kStaleBase, out);
+    return;
+  }
+  offered->resolveFloatingStart(now);
+  dropOwned(out);
+  program_ = offered;
+  event.kind = StreamEventKind::kAdopted;
+  event.start_ns = offered->splice_ns;
+  if (offered->segmentCount() > 0) event.request_id = offered->segment(offered->segmentCount() - 1).request_id;
+  out.push(event);
+}
+
+bool Streamer::withinLimits(const JointSetpoints& s) const {
+  const SetpointLimits& lim = settings_.limits;
+  for (int j = 0; j < planner::kJointCount; ++j) {
+    if (!(std::abs(s.position[j]) <= lim.position) || !(std::abs(s.velocity[j]) <= lim.velocity) ||
+        !(std::abs(s.volts[j]) <= lim.volts)) {
+      return false;  // also catches NaN
+    }
+  }
+  return true;
+}
+
+void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out) {
+  out.reset();
+  GateVerdict verdict = evaluateGate(inputs, now, settings_.gate);
+  if (verdict.open() && now < fault_until_ns_) verdict.reason = GateReason::kFault;
+  out.gate_reason = verdict.reason;
+  if (!verdict.open()) {
+    if (running_) stop(now, verdict.reason, out);
+    if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
+    out.mode = verdict.reason == GateReason::kFault       ? StreamMode::kFault
+               : isRobotDisabledReason(verdict.reason) ? StreamMode::kRobotDisabled
+                                                       : StreamMode::kNoState;
+    out.request_id = last_request_;
+    return;
+  }
+  if (!running_) {
+    // (Re-)enabled: hold where the mechanism is, not where the last command was.
+    running_ = true;
+    holdOwn(now, inputs.measured_q, HoldCause::kEnabled, out);
+  }
+  if (stop_requested && !shutdown_hold_) {
+    holdOwn(now, last_sample_ns_ == kNever ? inputs.measured_q : last_position_, HoldCause::kShutdown, out);
+    shutdown_hold_ = true;
+  }
+  if (offered != nullptr) consider(now, offered, out);
+
+  const ProgramSample sample = program_->sample(now, hold_);
+  if (!withinLimits(sample.setpoints)) {
+    // Never send a wrapped or NaN value: stop streaming, then hold the measured position.
+    StreamEvent fault;
+    fault.kind = StreamEventKind::kFault;
+    fault.time_ns = now;
+    fault.request_id = sample.request_id;
+    out.push(fault);
+    fault_until_ns_ = now + secondsToNs(settings_.fault_stop_s);
+    stop(now, GateReason::kFault, out);
+    out.gate_reason = GateReason::kFault;
+    out.mode = StreamMode::kFault;
+    out.request_id = last_request_;
+    return;
+  }
+
+  if (sample.request_id >= 0 && sample.request_id != executing_request_) {
+    const Segment& segment = program_->segment(sample.segment);
+    if (executing_request_ >= 0 && !done_reported_ && executing_end_ns_ <= segment.start_ns) {
+      // The previous motion ran to its end before this one took over (a start from rest).
+      StreamEvent done;
+      done.kind = StreamEventKind::kDone;
+      done.time_ns = now;
+      done.request_id = executing_request_;
+      done.epoch = epoch_;
+      out.push(done);
+    }
+    executing_request_ = sample.request_id;
+    executing_end_ns_ = segment.start_ns + secondsToNs(segment.source->durationS());
+    done_reported_ = false;
+    StreamEvent event;
+    event.kind = StreamEventKind::kExecuting;
+    event.time_ns = now;
+    event.request_id = sample.request_id;
+    event.epoch = epoch_;
+    out.push(event);
+  }
+  if (sample.request_id >= 0 && !sample.moving && sample.last_segment && !done_reported_) {
+    done_reported_ = true;
+    StreamEvent event;
+    event.kind = StreamEventKind::kDone;
+    event.time_ns = now;
+    event.request_id = sample.request_id;
+    event.position = sample.setpoints.position;
+    event.epoch = epoch_;
+    out.push(event);
+  }
+  if (sample.request_id >= 0) last_request_ = sample.request_id;
+
+  last_sample_ns_ = now;
+  last_position_ = sample.setpoints.position;
+  out.send_setpoints = true;
+  out.setpoints = sample.setpoints;
+  out.mode = sample.moving ? StreamMode::kMoving : StreamMode::kHolding;
+  out.request_id = last_request_;
+  out.segment_time_s = sample.segment_time_s;
+  const MonoNs end = program_->endNs();
+  out.remaining_s = end == kNever ? 0.0 : std::max(0.0, nsToSeconds(end - now));
+}
+
+}  // namespace cyber::daemon

@@ -1,0 +1,49 @@
+#pragma once
+// The daemon's LCM endpoint on the event-loop thread: raw subscriptions to the goal and state
+// channels, decoded with safeDecode (an undecodable or foreign message is counted, never trusted),
+// and typed publishing on the output channels.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <functional>
+#include <string>
+
+#include "cyber/config/daemon_settings.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+
+namespace cyber::daemon::io {
+
+class LcmBridge {
+ public:
+  struct Callbacks {
+    std::function<void(const cyberplanner::arm_goal_t&)> goal;
+    std::function<void(const cyberplanner::arm_state_t&)> state;
+    std::function<void(const std::string& channel, int size)> undecodable;
+  };
+
+  LcmBridge(lcm::LCM& lcm, const config::ChannelNames& channels, Callbacks callbacks);
+  LcmBridge(const LcmBridge&) = delete;
+  LcmBridge& operator=(const LcmBridge&) = delete;
+
+  [[nodiscard]] int fd() { return lcm_.getFileno(); }
+  // Handles the messages already waiting, at most max_messages (so a flood cannot starve the
+  // other descriptors of the loop). Returns how many were handled.
+  int handleReady(int max_messages);
+
+  template <class Message>
+  void publish(const std::string& channel, const Message& message) {
+    lcm_.publish(channel, &message);
+  }
+  [[nodiscard]] const config::ChannelNames& channels() const { return channels_; }
+
+ private:
+  void onGoal(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void onState(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+
+  lcm::LCM& lcm_;
+  config::ChannelNames channels_;
+  Callbacks callbacks_;
+};
+
+}  // namespace cyber::daemon::io

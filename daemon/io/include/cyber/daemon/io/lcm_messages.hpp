@@ -1,0 +1,45 @@
+#pragma once
+// Conversions between the daemon's values and the cyberplanner LCM messages. Pure functions:
+// times come in as parameters (LCM utime is wall-clock microseconds).
+
+#include <cstdint>
+#include <optional>
+
+#include "cyber/daemon/goal_request.hpp"
+#include "cyber/daemon/goal_status.hpp"
+#include "cyber/daemon/io/streamer_thread.hpp"
+#include "cyber/daemon/setpoint_source.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+
+namespace cyber::daemon::io {
+
+std::int64_t wallMicros();
+// A monotonic time as wall-clock microseconds (through the current offset between the clocks).
+std::int64_t monoToWallMicros(MonoNs t, MonoNs mono_now, std::int64_t wall_now_us);
+
+GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message);
+
+struct MeasuredState {
+  JointVector q = JointVector::Zero();
+  JointVector qdot = JointVector::Zero();
+};
+// Accepted when finite and within the joint ranges widened by `margin` (m or rad): a sensor a
+// little past a limit is still the mechanism's position; nonsense is not held.
+std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
+                                              const planner::RobotModel& robot, double margin = 0.5);
+
+cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::int64_t utime);
+
+// Samples at step_s, widened to duration / (MAX_SAMPLES - 1) for long trajectories so at most
+// MAX_SAMPLES samples cover the whole trajectory (docs/lcm.md).
+cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
+                                                 std::int64_t start_utime, double step_s, std::int64_t utime);
+
+cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, std::int64_t utime);
+
+}  // namespace cyber::daemon::io

@@ -1,0 +1,109 @@
+#pragma once
+// The setpoint streamer's thread: wakes on its own timerfd at the stream rate, ticks the Streamer,
+// writes the frames and publishes what happened through lock-free structures. It never takes a
+// lock, never logs, never touches LCM and never allocates; programs it is done with go back to the
+// event loop to be freed there.
+
+#include <atomic>
+#include <cstdint>
+#include <thread>
+
+#include "cyber/daemon/frame_writer.hpp"
+#include "cyber/daemon/io/fd.hpp"
+#include "cyber/daemon/latency_histogram.hpp"
+#include "cyber/daemon/latest_value.hpp"
+#include "cyber/daemon/spsc_ring.hpp"
+#include "cyber/daemon/streamer.hpp"
+
+namespace cyber::daemon::io {
+
+// RobotInputs as plain data for the seqlock (Eigen vectors are not trivially copyable).
+struct RobotInputsData {
+  MonoNs state_ns = kNever;
+  double measured_q[2] = {0.0, 0.0};
+  double measured_qdot[2] = {0.0, 0.0};
+  MonoNs heartbeat_ns = kNever;
+  bool heartbeat_watchdog = false;
+  MonoNs broadcast_disable_ns = kNever;
+
+  [[nodiscard]] RobotInputs toInputs() const;
+};
+
+// The latest tick, for ARM_SETPOINT and ARM_DAEMON_STATUS.
+struct StreamSnapshot {
+  std::int64_t ticks = 0;
+  MonoNs time_ns = 0;
+  StreamMode mode = StreamMode::kNoState;
+  GateReason gate_reason = GateReason::kNoState;
+  std::int64_t request_id = -1;
+  double segment_time_s = 0.0;
+  double remaining_s = 0.0;
+  bool setpoints_written = false;
+  can::Setpoint elevator;
+  can::Setpoint arm;
+};
+
+// CAN write bursts, for the log.
+struct WriteNotice {
+  bool started = false;  // false: ended
+  can::IoStatus status = can::IoStatus::kOk;
+  int error_number = 0;
+  std::int64_t failures = 0;
+  MonoNs time_ns = 0;
+};
+
+// Everything the event loop and the streamer thread share.
+struct StreamerChannels {
+  LatestValue<RobotInputsData> inputs;
+  std::atomic<Program*> offered{nullptr};
+  std::atomic<bool> stop_requested{false};
+  std::atomic<std::uint8_t> fault_bits{0};  // plan failed, bus error, overrun (set by the loop)
+
+  SpscRing<StreamEvent, 1024> events;
+  SpscRing<Program*, 64> retired;
+  SpscRing<WriteNotice, 64> notices;
+  LatestValue<StreamSnapshot> snapshot;
+  EventFd wake;  // the streamer has pushed events or notices
+
+  std::atomic<std::int64_t> frames_sent{0};
+  std::atomic<std::int64_t> write_failures{0};
+  std::atomic<std::int64_t> overruns{0};
+  std::atomic<std::int64_t> lost_messages{0};  // ring full (never expected)
+  std::atomic<MonoNs> last_overrun_ns{kNever};
+  LatencyHistogram jitter;
+  std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused
+};
+
+// Bench/test hook, called on the streamer thread after each tick's frames are written.
+using TickObserver = void (*)(void* context, MonoNs now, const TickOutput& tick, const WriteReport& report);
+
+class StreamerThread {
+ public:
+  StreamerThread(StreamerChannels& channels, Streamer& streamer, FrameWriter& writer, MonoNs period_ns);
+  ~StreamerThread();
+  StreamerThread(const StreamerThread&) = delete;
+  StreamerThread& operator=(const StreamerThread&) = delete;
+
+  void setObserver(TickObserver observer, void* context) {
+    observer_ = observer;
+    observer_context_ = context;
+  }
+  void start();
+  // Ends after the current period and joins.
+  void stop();
+
+ private:
+  void run();
+
+  StreamerChannels& channels_;
+  Streamer& streamer_;
+  FrameWriter& writer_;
+  MonoNs period_ns_;
+  TimerFd timer_{true};
+  std::atomic<bool> quit_{false};
+  TickObserver observer_ = nullptr;
+  void* observer_context_ = nullptr;
+  std::thread thread_;
+};
+
+}  // namespace cyber::daemon::io

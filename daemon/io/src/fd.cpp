@@ -1,0 +1,100 @@
+#include "cyber/daemon/io/fd.hpp"
+
+#include <sys/eventfd.h>
+#include <sys/signalfd.h>
+#include <sys/timerfd.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <pthread.h>
+#include <system_error>
+
+namespace cyber::daemon::io {
+
+namespace {
+
+[[noreturn]] void fail(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
+
+timespec toTimespec(MonoNs ns) {
+  timespec ts{};
+  ts.tv_sec = static_cast<time_t>(ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(ns % 1'000'000'000);
+  return ts;
+}
+
+}  // namespace
+
+UniqueFd& UniqueFd::operator=(UniqueFd&& other) noexcept {
+  if (this != &other) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = other.release();
+  }
+  return *this;
+}
+
+UniqueFd::~UniqueFd() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+EventFd::EventFd() : fd_(::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC)) {
+  if (fd_.get() < 0) fail("eventfd");
+}
+
+void EventFd::signal() const {
+  const std::uint64_t one = 1;
+  // Non-blocking: fails only if the counter would overflow, and then the loop is woken anyway.
+  [[maybe_unused]] const ssize_t n = ::write(fd_.get(), &one, sizeof one);
+}
+
+void EventFd::drain() const {
+  std::uint64_t count = 0;
+  [[maybe_unused]] const ssize_t n = ::read(fd_.get(), &count, sizeof count);
+}
+
+TimerFd::TimerFd(bool blocking) : fd_(::timerfd_create(CLOCK_MONOTONIC, TFD_CLOEXEC | (blocking ? 0 : TFD_NONBLOCK))) {
+  if (fd_.get() < 0) fail("timerfd_create");
+}
+
+void TimerFd::startPeriodic(MonoNs first_ns, MonoNs period_ns) const {
+  itimerspec spec{};
+  spec.it_value = toTimespec(first_ns);
+  spec.it_interval = toTimespec(period_ns);
+  if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");
+}
+
+void TimerFd::startOnce(MonoNs at_ns) const {
+  itimerspec spec{};
+  spec.it_value = toTimespec(at_ns);
+  if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");
+}
+
+std::uint64_t TimerFd::wait() const {
+  for (;;) {
+    std::uint64_t expirations = 0;
+    const ssize_t n = ::read(fd_.get(), &expirations, sizeof expirations);
+    if (n == sizeof expirations) return expirations;
+    if (n < 0 && errno == EINTR) continue;
+    return 0;
+  }
+}
+
+std::uint64_t TimerFd::consume() const {
+  std::uint64_t expirations = 0;
+  return ::read(fd_.get(), &expirations, sizeof expirations) == sizeof expirations ? expirations : 0;
+}
+
+SignalFd::SignalFd(std::initializer_list<int> signals) {
+  sigset_t set;
+  sigemptyset(&set);
+  for (int s : signals) sigaddset(&set, s);
+  if (pthread_sigmask(SIG_BLOCK, &set, nullptr) != 0) fail("pthread_sigmask");
+  fd_ = UniqueFd(::signalfd(-1, &set, SFD_NONBLOCK | SFD_CLOEXEC));
+  if (fd_.get() < 0) fail("signalfd");
+}
+
+int SignalFd::take() const {
+  signalfd_siginfo info{};
+  return ::read(fd_.get(), &info, sizeof info) == sizeof info ? static_cast<int>(info.ssi_signo) : 0;
+}
+
+}  // namespace cyber::daemon::io

@@ -1,0 +1,108 @@
+#include "cyber/daemon/io/lcm_messages.hpp"
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace cyber::daemon::io {
+
+std::int64_t wallMicros() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
+}
+
+std::int64_t monoToWallMicros(MonoNs t, MonoNs mono_now, std::int64_t wall_now_us) {
+  return wall_now_us + (t - mono_now) / 1000;
+}
+
+GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message) {
+  GoalRequest goal;
+  goal.request_id = message.request_id;
+  goal.elevator_m = message.elevator_m;
+  goal.arm_rad = message.arm_rad;
+  goal.held_coral = message.held_coral != 0;
+  goal.held_algae = message.held_algae != 0;
+  goal.scene_name = message.scene_name;
+  return goal;
+}
+
+std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
+                                              const planner::RobotModel& robot, double margin) {
+  const double values[] = {message.elevator_m, message.elevator_mps, message.arm_rad, message.arm_radps};
+  for (double v : values) {
+    if (!std::isfinite(v)) return std::nullopt;
+  }
+  MeasuredState state;
+  state.q = JointVector(message.elevator_m, message.arm_rad);
+  state.qdot = JointVector(message.elevator_mps, message.arm_radps);
+  if (!robot.withinLimits(state.q, margin)) return std::nullopt;
+  return state;
+}
+
+cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::int64_t utime) {
+  cyberplanner::arm_plan_status_t message{};
+  message.utime = utime;
+  message.request_id = update.request_id;
+  message.status = static_cast<std::int8_t>(update.status);
+  message.reason = update.reason;
+  message.grid_ms = update.times_ms.grid;
+  message.search_ms = update.times_ms.search;
+  message.smooth_ms = update.times_ms.smooth;
+  message.topp_ms = update.times_ms.topp;
+  message.total_ms = update.times_ms.total;
+  message.duration_s = update.duration_s;
+  return message;
+}
+
+cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
+                                                 std::int64_t start_utime, double step_s, std::int64_t utime) {
+  constexpr int kMax = cyberplanner::arm_trajectory_t::MAX_SAMPLES;
+  cyberplanner::arm_trajectory_t message{};
+  message.utime = utime;
+  message.request_id = request_id;
+  message.start_utime = start_utime;
+  const double duration = std::max(0.0, trajectory.durationS());
+  message.duration_s = duration;
+  const double dt = std::max(step_s, duration / (kMax - 1));
+  message.dt_s = dt;
+  const int count = std::min(kMax, static_cast<int>(std::floor(duration / dt + 1e-9)) + 1);
+  message.num_samples = count;
+  for (auto* column : {&message.t_s, &message.elevator_m, &message.arm_rad, &message.elevator_mps, &message.arm_radps,
+                       &message.elevator_volts, &message.arm_volts}) {
+    column->resize(static_cast<size_t>(count));
+  }
+  for (int k = 0; k < count; ++k) {
+    const double t = std::min(duration, k * dt);
+    const JointSetpoints s = trajectory.at(t);
+    const auto i = static_cast<size_t>(k);
+    message.t_s[i] = t;
+    message.elevator_m[i] = s.position[0];
+    message.arm_rad[i] = s.position[1];
+    message.elevator_mps[i] = s.velocity[0];
+    message.arm_radps[i] = s.velocity[1];
+    message.elevator_volts[i] = s.volts[0];
+    message.arm_volts[i] = s.volts[1];
+  }
+  return message;
+}
+
+cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, std::int64_t utime) {
+  cyberplanner::arm_setpoint_t message{};
+  message.utime = utime;
+  message.mode = static_cast<std::int8_t>(snapshot.mode);
+  message.request_id = snapshot.request_id;
+  message.trajectory_t_s = snapshot.mode == StreamMode::kMoving ? snapshot.segment_time_s : 0.0;
+  message.elevator_m = snapshot.elevator.position;
+  message.elevator_mps = snapshot.elevator.velocity;
+  message.elevator_volts = snapshot.elevator.feedforward_volts;
+  message.elevator_sequence = snapshot.elevator.sequence;
+  message.arm_rad = snapshot.arm.position;
+  message.arm_radps = snapshot.arm.velocity;
+  message.arm_volts = snapshot.arm.feedforward_volts;
+  message.arm_sequence = snapshot.arm.sequence;
+  return message;
+}
+
+}  // namespace cyber::daemon::io

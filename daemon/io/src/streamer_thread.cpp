@@ -1,0 +1,104 @@
+#include "cyber/daemon/io/streamer_thread.hpp"
+
+#include <pthread.h>
+#include <sched.h>
+
+namespace cyber::daemon::io {
+
+RobotInputs RobotInputsData::toInputs() const {
+  RobotInputs inputs;
+  inputs.state_ns = state_ns;
+  inputs.measured_q = JointVector(measured_q[0], measured_q[1]);
+  inputs.measured_qdot = JointVector(measured_qdot[0], measured_qdot[1]);
+  inputs.heartbeat_ns = heartbeat_ns;
+  inputs.heartbeat_watchdog = heartbeat_watchdog;
+  inputs.broadcast_disable_ns = broadcast_disable_ns;
+  return inputs;
+}
+
+StreamerThread::StreamerThread(StreamerChannels& channels, Streamer& streamer, FrameWriter& writer, MonoNs period_ns)
+    : channels_(channels), streamer_(streamer), writer_(writer), period_ns_(period_ns) {}
+
+StreamerThread::~StreamerThread() { stop(); }
+
+void StreamerThread::start() { thread_ = std::thread([this] { run(); }); }
+
+void StreamerThread::stop() {
+  quit_.store(true);
+  if (thread_.joinable()) thread_.join();
+}
+
+void StreamerThread::run() {
+  // Real-time priority when allowed (root or CAP_SYS_NICE); plain scheduling otherwise.
+  sched_param param{};
+  param.sched_priority = 50;
+  if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) {
+    channels_.realtime_priority.store(param.sched_priority);
+  }
+
+  MonoNs scheduled = (monotonicNow() / period_ns_ + 1) * period_ns_;
+  timer_.startPeriodic(scheduled, period_ns_);
+  TickOutput out;
+  std::int64_t ticks = 0;
+  while (!quit_.load(std::memory_order_relaxed)) {
+    const std::uint64_t expirations = timer_.wait();
+    if (expirations == 0) continue;
+    const MonoNs now = monotonicNow();
+    scheduled += static_cast<MonoNs>(expirations - 1) * period_ns_;
+    channels_.jitter.record(nsToSeconds(now - scheduled) * 1e6);
+    if (expirations > 1) {
+      channels_.overruns.fetch_add(static_cast<std::int64_t>(expirations - 1), std::memory_order_relaxed);
+      channels_.last_overrun_ns.store(now, std::memory_order_relaxed);
+    }
+    scheduled += period_ns_;
+
+    const RobotInputs inputs = channels_.inputs.load().toInputs();
+    Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
+    streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);
+    const WriteReport report = writer_.write(out, channels_.fault_bits.load(std::memory_order_relaxed));
+
+    StreamSnapshot snapshot;
+    snapshot.ticks = ++ticks;
+    snapshot.time_ns = now;
+    snapshot.mode = out.mode;
+    snapshot.gate_reason = out.gate_reason;
+    snapshot.request_id = out.request_id;
+    snapshot.segment_time_s = out.segment_time_s;
+    snapshot.remaining_s = out.remaining_s;
+    snapshot.setpoints_written = report.wire.written;
+    snapshot.elevator = report.wire.elevator;
+    snapshot.arm = report.wire.arm;
+    channels_.snapshot.store(snapshot);
+    channels_.frames_sent.store(writer_.framesSent(), std::memory_order_relaxed);
+    channels_.write_failures.store(writer_.writeFailures(), std::memory_order_relaxed);
+
+    bool wake = false;
+    for (int i = 0; i < out.retired_count; ++i) {
+      if (!channels_.retired.push(out.retired[static_cast<size_t>(i)])) {
+        channels_.lost_messages.fetch_add(1, std::memory_order_relaxed);  // leaks one program
+      }
+      wake = true;
+    }
+    for (int i = 0; i < out.event_count; ++i) {
+      if (!channels_.events.push(out.events[static_cast<size_t>(i)])) {
+        channels_.lost_messages.fetch_add(1, std::memory_order_relaxed);
+      }
+      wake = true;
+    }
+    if (report.burst_started || report.burst_ended) {
+      WriteNotice notice;
+      notice.started = report.burst_started;
+      notice.status = report.first_failure.status;
+      notice.error_number = report.first_failure.error_number;
+      notice.failures = report.burst_failures;
+      notice.time_ns = now;
+      if (!channels_.notices.push(notice)) channels_.lost_messages.fetch_add(1, std::memory_order_relaxed);
+      wake = true;
+    }
+    if (observer_ != nullptr) observer_(observer_context_, now, out, report);
+    if (wake) channels_.wake.signal();
+  }
+  if (Program* left = streamer_.releaseProgram()) channels_.retired.push(left);
+}
+
+}  // namespace cyber::daemon::io

@@ -1,0 +1,61 @@
+#include "cyber/daemon/motion_planner_service.hpp"
+
+#include "cyber/planner/motion_planner.hpp"
+
+namespace cyber::daemon {
+
+namespace {
+
+class TrajectorySource final : public SetpointSource {
+ public:
+  explicit TrajectorySource(std::shared_ptr<const planner::Trajectory> trajectory)
+      : trajectory_(std::move(trajectory)) {}
+  [[nodiscard]] double durationS() const override { return trajectory_->duration_s(); }
+  [[nodiscard]] JointSetpoints at(double t_s) const override {
+    const planner::TrajectorySample sample = trajectory_->sample(t_s);
+    JointSetpoints out;
+    out.position = sample.q;
+    out.velocity = sample.qdot;
+    out.volts = sample.volts;
+    return out;
+  }
+
+ private:
+  std::shared_ptr<const planner::Trajectory> trajectory_;
+};
+
+class MotionPlannerService final : public PlanningService {
+ public:
+  explicit MotionPlannerService(planner::MotionPlanner planner) : planner_(std::move(planner)) {}
+
+  [[nodiscard]] planner::Result<PlannedMotion> plan(const MotionRequest& request) const override {
+    planner::PlanRequest plan_request;
+    plan_request.start = request.start;
+    plan_request.goal = request.goal;
+    plan_request.start_velocity = request.start_velocity;
+    plan_request.pieces = request.pieces;
+    plan_request.scene = request.scene;
+    auto plan = planner_.plan(plan_request);
+    if (!plan) return plan.error();
+    const planner::Plan& value = plan.value();
+    PlannedMotion out;
+    out.trajectory = std::make_shared<TrajectorySource>(value.trajectory);
+    out.times_ms = StageTimesMs{value.times_ms.grid, value.times_ms.search, value.times_ms.smooth, value.times_ms.topp,
+                                value.times_ms.total};
+    out.min_clearance_m = value.min_clearance_m;
+    return out;
+  }
+
+ private:
+  planner::MotionPlanner planner_;
+};
+
+}  // namespace
+
+planner::Result<std::unique_ptr<PlanningService>> makeMotionPlannerService(const planner::RobotModel& robot) {
+  auto planner = planner::MotionPlanner::create(robot);
+  if (!planner) return planner.error();
+  return std::unique_ptr<PlanningService>(std::make_unique<MotionPlannerService>(std::move(planner).value()));
+}
+
+}  // namespace cyber::daemon

@@ -1,0 +1,171 @@
+#!/usr/bin/env bash
+# The real cyber-plannerd (--can none) and real LCM peers in a network namespace of their own.
+#   daemon_integration_test.sh CASE DAEMON GOAL_TOOL PEER CONFIG
+# CASE: goal_done | bad_goals | flood | garbage | sigterm | startup_errors
+# Needs root (ip netns). The namespace and every process started here are removed on exit, also
+# on failure.
+set -euo pipefail
+
+case_name=$1 daemon=$2 goal=$3 peer=$4 config=$5
+ns=cyber-test-$$
+tmp=$(mktemp -d)
+pids=()
+daemon_pid=
+
+cleanup() {
+  for pid in "${pids[@]}"; do kill "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  ip netns del "$ns" 2>/dev/null || true
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+
+fail() {
+  echo "FAIL ($case_name): $*"
+  if [ -f "$tmp/daemon.log" ]; then echo "--- daemon log (last 40 lines)"; tail -n 40 "$tmp/daemon.log"; fi
+  exit 1
+}
+
+in_ns() { ip netns exec "$ns" "$@"; }
+
+setup_namespace() {
+  ip netns add "$ns"
+  ip -n "$ns" link set lo up
+  ip -n "$ns" route add 224.0.0.0/4 dev lo
+}
+
+# Starts the daemon and a state publisher that follows the setpoint echo from STOW, then waits
+# until the daemon holds (ARM_DAEMON_STATUS mode 1).
+start_daemon() {
+  setup_namespace
+  in_ns "$daemon" --config "$config" --can none >"$tmp/daemon.log" 2>&1 &
+  daemon_pid=$!
+  pids+=("$daemon_pid")
+  in_ns "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
+  pids+=("$!")
+  for _ in $(seq 1 150); do
+    kill -0 "$daemon_pid" 2>/dev/null || fail "the daemon exited during start-up"
+    if in_ns "$peer" status --timeout 0.5 >"$tmp/status" 2>/dev/null && grep -qx 'mode=1' "$tmp/status"; then
+      return 0
+    fi
+    sleep 0.1
+  done
+  fail "the daemon did not start holding within 15 s"
+}
+
+status_value() {  # status_value KEY -> value from a fresh ARM_DAEMON_STATUS
+  in_ns "$peer" status --timeout 2 >"$tmp/status" || fail "no ARM_DAEMON_STATUS"
+  sed -n "s/^$1=//p" "$tmp/status"
+}
+
+# expect_goal RC PATTERN ARGS...: cyber-goal exits with RC and prints a line matching PATTERN.
+expect_goal() {
+  local want=$1 pattern=$2
+  shift 2
+  local rc=0
+  in_ns "$goal" "$@" --timeout 30 >"$tmp/goal.out" 2>&1 || rc=$?
+  cat "$tmp/goal.out"
+  [ "$rc" -eq "$want" ] || fail "cyber-goal $* exited $rc, expected $want"
+  grep -q -- "$pattern" "$tmp/goal.out" || fail "cyber-goal $* printed no line matching '$pattern'"
+}
+
+case "$case_name" in
+  goal_done)
+    start_daemon
+    expect_goal 0 "request 11 done" --to 1.97,5.17 --id 11
+    # accepted -> executing -> done, in that order, with a trajectory.
+    grep -n "request 11" "$tmp/goal.out" | awk -F'request 11 ' '{print $2}' | cut -d' ' -f1 | tr -d ':(' | tr '\n' ' ' >"$tmp/seq"
+    grep -q "^accepted planning trajectory executing done" "$tmp/seq" || fail "status sequence: $(cat "$tmp/seq")"
+    [ "$(status_value plans_succeeded)" -ge 1 ] || fail "plans_succeeded not counted"
+    ;;
+
+  bad_goals)
+    start_daemon
+    expect_goal 3 "rejected: invalid input: elevator_m is not finite" --to nan,1.0 --id 21
+    expect_goal 3 "rejected: invalid input: arm_rad is not finite" --to 0.5,inf --id 22
+    expect_goal 3 "rejected: goal out of range: elevator_m = 5 m is outside" --to 5,1.0 --id 23
+    expect_goal 3 "rejected: invalid input: unknown scene 'moon'" --to 0.5,1.0 --scene moon --id 24
+    expect_goal 3 "rejected: goal in collision" --to 0.0,4.71 --id 25
+    # Still serving.
+    expect_goal 0 "request 26 done" --to 0.58,2.97 --id 26
+    ;;
+
+  flood)
+    start_daemon
+    in_ns "$peer" watch --first-id 1000 --count 1000 --timeout 60 >"$tmp/watch.out" 2>&1 &
+    watch_pid=$!
+    pids+=("$watch_pid")
+    sleep 0.5
+    in_ns "$peer" flood --to 1.97,5.17 --to 0.58,2.97 --to 1.22,5.69 --rate 1000 --seconds 1 --first-id 1000
+    rc=0
+    wait "$watch_pid" || rc=$?
+    cat "$tmp/watch.out"
+    [ "$rc" -eq 0 ] || fail "not every flooded goal got exactly one final status"
+    kill -0 "$daemon_pid" || fail "the daemon died in the flood"
+    expect_goal 0 "request 2001 done" --to 0.20,1.57 --id 2001
+    echo "stream jitter p99 $(status_value stream_jitter_p99_us) us, overruns $(status_value stream_overruns)"
+    ;;
+
+  garbage)
+    start_daemon
+    in_ns "$peer" garbage --count 200
+    sleep 0.5
+    errors=$(status_value decode_errors)
+    echo "decode_errors=$errors"
+    [ "$errors" -ge 150 ] || fail "decode_errors $errors: garbage not counted"
+    kill -0 "$daemon_pid" || fail "the daemon died of garbage"
+    expect_goal 0 "request 31 done" --to 1.22,5.69 --id 31
+    ;;
+
+  sigterm)
+    start_daemon
+    in_ns "$goal" --to 1.97,5.17 --id 41 --timeout 30 >"$tmp/goal.out" 2>&1 &
+    goal_pid=$!
+    pids+=("$goal_pid")
+    for _ in $(seq 1 300); do
+      grep -q "request 41 executing" "$tmp/goal.out" && break
+      sleep 0.01
+    done
+    grep -q "request 41 executing" "$tmp/goal.out" || fail "the goal never started executing"
+    start_ns=$(date +%s%N)
+    kill -TERM "$daemon_pid"
+    rc=0
+    wait "$daemon_pid" || rc=$?
+    elapsed_ms=$(( ($(date +%s%N) - start_ns) / 1000000 ))
+    echo "daemon exited $rc after $elapsed_ms ms"
+    [ "$rc" -eq 0 ] || fail "exit code $rc after SIGTERM"
+    [ "$elapsed_ms" -lt 1000 ] || fail "took $elapsed_ms ms to exit"
+    goal_rc=0
+    wait "$goal_pid" || goal_rc=$?
+    cat "$tmp/goal.out"
+    [ "$goal_rc" -eq 5 ] || fail "cyber-goal exited $goal_rc, expected 5 (cancelled)"
+    grep -q "cancelled: daemon shutting down" "$tmp/goal.out" || fail "no cancellation with a reason"
+    grep -q "SIGTERM: holding the commanded position" "$tmp/daemon.log" || fail "no shutdown line in the log"
+    ;;
+
+  startup_errors)
+    # One clear line and a non-zero exit for each start-up problem (no namespace needed).
+    one_line() {  # one_line RC PATTERN ARGS...
+      local want=$1 pattern=$2
+      shift 2
+      local rc=0
+      "$daemon" "$@" >"$tmp/out" 2>"$tmp/err" || rc=$?
+      cat "$tmp/err"
+      [ "$rc" -eq "$want" ] || fail "'$*' exited $rc, expected $want"
+      [ "$(wc -l <"$tmp/err")" -eq 1 ] || [ "$want" -eq 2 ] || fail "'$*' printed more than one line"
+      grep -q -- "$pattern" "$tmp/err" || fail "'$*' did not say '$pattern'"
+    }
+    "$daemon" --help | grep -q "cyber-plannerd --config FILE" || fail "--help"
+    one_line 2 "--config FILE is required" --can none
+    one_line 2 "unknown argument '--bogus'" --config "$config" --bogus
+    printf 'name = "x"\n' >"$tmp/bad.toml"
+    one_line 2 "cyber-plannerd: .*bad.toml" --config "$tmp/bad.toml" --can none
+    one_line 1 "cyber-plannerd: cannot open LCM at 'bogus://nowhere'" --config "$config" --can none --lcm-url bogus://nowhere
+    one_line 1 "cyber-plannerd: .*nosuchcan0" --config "$config" --can nosuchcan0 --lcm-url memq://
+    ;;
+
+  *)
+    fail "unknown case"
+    ;;
+esac
+echo "PASS ($case_name)"

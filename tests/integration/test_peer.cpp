@@ -1,0 +1,253 @@
+// cyber-test-peer: the other side of cyber-plannerd for the integration tests (python3 here has
+// no lcm module). One subcommand per job:
+//   state   --at E,A [--rate HZ] [--seconds S]   publish ARM_STATE, following the ARM_SETPOINT echo
+//   flood   --to E,A --to E,A [--rate HZ] [--seconds S] [--first-id N]   publish goals
+//   garbage [--count N]                           undecodable bytes on ARM_GOAL and ARM_STATE
+//   watch   --first-id N --count K [--timeout S]  wait until each id has one final status; print tallies
+//   status  [--timeout S]                         print one ARM_DAEMON_STATUS as key=value lines
+// Every subcommand takes --lcm-url URL. Exit 0 on success, 1 otherwise, 2 for bad arguments.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cyberplanner/arm_daemon_status_t.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+volatile std::sig_atomic_t g_stop = 0;
+
+struct Args {
+  std::string command;
+  std::string lcm_url;
+  std::vector<std::pair<double, double>> targets;  // --to / --at
+  double rate_hz = 100.0;
+  double seconds = 1e9;
+  long long first_id = 1;
+  long long count = 100;
+  double timeout_s = 10.0;
+};
+
+bool parsePair(const std::string& text, std::pair<double, double>& out) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) return false;
+  char* end = nullptr;
+  out.first = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + comma) return false;
+  out.second = std::strtod(text.c_str() + comma + 1, &end);
+  return *end == '\0';
+}
+
+bool parse(int argc, char** argv, Args& args) {
+  if (argc < 2) return false;
+  args.command = argv[1];
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) return false;
+    const std::string value = argv[++i];
+    if (arg == "--lcm-url") {
+      args.lcm_url = value;
+    } else if (arg == "--to" || arg == "--at") {
+      std::pair<double, double> p;
+      if (!parsePair(value, p)) return false;
+      args.targets.push_back(p);
+    } else if (arg == "--rate") {
+      args.rate_hz = std::atof(value.c_str());
+    } else if (arg == "--seconds") {
+      args.seconds = std::atof(value.c_str());
+    } else if (arg == "--first-id") {
+      args.first_id = std::atoll(value.c_str());
+    } else if (arg == "--count") {
+      args.count = std::atoll(value.c_str());
+    } else if (arg == "--timeout") {
+      args.timeout_s = std::atof(value.c_str());
+    } else {
+      return false;
+    }
+  }
+  return args.rate_hz > 0.0;
+}
+
+std::int64_t nowMicros() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// Paces a loop at rate_hz for `seconds` (or until SIGTERM); calls step(k) each period and lets
+// LCM handle incoming messages in between.
+template <class Step>
+void paced(lcm::LCM& lcm, double rate_hz, double seconds, Step step) {
+  const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / rate_hz));
+  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  auto next = Clock::now();
+  for (long long k = 0; !g_stop && Clock::now() < end; ++k) {
+    step(k);
+    next += period;
+    while (lcm.handleTimeout(0) > 0) {
+    }
+    std::this_thread::sleep_until(next);
+  }
+}
+
+struct Follower {
+  double elevator_m = 0.0;
+  double arm_rad = 0.0;
+  void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
+    elevator_m = m->elevator_m;
+    arm_rad = m->arm_rad;
+  }
+};
+
+int runState(lcm::LCM& lcm, const Args& args) {
+  if (args.targets.size() != 1) return 2;
+  Follower follower{args.targets[0].first, args.targets[0].second};
+  lcm.subscribe("ARM_SETPOINT", &Follower::onSetpoint, &follower);
+  paced(lcm, args.rate_hz, args.seconds, [&](long long) {
+    cyberplanner::arm_state_t state{};
+    state.utime = nowMicros();
+    state.elevator_m = follower.elevator_m;
+    state.arm_rad = follower.arm_rad;
+    lcm.publish("ARM_STATE", &state);
+  });
+  return 0;
+}
+
+int runFlood(lcm::LCM& lcm, const Args& args) {
+  if (args.targets.empty()) return 2;
+  long long sent = 0;
+  paced(lcm, args.rate_hz, args.seconds, [&](long long k) {
+    cyberplanner::arm_goal_t goal{};
+    goal.utime = nowMicros();
+    goal.request_id = args.first_id + k;
+    const auto& target = args.targets[static_cast<size_t>(k) % args.targets.size()];
+    goal.elevator_m = target.first;
+    goal.arm_rad = target.second;
+    lcm.publish("ARM_GOAL", &goal);
+    ++sent;
+  });
+  std::printf("sent %lld goals, ids %lld..%lld\n", sent, args.first_id, args.first_id + sent - 1);
+  return 0;
+}
+
+int runGarbage(lcm::LCM& lcm, const Args& args) {
+  std::mt19937 random(12345);
+  std::uniform_int_distribution<int> byte(0, 255), length(0, 200);
+  for (long long i = 0; i < args.count; ++i) {
+    std::vector<std::uint8_t> bytes(static_cast<size_t>(length(random)));
+    for (auto& b : bytes) b = static_cast<std::uint8_t>(byte(random));
+    const char* channel = i % 2 == 0 ? "ARM_GOAL" : "ARM_STATE";
+    lcm.publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+  }
+  // A message of another type on each channel, and a goal whose string length field is huge.
+  cyberplanner::arm_state_t state{};
+  lcm.publish("ARM_GOAL", &state);
+  cyberplanner::arm_goal_t goal{};
+  lcm.publish("ARM_STATE", &goal);
+  goal.scene_name = "reef";
+  std::vector<std::uint8_t> bytes(static_cast<size_t>(goal.getEncodedSize()));
+  goal.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  const size_t length_at = bytes.size() - 4 - 5;
+  bytes[length_at] = 0x7f;
+  bytes[length_at + 1] = bytes[length_at + 2] = bytes[length_at + 3] = 0xff;
+  lcm.publish("ARM_GOAL", bytes.data(), static_cast<unsigned>(bytes.size()));
+  std::printf("sent %lld garbage messages\n", args.count + 3);
+  return 0;
+}
+
+struct Tally {
+  long long first = 0, count = 0;
+  std::map<long long, int> finals;  // id -> number of final statuses
+  std::map<int, long long> by_status;
+  void onStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_plan_status_t* m) {
+    if (m->request_id < first || m->request_id >= first + count) return;
+    if (m->status >= cyberplanner::arm_plan_status_t::STATUS_DONE) {
+      ++finals[m->request_id];
+      ++by_status[m->status];
+    }
+  }
+};
+
+int runWatch(lcm::LCM& lcm, const Args& args) {
+  Tally tally;
+  tally.first = args.first_id;
+  tally.count = args.count;
+  lcm.subscribe("ARM_PLAN_STATUS", &Tally::onStatus, &tally);
+  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
+  while (Clock::now() < end && static_cast<long long>(tally.finals.size()) < args.count) lcm.handleTimeout(50);
+  // A little longer, to catch a second final status for any id.
+  const auto settle = Clock::now() + std::chrono::milliseconds(300);
+  while (Clock::now() < settle) lcm.handleTimeout(50);
+  long long duplicates = 0;
+  for (const auto& [id, n] : tally.finals) duplicates += n > 1 ? 1 : 0;
+  std::printf("final statuses for %zu of %lld ids; duplicates %lld; done %lld rejected %lld failed %lld cancelled %lld\n",
+              tally.finals.size(), args.count, duplicates, tally.by_status[3], tally.by_status[4], tally.by_status[5],
+              tally.by_status[6]);
+  return static_cast<long long>(tally.finals.size()) == args.count && duplicates == 0 ? 0 : 1;
+}
+
+struct StatusCatcher {
+  bool got = false;
+  cyberplanner::arm_daemon_status_t status{};
+  void on(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_daemon_status_t* m) {
+    status = *m;
+    got = true;
+  }
+};
+
+int runStatus(lcm::LCM& lcm, const Args& args) {
+  StatusCatcher catcher;
+  lcm.subscribe("ARM_DAEMON_STATUS", &StatusCatcher::on, &catcher);
+  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
+  while (!catcher.got && Clock::now() < end) lcm.handleTimeout(50);
+  if (!catcher.got) return 1;
+  const auto& s = catcher.status;
+  std::printf("mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
+              "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"
+              "decode_errors=%lld\nstream_overruns=%lld\nplan_time_p50_ms=%.2f\nplan_time_p99_ms=%.2f\n"
+              "stream_jitter_p50_us=%.1f\nstream_jitter_p99_us=%.1f\nstream_jitter_max_us=%.1f\n",
+              s.mode, s.robot_enabled, s.motion_allowed, static_cast<long long>(s.active_request_id), s.state_age_ms,
+              static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
+              static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
+              static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
+              static_cast<long long>(s.stream_overruns), s.plan_time_p50_ms, s.plan_time_p99_ms,
+              s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Args args;
+  if (!parse(argc, argv, args)) {
+    std::fprintf(stderr, "usage: cyber-test-peer state|flood|garbage|watch|status [options] (see test_peer.cpp)\n");
+    return 2;
+  }
+  std::signal(SIGTERM, [](int) { g_stop = 1; });
+  std::signal(SIGINT, [](int) { g_stop = 1; });
+  lcm::LCM lcm(args.lcm_url);
+  if (!lcm.good()) {
+    std::fprintf(stderr, "cyber-test-peer: cannot open LCM\n");
+    return 1;
+  }
+  int rc = 2;
+  if (args.command == "state") rc = runState(lcm, args);
+  else if (args.command == "flood") rc = runFlood(lcm, args);
+  else if (args.command == "garbage") rc = runGarbage(lcm, args);
+  else if (args.command == "watch") rc = runWatch(lcm, args);
+  else if (args.command == "status") rc = runStatus(lcm, args);
+  if (rc == 2) std::fprintf(stderr, "cyber-test-peer: bad arguments for '%s'\n", args.command.c_str());
+  return rc;
+}

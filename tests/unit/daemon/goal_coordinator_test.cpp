@@ -1,0 +1,373 @@
+#include "cyber/daemon/goal_coordinator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "daemon_harness.hpp"
+
+namespace cyber::daemon {
+namespace {
+
+using test::Harness;
+using S = GoalStatus;
+
+const JointVector kStow(0.1, 1.2);
+const JointVector kHigh(1.6, 2.8);
+const JointVector kLow(0.4, 0.5);
+
+std::vector<S> sequence(std::initializer_list<S> s) { return s; }
+
+TEST(GoalCoordinator, AGoalAtRestIsAcceptedPlannedExecutedAndDone) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
+  ASSERT_EQ(h.sink.trajectories.size(), 1u);
+  EXPECT_EQ(h.sink.trajectories[0].first, 1);
+  EXPECT_GT(h.sink.last(1)->duration_s, 0.0);
+  // Settled at the target with gravity feedforward only.
+  h.run(0.05);
+  const auto& r = h.lastRecord();
+  EXPECT_EQ(r.mode, StreamMode::kHolding);
+  EXPECT_TRUE(r.setpoints.position.isApprox(kHigh));
+  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
+  EXPECT_DOUBLE_EQ(r.setpoints.volts[1], h.robot.arm_drive.kG_volts * std::cos(r.setpoints.position[1]));
+  EXPECT_EQ(h.coordinator().counters().goals_done, 1);
+  EXPECT_TRUE(h.coordinator().idle());
+}
+
+TEST(GoalCoordinator, ThePlanStartsFromTheHeldPositionAtRest) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  ASSERT_EQ(h.sink.jobs_started.size(), 1u);
+  EXPECT_EQ(h.sink.jobs_started[0].request.start, kStow);
+  EXPECT_EQ(h.sink.jobs_started[0].request.start_velocity, JointVector::Zero());
+  EXPECT_EQ(h.sink.jobs_started[0].request.goal, kHigh);
+}
+
+TEST(GoalCoordinator, BadGoalsAreRejectedWithReasonsAndTheDaemonCarriesOn) {
+  Harness h;
+  h.collision_goals.push_back(JointVector(0.3, 0.1));
+  h.start(kStow);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  h.rawGoal(GoalRequest{1, nan, 1.0, false, false, ""});
+  h.rawGoal(GoalRequest{2, 0.5, std::numeric_limits<double>::infinity(), false, false, ""});
+  h.goal(3, JointVector(3.0, 1.0));
+  h.goal(4, JointVector(0.5, 1.0), "moon");
+  for (std::int64_t id : {1, 2, 3, 4}) {
+    ASSERT_NE(h.sink.last(id), nullptr);
+    EXPECT_EQ(h.sink.of(id), sequence({S::kRejected})) << id;
+  }
+  EXPECT_NE(h.sink.last(1)->reason.find("elevator_m is not finite"), std::string::npos) << h.sink.last(1)->reason;
+  EXPECT_NE(h.sink.last(2)->reason.find("arm_rad is not finite"), std::string::npos);
+  EXPECT_NE(h.sink.last(3)->reason.find("outside [0, 2]"), std::string::npos);
+  EXPECT_NE(h.sink.last(4)->reason.find("unknown scene 'moon'"), std::string::npos);
+
+  h.goal(5, JointVector(0.3, 0.1));  // the fake planner says: in collision
+  ASSERT_TRUE(h.runUntilFinal(5));
+  EXPECT_EQ(h.sink.last(5)->status, S::kRejected);
+  EXPECT_NE(h.sink.last(5)->reason.find("goal in collision"), std::string::npos) << h.sink.last(5)->reason;
+  EXPECT_NE(h.sink.last(5)->reason.find("l2_branch"), std::string::npos);
+
+  h.goal(6, kHigh);
+  ASSERT_TRUE(h.runUntilFinal(6));
+  EXPECT_EQ(h.sink.last(6)->status, S::kDone);
+  EXPECT_EQ(h.coordinator().counters().goals_rejected, 5);
+  EXPECT_EQ(h.coordinator().counters().goals_received, 6);
+}
+
+TEST(GoalCoordinator, PlannerFailuresFromTheStartAreFailedNotRejected) {
+  Harness h;
+  h.plan = [](const MotionRequest&) {
+    return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kNoPath, "the search found no path");
+  };
+  h.start(kStow);
+  h.goal(1, kHigh);
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kFailed}));
+  EXPECT_EQ(h.sink.last(1)->reason, "no path: the search found no path");
+  EXPECT_EQ(h.coordinator().counters().plans_failed, 1);
+}
+
+TEST(GoalCoordinator, GoalsWithoutStateOrWhileDisabledAreRejected) {
+  Harness h(true);
+  h.auto_state = false;
+  h.auto_heartbeat = false;
+  h.goal(1, kHigh);
+  EXPECT_EQ(h.sink.of(1), sequence({S::kRejected}));
+  EXPECT_NE(h.sink.last(1)->reason.find("heartbeat"), std::string::npos) << h.sink.last(1)->reason;
+  h.heartbeat(true);
+  h.goal(2, kHigh);
+  EXPECT_NE(h.sink.last(2)->reason.find("no ARM_STATE"), std::string::npos) << h.sink.last(2)->reason;
+  h.feedState(kStow);
+  h.heartbeat(false);
+  h.goal(3, kHigh);
+  EXPECT_NE(h.sink.last(3)->reason.find("robot disabled"), std::string::npos) << h.sink.last(3)->reason;
+  h.inputs.state_ns -= secondsToNs(1.0);
+  h.heartbeat(true);
+  h.goal(4, kHigh);
+  EXPECT_NE(h.sink.last(4)->reason.find("stale"), std::string::npos) << h.sink.last(4)->reason;
+}
+
+TEST(GoalCoordinator, LatestGoalWinsWhileAPlanIsRunning) {
+  Harness h(false, 0.02);  // plans take 20 ms
+  h.start(kStow);
+  h.goal(1, kHigh);  // starts planning
+  h.step();
+  h.goal(2, kLow);   // supersedes 1 (being planned)
+  h.goal(3, kHigh);  // supersedes 2 (waiting)
+  ASSERT_TRUE(h.runUntilFinal(3));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(1)->reason, "superseded by request 2");
+  EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  EXPECT_EQ(h.sink.of(3), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
+  // Only 1 and 3 were ever planned; 1's result was thrown away.
+  ASSERT_EQ(h.sink.jobs_started.size(), 2u);
+  EXPECT_EQ(h.sink.trajectories.size(), 1u);
+}
+
+TEST(GoalCoordinator, AFloodOfGoalsGivesEveryGoalExactlyOneFinalStatusAndTheLastOneRuns) {
+  Harness h(false, 0.004);
+  h.start(kStow);
+  // 1000 goals at 1 ms spacing (1000/s for one second); five per stream period.
+  std::int64_t id = 0;
+  for (int period = 0; period < 200; ++period) {
+    for (int k = 0; k < 5; ++k, ++id) {
+      const double u = static_cast<double>(id % 17) / 16.0;
+      h.goal(id, JointVector(0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)));
+    }
+    h.step();
+  }
+  ASSERT_TRUE(h.runUntilFinal(id - 1, 20.0));
+  h.run(0.1);
+  std::map<S, int> finals;
+  for (std::int64_t i = 0; i < id; ++i) {
+    int count = 0;
+    for (S s : h.sink.of(i)) {
+      if (isFinal(s)) {
+        ++count;
+        ++finals[s];
+      }
+    }
+    ASSERT_EQ(count, 1) << "request " << i;
+  }
+  EXPECT_EQ(h.sink.last(id - 1)->status, S::kDone);
+  EXPECT_EQ(finals[S::kCancelled] + finals[S::kDone], 1000);
+  EXPECT_TRUE(h.coordinator().idle());
+}
+
+// Largest change of a quantity between consecutive streamed ticks.
+double largestStep(const std::vector<test::TickRecord>& records, bool velocity, std::size_t from, std::size_t to) {
+  double largest = 0.0;
+  for (std::size_t i = from + 1; i < to; ++i) {
+    if (!records[i].sent || !records[i - 1].sent) continue;
+    const JointVector& a = velocity ? records[i - 1].setpoints.velocity : records[i - 1].setpoints.position;
+    const JointVector& b = velocity ? records[i].setpoints.velocity : records[i].setpoints.position;
+    largest = std::max(largest, (b - a).cwiseAbs().maxCoeff());
+  }
+  return largest;
+}
+
+TEST(GoalCoordinator, AGoalDuringMotionIsSplicedWithContinuousPositionAndVelocity) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);  // well inside the first motion
+  ASSERT_EQ(h.lastRecord().mode, StreamMode::kMoving);
+  const std::size_t before = h.records.size();
+  const MonoNs goal_time = h.now;
+  h.goal(2, kLow);
+  ASSERT_EQ(h.sink.jobs_started.size(), 2u);
+  const MotionRequest& request = h.sink.jobs_started[1].request;
+  EXPECT_GT(request.start_velocity.norm(), 0.1);  // planned from a moving state
+  ASSERT_TRUE(h.runUntilFinal(2));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(1)->reason, "superseded by request 2");
+  EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
+
+  // The splice point is the commanded state one planning budget after the goal.
+  ASSERT_EQ(h.sink.trajectories.size(), 2u);
+  const MonoNs splice = h.sink.trajectories[1].second;
+  EXPECT_GE(splice, goal_time + secondsToNs(0.03));
+  std::size_t switch_index = 0;
+  for (std::size_t i = before; i < h.records.size(); ++i) {
+    if (h.records[i].request_id == 2) {
+      switch_index = i;
+      break;
+    }
+  }
+  ASSERT_GT(switch_index, before);
+  EXPECT_GE(h.records[switch_index].now, splice);
+  EXPECT_LT(h.records[switch_index - 1].now, splice);
+  // The streamed command across the switch changes no more than it does elsewhere in the motions.
+  const double position_step = largestStep(h.records, false, switch_index - 1, switch_index + 1);
+  const double velocity_step = largestStep(h.records, true, switch_index - 1, switch_index + 1);
+  const double usual_position = largestStep(h.records, false, before - 40, h.records.size());
+  const double usual_velocity = std::max(largestStep(h.records, true, before - 40, switch_index - 1),
+                                         largestStep(h.records, true, switch_index + 1, h.records.size()));
+  EXPECT_LE(position_step, usual_position + 1e-12);
+  EXPECT_LE(velocity_step, usual_velocity + 1e-12);
+  // And the new plan's first sample is exactly the old plan's state at the splice point.
+  EXPECT_LT((request.start - h.coordinator().mirror().segment(0).source->at(0).position).norm(), 1.0);
+}
+
+TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {
+  Harness h(false, 0.002);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.2);
+  h.setPlanTime(0.06);  // slower than the 30 ms budget: the first attempt misses its splice point
+  const std::size_t before = h.records.size();
+  h.goal(2, kLow);
+  ASSERT_TRUE(h.runUntilFinal(2));
+  EXPECT_EQ(h.sink.last(2)->status, S::kDone);
+  EXPECT_GE(h.coordinator().counters().plans_late, 1);
+  ASSERT_FALSE(h.sink.notes.empty());
+  EXPECT_NE(h.sink.notes[0].find("re-planning from a later point"), std::string::npos) << h.sink.notes[0];
+  // The retry was planned with the measured (longer) budget.
+  EXPECT_GT(h.coordinator().budgetS(), 0.06);
+  ASSERT_GE(h.sink.jobs_started.size(), 3u);
+  EXPECT_GT(h.sink.jobs_started.back().request.start_velocity.norm(), 0.0);
+  std::size_t switch_index = before;
+  while (switch_index < h.records.size() && h.records[switch_index].request_id != 2) ++switch_index;
+  ASSERT_LT(switch_index, h.records.size());
+  const double velocity_step = largestStep(h.records, true, switch_index - 1, switch_index + 1);
+  const double usual = std::max(largestStep(h.records, true, 0, switch_index - 1),
+                                largestStep(h.records, true, switch_index + 1, h.records.size()));
+  EXPECT_LE(velocity_step, usual + 1e-12);
+}
+
+TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinTheNewBudget) {
+  Harness h(false, 0.002);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.2);
+  h.setPlanTime(1.5);  // longer than the rest of motion 1
+  h.goal(2, kLow);
+  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  EXPECT_EQ(h.sink.last(1)->status, S::kDone);
+  EXPECT_EQ(h.sink.last(2)->status, S::kDone);
+  EXPECT_EQ(h.coordinator().counters().plans_late, 1);
+  ASSERT_EQ(h.sink.jobs_started.size(), 3u);
+  EXPECT_TRUE(h.sink.jobs_started[2].request.start.isApprox(kHigh));  // from where motion 1 rests
+  EXPECT_EQ(h.sink.jobs_started[2].request.start_velocity, JointVector::Zero());
+}
+
+TEST(GoalCoordinator, PlansThatAreAlwaysLateFallBackToStartingWhereTheMotionEnds) {
+  Harness h(false, 0.002);
+  // Motion 1 is long (8 s) so every re-plan from a later point is still a splice into it.
+  h.plan = [&h](const MotionRequest& request) {
+    PlannedMotion motion;
+    const double duration = request.goal == kHigh ? 8.0 : 0.5;
+    motion.trajectory = test::makeHermite(request.start, request.start_velocity, request.goal, duration, h.robot);
+    return planner::Result<PlannedMotion>(motion);
+  };
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.2);
+  // Every plan takes longer than any budget can absorb (the budget is capped at 1 s).
+  h.setPlanTime(1.5);
+  h.goal(2, kLow);
+  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  EXPECT_EQ(h.sink.last(2)->status, S::kDone);
+  EXPECT_EQ(h.sink.last(1)->status, S::kDone);  // request 1 was finished, not cut
+  bool fell_back = false;
+  for (const auto& note : h.sink.notes) fell_back |= note.find("planning from where it ends") != std::string::npos;
+  EXPECT_TRUE(fell_back);
+  EXPECT_EQ(h.coordinator().counters().plans_late, 3);
+  EXPECT_TRUE(h.sink.jobs_started.back().request.start.isApprox(kHigh));
+  EXPECT_TRUE(h.lastRecord().setpoints.position.isApprox(kLow));
+}
+
+TEST(GoalCoordinator, GateClosingMidMotionCancelsTheGoalAndReEnableHoldsTheMeasuredPosition) {
+  Harness h(true);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  ASSERT_EQ(h.lastRecord().mode, StreamMode::kMoving);
+  h.auto_heartbeat = false;
+  h.run(0.2);
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+  EXPECT_NE(h.sink.last(1)->reason.find("motion stopped"), std::string::npos) << h.sink.last(1)->reason;
+  EXPECT_FALSE(h.lastRecord().sent);
+  EXPECT_EQ(h.lastRecord().mode, StreamMode::kRobotDisabled);
+  // While disabled, goals are rejected.
+  h.goal(2, kLow);
+  EXPECT_EQ(h.sink.of(2), sequence({S::kRejected}));
+  // Re-enabled with the mechanism somewhere else: hold there, then plan from there.
+  const JointVector sagged(0.5, 1.4);
+  h.auto_state = false;
+  h.feedState(sagged);
+  h.auto_heartbeat = true;
+  h.heartbeat(true);
+  h.step();
+  EXPECT_TRUE(h.records.back().sent);
+  EXPECT_EQ(h.records.back().setpoints.position, sagged);
+  EXPECT_EQ(h.records.back().setpoints.velocity, JointVector::Zero());
+  h.auto_state = true;
+  h.goal(3, kLow);
+  EXPECT_EQ(h.sink.jobs_started.back().request.start, sagged);
+  ASSERT_TRUE(h.runUntilFinal(3));
+  EXPECT_EQ(h.sink.last(3)->status, S::kDone);
+}
+
+TEST(GoalCoordinator, GateClosedWhenThePlanArrivesCancelsTheGoal) {
+  Harness h(true, 0.05);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.auto_heartbeat = false;
+  h.broadcastDisable();
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(1)->reason, "motion stopped while planning: broadcast disable received");
+}
+
+TEST(GoalCoordinator, ABriefDisableWhilePlanningReplansFromTheNewHold) {
+  Harness h(true, 0.05);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.broadcastDisable();  // lifted by the next enabled heartbeat, before the plan is back
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
+  EXPECT_EQ(h.sink.jobs_started.size(), 2u);
+}
+
+TEST(GoalCoordinator, ShutdownHoldsTheCommandedPositionAndCancelsOpenGoals) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  const JointVector commanded = h.lastRecord().setpoints.position;
+  h.stop_requested = true;
+  h.step();
+  h.coordinator().onShutdown(h.now);
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+  EXPECT_EQ(h.sink.last(1)->reason, "daemon shutting down");
+  h.run(0.05);
+  EXPECT_EQ(h.lastRecord().mode, StreamMode::kHolding);
+  EXPECT_EQ(h.lastRecord().setpoints.velocity, JointVector::Zero());
+  EXPECT_LT((h.lastRecord().setpoints.position - commanded).norm(), 0.1);
+}
+
+TEST(GoalCoordinator, AGoalToWhereTheArmAlreadyIsFinishesAtOnce) {
+  Harness h;
+  h.plan = [&h](const MotionRequest& request) {
+    PlannedMotion motion;
+    motion.trajectory = test::makeHermite(request.start, request.start_velocity, request.goal, 0.0, h.robot);
+    return planner::Result<PlannedMotion>(motion);
+  };
+  h.start(kStow);
+  h.goal(1, kStow);
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
+}
+
+}  // namespace
+}  // namespace cyber::daemon

@@ -1,0 +1,56 @@
+#include "goal_arguments.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace cyber::tools {
+namespace {
+
+GoalArguments ok(const std::vector<std::string>& args) {
+  auto parsed = parseGoalArguments(args);
+  EXPECT_TRUE(std::holds_alternative<GoalArguments>(parsed));
+  return std::holds_alternative<GoalArguments>(parsed) ? std::get<GoalArguments>(parsed) : GoalArguments{};
+}
+
+std::string error(const std::vector<std::string>& args) {
+  auto parsed = parseGoalArguments(args);
+  EXPECT_TRUE(std::holds_alternative<GoalArgumentError>(parsed));
+  return std::holds_alternative<GoalArgumentError>(parsed) ? std::get<GoalArgumentError>(parsed).message : "";
+}
+
+TEST(GoalArguments, ParsesEveryOption) {
+  const GoalArguments a = ok({"--to", "1.25,-0.5", "--coral", "--algae", "--scene", "open", "--id", "42", "--lcm-url",
+                              "udpm://239.255.76.67:7667?ttl=0", "--timeout", "2.5", "--no-wait-daemon"});
+  EXPECT_EQ(a.elevator_m, 1.25);
+  EXPECT_EQ(a.arm_rad, -0.5);
+  EXPECT_TRUE(a.coral);
+  EXPECT_TRUE(a.algae);
+  EXPECT_EQ(a.scene, "open");
+  EXPECT_EQ(a.request_id, 42);
+  EXPECT_EQ(a.lcm_url, "udpm://239.255.76.67:7667?ttl=0");
+  EXPECT_EQ(a.timeout_s, 2.5);
+  EXPECT_FALSE(a.wait_for_daemon);
+}
+
+TEST(GoalArguments, NonFiniteTargetsPassThroughForTheDaemonToReject) {
+  const GoalArguments a = ok({"--to", "nan,inf"});
+  EXPECT_TRUE(std::isnan(a.elevator_m));
+  EXPECT_TRUE(std::isinf(a.arm_rad));
+  EXPECT_EQ(a.request_id, -1);
+  EXPECT_TRUE(a.wait_for_daemon);
+}
+
+TEST(GoalArguments, BadInputIsNamed) {
+  EXPECT_EQ(error({}), "--to ELEVATOR_M,ARM_RAD is required");
+  EXPECT_EQ(error({"--to", "1.0"}), "--to expects ELEVATOR_M,ARM_RAD, got '1.0'");
+  EXPECT_EQ(error({"--to", "1.0,x"}), "--to expects ELEVATOR_M,ARM_RAD, got '1.0,x'");
+  EXPECT_EQ(error({"--to", "1,2", "--id", "4x"}), "--id expects an integer, got '4x'");
+  EXPECT_EQ(error({"--to", "1,2", "--timeout", "0"}), "--timeout expects seconds > 0, got '0'");
+  EXPECT_EQ(error({"--to", "1,2", "--timeout", "nan"}), "--timeout expects seconds > 0, got 'nan'");
+  EXPECT_EQ(error({"--to", "1,2", "--bogus"}), "unknown argument '--bogus'");
+  EXPECT_EQ(error({"--to"}), "--to needs a value");
+}
+
+}  // namespace
+}  // namespace cyber::tools

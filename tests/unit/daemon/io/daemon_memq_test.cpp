@@ -1,0 +1,269 @@
+// The assembled daemon (event loop, worker and streamer threads, LCM bridge) on memq:// with a
+// fake planner and no CAN socket: goals in through LCM, answers out through LCM.
+
+#include "cyber/daemon/io/daemon.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <cstring>
+#include <future>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "cyberplanner/arm_daemon_status_t.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+#include "fake_trajectory.hpp"
+#include "reference_model.hpp"
+
+namespace cyber::daemon::io {
+namespace {
+
+using namespace std::chrono_literals;
+
+class FakePlanning final : public PlanningService {
+ public:
+  explicit FakePlanning(const planner::RobotModel& robot) : robot_(robot) {}
+  planner::Result<PlannedMotion> plan(const MotionRequest& request) const override {
+    if (request.goal[1] < 0.05) {
+      return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kGoalInCollision, "arm in the floor");
+    }
+    PlannedMotion motion;
+    motion.trajectory = test::makeHermite(request.start, request.start_velocity, request.goal, 0.3, robot_);
+    motion.times_ms.total = 1.0;
+    return motion;
+  }
+
+ private:
+  const planner::RobotModel& robot_;
+};
+
+// Collects what the daemon publishes (handlers run on the daemon's loop thread).
+struct Listener {
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<cyberplanner::arm_plan_status_t> statuses;
+  std::vector<cyberplanner::arm_trajectory_t> trajectories;
+  std::vector<cyberplanner::arm_setpoint_t> setpoints;
+  std::vector<cyberplanner::arm_daemon_status_t> daemon_statuses;
+
+  template <class M>
+  void add(std::vector<M>& to, const M* message) {
+    std::lock_guard<std::mutex> lock(mutex);
+    to.push_back(*message);
+    changed.notify_all();
+  }
+  void onStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_plan_status_t* m) {
+    add(statuses, m);
+  }
+  void onTrajectory(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_trajectory_t* m) {
+    add(trajectories, m);
+  }
+  void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
+    add(setpoints, m);
+  }
+  void onDaemonStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_daemon_status_t* m) {
+    add(daemon_statuses, m);
+  }
+
+  // Waits until `done` holds (checked under the lock) or 5 s pass.
+  template <class Pred>
+  bool waitFor(Pred done) {
+    std::unique_lock<std::mutex> lock(mutex);
+    return changed.wait_for(lock, 5s, [&] { return done(); });
+  }
+  std::vector<std::int8_t> statusesOf(std::int64_t id) {
+    std::vector<std::int8_t> out;
+    for (const auto& s : statuses) {
+      if (s.request_id == id) out.push_back(s.status);
+    }
+    return out;
+  }
+  bool finalFor(std::int64_t id) {
+    for (const auto& s : statuses) {
+      if (s.request_id == id && s.status >= cyberplanner::arm_plan_status_t::STATUS_DONE) return true;
+    }
+    return false;
+  }
+};
+
+class DaemonMemq : public ::testing::Test {
+ protected:
+  DaemonMemq() : planning(cyber::test::referenceModel()) {
+    DaemonOptions options;
+    options.settings.lcm_url = "memq://";
+    options.simulate_can = true;
+    daemon = std::make_unique<Daemon>(cyber::test::referenceModel(), options, planning, nullptr);
+    runner = std::async(std::launch::async, [this] { return daemon->run(); });
+    onLoop([this] {
+      auto& lcm = daemon->lcm();
+      lcm.subscribe("ARM_PLAN_STATUS", &Listener::onStatus, &listener);
+      lcm.subscribe("ARM_TRAJECTORY", &Listener::onTrajectory, &listener);
+      lcm.subscribe("ARM_SETPOINT", &Listener::onSetpoint, &listener);
+      lcm.subscribe("ARM_DAEMON_STATUS", &Listener::onDaemonStatus, &listener);
+    });
+    state_feeder = std::thread([this] {
+      while (!stop_feeding) {
+        cyberplanner::arm_state_t state{};
+        state.elevator_m = 0.1;
+        state.arm_rad = 1.2;
+        publish("ARM_STATE", state);
+        std::this_thread::sleep_for(20ms);
+      }
+    });
+  }
+
+  ~DaemonMemq() override {
+    stop_feeding = true;
+    state_feeder.join();
+    if (runner.valid()) {
+      daemon->requestStop();
+      runner.get();
+    }
+  }
+
+  // Runs `task` on the daemon's loop thread and waits for it. After a stop the loop runs no more
+  // tasks; the promise is shared so a task left behind never touches a dead stack frame.
+  void onLoop(std::function<void()> task) {
+    auto done = std::make_shared<std::promise<void>>();
+    auto future = done->get_future();
+    daemon->post([task = std::move(task), done] {
+      task();
+      done->set_value();
+    });
+    future.wait_for(2s);
+  }
+
+  template <class M>
+  void publish(const std::string& channel, const M& message) {
+    onLoop([&] { daemon->lcm().publish(channel, &message); });
+  }
+  void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
+    onLoop([&] { daemon->lcm().publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+  }
+
+  void goal(std::int64_t id, double elevator_m, double arm_rad) {
+    cyberplanner::arm_goal_t message{};
+    message.request_id = id;
+    message.elevator_m = elevator_m;
+    message.arm_rad = arm_rad;
+    publish("ARM_GOAL", message);
+  }
+
+  void waitForHolding() {
+    ASSERT_TRUE(listener.waitFor([&] {
+      return !listener.daemon_statuses.empty() &&
+             listener.daemon_statuses.back().mode == cyberplanner::arm_daemon_status_t::MODE_HOLDING;
+    }));
+  }
+
+  FakePlanning planning;
+  std::unique_ptr<Daemon> daemon;
+  Listener listener;
+  std::future<int> runner;
+  std::atomic<bool> stop_feeding{false};
+  std::thread state_feeder;
+};
+
+TEST_F(DaemonMemq, AGoalIsAnsweredAcceptedPlanningExecutingDoneWithATrajectoryAndSetpoints) {
+  waitForHolding();
+  goal(1, 1.0, 2.0);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(1); }));
+  using S = cyberplanner::arm_plan_status_t;
+  EXPECT_EQ(listener.statusesOf(1),
+            (std::vector<std::int8_t>{S::STATUS_ACCEPTED, S::STATUS_PLANNING, S::STATUS_EXECUTING, S::STATUS_DONE}));
+  // The echo settles on a hold of the target (MODE_HOLDING == 1).
+  ASSERT_TRUE(listener.waitFor([&] {
+    return !listener.setpoints.empty() && listener.setpoints.back().request_id == 1 &&
+           listener.setpoints.back().mode == cyberplanner::arm_setpoint_t::MODE_HOLDING;
+  }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  ASSERT_EQ(listener.trajectories.size(), 1u);
+  const auto& trajectory = listener.trajectories[0];
+  EXPECT_EQ(trajectory.request_id, 1);
+  EXPECT_NEAR(trajectory.duration_s, 0.3, 1e-12);
+  EXPECT_EQ(trajectory.num_samples, 31);
+  EXPECT_NEAR(trajectory.elevator_m.front(), 0.1, 1e-12);
+  EXPECT_NEAR(trajectory.arm_rad.back(), 2.0, 1e-9);
+  bool moving_echo = false;
+  for (const auto& s : listener.setpoints) {
+    moving_echo |= s.request_id == 1 && s.mode == cyberplanner::arm_setpoint_t::MODE_MOVING;
+  }
+  EXPECT_TRUE(moving_echo);
+  EXPECT_NEAR(listener.setpoints.back().arm_rad, 2.0, 1e-5);
+  EXPECT_EQ(listener.setpoints.back().arm_radps, 0.0);
+}
+
+TEST_F(DaemonMemq, BadGoalsAreRejectedWithReasons) {
+  waitForHolding();
+  goal(1, std::nan(""), 1.0);
+  goal(2, 5.0, 1.0);
+  goal(3, 0.5, 0.01);  // the fake planner says: in collision
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(1) && listener.finalFor(2) && listener.finalFor(3); }));
+  using S = cyberplanner::arm_plan_status_t;
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.statusesOf(1), std::vector<std::int8_t>{S::STATUS_REJECTED});
+  EXPECT_EQ(listener.statusesOf(2), std::vector<std::int8_t>{S::STATUS_REJECTED});
+  EXPECT_EQ(listener.statusesOf(3),
+            (std::vector<std::int8_t>{S::STATUS_ACCEPTED, S::STATUS_PLANNING, S::STATUS_REJECTED}));
+  EXPECT_NE(listener.statuses[0].reason.find("elevator_m is not finite"), std::string::npos);
+  EXPECT_NE(listener.statuses[1].reason.find("outside [0, 2]"), std::string::npos);
+  EXPECT_EQ(listener.statuses.back().reason, "goal in collision: arm in the floor");
+}
+
+TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
+  waitForHolding();
+  publishRaw("ARM_GOAL", {1, 2, 3});
+  publishRaw("ARM_GOAL", std::vector<std::uint8_t>(64, 0xff));
+  cyberplanner::arm_state_t wrong_type{};
+  publish("ARM_GOAL", wrong_type);  // fingerprint of another type
+  // A goal whose scene-name length field says 2^31 - 1 bytes.
+  cyberplanner::arm_goal_t valid{};
+  valid.scene_name = "reef";
+  std::vector<std::uint8_t> bytes(static_cast<size_t>(valid.getEncodedSize()));
+  valid.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  const size_t length_at = bytes.size() - 4 - 5;  // int32 length, then "reef\0"
+  bytes[length_at] = 0x7f;
+  bytes[length_at + 1] = bytes[length_at + 2] = bytes[length_at + 3] = 0xff;
+  publishRaw("ARM_GOAL", bytes);
+  cyberplanner::arm_state_t nan_state{};
+  nan_state.elevator_m = std::nan("");
+  publish("ARM_STATE", nan_state);
+  ASSERT_TRUE(listener.waitFor([&] {
+    return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 5;
+  }));
+  goal(7, 1.0, 1.0);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.statuses.back().status, cyberplanner::arm_plan_status_t::STATUS_DONE);
+}
+
+TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {
+  waitForHolding();
+  cyberplanner::arm_goal_t message{};
+  message.request_id = 5;
+  message.elevator_m = 1.8;
+  message.arm_rad = 3.0;
+  publish("ARM_GOAL", message);
+  ASSERT_TRUE(listener.waitFor([&] {
+    for (const auto& s : listener.statuses) {
+      if (s.request_id == 5 && s.status == cyberplanner::arm_plan_status_t::STATUS_EXECUTING) return true;
+    }
+    return false;
+  }));
+  daemon->requestStop();
+  EXPECT_EQ(runner.get(), 0);
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.statuses.back().request_id, 5);
+  EXPECT_EQ(listener.statuses.back().status, cyberplanner::arm_plan_status_t::STATUS_CANCELLED);
+  EXPECT_EQ(listener.statuses.back().reason, "daemon shutting down");
+}
+
+}  // namespace
+}  // namespace cyber::daemon::io

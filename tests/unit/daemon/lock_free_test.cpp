@@ -1,0 +1,81 @@
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <thread>
+
+#include "cyber/daemon/latency_histogram.hpp"
+#include "cyber/daemon/latest_value.hpp"
+#include "cyber/daemon/spsc_ring.hpp"
+
+namespace cyber::daemon {
+namespace {
+
+TEST(SpscRing, IsFifoAndRefusesWhenFull) {
+  SpscRing<int, 4> ring;
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(ring.push(i));
+  EXPECT_FALSE(ring.push(99));
+  int value = -1;
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(ring.pop(value));
+    EXPECT_EQ(value, i);
+  }
+  EXPECT_FALSE(ring.pop(value));
+}
+
+TEST(SpscRing, DeliversEverythingInOrderAcrossThreads) {
+  SpscRing<std::int64_t, 64> ring;
+  constexpr std::int64_t kCount = 200000;
+  std::thread producer([&] {
+    for (std::int64_t i = 0; i < kCount;) {
+      if (ring.push(i)) ++i;
+    }
+  });
+  std::int64_t expected = 0, value = 0;
+  while (expected < kCount) {
+    if (ring.pop(value)) {
+      ASSERT_EQ(value, expected);
+      ++expected;
+    }
+  }
+  producer.join();
+}
+
+struct Pair {
+  std::int64_t a = 0;
+  std::int64_t b = 0;
+  double c = 0.0;
+};
+
+TEST(LatestValue, ReadersNeverSeeATornValue) {
+  LatestValue<Pair> latest;
+  constexpr std::int64_t kWrites = 200000;
+  std::thread writer([&] {
+    for (std::int64_t i = 1; i <= kWrites; ++i) latest.store(Pair{i, -i, static_cast<double>(i)});
+  });
+  std::int64_t last = 0;
+  while (last < kWrites) {
+    const Pair p = latest.load();
+    ASSERT_EQ(p.a, -p.b);
+    ASSERT_EQ(static_cast<double>(p.a), p.c);
+    ASSERT_GE(p.a, last);  // never goes back
+    last = p.a;
+  }
+  writer.join();
+}
+
+TEST(LatencyHistogram, PercentilesWithinTheBinWidth) {
+  LatencyHistogram h;
+  EXPECT_EQ(h.percentileUs(0.5), 0.0);
+  for (int i = 1; i <= 1000; ++i) h.record(static_cast<double>(i));
+  EXPECT_EQ(h.count(), 1000);
+  EXPECT_NEAR(h.percentileUs(0.5), 500.0, 500.0 * 0.02);
+  EXPECT_NEAR(h.percentileUs(0.99), 990.0, 990.0 * 0.02);
+  EXPECT_DOUBLE_EQ(h.maxUs(), 1000.0);
+  EXPECT_LE(h.percentileUs(1.0), 1000.0);
+  h.record(0.0);  // below the first bin edge
+  h.record(1e12);  // beyond the last: clamped into it
+  EXPECT_DOUBLE_EQ(h.maxUs(), 1e12);
+}
+
+}  // namespace
+}  // namespace cyber::daemon

@@ -1,0 +1,56 @@
+#pragma once
+// An analytic trajectory for daemon tests: per joint a cubic Hermite from (start, start velocity)
+// to (goal, 0) over a fixed duration, with the WPILib feedforward of the drives as volts. Smooth
+// and exact, so continuity tests have something to compare against.
+
+#include <algorithm>
+#include <memory>
+
+#include "cyber/daemon/setpoint_source.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::daemon::test {
+
+class HermiteTrajectory final : public SetpointSource {
+ public:
+  HermiteTrajectory(JointVector start, JointVector start_velocity, JointVector goal, double duration_s,
+                    const planner::DriveParams& elevator, const planner::DriveParams& arm)
+      : p0_(std::move(start)), v0_(std::move(start_velocity)), p1_(std::move(goal)), duration_s_(duration_s),
+        elevator_(elevator), arm_(arm) {}
+
+  [[nodiscard]] double durationS() const override { return duration_s_; }
+
+  [[nodiscard]] JointSetpoints at(double t_s) const override {
+    JointSetpoints out;
+    if (duration_s_ <= 0.0) {
+      out.position = p1_;
+      out.volts = JointVector(elevator_.volts(p1_[0], 0, 0), arm_.volts(p1_[1], 0, 0));
+      return out;
+    }
+    const double T = duration_s_;
+    const double u = std::clamp(t_s, 0.0, T) / T;
+    // Hermite basis with end velocity 0: q = h00 p0 + h10 T v0 + h01 p1.
+    const double h00 = 2 * u * u * u - 3 * u * u + 1, h10 = u * u * u - 2 * u * u + u, h01 = -2 * u * u * u + 3 * u * u;
+    const double d00 = (6 * u * u - 6 * u) / T, d10 = (3 * u * u - 4 * u + 1), d01 = (-6 * u * u + 6 * u) / T;
+    const double a00 = (12 * u - 6) / (T * T), a10 = (6 * u - 4) / T, a01 = (-12 * u + 6) / (T * T);
+    out.position = h00 * p0_ + h10 * T * v0_ + h01 * p1_;
+    out.velocity = d00 * p0_ + d10 * v0_ + d01 * p1_;
+    const JointVector acceleration = a00 * p0_ + a10 * v0_ + a01 * p1_;
+    out.volts = JointVector(elevator_.volts(out.position[0], out.velocity[0], acceleration[0]),
+                            arm_.volts(out.position[1], out.velocity[1], acceleration[1]));
+    return out;
+  }
+
+ private:
+  JointVector p0_, v0_, p1_;
+  double duration_s_;
+  planner::DriveParams elevator_, arm_;
+};
+
+inline SharedSetpointSource makeHermite(const JointVector& start, const JointVector& start_velocity,
+                                        const JointVector& goal, double duration_s, const planner::RobotModel& robot) {
+  return std::make_shared<HermiteTrajectory>(start, start_velocity, goal, duration_s, robot.elevator_drive,
+                                             robot.arm_drive);
+}
+
+}  // namespace cyber::daemon::test

@@ -1,0 +1,42 @@
+#pragma once
+// Command line of cyber-goal: send one goal to cyber-plannerd and wait for its final status.
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace cyber::tools {
+
+struct GoalArguments {
+  double elevator_m = 0.0;
+  double arm_rad = 0.0;
+  bool coral = false;
+  bool algae = false;
+  std::string scene;
+  std::int64_t request_id = -1;  // -1: derive one from the clock
+  std::string lcm_url;           // "": LCM's default
+  double timeout_s = 10.0;
+  bool wait_for_daemon = true;
+  bool help = false;
+};
+
+struct GoalArgumentError {
+  std::string message;
+};
+
+// NaN and infinite targets are accepted on purpose (to exercise the daemon's rejection).
+std::variant<GoalArguments, GoalArgumentError> parseGoalArguments(const std::vector<std::string>& args);
+
+std::string goalUsage();
+
+// Exit codes.
+inline constexpr int kExitDone = 0;
+inline constexpr int kExitLcm = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitRejected = 3;
+inline constexpr int kExitFailed = 4;
+inline constexpr int kExitCancelled = 5;
+inline constexpr int kExitTimeout = 6;
+
+}  // namespace cyber::tools
