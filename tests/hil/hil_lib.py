@@ -172,12 +172,12 @@ def plant_summary(path):
     m = re.search(r"stopped: elevator (\S+) m, arm (\S+) rad; setpoints elevator (\d+) arm (\d+), "
                   r"sequence gaps (\d+), malformed (\d+), other (\d+), bus errors (\d+), read failures (\d+); "
                   r"sent heartbeats (\d+), disables (\d+), write failures (\d+); "
-                  r"ARM_STATE published (\d+), failed (\d+)", text)
+                  r"ARM_STATE published (\d+), failed (\d+); motions (\d+)", text)
     if not m:
         raise ValueError(f"{path}: no 'stopped:' summary line")
     keys = ("elevator_m", "arm_rad", "setpoints_elevator", "setpoints_arm", "sequence_gaps", "malformed",
             "other", "bus_errors", "read_failures", "heartbeats", "disables", "write_failures",
-            "states_published", "publish_failures")
+            "states_published", "publish_failures", "motions")
     return {k: float(v) for k, v in zip(keys, m.groups())}
 
 

@@ -2,7 +2,8 @@
 # Host side of the HIL tests (ctest label hil): runs tools/vcan-vm for one case from the source
 # root, the same command docs/testing.md shows, and checks its exit status and what came out.
 # Usage: tests/hil/run_hil.sh [--print] CASE BUILD_DIR
-#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode | plant_sim
+#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode | plant_sim |
+#         daemon_motion | daemon_faults | daemon_link_down
 #   --print: only print the tools/vcan-vm command of the case (for the docs check)
 set -uo pipefail
 
@@ -17,6 +18,8 @@ build=$(realpath -m --relative-base="$src" "$build_abs")
 export CYBER_VCAN_CACHE=$build/vcan-vm
 probe=$build/tests/hil/vcan_probe
 plant_sim=$build/tools/cyber-plant-sim/cyber-plant-sim
+daemon_bins=(--bin "$build/daemon/app/cyber-plannerd" --bin "$build/tools/cyber_goal/cyber-goal" --bin "$plant_sim"
+  --bin "$build/tools/cyber-can-decode/cyber-can-decode" --bin /usr/bin/lcm-logger --file tests/hil/hil_guest.sh)
 out=$build/hil/$1
 log=$build/hil/$1.log
 
@@ -37,6 +40,14 @@ args_for() {
     plant_sim)
       args=(--auto --bin "$plant_sim" --bin /usr/bin/lcm-logger --file "$build/hil/plant_sim.setpoints.log:setpoints.log"
         --out "$out" --run tests/hil/plant_sim.sh)
+      ;;
+    daemon_motion)
+      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml" --out "$out"
+        --run tests/hil/daemon_motion.sh)
+      ;;
+    daemon_faults | daemon_link_down)
+      args=(--auto "${daemon_bins[@]}" --file config/reefscape-2025.toml:robot.toml --out "$out"
+        --run "tests/hil/$1.sh")
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
   esac
@@ -104,6 +115,16 @@ case $1 in
     vcan_vm
     [[ $status -eq 0 ]] || fail plant_sim "the guest script failed"
     tests/hil/plant_sim_check.py check "$out" || fail plant_sim "the results do not hold (see the checks above)"
+    ;;
+  daemon_motion | daemon_faults | daemon_link_down)
+    if [[ $1 == daemon_motion ]]; then
+      mkdir -p "$build/hil"
+      tests/hil/daemon_check.py relaxed-config config/reefscape-2025.toml "$build/hil/robot-relaxed.toml" ||
+        fail "$1" "cannot write the relaxed config"
+    fi
+    vcan_vm
+    [[ $status -eq 0 ]] || fail "$1" "the guest script failed"
+    tests/hil/daemon_check.py "${1#daemon_}" "$out" || fail "$1" "the results do not hold (see the checks above)"
     ;;
 esac
 echo "run_hil: $1 passed"

@@ -2,6 +2,8 @@
 // interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
 // options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
 
+#include <sched.h>
+
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -107,6 +109,15 @@ int main(int argc, char** argv) {
     }
     std::setvbuf(log, nullptr, _IOFBF, 1 << 16);
     std::fprintf(log, "%s\n", cyber::plant::stateLogHeader().c_str());
+  }
+
+  if (options.realtime_priority > 0) {
+    sched_param param{};
+    param.sched_priority = options.realtime_priority;
+    if (sched_setscheduler(0, SCHED_FIFO, &param) != 0) {
+      std::perror("cyber-plant-sim: --realtime: sched_setscheduler");
+      return 1;
+    }
   }
 
   const int status = cyber::plant::runSimulator(setup, std::move(socket).value(), lcm, log);

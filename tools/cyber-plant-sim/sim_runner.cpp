@@ -41,7 +41,7 @@ class Runner {
   static std::vector<FaultEvent> withDuration(const SimOptions& options) {
     std::vector<FaultEvent> events = options.faults;
     if (options.duration_s > 0.0) {
-      events.push_back(FaultEvent{FaultKind::kExit, FaultAnchor::kStart, options.duration_s});
+      events.push_back(FaultEvent{FaultKind::kExit, 0, options.duration_s});
     }
     return events;
   }
@@ -72,6 +72,9 @@ class Runner {
   MonotonicTimer state_timer_;
   MonotonicTimer fault_timer_;
   std::array<std::optional<std::uint8_t>, kJointCount> last_sequence_{};
+  std::array<bool, kJointCount> joint_moving_{};  // the joint's latest setpoint has a velocity
+  bool moving_ = false;
+  int motions_ = 0;  // motions started so far
   bool link_trouble_ = false;  // a read or write failed since the last success: report once
 };
 
@@ -181,11 +184,17 @@ void Runner::onFrame(const can::Frame& frame, double t_s) {
   last = sp.sequence;
   if (counters_.setpoints[joint]++ == 0) say("first setpoint for device %u", device);
   sim_.receiveSetpoint(joint, JointCommand{sp.position, sp.velocity, sp.feedforward_volts}, t_s);
-  // One velocity count (1e-3 unit/s) or more is motion.
-  if (!schedule_.motionAnchored() && std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit) {
-    schedule_.motionSeen(t_s);
-    say("motion started (device %u)", device);
+  // One velocity count (1e-3 unit/s) or more is motion; the stream is at rest again once the
+  // latest frames of both joints carry zero velocity.
+  joint_moving_[joint] = std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit;
+  if (joint_moving_[joint] && !moving_) {
+    moving_ = true;
+    schedule_.motionStarted(++motions_, t_s);
+    say("motion %d started (device %u)", motions_, device);
     armFaultTimer();
+  } else if (moving_ && !joint_moving_[planner::kElevator] && !joint_moving_[planner::kArm]) {
+    moving_ = false;
+    say("at rest");
   }
 }
 
@@ -282,11 +291,11 @@ void Runner::printSummary() const {
   const auto q = sim_.positions();
   say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
-      "write failures %ld; ARM_STATE published %ld, failed %ld",
+      "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d",
       q[planner::kElevator], q[planner::kArm], counters_.setpoints[0], counters_.setpoints[1],
       counters_.sequence_gaps, counters_.malformed, counters_.other_frames, counters_.bus_errors,
       counters_.read_failures, counters_.heartbeats_sent, counters_.disables_sent,
-      counters_.write_failures, counters_.states_published, counters_.publish_failures);
+      counters_.write_failures, counters_.states_published, counters_.publish_failures, motions_);
 }
 
 }  // namespace

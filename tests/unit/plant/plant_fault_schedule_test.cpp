@@ -15,10 +15,13 @@ TEST(FaultSchedule, ParsesEveryKindBothWays) {
     EXPECT_EQ(parseFaultKind(name), kind) << name;
     const auto parsed = parseFault(name + "@2.5");
     ASSERT_TRUE(parsed.event) << parsed.error;
-    EXPECT_EQ(*parsed.event, (FaultEvent{kind, FaultAnchor::kStart, 2.5}));
+    EXPECT_EQ(*parsed.event, (FaultEvent{kind, 0, 2.5}));
     const auto relative = parseFault(name + "@motion+0.25");
     ASSERT_TRUE(relative.event) << relative.error;
-    EXPECT_EQ(*relative.event, (FaultEvent{kind, FaultAnchor::kMotion, 0.25}));
+    EXPECT_EQ(*relative.event, (FaultEvent{kind, 1, 0.25}));
+    const auto third = parseFault(name + "@motion3+0");
+    ASSERT_TRUE(third.event) << third.error;
+    EXPECT_EQ(*third.event, (FaultEvent{kind, 3, 0.0}));
   }
   EXPECT_EQ(toString(FaultKind::kBroadcastDisable), "disable");
   EXPECT_EQ(toString(FaultKind::kSilent), "silent");
@@ -27,7 +30,9 @@ TEST(FaultSchedule, ParsesEveryKindBothWays) {
 TEST(FaultSchedule, RejectsBadSpecsWithAReason) {
   for (const char* bad : {"heartbeat-stop", "heartbeat-stop@", "@1", "nonsense@1", "silent@-1",
                           "silent@motion-1", "silent@motion+", "silent@1s", "silent@nan", "silent@inf",
-                          "silent@+1", "silent@ 1", "Silent@1", "silent@1@2"}) {
+                          "silent@+1", "silent@ 1", "Silent@1", "silent@1@2", "silent@motion0+1",
+                          "silent@motion1000+1", "silent@motionx+1", "silent@motion 2+1", "silent@motion",
+                          "silent@motion2", "silent@motion-2+1", "silent@motion99999999999+1"}) {
     const auto parsed = parseFault(bad);
     EXPECT_FALSE(parsed.event) << bad;
     EXPECT_FALSE(parsed.error.empty()) << bad;
@@ -57,10 +62,10 @@ TEST(FaultSchedule, SwitchesFollowTheFaults) {
 }
 
 TEST(FaultSchedule, FiresInTimeOrderWithTiesInCommandLineOrder) {
-  FaultSchedule schedule({{FaultKind::kHeartbeatResume, FaultAnchor::kStart, 3.0},
-                          {FaultKind::kHeartbeatStop, FaultAnchor::kStart, 2.0},
-                          {FaultKind::kSilent, FaultAnchor::kStart, 3.0},
-                          {FaultKind::kExit, FaultAnchor::kStart, 9.0}});
+  FaultSchedule schedule({{FaultKind::kHeartbeatResume, 0, 3.0},
+                          {FaultKind::kHeartbeatStop, 0, 2.0},
+                          {FaultKind::kSilent, 0, 3.0},
+                          {FaultKind::kExit, 0, 9.0}});
   EXPECT_EQ(schedule.nextDue_s(), 2.0);
   EXPECT_TRUE(schedule.takeDue(1.999).empty());
   EXPECT_EQ(schedule.takeDue(2.0), std::vector<FaultKind>{FaultKind::kHeartbeatStop});
@@ -71,18 +76,25 @@ TEST(FaultSchedule, FiresInTimeOrderWithTiesInCommandLineOrder) {
   EXPECT_FALSE(schedule.nextDue_s());
 }
 
-TEST(FaultSchedule, MotionEventsWaitForTheFirstMotion) {
-  FaultSchedule schedule({{FaultKind::kHeartbeatStop, FaultAnchor::kMotion, 0.3},
-                          {FaultKind::kExit, FaultAnchor::kStart, 10.0}});
+TEST(FaultSchedule, MotionEventsWaitForTheirMotion) {
+  FaultSchedule schedule({{FaultKind::kHeartbeatStop, 1, 0.3},
+                          {FaultKind::kBroadcastDisable, 2, 0.1},
+                          {FaultKind::kExit, 0, 10.0}});
   EXPECT_EQ(schedule.nextDue_s(), 10.0);
   EXPECT_TRUE(schedule.takeDue(5.0).empty());
-  EXPECT_FALSE(schedule.motionAnchored());
-  schedule.motionSeen(4.0);
-  EXPECT_TRUE(schedule.motionAnchored());
-  schedule.motionSeen(6.0);  // only the first motion counts
+  schedule.motionStarted(1, 4.0);
+  schedule.motionStarted(1, 6.0);  // a motion keeps its first start
   EXPECT_DOUBLE_EQ(*schedule.nextDue_s(), 4.3);
   EXPECT_TRUE(schedule.takeDue(4.29).empty());
   EXPECT_EQ(schedule.takeDue(4.31), std::vector<FaultKind>{FaultKind::kHeartbeatStop});
+  EXPECT_EQ(schedule.nextDue_s(), 10.0);  // motion 2 not yet
+  schedule.motionStarted(0, 1.0);         // not a motion number: ignored
+  schedule.motionStarted(3, 5.0);         // motion 3 anchors nothing here
+  EXPECT_EQ(schedule.nextDue_s(), 10.0);
+  schedule.motionStarted(2, 7.0);
+  EXPECT_DOUBLE_EQ(*schedule.nextDue_s(), 7.1);
+  EXPECT_EQ(schedule.takeDue(8.0), std::vector<FaultKind>{FaultKind::kBroadcastDisable});
+  EXPECT_EQ(schedule.pending(), 1u);
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ TEST(SimOptions, DefaultsWithoutArguments) {
   EXPECT_EQ(o.setpoint_timeout_s, 0.1);
   EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, kDefaultElevatorGains.kp_volts_per_unit);
   EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, kDefaultArmGains.kd_volts_per_unit_per_s);
+  EXPECT_EQ(o.realtime_priority, 0);
 }
 
 TEST(SimOptions, EveryOption) {
@@ -36,7 +37,7 @@ TEST(SimOptions, EveryOption) {
                              "--no-heartbeat", "--fault", "heartbeat-stop@1.5", "--fault",
                              "disable@motion+0.2", "--log", "out.csv", "--duration", "7.5",
                              "--setpoint-timeout", "0.25", "--elevator-gains", "200,2",
-                             "--arm-gains", "40,0"});
+                             "--arm-gains", "40,0", "--realtime", "40"});
   ASSERT_TRUE(parsed.error.empty()) << parsed.error;
   const SimOptions& o = parsed.options;
   EXPECT_EQ(o.config_path, "robot.toml");
@@ -48,8 +49,8 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.state_rate_hz, 50.0);
   EXPECT_FALSE(o.heartbeat);
   ASSERT_EQ(o.faults.size(), 2u);
-  EXPECT_EQ(o.faults[0], (FaultEvent{FaultKind::kHeartbeatStop, FaultAnchor::kStart, 1.5}));
-  EXPECT_EQ(o.faults[1], (FaultEvent{FaultKind::kBroadcastDisable, FaultAnchor::kMotion, 0.2}));
+  EXPECT_EQ(o.faults[0], (FaultEvent{FaultKind::kHeartbeatStop, 0, 1.5}));
+  EXPECT_EQ(o.faults[1], (FaultEvent{FaultKind::kBroadcastDisable, 1, 0.2}));
   EXPECT_EQ(o.log_path, "out.csv");
   EXPECT_EQ(o.duration_s, 7.5);
   EXPECT_EQ(o.setpoint_timeout_s, 0.25);
@@ -57,6 +58,7 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.elevator_gains.kd_volts_per_unit_per_s, 2.0);
   EXPECT_EQ(o.arm_gains.kp_volts_per_unit, 40.0);
   EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, 0.0);
+  EXPECT_EQ(o.realtime_priority, 40);
 }
 
 TEST(SimOptions, Help) {
@@ -85,6 +87,9 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--elevator-gains", "1"},
       {"--arm-gains", "-1,0"},
       {"--log"},
+      {"--realtime", "0"},
+      {"--realtime", "100"},
+      {"--realtime", "1.5"},
   };
   for (const auto& args : bad) {
     const auto parsed = parse(args);

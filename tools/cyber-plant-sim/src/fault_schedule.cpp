@@ -21,7 +21,8 @@ constexpr std::array<std::pair<FaultKind, std::string_view>, 8> kNames{{
     {FaultKind::kExit, "exit"},
 }};
 
-constexpr std::string_view kMotionPrefix = "motion+";
+constexpr std::string_view kMotionPrefix = "motion";
+constexpr int kMaxMotionIndex = 999;
 
 }  // namespace
 
@@ -50,18 +51,29 @@ FaultParse parseFault(std::string_view text) {
     for (const auto& [k, name] : kNames) known += (known.empty() ? "" : ", ") + std::string(name);
     return {std::nullopt, "unknown fault '" + std::string(text.substr(0, at)) + "' (known: " + known + ")"};
   }
+  const std::string bad_time = "fault time in '" + std::string(text) +
+                               "' must be SECONDS, motion+SECONDS or motionN+SECONDS with SECONDS >= 0";
   std::string_view when = text.substr(at + 1);
-  FaultAnchor anchor = FaultAnchor::kStart;
+  int motion = 0;
   if (when.starts_with(kMotionPrefix)) {
-    anchor = FaultAnchor::kMotion;
     when.remove_prefix(kMotionPrefix.size());
+    const auto plus = when.find('+');
+    if (plus == std::string_view::npos) return {std::nullopt, bad_time};
+    const std::string_view index = when.substr(0, plus);
+    if (index.empty()) {
+      motion = 1;
+    } else {
+      for (char c : index) {
+        if (c < '0' || c > '9' || motion > kMaxMotionIndex) return {std::nullopt, bad_time};
+        motion = motion * 10 + (c - '0');
+      }
+      if (motion < 1 || motion > kMaxMotionIndex) return {std::nullopt, bad_time};
+    }
+    when.remove_prefix(plus + 1);
   }
   const auto seconds = parseNumber(when);
-  if (!seconds || *seconds < 0.0) {
-    return {std::nullopt, "fault time in '" + std::string(text) +
-                              "' must be SECONDS or motion+SECONDS with SECONDS >= 0"};
-  }
-  return {FaultEvent{*kind, anchor, *seconds}, {}};
+  if (!seconds || *seconds < 0.0) return {std::nullopt, bad_time};
+  return {FaultEvent{*kind, motion, *seconds}, {}};
 }
 
 OutputSwitches applyFault(OutputSwitches switches, FaultKind kind) {
@@ -80,14 +92,18 @@ OutputSwitches applyFault(OutputSwitches switches, FaultKind kind) {
 
 FaultSchedule::FaultSchedule(std::vector<FaultEvent> events) : pending_(std::move(events)) {}
 
-void FaultSchedule::motionSeen(double t_s) {
-  if (!motion_s_) motion_s_ = t_s;
+void FaultSchedule::motionStarted(int index, double t_s) {
+  if (index < 1) return;
+  if (motion_starts_s_.size() < static_cast<std::size_t>(index)) motion_starts_s_.resize(static_cast<std::size_t>(index));
+  auto& start = motion_starts_s_[static_cast<std::size_t>(index - 1)];
+  if (!start) start = t_s;
 }
 
 std::optional<double> FaultSchedule::dueTime(const FaultEvent& event) const {
-  if (event.anchor == FaultAnchor::kStart) return event.offset_s;
-  if (!motion_s_) return std::nullopt;
-  return *motion_s_ + event.offset_s;
+  if (event.motion == 0) return event.offset_s;
+  const auto index = static_cast<std::size_t>(event.motion - 1);
+  if (index >= motion_starts_s_.size() || !motion_starts_s_[index]) return std::nullopt;
+  return *motion_starts_s_[index] + event.offset_s;
 }
 
 std::optional<double> FaultSchedule::nextDue_s() const {

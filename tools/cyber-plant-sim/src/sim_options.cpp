@@ -17,8 +17,9 @@ constexpr std::string_view kUsage =
     "  --coral, --algae         game pieces reported as held in ARM_STATE\n"
     "  --state-rate HZ          ARM_STATE rate, 1..1000 (default 100)\n"
     "  --no-heartbeat           send no roboRIO heartbeat (id 0x01011840, 20 ms)\n"
-    "  --fault KIND@WHEN        inject a fault; WHEN is SECONDS after start or motion+SECONDS\n"
-    "                           after the first setpoint with non-zero velocity; KIND is one of\n"
+    "  --fault KIND@WHEN        inject a fault; WHEN is SECONDS after start, or motionN+SECONDS\n"
+    "                           after the N-th motion started (motion+ = motion1+; a motion starts\n"
+    "                           with a non-zero velocity setpoint after rest); KIND is one of\n"
     "                           heartbeat-stop, heartbeat-resume, heartbeat-disabled,\n"
     "                           heartbeat-enabled, disable, silent, state-resume, exit\n"
     "  --log FILE               write the simulated state as CSV, one row per ARM_STATE period\n"
@@ -26,6 +27,8 @@ constexpr std::string_view kUsage =
     "  --setpoint-timeout S     controllers go neutral after S without a setpoint (default 0.1)\n"
     "  --elevator-gains KP,KD   elevator PD gains, V/m and V/(m/s) (default 150,1)\n"
     "  --arm-gains KP,KD        arm PD gains, V/rad and V/(rad/s) (default 60,0.1)\n"
+    "  --realtime PRIO          run under SCHED_FIFO at PRIO 1..99 (needs CAP_SYS_NICE; tests\n"
+    "                           use it so the heartbeat keeps its period on a busy machine)\n"
     "  --help                   this text\n"
     "Exit status: 0 after a clean stop, 1 on a run-time failure (CAN or LCM could not be opened),\n"
     "2 on bad usage or an invalid config.\n";
@@ -107,6 +110,14 @@ SimArguments parseSimArguments(const std::vector<std::string_view>& args) {
       const auto gains = parseGains(*v);
       if (!gains) return failure(std::string(arg) + " must be KP,KD with both >= 0, got '" + std::string(*v) + "'");
       (arg == "--arm-gains" ? o.arm_gains : o.elevator_gains) = *gains;
+    } else if (arg == "--realtime") {
+      const auto v = value();
+      if (!v) return missing();
+      const auto prio = parseNumber(*v);
+      if (!prio || *prio < 1.0 || *prio > 99.0 || *prio != static_cast<int>(*prio)) {
+        return failure("--realtime must be a priority 1..99, got '" + std::string(*v) + "'");
+      }
+      o.realtime_priority = static_cast<int>(*prio);
     } else {
       return failure("unknown argument '" + std::string(arg) + "'");
     }

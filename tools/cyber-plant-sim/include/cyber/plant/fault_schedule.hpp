@@ -1,7 +1,9 @@
 #pragma once
 // Faults the simulator injects on a schedule given on its command line, so a test can drive them
 // deterministically: `--fault KIND@SECONDS` (seconds after start-up) or `--fault
-// KIND@motion+SECONDS` (seconds after the first setpoint frame with a non-zero velocity arrived).
+// KIND@motionN+SECONDS` (seconds after the N-th motion started; `motion+` is `motion1+`). A motion
+// starts with a setpoint frame carrying a non-zero velocity while the stream was at rest (no
+// setpoint yet, or the latest frames of both joints had zero velocity).
 
 #include <optional>
 #include <string>
@@ -21,11 +23,9 @@ enum class FaultKind {
   kExit,               // exit: end the simulation (as SIGTERM does)
 };
 
-enum class FaultAnchor { kStart, kMotion };
-
 struct FaultEvent {
   FaultKind kind = FaultKind::kExit;
-  FaultAnchor anchor = FaultAnchor::kStart;
+  int motion = 0;         // 0: after start-up; N >= 1: after the N-th motion started
   double offset_s = 0.0;  // >= 0
 
   bool operator==(const FaultEvent&) const = default;
@@ -38,7 +38,7 @@ struct FaultParse {
   std::optional<FaultEvent> event;
   std::string error;  // set when event is empty
 };
-// Parses "KIND@SECONDS" or "KIND@motion+SECONDS".
+// Parses "KIND@SECONDS", "KIND@motion+SECONDS" or "KIND@motionN+SECONDS" (N = 1..999).
 FaultParse parseFault(std::string_view text);
 
 // What the simulator sends and publishes; faults switch these.
@@ -59,9 +59,9 @@ class FaultSchedule {
  public:
   explicit FaultSchedule(std::vector<FaultEvent> events);
 
-  // The first call anchors the motion-relative events at t_s; later calls change nothing.
-  void motionSeen(double t_s);
-  [[nodiscard]] bool motionAnchored() const { return motion_s_.has_value(); }
+  // Motion number `index` (1, 2, ...) started at t_s: anchors the events relative to it. A number
+  // seen before keeps its first time.
+  void motionStarted(int index, double t_s);
   // Due time of the earliest pending event whose anchor is known.
   [[nodiscard]] std::optional<double> nextDue_s() const;
   // Removes and returns the events due at or before now_s, earliest first.
@@ -72,7 +72,7 @@ class FaultSchedule {
   [[nodiscard]] std::optional<double> dueTime(const FaultEvent& event) const;
 
   std::vector<FaultEvent> pending_;  // command-line order
-  std::optional<double> motion_s_;
+  std::vector<std::optional<double>> motion_starts_s_;  // [N - 1]: start of motion N
 };
 
 }  // namespace cyber::plant

@@ -27,6 +27,7 @@ struct SimOptions {
   double setpoint_timeout_s = 0.1;           // --setpoint-timeout S
   PdGains elevator_gains = kDefaultElevatorGains;  // --elevator-gains KP,KD
   PdGains arm_gains = kDefaultArmGains;            // --arm-gains KP,KD
+  int realtime_priority = 0;  // --realtime PRIO: SCHED_FIFO 1..99 (0: normal scheduling)
 };
 
 struct SimArguments {

@@ -1,0 +1,535 @@
+#!/usr/bin/env python3
+"""Host side of the daemon HIL tests: checks what the guest recorded (candump -L capture, LCM log,
+cyber-plant-sim CSV and log, cyber-can-decode output, daemon log). docs/testing.md describes
+each check.
+
+  daemon_check.py motion OUT_DIR    hil.daemon_motion
+  daemon_check.py faults OUT_DIR    hil.daemon_faults
+  daemon_check.py link OUT_DIR      hil.daemon_link_down
+  daemon_check.py relaxed-config SRC DST   the motion test's config (see relaxed_config)
+"""
+
+import bisect
+import csv
+import math
+import os
+import statistics
+import sys
+import tomllib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import hil_lib as hil  # noqa: E402
+
+SOURCE = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+STATUS = dict(accepted=0, planning=1, executing=2, done=3, rejected=4, failed=5, cancelled=6)
+STATUS_NAME = {v: k for k, v in STATUS.items()}
+SYNC_ID = 0x7FF
+
+
+def load_config():
+    with open(os.path.join(SOURCE, "config", "reefscape-2025.toml"), "rb") as f:
+        return tomllib.load(f)
+
+
+CONFIG = load_config()
+DEVICES = CONFIG["daemon"]["devices"]
+PERIOD_S = 1.0 / CONFIG["daemon"]["stream_rate_hz"]
+HEARTBEAT_TIMEOUT_S = CONFIG["daemon"]["heartbeat_timeout_s"]
+STATE_TIMEOUT_S = CONFIG["daemon"]["state_timeout_s"]
+VOLTAGE_LIMIT = (CONFIG["drives"]["elevator"]["voltage_limit_volts"], CONFIG["drives"]["arm"]["voltage_limit_volts"])
+JOINTS = ("elevator", "arm")
+POSITION_TOLERANCE = (0.005, 0.01)  # final error: 5 mm, 0.01 rad
+
+
+def relaxed_config(src, dst):
+    """The reference config with heartbeat_timeout_s and state_timeout_s at 0.5 s: the motion test
+    checks tracking, timing and splicing, and a stall of the emulated guest longer than 100 ms
+    (seen under load) must not stop its moves. The fault tests keep the reference values."""
+    text = open(src).read()
+    for key, value in (("heartbeat_timeout_s", "0.1"), ("state_timeout_s", "0.25")):
+        line = f"{key} = {value}\n"
+        if line not in text:
+            raise SystemExit(f"relaxed-config: '{line.strip()}' not in {src}")
+        text = text.replace(line, f"{key} = 0.5\n")
+    with open(dst, "w") as f:
+        f.write(text)
+
+
+# --- reading the results -------------------------------------------------------------------------
+
+class Run:
+    """Everything one guest run recorded."""
+
+    def __init__(self, out):
+        self.out = out
+        self.frames = hil.read_candump(os.path.join(out, "bus.log"))
+        self.events = hil.read_lcm_log(os.path.join(out, "lcm.log"))
+        self.rows = hil.read_plant_csv(os.path.join(out, "plant.csv"))
+        self.plant = hil.plant_summary(os.path.join(out, "plant_sim.err"))
+        self.daemon_log = open(os.path.join(out, "daemon.log")).read()
+        self.statuses = [hil.decode_plan_status(d) for _, ch, d in self.events if ch == "ARM_PLAN_STATUS"]
+        self.trajectories = {}
+        for _, ch, d in self.events:
+            if ch == "ARM_TRAJECTORY":
+                t = hil.decode_trajectory(d)
+                self.trajectories[t["request_id"]] = t
+        self.daemon_status = [hil.decode_daemon_status(d) for _, ch, d in self.events if ch == "ARM_DAEMON_STATUS"]
+        self.states = [hil.decode_arm_state(d) for _, ch, d in self.events if ch == "ARM_STATE"]
+        self.setpoints = {}  # joint index -> [(t, position, velocity, volts, sequence)]
+        for j, device in enumerate((DEVICES["elevator"], DEVICES["arm"])):
+            self.setpoints[j] = [(f.t,) + hil.decode_setpoint(f) for f in self.frames
+                                 if f.extended and f.id == hil.setpoint_id(device) and len(f.data) == 8 and not f.remote]
+        self.heartbeats = [f for f in self.frames if f.extended and f.id == hil.HEARTBEAT_ID]
+        self.row_utime = [r["utime"] for r in self.rows]
+
+    def final_status(self, request_id):
+        finals = [s for s in self.statuses if s["request_id"] == request_id and s["status"] >= STATUS["done"]]
+        return finals[-1] if finals else None
+
+    def status_time(self, request_id, name):
+        times = [s["utime"] * 1e-6 for s in self.statuses if s["request_id"] == request_id and s["status"] == STATUS[name]]
+        return times[0] if times else None
+
+    def plant_at(self, t, key):
+        """A plant CSV column at wall time t (s), interpolated."""
+        u = t * 1e6
+        i = bisect.bisect_right(self.row_utime, u)
+        if i <= 0:
+            return self.rows[0][key]
+        if i >= len(self.rows):
+            return self.rows[-1][key]
+        a, b = self.rows[i - 1], self.rows[i]
+        w = (u - a["utime"]) / (b["utime"] - a["utime"]) if b["utime"] > a["utime"] else 0.0
+        return a[key] + w * (b[key] - a[key])
+
+    def plant_q(self, t):
+        return (self.plant_at(t, "elevator_m"), self.plant_at(t, "arm_rad"))
+
+
+class Trajectory:
+    """An ARM_TRAJECTORY message, evaluated between its samples: position by cubic Hermite from
+    the sampled positions and velocities (exact where the acceleration is constant, as TOPP's is
+    between its grid points), velocity and voltage linearly."""
+
+    def __init__(self, message):
+        self.m = message
+        self.start = message["start_utime"] * 1e-6
+        self.duration = message["duration_s"]
+        self.t = message["t_s"]
+        self.q = (message["elevator_m"], message["arm_rad"])
+        self.v = (message["elevator_mps"], message["arm_radps"])
+        self.u = (message["elevator_volts"], message["arm_volts"])
+
+    def at(self, tau, joint):
+        """(position, velocity, (volts_lo, volts_hi)) at tau seconds from the start."""
+        t = self.t
+        tau = min(max(tau, 0.0), t[-1])
+        i = min(max(bisect.bisect_right(t, tau) - 1, 0), len(t) - 2)
+        h = t[i + 1] - t[i]
+        s = (tau - t[i]) / h
+        q0, q1 = self.q[joint][i], self.q[joint][i + 1]
+        v0, v1 = self.v[joint][i], self.v[joint][i + 1]
+        h00, h10, h01, h11 = 2 * s**3 - 3 * s**2 + 1, s**3 - 2 * s**2 + s, -2 * s**3 + 3 * s**2, s**3 - s**2
+        q = h00 * q0 + h10 * h * v0 + h01 * q1 + h11 * h * v1
+        v = v0 + s * (v1 - v0)
+        u0, u1 = self.u[joint][i], self.u[joint][i + 1]
+        return q, v, (min(u0, u1), max(u0, u1))
+
+    def max_acceleration(self, joint):
+        v, t = self.v[joint], self.t
+        return max((abs(v[i + 1] - v[i]) / (t[i + 1] - t[i]) for i in range(len(t) - 1)), default=0.0)
+
+
+def fraction_within(periods, nominal, tolerance):
+    return sum(1 for p in periods if abs(p - nominal) <= tolerance) / len(periods) if periods else float("nan")
+
+
+def describe(periods, nominal):
+    ms = [p * 1e3 for p in periods]
+    return (f"{len(periods)} periods, p1 {hil.percentile(ms, 1):.2f} p50 {hil.percentile(ms, 50):.2f} "
+            f"p99 {hil.percentile(ms, 99):.2f} max {max(ms):.1f} ms, "
+            f"{100 * fraction_within(periods, nominal, 0.001):.1f} % within +-1 ms of {nominal * 1e3:.0f} ms")
+
+
+def guest_stall_s(run, t0, t1):
+    """The longest gap in the simulator's 100 Hz CSV rows (a timerfd loop in the same guest) between
+    t0 and t1, beyond its 10 ms period: how long the emulated guest stood still there."""
+    rows = [u * 1e-6 for u in run.row_utime if t0 * 1e6 <= u <= t1 * 1e6]
+    gaps = [b - a for a, b in zip(rows, rows[1:])]
+    return max(max(gaps, default=0.0) - 0.010, 0.0)
+
+
+# --- checks shared by the scenarios ---------------------------------------------------------------
+
+def check_protocol(c, run, allow_sequence_jumps=False, injected=None):
+    """Ids, lengths and sequence numbers per docs/can-protocol.md, and cyber-can-decode's reading.
+    Short frames with the daemon's ids inside `injected` (t0, t1) were put on the bus by the test
+    script, not by the daemon."""
+    known = {SYNC_ID, hil.HEARTBEAT_ID, hil.setpoint_id(DEVICES["elevator"]), hil.setpoint_id(DEVICES["arm"]),
+             hil.status_id(DEVICES["status"]), 0}
+    daemon_ids = {hil.setpoint_id(DEVICES["elevator"]), hil.setpoint_id(DEVICES["arm"]), hil.status_id(DEVICES["status"])}
+    def by_daemon(f):
+        return f.extended and f.id in daemon_ids and not (
+            injected and injected[0] <= f.t <= injected[1] and len(f.data) != 8)
+    daemon_frames = [f for f in run.frames if by_daemon(f)]
+    c.check(all(len(f.data) == 8 and not f.remote for f in daemon_frames),
+            f"all {len(daemon_frames)} daemon frames are extended data frames of 8 bytes with the documented ids")
+    statuses = [f for f in daemon_frames if f.id == hil.status_id(DEVICES["status"])]
+    c.check(statuses and all(f.data[0] <= 4 and f.data[6] == 0 for f in statuses),
+            f"{len(statuses)} status frames with a valid mode byte and reserved byte 0")
+    status_periods = [b.t - a.t for a, b in zip(statuses, statuses[1:])]
+    c.note(f"status frames: {describe(status_periods, 1.0 / CONFIG['daemon']['status_rate_hz'])}")
+    for j, name in enumerate(JOINTS):
+        seq = [s[4] for s in run.setpoints[j]]
+        steps = [(b - a) % 256 for a, b in zip(seq, seq[1:])]
+        jumps = [s for s in steps if s != 1]
+        if allow_sequence_jumps:
+            c.check(0 not in steps, f"{name} sequence never repeats ({len(jumps)} jumps, by {sorted(set(jumps))})")
+        else:
+            c.check(not jumps, f"{name} sequence +1 per frame over {len(seq)} frames (jumps: {jumps[:5]})")
+    status_seq = [f.data[7] for f in statuses]
+    c.check(all((b - a) % 256 == 1 for a, b in zip(status_seq, status_seq[1:])) or allow_sequence_jumps,
+            "status sequence +1 per frame")
+    for j, name in enumerate(JOINTS):
+        worst = max((abs(s[3]) for s in run.setpoints[j]), default=0.0)
+        c.check(worst <= VOLTAGE_LIMIT[j], f"{name} feedforward within +-{VOLTAGE_LIMIT[j]} V (max |V| {worst:.3f})")
+    # The guest's cyber-can-decode --csv of the same capture agrees with this reading.
+    decoded_path = os.path.join(run.out, "bus.csv")
+    rows = list(csv.DictReader(open(decoded_path))) if os.path.exists(decoded_path) else []
+    mine = sorted((round(s[0], 6), j, s[1], s[2], s[3], s[4]) for j in (0, 1) for s in run.setpoints[j])
+    theirs = []
+    for r in rows:
+        if r.get("kind") == "setpoint":
+            theirs.append((round(float(r["time_s"]), 6), 0 if r["joint"] == "elevator" else 1,
+                           float(r["position"]), float(r["velocity"]), float(r["volts"]), int(r["seq"])))
+    theirs.sort()
+    same = len(mine) == len(theirs) and all(
+        a[:2] == b[:2] and a[5] == b[5] and all(abs(x - y) < 1e-9 for x, y in zip(a[2:5], b[2:5])) for a, b in zip(mine, theirs))
+    c.check(same, f"cyber-can-decode --csv in the guest decodes the {len(theirs)} setpoints as this check does "
+                  f"(here {len(mine)})")
+
+
+def check_goal(c, run, request_id, expected):
+    final = run.final_status(request_id)
+    got = STATUS_NAME.get(final["status"]) if final else None
+    reason = f" ({final['reason']})" if final and final["reason"] else ""
+    return c.check(got == expected, f"request {request_id} ended {got}{reason}, expected {expected}")
+
+
+def check_final_error(c, run, what, t, target):
+    q = run.plant_q(t)
+    err = [abs(q[j] - target[j]) for j in (0, 1)]
+    c.check(err[0] <= POSITION_TOLERANCE[0] and err[1] <= POSITION_TOLERANCE[1],
+            f"{what}: plant at ({q[0]:.4f} m, {q[1]:.4f} rad), error {err[0] * 1e3:.2f} mm / {err[1] * 1e3:.2f} mrad "
+            f"(<= 5 mm / 10 mrad)")
+
+
+def frames_between(run, joint, t0, t1):
+    return [s for s in run.setpoints[joint] if t0 <= s[0] <= t1]
+
+
+def check_matches_trajectory(c, run, request_id, t_end=None):
+    """Each setpoint frame sent while this trajectory was active lies on it: the position at the
+    best-matching time within [-15, +5] ms of the frame's capture time, the velocity and the
+    feedforward at that time, within interpolation and quantisation tolerances."""
+    msg = run.trajectories.get(request_id)
+    if not c.check(msg is not None, f"ARM_TRAJECTORY for request {request_id} recorded"):
+        return
+    traj = Trajectory(msg)
+    end = traj.start + traj.duration if t_end is None else min(t_end, traj.start + traj.duration)
+    worst = [0.0, 0.0, 0.0]
+    lags = []
+    count = 0
+    for j in (0, 1):
+        for t, q, v, u, _ in frames_between(run, j, traj.start + 0.002, end - 0.002):
+            tau0 = t - traj.start
+            best = min((abs(traj.at(tau0 + k * 1e-4, j)[0] - q), k) for k in range(-150, 51))
+            tau = tau0 + best[1] * 1e-4
+            tq, tv, (ulo, uhi) = traj.at(tau, j)
+            worst[0] = max(worst[0], abs(tq - q))
+            worst[1] = max(worst[1], abs(tv - v))
+            worst[2] = max(worst[2], max(ulo - u, u - uhi, 0.0))
+            lags.append(-best[1] * 1e-4)
+            count += 1
+    c.check(count > 0 and worst[0] <= 5e-4 and worst[1] <= 0.02 and worst[2] <= 0.05,
+            f"request {request_id}: {count} setpoints on the planned trajectory (worst position {worst[0] * 1e3:.3f} mm|mrad, "
+            f"velocity {worst[1]:.4f}, feedforward outside its samples by {worst[2]:.3f} V)")
+    if lags:
+        c.note(f"request {request_id}: capture time minus best trajectory time: p50 {hil.percentile(lags, 50) * 1e3:.1f} ms, "
+               f"p99 {hil.percentile(lags, 99) * 1e3:.1f} ms")
+
+
+def check_stream_timing(c, run, t0, t1):
+    """Setpoint periods at the configured rate, judged against a reference in the same guest: the
+    simulator's 50 Hz heartbeat (a plain timerfd loop). When the reference itself misses its
+    period, the emulated guest could not keep time and the daemon's figure is reported, not judged."""
+    sp = [s[0] for s in run.setpoints[0] if t0 <= s[0] <= t1]
+    periods = [b - a for a, b in zip(sp, sp[1:])]
+    beats = [f.t for f in run.heartbeats if t0 <= f.t <= t1]
+    ref = [b - a for a, b in zip(beats, beats[1:])]
+    daemon_ok = fraction_within(periods, PERIOD_S, 0.001) >= 0.99
+    reference_ok = fraction_within(ref, 0.020, 0.001) >= 0.99
+    c.note(f"setpoint stream (elevator): {describe(periods, PERIOD_S)}")
+    c.note(f"reference (simulator heartbeat): {describe(ref, 0.020)}")
+    last = run.daemon_status[-1] if run.daemon_status else None
+    if last:
+        c.note(f"daemon's own streamer: wake-up lateness p50 {last['stream_jitter_p50_us']:.0f} us, "
+               f"p99 {last['stream_jitter_p99_us']:.0f} us, max {last['stream_jitter_max_us']:.0f} us; "
+               f"{last['stream_overruns']} missed periods")
+    if daemon_ok:
+        c.check(True, "setpoint periods: >= 99 % within +-1 ms")
+    elif reference_ok:
+        c.check(False, "setpoint periods: fewer than 99 % within +-1 ms while the guest kept the reference's time")
+    else:
+        c.note("TIMING NOT ASSESSED: the emulated guest missed the reference's period too "
+               "(host load; see the figures above)")
+
+
+def check_no_motion_between(c, run, t0, t1, what):
+    moving = [s for j in (0, 1) for s in frames_between(run, j, t0, t1) if abs(s[2]) >= 0.001]
+    c.check(not moving, f"{what}: no moving setpoint between {t0 - run.frames[0].t:.3f} s and {t1 - run.frames[0].t:.3f} s"
+                        + (f" (first at {moving[0][0] - t0:+.3f} s)" if moving else ""))
+
+
+def check_holds_measured(c, run, t_from, what, must_differ_from=None):
+    """The first setpoints after t_from hold still (velocity 0) at the measured position."""
+    firsts = [next((s for s in run.setpoints[j] if s[0] > t_from), None) for j in (0, 1)]
+    if not c.check(all(firsts), f"{what}: setpoints resume"):
+        return None
+    t = firsts[0][0]
+    # The daemon holds the latest ARM_STATE; the plant may have moved since (sliding in neutral).
+    measured = [s for s in run.states if s["utime"] * 1e-6 <= t]
+    m = measured[-1] if measured else None
+    q_state = (m["elevator_m"], m["arm_rad"]) if m else run.plant_q(t)
+    err = [abs(firsts[j][1] - q_state[j]) for j in (0, 1)]
+    still = all(abs(firsts[j][2]) < 0.0005 for j in (0, 1))
+    c.check(still and err[0] <= 0.002 and err[1] <= 0.004,
+            f"{what}: first setpoints {t - t_from:+.3f} s after: hold ({firsts[0][1]:.4f} m, {firsts[1][1]:.4f} rad), "
+            f"velocity 0: {still}; the latest ARM_STATE said ({q_state[0]:.4f}, {q_state[1]:.4f})")
+    if must_differ_from is not None:
+        jump = max(abs(firsts[j][1] - must_differ_from[j]) for j in (0, 1))
+        c.note(f"{what}: the hold is {jump * 1e3:.1f} mm|mrad from the last command before the stop")
+    return t
+
+
+# --- scenarios ----------------------------------------------------------------------------------
+
+TARGETS = {1: (1.97, 5.17), 2: (0.16, 0.10), 3: (0.2, 1.57)}
+
+
+def check_motion(out):
+    c = hil.Checks("daemon_motion")
+    run = Run(out)
+    check_protocol(c, run)
+    for request_id, expected in ((1, "done"), (2, "cancelled"), (3, "done")):
+        check_goal(c, run, request_id, expected)
+    if not all(r in run.trajectories for r in (1, 2, 3)):
+        c.check(False, f"trajectories recorded for requests 1, 2, 3 (have {sorted(run.trajectories)})")
+        return c.status()
+    t1, t2, t3 = (Trajectory(run.trajectories[r]) for r in (1, 2, 3))
+
+    # Goal 1 to its end, goal 3 to its end: the plant within 5 mm / 10 mrad of the target.
+    check_final_error(c, run, "goal 1 reached (just before goal 2 starts)", t2.start - 0.01, TARGETS[1])
+    check_final_error(c, run, "goal 3 reached (end of the run)", run.rows[-1]["utime"] * 1e-6, TARGETS[3])
+
+    check_stream_timing(c, run, t1.start, t3.start + t3.duration)
+
+    check_matches_trajectory(c, run, 1)
+    check_matches_trajectory(c, run, 2, t_end=t3.start)
+    check_matches_trajectory(c, run, 3)
+    for r, t in ((1, t1), (2, t2), (3, t3)):
+        worst = [max(abs(u) for u in t.u[j]) for j in (0, 1)]
+        c.check(all(worst[j] <= VOLTAGE_LIMIT[j] for j in (0, 1)),
+                f"request {r}: planned feedforward within limits ({worst[0]:.2f} V, {worst[1]:.2f} V)")
+
+    # The splice: goal 3 starts inside goal 2's motion, from goal 2's commanded state.
+    tau = t3.start - t2.start
+    mid = 0.0 < tau < t2.duration
+    speed = max(abs(t2.at(tau, j)[1]) for j in (0, 1))
+    c.check(mid and speed > 0.05, f"goal 3 spliced {tau:.3f} s into goal 2's {t2.duration:.3f} s motion, "
+                                  f"while moving at {speed:.3f} m/s|rad/s")
+    dq = max(abs(t2.at(tau, j)[0] - t3.q[j][0]) for j in (0, 1))
+    dv = max(abs(t2.at(tau, j)[1] - t3.v[j][0]) for j in (0, 1))
+    c.check(dq <= 1e-3 and dv <= 0.02, f"goal 3 starts at goal 2's state at the splice: |dq| {dq * 1e3:.3f} mm|mrad, |dv| {dv:.4f}")
+    accel = [1.2 * max(t.max_acceleration(j) for t in (t2, t3)) for j in (0, 1)]
+    worst_dv, worst_dq = 0.0, 0.0
+    for j in (0, 1):
+        frames = frames_between(run, j, t3.start - 0.1, t3.start + 0.1)
+        for a, b in zip(frames, frames[1:]):
+            dt = b[0] - a[0]
+            worst_dv = max(worst_dv, abs(b[2] - a[2]) - accel[j] * (dt + 0.002) - 0.002)
+            worst_dq = max(worst_dq, abs(b[1] - a[1]) - max(abs(a[2]), abs(b[2])) * (dt + 0.002) - accel[j] * dt * dt - 2e-5)
+    c.check(worst_dv <= 0.0 and worst_dq <= 0.0,
+            f"CAN setpoints continuous across the splice (+-100 ms): velocity steps within a_max * dt "
+            f"(excess {max(worst_dv, 0):.4f}), position steps within v * dt (excess {max(worst_dq, 0) * 1e3:.3f} mm|mrad)")
+    c.check(run.plant["sequence_gaps"] == 0 and run.plant["malformed"] == 0,
+            "the simulator saw no sequence gaps and no malformed setpoints")
+    return c.status()
+
+
+def moving_frames(run, t0, t1):
+    return sorted((s for j in (0, 1) for s in frames_between(run, j, t0, t1) if abs(s[2]) >= 0.001), key=lambda s: s[0])
+
+
+def check_stop(c, run, what, t_cause, limit_s):
+    """Motion setpoints stop within limit_s of t_cause (the last heartbeat or ARM_STATE before the
+    fault, or the disable frame): the last moving setpoint is no later than that. A stall of the
+    emulated guest right then (measured on the simulator's 100 Hz loop) is added and reported."""
+    before = moving_frames(run, t_cause - 0.2, t_cause + 1.0)
+    if not c.check(before and before[0][0] < t_cause, f"{what}: the mechanism was moving when it happened"):
+        return None
+    # The last moving frame of the continuous run that was going on at t_cause.
+    t_stop = before[0][0]
+    for a, b in zip(before, before[1:]):
+        if b[0] - a[0] > 0.05:
+            break
+        t_stop = b[0]
+    stall = guest_stall_s(run, t_cause - 0.05, t_cause + limit_s + 0.05)
+    late = t_stop - t_cause
+    c.check(late <= limit_s + stall, f"{what}: last moving setpoint {late * 1e3:.1f} ms after it "
+                                      f"(limit {limit_s * 1e3:.0f} ms + guest stall {stall * 1e3:.0f} ms)")
+    return t_stop
+
+
+def status_frames(run, t0, t1):
+    return [f for f in run.frames
+            if f.extended and f.id == hil.status_id(DEVICES["status"]) and len(f.data) == 8 and t0 <= f.t <= t1]
+
+
+def daemon_status_at(run, t):
+    """The latest ARM_DAEMON_STATUS published at or before wall time t."""
+    before = [m for m in run.daemon_status if m["utime"] * 1e-6 <= t]
+    return before[-1] if before else None
+
+
+def marker(run, payload):
+    hits = [f.t for f in run.frames if f.id == SYNC_ID and not f.extended and f.data == payload]
+    return hits[0] if hits else None
+
+
+def check_faults(out):
+    c = hil.Checks("daemon_faults")
+    run = Run(out)
+    t_garbage, t_end = marker(run, b"GARB"), marker(run, b"END")
+    check_protocol(c, run, injected=(t_garbage, t_end) if t_garbage and t_end else None)
+    for request_id, expected in ((1, "cancelled"), (2, "cancelled"), (3, "cancelled"), (4, "done")):
+        check_goal(c, run, request_id, expected)
+
+    # 1. Heartbeat lost mid-motion, then back.
+    beats = [f.t for f in run.heartbeats]
+    gaps = [(b - a, a, b) for a, b in zip(beats, beats[1:])]
+    gap = max(gaps)
+    c.check(0.4 <= gap[0] <= 0.7, f"heartbeat gap of {gap[0] * 1e3:.0f} ms (scheduled 500 ms)")
+    t_last_hb, t_back = gap[1], gap[2]
+    t_stop = check_stop(c, run, "heartbeat lost", t_last_hb, HEARTBEAT_TIMEOUT_S + PERIOD_S)
+    if t_stop is not None:
+        quiet = [s for j in (0, 1) for s in frames_between(run, j, t_stop + 0.001, t_back)]
+        c.check(not quiet, f"no setpoints at all while the heartbeat is stale ({len(quiet)} seen)")
+        last_cmd = [frames_between(run, j, t_stop - 0.001, t_stop + 0.001)[-1][1] for j in (0, 1)]
+        check_holds_measured(c, run, t_back, "heartbeat back", must_differ_from=last_cmd)
+    reason = run.final_status(1)["reason"] if run.final_status(1) else ""
+    c.note(f"request 1 cancelled with: {reason}")
+
+    # 2. Malformed and foreign frames while holding: ignored, and counted where they are ours.
+    if c.check(t_garbage is not None and t_end is not None, "garbage markers captured"):
+        before, after = daemon_status_at(run, t_garbage), daemon_status_at(run, t_end + 0.35)
+        delta = after["decode_errors"] - before["decode_errors"] if before and after else None
+        c.check(delta == 3, f"ARM_DAEMON_STATUS decode_errors rose by {delta} (3 heartbeat-id frames of the wrong "
+                            f"length; the remote request and other ids never reach the daemon)")
+        modes = {f.data[0] for f in status_frames(run, t_garbage - 0.2, t_end + 0.3)}
+        c.check(modes == {1}, f"the daemon kept holding through them (status modes {sorted(modes)})")
+        c.check(not moving_frames(run, t_garbage, t_end + 0.3), "no motion from them")
+    c.check(run.plant["malformed"] == 1, f"the simulator counted the short setpoint frame ({run.plant['malformed']:.0f})")
+
+    # 3. Broadcast disable mid-motion: stops at once, then holds once the heartbeat says enabled.
+    disables = [f.t for f in run.frames if f.id == 0 and f.extended]
+    if c.check(len(disables) == 1, f"one broadcast disable on the bus ({len(disables)})"):
+        t_d = disables[0]
+        t_stop = check_stop(c, run, "broadcast disable", t_d, PERIOD_S)
+        next_beat = next((t for t in beats if t > t_d), None)
+        if t_stop is not None and next_beat is not None:
+            quiet = [s for j in (0, 1) for s in frames_between(run, j, t_stop + 0.001, next_beat)]
+            c.check(not quiet, f"no setpoints until the next enabled heartbeat {1e3 * (next_beat - t_d):.0f} ms later")
+            check_holds_measured(c, run, next_beat, "after the disable")
+        reason = run.final_status(2)["reason"] if run.final_status(2) else ""
+        c.note(f"request 2 cancelled with: {reason}")
+
+    # 4. ARM_STATE silent mid-motion: stops once the state is older than state_timeout_s.
+    state_t = [s["utime"] * 1e-6 for s in run.states]
+    gaps = sorted(((b - a, a, b) for a, b in zip(state_t, state_t[1:])), reverse=True)
+    if c.check(gaps and 0.5 <= gaps[0][0] <= 0.8, f"ARM_STATE gap of {gaps[0][0] * 1e3:.0f} ms (scheduled 600 ms)"):
+        t_last_state, t_state_back = gaps[0][1], gaps[0][2]
+        t_stop = check_stop(c, run, "ARM_STATE silent", t_last_state, STATE_TIMEOUT_S + PERIOD_S)
+        statuses = status_frames(run, t_last_state + STATE_TIMEOUT_S + 0.05, t_state_back - 0.01)
+        c.check(statuses and all(f.data[0] == 0 and f.data[5] & 0x01 for f in statuses),
+                f"status frames while the state is stale: mode 0 (no state) with fault bit 0x01 "
+                f"({[(f.data[0], f.data[5]) for f in statuses]})")
+        if t_stop is not None:
+            check_holds_measured(c, run, t_state_back, "ARM_STATE back")
+
+    # 5. Afterwards goal 4 runs normally to its target.
+    if 4 in run.trajectories:
+        check_matches_trajectory(c, run, 4)
+    check_final_error(c, run, "goal 4 reached (end of the run)", run.rows[-1]["utime"] * 1e-6, TARGETS[3])
+    last = run.daemon_status[-1]
+    c.check(last["goals_received"] == 4 and last["plans_succeeded"] == 4,
+            f"daemon counters: {last['goals_received']} goals, {last['plans_succeeded']} plans")
+    return c.status()
+
+
+def check_link(out):
+    c = hil.Checks("daemon_link_down")
+    run = Run(out)
+    check_protocol(c, run, allow_sequence_jumps=True)
+    check_goal(c, run, 1, "cancelled")
+    check_goal(c, run, 2, "done")
+    times = [f.t for f in run.frames]
+    gap = max((b - a, a, b) for a, b in zip(times, times[1:]))
+    c.check(1.8 <= gap[0] <= 2.6, f"nothing on the bus for {gap[0]:.2f} s while vcan0 was down (2 s)")
+    t_down, t_up = gap[1], gap[2]
+
+    # The daemon kept running and said so: LCM status all along, failed writes logged and counted.
+    during = [m for m in run.daemon_status if t_down + 0.2 <= m["utime"] * 1e-6 <= t_up - 0.1]
+    c.check(len(during) >= 10, f"{len(during)} ARM_DAEMON_STATUS messages while the link was down")
+    c.check(during and all(not m["robot_enabled"] and m["mode"] == 4 for m in during[1:]),
+            "... reporting the robot disabled (no heartbeat gets through)")
+    before, after = daemon_status_at(run, t_down), daemon_status_at(run, t_up + 0.5)
+    c.check(before and after and after["can_errors"] > before["can_errors"],
+            f"can_errors rose from {before['can_errors'] if before else '?'} to {after['can_errors'] if after else '?'}")
+    c.check("CAN write failed" in run.daemon_log, "the daemon logged the failed writes")
+    c.check("CAN writes recovered" in run.daemon_log, "... and their recovery")
+
+    # No old frame came back: sequences only move forward, the jump is the frames dropped while down.
+    for j, name in enumerate(JOINTS):
+        before_gap = [s for s in run.setpoints[j] if s[0] <= t_down]
+        after_gap = [s for s in run.setpoints[j] if s[0] >= t_up]
+        if not (before_gap and after_gap):
+            c.check(False, f"{name}: setpoints on both sides of the outage")
+            continue
+        jump = (after_gap[0][4] - before_gap[-1][4]) % 256
+        c.check(2 <= jump <= (HEARTBEAT_TIMEOUT_S + 0.05) / PERIOD_S + 2,
+                f"{name}: sequence {before_gap[-1][4]} -> {after_gap[0][4]} across the outage: {jump - 1} frames dropped "
+                f"while the heartbeat was still fresh, none queued")
+    t2 = Trajectory(run.trajectories[2]) if 2 in run.trajectories else None
+    if t2:
+        check_no_motion_between(c, run, t_up, t2.start - 0.001, "after the outage until goal 2")
+        check_matches_trajectory(c, run, 2)
+    check_holds_measured(c, run, t_up, "link up")
+    check_final_error(c, run, "goal 2 reached (end of the run)", run.rows[-1]["utime"] * 1e-6, TARGETS[3])
+    c.check(run.plant["write_failures"] > 0 and run.plant["read_failures"] >= 0,
+            f"the simulator kept running through it ({run.plant['write_failures']:.0f} heartbeat writes failed)")
+    return c.status()
+
+
+def main(argv):
+    if len(argv) == 4 and argv[1] == "relaxed-config":
+        relaxed_config(argv[2], argv[3])
+        return 0
+    if len(argv) == 3 and argv[1] in ("motion", "faults", "link"):
+        return {"motion": check_motion, "faults": check_faults, "link": check_link}[argv[1]](argv[2])
+    print(__doc__, file=sys.stderr)
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,31 @@
+#!/bin/sh
+# Guest side of hil.daemon_motion (inside tools/vcan-vm): cyber-plannerd and cyber-plant-sim on
+# vcan0, recorded by candump and lcm-logger. Goal 1 moves STOW -> L4 to the end; goal 2 (L4 ->
+# PROCESSOR) is replaced mid-motion by goal 3 (-> STOW), which must be spliced in. The host
+# (tests/hil/daemon_check.py motion) checks position error, stream timing, the trajectories and
+# the splice.
+set -eu
+script_name=daemon_motion
+. "$FILES_DIR/hil_guest.sh"
+
+start_bus_capture
+start_lcm_log
+start_plant --initial 0.2,1.57
+start_daemon
+pids="$daemon $plant $logger $dump"
+
+goal 1 1.97,5.17 0
+sleep 0.5
+cyber-goal --to 0.16,0.10 --id 2 --timeout 60 >"$work/goal2.out" 2>&1 &
+goal2=$!
+wait_for_line "$work/goal2.out" executing 60
+sleep 0.2
+goal 3 0.2,1.57 0
+status=0
+wait "$goal2" || status=$?
+[ "$status" -eq 5 ] || fail "goal 2 should end cancelled (exit 5), cyber-goal exited $status ($(cat "$work/goal2.out"))"
+say "goal 2: $(tail -n 1 "$work/goal2.out")"
+sleep 0.5
+stop_all
+decode_bus --strict
+finish 0
