@@ -1,8 +1,8 @@
 #!/bin/sh
 # Guest side of hil.daemon_faults (inside tools/vcan-vm): cyber-plannerd with the reference
-# config and cyber-plant-sim on vcan0. The simulator injects, each mid-motion of its own goal:
-# heartbeat lost for 0.5 s (goal 1), a broadcast disable (goal 2), ARM_STATE silent for 0.6 s
-# (goal 3); between goals 1 and 2 this script puts malformed and foreign frames on the bus. Goal 4
+# config and cyber-plant-sim on vcan0. Each fault hits a goal 0.3 s into its execution: the
+# heartbeat lost for 0.5 s, a broadcast disable, ARM_STATE silent for 0.6 s; between the first two
+# this script puts malformed and foreign frames on the bus while the daemon holds. A last goal
 # must then run normally. tests/hil/daemon_check.py faults checks the recordings on the host.
 set -eu
 script_name=daemon_faults
@@ -10,14 +10,14 @@ script_name=daemon_faults
 
 start_bus_capture
 start_lcm_log
-start_plant --initial 0.2,1.57 \
-  --fault heartbeat-stop@motion1+0.25 --fault heartbeat-resume@motion1+0.75 \
-  --fault disable@motion2+0.3 \
-  --fault silent@motion3+0.3 --fault state-resume@motion3+0.9
+start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-goal 1 1.97,5.17 5
+during_motion heartbeat 1 1.97,5.17 0.3 "fault heartbeat-stop"
+sleep 0.5
+fault heartbeat-resume
+wait_goal heartbeat 5
 sleep 0.8
 # Between two markers: heartbeat-id frames of the wrong length (3, counted as decode errors), a
 # heartbeat remote request and frames with other ids (dropped by the daemon's receive filter), a
@@ -34,11 +34,15 @@ cansend "$CAN_IFACE" 0A080401#0102
 cansend "$CAN_IFACE" 0A080803#00
 cansend "$CAN_IFACE" 7FF#454E44
 sleep 0.5
-goal 2 0.2,1.57 5
+during_motion disable 2 0.2,1.57 0.3 "fault disable"
+wait_goal disable 5
 sleep 0.5
-goal 3 1.22,5.69 5
+during_motion silent 3 1.22,5.69 0.3 "fault silent"
+sleep 0.6
+fault state-resume
+wait_goal silent 5
 sleep 1.0
-goal 4 0.2,1.57 0
+goal_done 4 0.2,1.57
 sleep 0.5
 kill -0 "$daemon" || fail "cyber-plannerd is gone"
 stop_all

@@ -1,11 +1,13 @@
 #!/bin/sh
-# Guest side of hil.daemon_link_down (inside tools/vcan-vm): while cyber-plannerd streams goal 1,
-# vcan0 goes down for 2 s and up again. The daemon must keep running, report the failed writes,
-# hold the measured position once the heartbeat is back, and serve goal 2. candump -D keeps
-# recording across the outage. tests/hil/daemon_check.py link checks the recordings on the host.
+# Guest side of hil.daemon_link_down (inside tools/vcan-vm): 0.3 s into goal 1, vcan0 goes down
+# for 2 s and up again. The daemon must keep running, report the failed writes, hold the measured
+# position once the heartbeat is back, and serve goal 2. candump -D keeps recording across the
+# outage. tests/hil/daemon_check.py link_down checks the recordings on the host.
 set -eu
 script_name=daemon_link_down
 . "$FILES_DIR/hil_guest.sh"
+
+link_down() { ip link set "$CAN_IFACE" down; }
 
 start_bus_capture
 start_lcm_log
@@ -13,20 +15,13 @@ start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-cyber-goal --to 1.97,5.17 --id 1 --timeout 60 >"$work/goal1.out" 2>&1 &
-goal1=$!
-wait_for_line "$work/goal1.out" executing 60
-sleep 0.3
-ip link set "$CAN_IFACE" down
+during_motion link 1 1.97,5.17 0.3 link_down
 sleep 2
 ip link set "$CAN_IFACE" up
-status=0
-wait "$goal1" || status=$?
-[ "$status" -eq 5 ] || fail "goal 1 should end cancelled (exit 5), cyber-goal exited $status ($(cat "$work/goal1.out"))"
-say "goal 1: $(tail -n 1 "$work/goal1.out")"
+wait_goal link 5
 sleep 1
 kill -0 "$daemon" || fail "cyber-plannerd is gone after the outage"
-goal 2 0.2,1.57 0
+goal_done 2 0.2,1.57
 sleep 0.5
 stop_all
 decode_bus --strict

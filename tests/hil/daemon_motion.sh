@@ -14,17 +14,17 @@ start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-goal 1 1.97,5.17 0
+start_goal 1 1.97,5.17
+wait_goal 1 0
 sleep 0.5
-cyber-goal --to 0.16,0.10 --id 2 --timeout 60 >"$work/goal2.out" 2>&1 &
-goal2=$!
+start_goal 2 0.16,0.10
+goal2=$goal_pid
 wait_for_line "$work/goal2.out" executing 60
 sleep 0.2
-goal 3 0.2,1.57 0
-status=0
-wait "$goal2" || status=$?
-[ "$status" -eq 5 ] || fail "goal 2 should end cancelled (exit 5), cyber-goal exited $status ($(cat "$work/goal2.out"))"
-say "goal 2: $(tail -n 1 "$work/goal2.out")"
+start_goal 3 0.2,1.57
+wait_goal 3 0
+goal_pid=$goal2
+wait_goal 2 5
 sleep 0.5
 stop_all
 decode_bus --strict

@@ -1,18 +1,23 @@
-# Shared guest-side helpers of the daemon HIL scripts (sourced; POSIX sh, dash + busybox). Work
-# files go to the guest's tmpfs ($work) and are copied to $OUT_DIR by finish: one write per frame
-# to the 9p share costs the emulated guest too much.
+# Shared guest-side helpers of the daemon HIL scripts (sourced; POSIX sh, dash + busybox).
+# Work files go to the guest's tmpfs ($work) and are copied to $OUT_DIR by finish: one write per
+# frame to the 9p share costs the emulated guest too much. Progress lines (a few per run) go to
+# the console and to $work/script.log.
 
 work=/tmp/hil
 mkdir -p "$work"
+control=$work/control
 pids=""
 
-say() { echo "$script_name: $*"; }
+say() { echo "$script_name: $*" | tee -a "$work/script.log"; }
+
+# Records KEY=VALUE for the host-side check.
+note() { echo "$1" >>"$work/scenario.txt"; }
 
 # Copies the work files out, then exits with status $1 (message $2 on failure).
 finish() {
   for pid in $pids; do kill "$pid" 2>/dev/null || true; done
   for pid in $pids; do wait "$pid" 2>/dev/null || true; done
-  cp "$work"/* "$OUT_DIR"/ 2>/dev/null || true
+  cp "$work"/*.* "$OUT_DIR"/ 2>/dev/null || true
   if [ "$1" -ne 0 ]; then
     echo "$script_name: FAIL: $2" >&2
     tail -n 20 "$work/daemon.log" >&2 2>/dev/null || true
@@ -26,7 +31,7 @@ fail() { finish 1 "$*"; }
 # is seen listening.
 start_bus_capture() {
   sync_frame=7FF#53594E43
-  candump -L -D "$CAN_IFACE" >"$work/bus.log" &
+  candump -L -D "$CAN_IFACE" >"$work/bus.log" 2>"$work/candump.err" &
   dump=$!
   tries=0
   until grep -qs " $CAN_IFACE $sync_frame\$" "$work/bus.log"; do
@@ -42,12 +47,14 @@ start_lcm_log() {
   logger=$!
 }
 
-# The plant simulator with extra arguments. It runs under SCHED_FIFO 40 (below the daemon's
-# streamer at 50): it stands for the roboRIO and the motor controllers, separate hardware whose
-# heartbeat does not wait for the daemon's other threads or this script's commands.
+# The plant simulator with extra arguments, its faults also driven through the FIFO $control. It
+# runs under SCHED_FIFO 40 (below the daemon's streamer at 50): it stands for the roboRIO and the
+# motor controllers, separate hardware whose heartbeat does not wait for the daemon's other
+# threads or this script's commands.
 start_plant() {
-  cyber-plant-sim --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" --log "$work/plant.csv" --realtime 40 "$@" \
-    2>"$work/plant_sim.err" &
+  mkfifo "$control"
+  cyber-plant-sim --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" --log "$work/plant.csv" --realtime 40 \
+    --control "$control" "$@" 2>"$work/plant_sim.err" &
   plant=$!
 }
 
@@ -56,38 +63,106 @@ start_daemon() {
   daemon=$!
 }
 
-# Waits up to $3 seconds for a line matching $2 in file $1.
+# Injects fault KIND now.
+fault() { echo "$1" >"$control"; }
+
+# Waits up to $3 seconds for a line matching the extended regex $2 in file $1.
 wait_for_line() {
   tries=0
-  until grep -qs "$2" "$1"; do
+  until grep -Eqs "$2" "$1"; do
     tries=$((tries + 1))
     [ "$tries" -le $(($3 * 50)) ] || fail "no '$2' in $(basename "$1") after $3 s"
     sleep 0.02
   done
 }
 
-# Sends goal N to T,THETA and waits for its final status; $3 is the exit status expected from
-# cyber-goal (0 done, 5 cancelled).
-goal() {
+finals='request [0-9]+ (done|rejected|failed|cancelled)'
+
+# Starts goal $1 to $2 in the background (pid in $goal_pid).
+start_goal() {
+  cyber-goal --to "$2" --id "$1" --timeout 25 >"$work/goal$1.out" 2>&1 &
+  goal_pid=$!
+}
+
+# Waits for the background goal $1; fails unless cyber-goal exits $2 (0 done, 5 cancelled).
+wait_goal() {
   status=0
-  cyber-goal --to "$2" --id "$1" --timeout 60 >"$work/goal$1.out" 2>&1 || status=$?
-  [ "$status" -eq "$3" ] || fail "goal $1 to $2: cyber-goal exited $status, expected $3 ($(cat "$work/goal$1.out"))"
-  say "goal $1 to $2: $(tail -n 1 "$work/goal$1.out")"
+  wait "$goal_pid" || status=$?
+  [ "$status" -eq "$2" ] || fail "goal $1: cyber-goal exited $status, expected $2 ($(cat "$work/goal$1.out"))"
+  say "goal $1: $(tail -n 1 "$work/goal$1.out")"
+}
+
+# Starts goal $2 to $3 and, once it has been executing for $4 s, runs the command $5 (a fault, or
+# a link change), noting "$1=ID". Under emulation the guest sometimes stands still long enough for
+# the daemon to stop on a stale heartbeat by itself; a goal that ended before the command is sent
+# again with the id + 100 (noted as retry=ID), up to three times.
+during_motion() {
+  id=$2
+  for attempt in 1 2 3; do
+    start_goal "$id" "$3"
+    wait_for_line "$work/goal$id.out" "executing|$finals" 60
+    sleep "$4"
+    if ! grep -Eqs "$finals" "$work/goal$id.out"; then
+      $5
+      note "$1=$id"
+      return 0
+    fi
+    wait "$goal_pid" || true
+    say "goal $id ended before '$5': $(tail -n 1 "$work/goal$id.out")"
+    note "retry=$id"
+    id=$((id + 100))
+  done
+  fail "no goal was still moving $4 s after it started executing, in three tries"
+}
+
+# Goal $1 to $2 that must end done; sent again (id + 100, noted retry=ID) when the daemon stopped
+# it on a stale heartbeat or state (see during_motion), up to three times.
+goal_done() {
+  id=$1
+  for attempt in 1 2 3; do
+    start_goal "$id" "$2"
+    status=0
+    wait "$goal_pid" || status=$?
+    say "goal $id: $(tail -n 1 "$work/goal$id.out")"
+    if [ "$status" -eq 0 ]; then
+      note "done=$id"
+      return 0
+    fi
+    grep -Eqs "cancelled: motion stopped.*(heartbeat|stale)" "$work/goal$id.out" ||
+      fail "goal $id to $2: cyber-goal exited $status ($(cat "$work/goal$id.out"))"
+    note "retry=$id"
+    id=$((id + 100))
+  done
+  fail "goal $1 to $2 never finished in three tries"
+}
+
+# Waits up to 10 s for process $1 ($2 names it) to exit; sets $exit_status. Kills it after that.
+reap() {
+  tries=0
+  while kill -0 "$1" 2>/dev/null; do
+    tries=$((tries + 1))
+    if [ "$tries" -gt 200 ]; then
+      kill -KILL "$1" 2>/dev/null || true
+      fail "$2 did not exit within 10 s of its signal"
+    fi
+    sleep 0.05
+  done
+  exit_status=0
+  wait "$1" || exit_status=$?
 }
 
 # Stops the daemon and the simulator with SIGTERM (both must exit 0), then the recorders.
 stop_all() {
   kill -TERM "$daemon" "$plant"
-  daemon_status=0
-  wait "$daemon" || daemon_status=$?
-  plant_status=0
-  wait "$plant" || plant_status=$?
+  reap "$daemon" cyber-plannerd
+  [ "$exit_status" -eq 0 ] || fail "cyber-plannerd exited with $exit_status on SIGTERM"
+  reap "$plant" cyber-plant-sim
+  [ "$exit_status" -eq 0 ] || fail "cyber-plant-sim exited with $exit_status on SIGTERM"
   kill -INT "$logger"
-  wait "$logger" || true
+  reap "$logger" lcm-logger
   kill "$dump"
-  wait "$dump" || true
-  [ "$daemon_status" -eq 0 ] || fail "cyber-plannerd exited with $daemon_status"
-  [ "$plant_status" -eq 0 ] || fail "cyber-plant-sim exited with $plant_status"
+  reap "$dump" candump
+  pids=""
 }
 
 # cyber-can-decode of the capture, in the guest, into $work/bus.csv (its summary in bus.decode.err).

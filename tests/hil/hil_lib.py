@@ -3,6 +3,7 @@ simulator's CSV. An independent reading of docs/can-protocol.md and docs/lcm.md 
 only), so the checks do not reuse the C++ code under test."""
 
 import csv
+import os
 import re
 import struct
 
@@ -172,12 +173,12 @@ def plant_summary(path):
     m = re.search(r"stopped: elevator (\S+) m, arm (\S+) rad; setpoints elevator (\d+) arm (\d+), "
                   r"sequence gaps (\d+), malformed (\d+), other (\d+), bus errors (\d+), read failures (\d+); "
                   r"sent heartbeats (\d+), disables (\d+), write failures (\d+); "
-                  r"ARM_STATE published (\d+), failed (\d+); motions (\d+)", text)
+                  r"ARM_STATE published (\d+), failed (\d+); motions (\d+); frozen (\d+) times, (\S+) s", text)
     if not m:
         raise ValueError(f"{path}: no 'stopped:' summary line")
     keys = ("elevator_m", "arm_rad", "setpoints_elevator", "setpoints_arm", "sequence_gaps", "malformed",
             "other", "bus_errors", "read_failures", "heartbeats", "disables", "write_failures",
-            "states_published", "publish_failures", "motions")
+            "states_published", "publish_failures", "motions", "freezes", "frozen_s")
     return {k: float(v) for k, v in zip(keys, m.groups())}
 
 
@@ -209,3 +210,23 @@ class Checks:
     def status(self):
         print(f"{self.name}: {'all checks passed' if not self.failed else f'{self.failed} check(s) failed'}")
         return 1 if self.failed else 0
+
+
+def plant_events(path):
+    """(wall time s, text) of each line cyber-plant-sim logged on stderr."""
+    events = []
+    for line in open(path):
+        m = re.match(r"cyber-plant-sim: t=\S+ \[(\d+)\.(\d{6})\] (.*)$", line.rstrip("\n"))
+        if m:
+            events.append((int(m.group(1)) + int(m.group(2)) * 1e-6, m.group(3)))
+    return events
+
+
+def read_scenario(path):
+    """KEY=VALUE lines the guest script noted, as {key: [values]}."""
+    notes = {}
+    if os.path.exists(path):
+        for line in open(path):
+            key, _, value = line.strip().partition("=")
+            notes.setdefault(key, []).append(value)
+    return notes

@@ -2,8 +2,12 @@
 // interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
 // options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
 
+#include <fcntl.h>
 #include <sched.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -120,7 +124,25 @@ int main(int argc, char** argv) {
     }
   }
 
-  const int status = cyber::plant::runSimulator(setup, std::move(socket).value(), lcm, log);
+  // The control FIFO is opened read-write: it then never reports end-of-file when a writer such
+  // as `echo KIND > FIFO` closes it.
+  int control_fd = -1;
+  if (options.control_path) {
+    const char* path = options.control_path->c_str();
+    if (::mkfifo(path, 0600) != 0 && errno != EEXIST) {
+      std::perror(("cyber-plant-sim: mkfifo " + *options.control_path).c_str());
+      return 1;
+    }
+    control_fd = ::open(path, O_RDWR | O_NONBLOCK | O_CLOEXEC);
+    struct stat info {};
+    if (control_fd < 0 || ::fstat(control_fd, &info) != 0 || !S_ISFIFO(info.st_mode)) {
+      std::cerr << "cyber-plant-sim: --control " << *options.control_path << " is not a FIFO it can open\n";
+      return 1;
+    }
+  }
+
+  const int status = cyber::plant::runSimulator(setup, std::move(socket).value(), lcm, log, control_fd);
+  if (control_fd >= 0) ::close(control_fd);
   if (log != nullptr && std::fclose(log) != 0) {
     std::perror("cyber-plant-sim: writing the log");
     return 1;

@@ -7,10 +7,15 @@
 #include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <string_view>
+
+#include <unistd.h>
 
 #include "cyber/can/frc_id.hpp"
 #include "cyber/can/robot_frames.hpp"
 #include "cyber/can/setpoint_codec.hpp"
+#include "cyber/plant/control_lines.hpp"
+#include "cyber/plant/freeze_clock.hpp"
 #include "cyber/plant/state_log.hpp"
 #include "cyberplanner/arm_state_t.hpp"
 #include "event_fds.hpp"
@@ -20,18 +25,21 @@ namespace cyber::plant {
 namespace {
 
 constexpr double kHeartbeatPeriod_s = 0.020;
+constexpr double kFreezeTolerance_s = 0.020;
 
-enum Tag : std::uint64_t { kCanTag, kHeartbeatTag, kStateTag, kFaultTag, kSignalTag };
+enum Tag : std::uint64_t { kCanTag, kHeartbeatTag, kStateTag, kFaultTag, kSignalTag, kControlTag };
 
 class Runner {
  public:
-  Runner(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log)
+  Runner(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log, int control_fd)
       : setup_(setup),
         socket_(std::move(socket)),
         lcm_(lcm),
         log_(log),
+        control_fd_(control_fd),
         sim_(setup.simulation, setup.options.initial_q),
-        schedule_(withDuration(setup.options)) {
+        schedule_(withDuration(setup.options)),
+        clock_(1.0 / setup.options.state_rate_hz, kFreezeTolerance_s) {
     switches_.heartbeat = setup.options.heartbeat;
   }
 
@@ -47,6 +55,8 @@ class Runner {
   }
 
   double now() const { return monotonicSeconds() - start_mono_s_; }
+  // The simulation's time: now() without the time the process stood still (freeze_clock.hpp).
+  double simNow() const { return clock_.simulationTime(now()); }
   void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
 
   void onCanReadable();
@@ -54,6 +64,8 @@ class Runner {
   void onHeartbeatTimer();
   void onStateTimer();
   void onFaultTimer();
+  void onControlReadable();
+  void applyFaultNow(FaultKind kind, const char* source);
   void armFaultTimer();
   void writeFrame(const can::Frame& frame, const char* what);
   void writeLogRow(double t_s, bool published);
@@ -63,8 +75,11 @@ class Runner {
   can::CanSocket socket_;
   lcm::LCM& lcm_;
   std::FILE* log_;
+  int control_fd_;
   PlantSimulation sim_;
   FaultSchedule schedule_;
+  FreezeClock clock_;
+  ControlLines control_lines_;
   OutputSwitches switches_;
   RunCounters counters_;
   double start_mono_s_ = 0.0;
@@ -79,7 +94,10 @@ class Runner {
 };
 
 void Runner::say(const char* format, ...) const {
-  std::fprintf(stderr, "cyber-plant-sim: t=%.3f ", now());
+  // Simulator time, and the wall clock that candump and LCM timestamps use.
+  const std::int64_t wall_us = realtimeMicros();
+  std::fprintf(stderr, "cyber-plant-sim: t=%.3f [%lld.%06lld] ", now(), static_cast<long long>(wall_us / 1000000),
+               static_cast<long long>(wall_us % 1000000));
   va_list args;
   va_start(args, format);
   std::vfprintf(stderr, format, args);
@@ -101,7 +119,7 @@ int Runner::run() {
   start_mono_s_ = monotonicSeconds();
   const bool added = poll.add(socket_.fd(), kCanTag) && poll.add(heartbeat_timer_.fd(), kHeartbeatTag) &&
                      poll.add(state_timer_.fd(), kStateTag) && poll.add(fault_timer_.fd(), kFaultTag) &&
-                     poll.add(signals.get(), kSignalTag);
+                     poll.add(signals.get(), kSignalTag) && (control_fd_ < 0 || poll.add(control_fd_, kControlTag));
   // The first heartbeat and state go out at once, then on the period grid.
   const bool armed = heartbeat_timer_.arm(start_mono_s_, kHeartbeatPeriod_s) &&
                      state_timer_.arm(start_mono_s_, 1.0 / setup_.options.state_rate_hz);
@@ -122,6 +140,7 @@ int Runner::run() {
       std::perror("cyber-plant-sim: epoll_wait");
       return 1;
     }
+    clock_.onWake(now());
     for (int i = 0; i < n && !switches_.exit; ++i) {
       switch (tags[i]) {
         case kCanTag: onCanReadable(); break;
@@ -129,12 +148,13 @@ int Runner::run() {
         case kStateTag: onStateTimer(); break;
         case kFaultTag: onFaultTimer(); break;
         case kSignalTag: say("stopping on a signal"); switches_.exit = true; break;
+        case kControlTag: onControlReadable(); break;
         default: break;
       }
     }
   }
   const double end_s = now();
-  sim_.advanceTo(end_s);
+  sim_.advanceTo(clock_.simulationTime(end_s));
   writeLogRow(end_s, false);
   printSummary();
   return 0;
@@ -152,7 +172,7 @@ void Runner::onCanReadable() {
       link_trouble_ = true;
       return;
     }
-    onFrame(frame, now());
+    onFrame(frame, simNow());
   }
 }
 
@@ -183,13 +203,14 @@ void Runner::onFrame(const can::Frame& frame, double t_s) {
   if (last && static_cast<std::uint8_t>(*last + 1) != sp.sequence) ++counters_.sequence_gaps;
   last = sp.sequence;
   if (counters_.setpoints[joint]++ == 0) say("first setpoint for device %u", device);
+  // t_s is simulation time; the fault schedule runs on real time.
   sim_.receiveSetpoint(joint, JointCommand{sp.position, sp.velocity, sp.feedforward_volts}, t_s);
   // One velocity count (1e-3 unit/s) or more is motion; the stream is at rest again once the
   // latest frames of both joints carry zero velocity.
   joint_moving_[joint] = std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit;
   if (joint_moving_[joint] && !moving_) {
     moving_ = true;
-    schedule_.motionStarted(++motions_, t_s);
+    schedule_.motionStarted(++motions_, now());
     say("motion %d started (device %u)", motions_, device);
     armFaultTimer();
   } else if (moving_ && !joint_moving_[planner::kElevator] && !joint_moving_[planner::kArm]) {
@@ -222,7 +243,7 @@ void Runner::onHeartbeatTimer() {
 void Runner::onStateTimer() {
   if (state_timer_.consume() == 0) return;
   const double t_s = now();
-  sim_.advanceTo(t_s);
+  sim_.advanceTo(clock_.simulationTime(t_s));
   bool published = false;
   if (switches_.publish_state) {
     cyberplanner::arm_state_t msg{};
@@ -245,19 +266,35 @@ void Runner::onStateTimer() {
 
 void Runner::onFaultTimer() {
   fault_timer_.consume();
-  const double t_s = now();
-  for (const FaultKind kind : schedule_.takeDue(t_s)) {
-    say("fault %.*s", static_cast<int>(toString(kind).size()), toString(kind).data());
-    switches_ = applyFault(switches_, kind);
-    if (kind == FaultKind::kBroadcastDisable) {
-      writeFrame(can::makeBroadcastDisable(), "broadcast disable");
-      ++counters_.disables_sent;
-      // The controllers see the disable too: neutral until their next setpoint.
-      sim_.advanceTo(t_s);
-      sim_.disableOutputs();
+  for (const FaultKind kind : schedule_.takeDue(now())) applyFaultNow(kind, "scheduled");
+  armFaultTimer();
+}
+
+void Runner::applyFaultNow(FaultKind kind, const char* source) {
+  say("fault %.*s (%s)", static_cast<int>(toString(kind).size()), toString(kind).data(), source);
+  switches_ = applyFault(switches_, kind);
+  if (kind == FaultKind::kBroadcastDisable) {
+    writeFrame(can::makeBroadcastDisable(), "broadcast disable");
+    ++counters_.disables_sent;
+    // The controllers see the disable too: neutral until their next setpoint.
+    sim_.advanceTo(simNow());
+    sim_.disableOutputs();
+  }
+}
+
+void Runner::onControlReadable() {
+  char buffer[512];
+  for (int budget = 0; budget < 64; ++budget) {
+    const ssize_t got = ::read(control_fd_, buffer, sizeof buffer);
+    if (got <= 0) return;  // EAGAIN: drained (the FIFO is open read-write, so never EOF)
+    for (const ControlCommand& command : control_lines_.feed(std::string_view(buffer, static_cast<std::size_t>(got)))) {
+      if (command.kind) {
+        applyFaultNow(*command.kind, "control");
+      } else {
+        say("control: unknown command '%s' ignored", command.line.c_str());
+      }
     }
   }
-  armFaultTimer();
 }
 
 void Runner::armFaultTimer() {
@@ -291,17 +328,19 @@ void Runner::printSummary() const {
   const auto q = sim_.positions();
   say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
-      "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d",
+      "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
       q[planner::kElevator], q[planner::kArm], counters_.setpoints[0], counters_.setpoints[1],
       counters_.sequence_gaps, counters_.malformed, counters_.other_frames, counters_.bus_errors,
       counters_.read_failures, counters_.heartbeats_sent, counters_.disables_sent,
-      counters_.write_failures, counters_.states_published, counters_.publish_failures, motions_);
+      counters_.write_failures, counters_.states_published, counters_.publish_failures, motions_,
+      clock_.freezes(), clock_.frozenSeconds());
 }
 
 }  // namespace
 
-int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log) {
-  Runner runner(setup, std::move(socket), lcm, log);
+int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log,
+                 int control_fd) {
+  Runner runner(setup, std::move(socket), lcm, log, control_fd);
   return runner.run();
 }
 

@@ -39,7 +39,9 @@ struct RunCounters {
   long publish_failures = 0;
 };
 
-// Runs until SIGINT/SIGTERM, --duration or an exit fault. Returns the process exit status.
-int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log);
+// Runs until SIGINT/SIGTERM, --duration or an exit fault. control_fd: the --control FIFO opened
+// read-write and non-blocking, or -1. Returns the process exit status.
+int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log,
+                 int control_fd);
 
 }  // namespace cyber::plant

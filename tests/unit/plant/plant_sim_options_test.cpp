@@ -29,6 +29,7 @@ TEST(SimOptions, DefaultsWithoutArguments) {
   EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, kDefaultElevatorGains.kp_volts_per_unit);
   EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, kDefaultArmGains.kd_volts_per_unit_per_s);
   EXPECT_EQ(o.realtime_priority, 0);
+  EXPECT_FALSE(o.control_path);
 }
 
 TEST(SimOptions, EveryOption) {
@@ -37,7 +38,7 @@ TEST(SimOptions, EveryOption) {
                              "--no-heartbeat", "--fault", "heartbeat-stop@1.5", "--fault",
                              "disable@motion+0.2", "--log", "out.csv", "--duration", "7.5",
                              "--setpoint-timeout", "0.25", "--elevator-gains", "200,2",
-                             "--arm-gains", "40,0", "--realtime", "40"});
+                             "--arm-gains", "40,0", "--realtime", "40", "--control", "ctl.fifo"});
   ASSERT_TRUE(parsed.error.empty()) << parsed.error;
   const SimOptions& o = parsed.options;
   EXPECT_EQ(o.config_path, "robot.toml");
@@ -59,6 +60,7 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.arm_gains.kp_volts_per_unit, 40.0);
   EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, 0.0);
   EXPECT_EQ(o.realtime_priority, 40);
+  EXPECT_EQ(o.control_path, "ctl.fifo");
 }
 
 TEST(SimOptions, Help) {
@@ -87,6 +89,7 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--elevator-gains", "1"},
       {"--arm-gains", "-1,0"},
       {"--log"},
+      {"--control"},
       {"--realtime", "0"},
       {"--realtime", "100"},
       {"--realtime", "1.5"},

@@ -22,6 +22,8 @@ constexpr std::string_view kUsage =
     "                           with a non-zero velocity setpoint after rest); KIND is one of\n"
     "                           heartbeat-stop, heartbeat-resume, heartbeat-disabled,\n"
     "                           heartbeat-enabled, disable, silent, state-resume, exit\n"
+    "  --control FIFO           apply the fault KINDs written to FIFO, one per line, at once\n"
+    "                           (created if missing)\n"
     "  --log FILE               write the simulated state as CSV, one row per ARM_STATE period\n"
     "  --duration S             stop after S seconds (default: run until SIGINT/SIGTERM)\n"
     "  --setpoint-timeout S     controllers go neutral after S without a setpoint (default 0.1)\n"
@@ -68,14 +70,16 @@ SimArguments parseSimArguments(const std::vector<std::string_view>& args) {
       o.held_algae = true;
     } else if (arg == "--no-heartbeat") {
       o.heartbeat = false;
-    } else if (arg == "--config" || arg == "--can" || arg == "--lcm-url" || arg == "--log") {
+    } else if (arg == "--config" || arg == "--can" || arg == "--lcm-url" || arg == "--log" ||
+               arg == "--control") {
       const auto v = value();
       if (!v) return missing();
       if (v->empty()) return failure(std::string(arg) + " must not be empty");
-      auto& slot = arg == "--config" ? o.config_path
-                   : arg == "--can"  ? o.can_interface
-                   : arg == "--log"  ? o.log_path
-                                     : o.lcm_url;
+      auto& slot = arg == "--config"    ? o.config_path
+                   : arg == "--can"     ? o.can_interface
+                   : arg == "--log"     ? o.log_path
+                   : arg == "--control" ? o.control_path
+                                        : o.lcm_url;
       slot = std::string(*v);
     } else if (arg == "--initial") {
       const auto v = value();

@@ -23,6 +23,7 @@ struct SimOptions {
   bool heartbeat = true;                     // --no-heartbeat turns it off from the start
   std::vector<FaultEvent> faults;            // --fault KIND@WHEN, repeatable
   std::optional<std::string> log_path;       // --log FILE: CSV of the simulated state
+  std::optional<std::string> control_path;   // --control FIFO: fault kinds, one per line, applied at once
   double duration_s = 0.0;                   // --duration S; 0 runs until SIGINT/SIGTERM
   double setpoint_timeout_s = 0.1;           // --setpoint-timeout S
   PdGains elevator_gains = kDefaultElevatorGains;  // --elevator-gains KP,KD
