@@ -526,7 +526,7 @@ def check_faults(out):
         if t_stop is not None and next_beat is not None:
             quiet = [s for j in (0, 1) for s in frames_between(run, j, t_stop + 0.001, next_beat)]
             c.check(not quiet, f"no setpoints until the next enabled heartbeat {1e3 * (next_beat - t_d):.0f} ms later")
-            check_holds_measured(c, run, next_beat, "after the disable")
+            check_holds_measured(c, run, max(next_beat, t_stop + 0.0005), "after the disable")
         final = run.final_status(ids["disable"]) if ids["disable"] else None
         c.note(f"request {ids['disable']} ended with: {final['reason'] if final else '?'}")
 

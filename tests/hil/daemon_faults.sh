@@ -14,10 +14,10 @@ start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-during_motion heartbeat 1 1.97,5.17 0.3 "fault heartbeat-stop"
+during_motion heartbeat 1 1.97,5.17 0.3 "fault heartbeat-stop" 0.2,1.57
 sleep 0.5
 fault heartbeat-resume
-wait_goal heartbeat 5
+wait_goal "$id" 5
 sleep 0.8
 # Between two markers: heartbeat-id frames of the wrong length (3, counted as decode errors), a
 # heartbeat remote request and frames with other ids (dropped by the daemon's receive filter), a
@@ -34,13 +34,13 @@ cansend "$CAN_IFACE" 0A080401#0102
 cansend "$CAN_IFACE" 0A080803#00
 cansend "$CAN_IFACE" 7FF#454E44
 sleep 0.5
-during_motion disable 2 0.2,1.57 0.3 "fault disable"
-wait_goal disable 5
+during_motion disable 2 0.2,1.57 0.3 "fault disable" 1.97,5.17
+wait_goal "$id" 5
 sleep 0.5
-during_motion silent 3 1.22,5.69 0.3 "fault silent"
+during_motion silent 3 1.97,5.17 0.3 "fault silent" 0.2,1.57
 sleep 0.6
 fault state-resume
-wait_goal silent 5
+wait_goal "$id" 5
 sleep 1.0
 goal_done 4 0.2,1.57
 sleep 0.5

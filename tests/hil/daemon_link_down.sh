@@ -15,10 +15,10 @@ start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-during_motion link 1 1.97,5.17 0.3 link_down
+during_motion link 1 1.97,5.17 0.3 link_down 0.2,1.57
 sleep 2
 ip link set "$CAN_IFACE" up
-wait_goal link 5
+wait_goal "$id" 5
 sleep 1
 kill -0 "$daemon" || fail "cyber-plannerd is gone after the outage"
 goal_done 2 0.2,1.57

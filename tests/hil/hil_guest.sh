@@ -93,13 +93,15 @@ wait_goal() {
 }
 
 # Starts goal $2 to $3 and, once it has been executing for $4 s, runs the command $5 (a fault, or
-# a link change), noting "$1=ID". Under emulation the guest sometimes stands still long enough for
-# the daemon to stop on a stale heartbeat by itself; a goal that ended before the command is sent
-# again with the id + 100 (noted as retry=ID), up to three times.
+# a link change), noting "$1=ID"; the goal's id is left in $id. Under emulation the guest
+# sometimes stands still long enough for the daemon to stop on a stale heartbeat by itself; a goal
+# that ended before the command is sent again with the id + 100 (noted as retry=ID), up to three
+# times, alternating its target with $6 so that each try is a long move again.
 during_motion() {
   id=$2
+  target=$3
   for attempt in 1 2 3; do
-    start_goal "$id" "$3"
+    start_goal "$id" "$target"
     wait_for_line "$work/goal$id.out" "executing|$finals" 60
     sleep "$4"
     if ! grep -Eqs "$finals" "$work/goal$id.out"; then
@@ -111,6 +113,7 @@ during_motion() {
     say "goal $id ended before '$5': $(tail -n 1 "$work/goal$id.out")"
     note "retry=$id"
     id=$((id + 100))
+    if [ "$target" = "$3" ]; then target=$6; else target=$3; fi
   done
   fail "no goal was still moving $4 s after it started executing, in three tries"
 }

@@ -65,15 +65,23 @@ def write_setpoints(path):
         f.write("\n".join(lines) + "\n")
 
 
-def silent_window(c, what, times, window):
-    """True when nothing was seen inside the scheduled window (a few ms inside its edges) and
-    something was seen within 50 ms of both edges. Other gaps are reported: on the emulated guest
-    the whole VM sometimes stalls."""
+def stall_near(reference, t):
+    """The longest gap in the reference times (the simulator's CSV rows, every 10 ms whatever it
+    publishes) within 0.3 s of t: how long the emulated guest stood still around then."""
+    near = [x for x in reference if t - 0.3 <= x <= t + 0.3]
+    return max((b - a for a, b in zip(near, near[1:])), default=0.0)
+
+
+def silent_window(c, what, times, window, reference):
+    """True when nothing was seen inside the window (5 ms inside its edges) and something was seen
+    close to both edges: within 50 ms plus however long the guest stood still there. The longest
+    gap outside the window is reported: the emulated guest sometimes stalls."""
     start, end = window
-    inside = [t for t in times if start + 0.01 < t < end - 0.01]
-    before = [t for t in times if start - 0.05 <= t <= start + 0.01]
-    after = [t for t in times if end - 0.01 <= t <= end + 0.05]
-    gaps = sorted(((b - a, a) for a, b in zip(times, times[1:]) if not (a <= start + 0.01 and b >= end - 0.01)), reverse=True)
+    inside = [t for t in times if start + 0.005 < t < end - 0.005]
+    before = [t for t in times if start - 0.05 - stall_near(reference, start) <= t <= start + 0.005]
+    after = [t for t in times if end - 0.005 <= t <= end + 0.05 + stall_near(reference, end)]
+    gaps = sorted(((b - a, a) for a, b in zip(times, times[1:]) if not (a <= start + 0.005 and b >= end - 0.005)),
+                  reverse=True)
     if gaps:
         c.note(f"{what}: longest gap outside the window {gaps[0][0] * 1e3:.1f} ms at motion{gaps[0][1]:+.3f} s")
     return not inside and before and after
@@ -117,7 +125,26 @@ def check(out):
     moving = [f for f in elevator_sp if abs(hil.decode_setpoint(f)[1]) >= 0.001]
     if not c.check(moving, f"replayed setpoints captured ({len(elevator_sp)} elevator, {len(arm_sp)} arm)"):
         return c.status()
-    motion_t = moving[0].t
+    # Times relative to the motion start as the simulator saw it (its log has the wall clock):
+    # each fault must come at its scheduled offset from there, and the checks below look at the
+    # windows between the faults as actually applied.
+    events = hil.plant_events(os.path.join(out, "plant_sim.err"))
+    seen = [t for t, text in events if text.startswith("motion 1 started")]
+    if not c.check(seen, "the simulator logged the start of motion 1"):
+        return c.status()
+    motion_t = seen[0]
+    c.note(f"the simulator saw motion {1e3 * (motion_t - moving[0].t):.1f} ms after candump did")
+    reference = [r["utime"] * 1e-6 - motion_t for r in rows]
+    applied = {}
+    for kind, offset in (("heartbeat-stop", HEARTBEAT_GAP[0]), ("heartbeat-resume", HEARTBEAT_GAP[1]),
+                         ("heartbeat-disabled", HEARTBEAT_DISABLED[0]), ("heartbeat-enabled", HEARTBEAT_DISABLED[1]),
+                         ("silent", SILENT[0]), ("state-resume", SILENT[1]), ("disable", DISABLE_AT)):
+        hits = [t - motion_t for t, text in events if text.startswith(f"fault {kind} ")]
+        late = hits[0] - offset if hits else float("nan")
+        stall = stall_near(reference, offset)
+        c.check(len(hits) == 1 and -0.001 <= late <= 0.02 + stall,
+                f"fault {kind} applied once, {late * 1e3:.1f} ms after motion+{offset} s (limit 20 ms + guest stall {stall * 1e3:.0f} ms)")
+        applied[kind] = hits[0] if hits else offset
 
     # Heartbeat: every 20 ms, enabled + watchdog (0x48) except in the disabled window, and a gap.
     beats = [f for f in frames if f.extended and f.id == hil.HEARTBEAT_ID]
@@ -125,27 +152,35 @@ def check(out):
     periods = [b.t - a.t for a, b in zip(beats, beats[1:])]
     c.check(abs(statistics.median(periods) - 0.020) < 0.002,
             f"heartbeat period median {statistics.median(periods) * 1e3:.2f} ms (20 ms)")
-    c.check(silent_window(c, "heartbeat", [f.t - motion_t for f in beats], HEARTBEAT_GAP), "heartbeat stopped as scheduled")
+    reference = [r["utime"] * 1e-6 - motion_t for r in rows]
+    c.check(silent_window(c, "heartbeat", [f.t - motion_t for f in beats],
+                          (applied["heartbeat-stop"], applied["heartbeat-resume"]), reference),
+            "no heartbeat between heartbeat-stop and heartbeat-resume, heartbeats right before and after")
     off = [f.t - motion_t for f in beats if f.data[4] != 0x48]
-    c.check(all(f.data[4] in (0x48, 0x00) for f in beats) and off and
-            HEARTBEAT_DISABLED[0] - 0.03 < min(off) and max(off) < HEARTBEAT_DISABLED[1] + 0.03,
-            f"{len(off)} heartbeats without the enabled/watchdog bits, within {HEARTBEAT_DISABLED} s after motion")
+    on_inside = [f.t - motion_t for f in beats if f.data[4] == 0x48 and
+                 applied["heartbeat-disabled"] + 0.002 < f.t - motion_t < applied["heartbeat-enabled"] - 0.002]
+    c.check(all(f.data[4] in (0x48, 0x00) for f in beats) and off and not on_inside and
+            applied["heartbeat-disabled"] <= min(off) and max(off) <= applied["heartbeat-enabled"] + 0.002,
+            f"{len(off)} heartbeats without the enabled/watchdog bits, all between heartbeat-disabled and -enabled")
     c.check(summary["heartbeats"] == len(beats), f"simulator sent {summary['heartbeats']:.0f} heartbeats, capture has {len(beats)}")
 
     # Broadcast disable: exactly one, extended id 0, no data, when scheduled.
     disables = [f for f in frames if f.id == 0]
     c.check(len(disables) == 1 and disables[0].extended and disables[0].data == b"" and
-            abs(disables[0].t - motion_t - DISABLE_AT) < 0.05,
-            f"one broadcast disable 00000000# at motion+{DISABLE_AT} s")
+            abs(disables[0].t - motion_t - applied["disable"]) < 0.005,
+            f"one broadcast disable 00000000#, when the simulator applied the fault")
 
     # ARM_STATE: 100 Hz, silent for the scheduled window, pieces as given (none).
     state_t = [s["utime"] * 1e-6 for s in states]
     state_periods = [b - a for a, b in zip(state_t, state_t[1:])]
     c.check(states and abs(statistics.median(state_periods) - 0.010) < 0.001,
             f"{len(states)} ARM_STATE messages, period median {statistics.median(state_periods) * 1e3:.2f} ms (10 ms)")
-    c.check(silent_window(c, "ARM_STATE", [t - motion_t for t in state_t], SILENT), "ARM_STATE silent as scheduled")
+    silent = (applied["silent"], applied["state-resume"])
+    c.check(silent_window(c, "ARM_STATE", [t - motion_t for t in state_t], silent, reference),
+            "no ARM_STATE between silent and state-resume, messages right before and after")
     published = [r["utime"] * 1e-6 - motion_t for r in rows if r["state_published"]]
-    c.check(silent_window(c, "simulator CSV, published", published, SILENT), "the simulator logged the same silent window")
+    c.check(silent_window(c, "simulator CSV, published", published, silent, reference),
+            "the simulator's CSV shows the same silent window")
     c.check(not any(s["held_coral"] or s["held_algae"] for s in states), "ARM_STATE reports no held pieces")
     c.check(summary["states_published"] >= len(states) > 0, "every logged ARM_STATE was counted as published")
 
@@ -179,6 +214,8 @@ def check(out):
             f"simulator took {summary['setpoints_elevator']:.0f}/{summary['setpoints_arm']:.0f} setpoints")
     c.check(summary["sequence_gaps"] == 0, "no sequence gaps")
     c.check(summary["malformed"] == MALFORMED_SENT, f"malformed frames counted: {summary['malformed']:.0f} (sent {MALFORMED_SENT})")
+    c.check(summary["motions"] == 1, f"one motion seen ({summary['motions']:.0f})")
+    c.note(f"the simulator stood still {summary['freezes']:.0f} times, {summary['frozen_s'] * 1e3:.0f} ms in all")
     c.check(summary["other"] == 0 and summary["write_failures"] == 0 and summary["publish_failures"] == 0,
             "no other frames past the filter, no write or publish failures")
     return c.status()

@@ -38,7 +38,8 @@ args_for() {
         --out "$out" --run tests/hil/vcan_host_mode.sh)
       ;;
     plant_sim)
-      args=(--auto --bin "$plant_sim" --bin /usr/bin/lcm-logger --file "$build/hil/plant_sim.setpoints.log:setpoints.log"
+      args=(--auto --bin "$plant_sim" --bin /usr/bin/lcm-logger --bin /usr/bin/chrt
+        --file "$build/hil/plant_sim.setpoints.log:setpoints.log"
         --out "$out" --run tests/hil/plant_sim.sh)
       ;;
     daemon_motion)
