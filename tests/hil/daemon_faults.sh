@@ -14,7 +14,7 @@ start_plant --initial 0.2,1.57
 start_daemon
 pids="$daemon $plant $logger $dump"
 
-during_motion heartbeat 1 1.97,5.17 0.3 "fault heartbeat-stop" 0.2,1.57
+during_motion heartbeat 1 1.97,5.17 0.3 "fault_if_moving heartbeat-stop" 0.2,1.57
 sleep 0.5
 fault heartbeat-resume
 wait_goal "$id" 5
@@ -34,10 +34,10 @@ cansend "$CAN_IFACE" 0A080401#0102
 cansend "$CAN_IFACE" 0A080803#00
 cansend "$CAN_IFACE" 7FF#454E44
 sleep 0.5
-during_motion disable 2 0.2,1.57 0.3 "fault disable" 1.97,5.17
+during_motion disable 2 0.2,1.57 0.3 "fault_if_moving disable" 1.97,5.17
 wait_goal "$id" 5
 sleep 0.5
-during_motion silent 3 1.97,5.17 0.3 "fault silent" 0.2,1.57
+during_motion silent 3 1.97,5.17 0.3 "fault_if_moving silent" 0.2,1.57
 sleep 0.6
 fault state-resume
 wait_goal "$id" 5

@@ -7,7 +7,8 @@ set -eu
 script_name=daemon_link_down
 . "$FILES_DIR/hil_guest.sh"
 
-link_down() { ip link set "$CAN_IFACE" down; }
+# The link goes down only while the setpoints are moving.
+link_down() { moving_now && ip link set "$CAN_IFACE" down; }
 
 start_bus_capture
 start_lcm_log

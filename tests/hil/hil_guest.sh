@@ -66,6 +66,27 @@ start_daemon() {
 # Injects fault KIND now.
 fault() { echo "$1" >"$control"; }
 
+# Sends control line $1 and waits for the simulator's answer in its log: returns 0 when the new
+# line matches the extended regex $2, 1 when it matches $3.
+control_answer() {
+  before=$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)
+  echo "$1" >"$control"
+  tries=0
+  while [ "$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)" -le "$before" ]; do
+    tries=$((tries + 1))
+    [ "$tries" -le 250 ] || fail "no answer from the simulator to '$1'"
+    sleep 0.02
+  done
+  grep -E "$2|$3" "$work/plant_sim.err" | tail -n 1 | grep -Eq "$2"
+}
+
+# Injects fault KIND only if the setpoints are moving right now (the simulator decides on the
+# frames it sees); returns 1 when it did not.
+fault_if_moving() { control_answer "$1 if-moving" "fault $1 \(control\)" "$1 if-moving skipped"; }
+
+# Returns 0 when the simulator saw a moving setpoint within the last 20 ms.
+moving_now() { control_answer probe "probe: moving" "probe: not moving"; }
+
 # Waits up to $3 seconds for a line matching the extended regex $2 in file $1.
 wait_for_line() {
   tries=0
@@ -78,9 +99,12 @@ wait_for_line() {
 
 finals='request [0-9]+ (done|rejected|failed|cancelled)'
 
-# Starts goal $1 to $2 in the background (pid in $goal_pid).
+# Starts goal $1 to $2 in the background (pid in $goal_pid); more cyber-goal options may follow.
 start_goal() {
-  cyber-goal --to "$2" --id "$1" --timeout 25 >"$work/goal$1.out" 2>&1 &
+  id_=$1
+  to_=$2
+  shift 2
+  cyber-goal --to "$to_" --id "$id_" --timeout 25 "$@" >"$work/goal$id_.out" 2>&1 &
   goal_pid=$!
 }
 
@@ -92,11 +116,12 @@ wait_goal() {
   say "goal $1: $(tail -n 1 "$work/goal$1.out")"
 }
 
-# Starts goal $2 to $3 and, once it has been executing for $4 s, runs the command $5 (a fault, or
-# a link change), noting "$1=ID"; the goal's id is left in $id. Under emulation the guest
-# sometimes stands still long enough for the daemon to stop on a stale heartbeat by itself; a goal
-# that ended before the command is sent again with the id + 100 (noted as retry=ID), up to three
-# times, alternating its target with $6 so that each try is a long move again.
+# Starts goal $2 to $3 and, once it has been executing for $4 s, runs the command $5 (a fault
+# through fault_if_moving, or a link change after moving_now), noting "$1=ID"; the goal's id is
+# left in $id. Under emulation the guest sometimes stands still long enough for the daemon to stop
+# on a stale heartbeat by itself; when the goal was no longer moving the command is not carried
+# out and the goal is sent again with the id + 100 (noted as retry=ID), up to three times,
+# alternating its target with $6 so that each try is a long move again.
 during_motion() {
   id=$2
   target=$3
@@ -104,13 +129,12 @@ during_motion() {
     start_goal "$id" "$target"
     wait_for_line "$work/goal$id.out" "executing|$finals" 60
     sleep "$4"
-    if ! grep -Eqs "$finals" "$work/goal$id.out"; then
-      $5
+    if ! grep -Eqs "$finals" "$work/goal$id.out" && $5; then
       note "$1=$id"
       return 0
     fi
     wait "$goal_pid" || true
-    say "goal $id ended before '$5': $(tail -n 1 "$work/goal$id.out")"
+    say "goal $id was not moving any more for '$5': $(tail -n 1 "$work/goal$id.out")"
     note "retry=$id"
     id=$((id + 100))
     if [ "$target" = "$3" ]; then target=$6; else target=$3; fi

@@ -142,7 +142,7 @@ def check(out):
         hits = [t - motion_t for t, text in events if text.startswith(f"fault {kind} ")]
         late = hits[0] - offset if hits else float("nan")
         stall = stall_near(reference, offset)
-        c.check(len(hits) == 1 and -0.001 <= late <= 0.02 + stall,
+        c.check(len(hits) == 1 and -0.002 <= late <= 0.02 + stall,
                 f"fault {kind} applied once, {late * 1e3:.1f} ms after motion+{offset} s (limit 20 ms + guest stall {stall * 1e3:.0f} ms)")
         applied[kind] = hits[0] if hits else offset
 

@@ -58,9 +58,14 @@ class Runner {
   // The simulation's time: now() without the time the process stood still (freeze_clock.hpp).
   double simNow() const { return clock_.simulationTime(now()); }
   void say(const char* format, ...) const __attribute__((format(printf, 2, 3)));
+  // The same, for an event that happened at real time event_s (since start-up), not now.
+  void sayAt(double event_s, const char* format, ...) const __attribute__((format(printf, 3, 4)));
+  void vsay(double event_s, const char* format, va_list args) const;
+  // A setpoint with a non-zero velocity arrived within the last 20 ms.
+  bool movingNow() const { return last_moving_frame_s_ >= 0.0 && now() - last_moving_frame_s_ <= 0.020; }
 
   void onCanReadable();
-  void onFrame(const can::Frame& frame, double t_s);
+  void onFrame(const can::Frame& frame, double real_s);
   void onHeartbeatTimer();
   void onStateTimer();
   void onFaultTimer();
@@ -89,19 +94,32 @@ class Runner {
   std::array<std::optional<std::uint8_t>, kJointCount> last_sequence_{};
   std::array<bool, kJointCount> joint_moving_{};  // the joint's latest setpoint has a velocity
   bool moving_ = false;
+  double last_moving_frame_s_ = -1.0;  // real time of the latest setpoint with a velocity
   int motions_ = 0;  // motions started so far
   bool link_trouble_ = false;  // a read or write failed since the last success: report once
 };
 
 void Runner::say(const char* format, ...) const {
-  // Simulator time, and the wall clock that candump and LCM timestamps use.
-  const std::int64_t wall_us = realtimeMicros();
-  std::fprintf(stderr, "cyber-plant-sim: t=%.3f [%lld.%06lld] ", now(), static_cast<long long>(wall_us / 1000000),
-               static_cast<long long>(wall_us % 1000000));
   va_list args;
   va_start(args, format);
-  std::vfprintf(stderr, format, args);
+  vsay(now(), format, args);
   va_end(args);
+}
+
+void Runner::sayAt(double event_s, const char* format, ...) const {
+  va_list args;
+  va_start(args, format);
+  vsay(event_s, format, args);
+  va_end(args);
+}
+
+void Runner::vsay(double event_s, const char* format, va_list args) const {
+  // Simulator time of the event, and the wall clock (what candump and LCM timestamps use) at
+  // that moment.
+  const std::int64_t wall_us = realtimeMicros() - static_cast<std::int64_t>(std::llround((now() - event_s) * 1e6));
+  std::fprintf(stderr, "cyber-plant-sim: t=%.3f [%lld.%06lld] ", event_s, static_cast<long long>(wall_us / 1000000),
+               static_cast<long long>(wall_us % 1000000));
+  std::vfprintf(stderr, format, args);
   std::fputc('\n', stderr);
 }
 
@@ -172,11 +190,12 @@ void Runner::onCanReadable() {
       link_trouble_ = true;
       return;
     }
-    onFrame(frame, simNow());
+    onFrame(frame, now());
   }
 }
 
-void Runner::onFrame(const can::Frame& frame, double t_s) {
+void Runner::onFrame(const can::Frame& frame, double real_s) {
+  const double t_s = clock_.simulationTime(real_s);
   if (frame.error) {
     ++counters_.bus_errors;
     return;
@@ -208,10 +227,11 @@ void Runner::onFrame(const can::Frame& frame, double t_s) {
   // One velocity count (1e-3 unit/s) or more is motion; the stream is at rest again once the
   // latest frames of both joints carry zero velocity.
   joint_moving_[joint] = std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit;
+  if (joint_moving_[joint]) last_moving_frame_s_ = real_s;
   if (joint_moving_[joint] && !moving_) {
     moving_ = true;
-    schedule_.motionStarted(++motions_, now());
-    say("motion %d started (device %u)", motions_, device);
+    schedule_.motionStarted(++motions_, real_s);
+    sayAt(real_s, "motion %d started (device %u)", motions_, device);
     armFaultTimer();
   } else if (moving_ && !joint_moving_[planner::kElevator] && !joint_moving_[planner::kArm]) {
     moving_ = false;
@@ -288,10 +308,14 @@ void Runner::onControlReadable() {
     const ssize_t got = ::read(control_fd_, buffer, sizeof buffer);
     if (got <= 0) return;  // EAGAIN: drained (the FIFO is open read-write, so never EOF)
     for (const ControlCommand& command : control_lines_.feed(std::string_view(buffer, static_cast<std::size_t>(got)))) {
-      if (command.kind) {
-        applyFaultNow(*command.kind, "control");
-      } else {
+      if (command.probe) {
+        say("probe: %s", movingNow() ? "moving" : "not moving");
+      } else if (!command.kind) {
         say("control: unknown command '%s' ignored", command.line.c_str());
+      } else if (command.if_moving && !movingNow()) {
+        say("control: %s skipped: not moving", command.line.c_str());
+      } else {
+        applyFaultNow(*command.kind, "control");
       }
     }
   }

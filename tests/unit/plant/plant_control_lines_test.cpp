@@ -31,5 +31,24 @@ TEST(ControlLines, CutsOverlongLines) {
   EXPECT_EQ(commands[1].kind, FaultKind::kExit);
 }
 
+TEST(ControlLines, ConditionalFaultsAndProbe) {
+  auto command = parseControlLine("  heartbeat-stop if-moving ");
+  EXPECT_EQ(command.kind, FaultKind::kHeartbeatStop);
+  EXPECT_TRUE(command.if_moving);
+  EXPECT_FALSE(command.probe);
+  command = parseControlLine("disable");
+  EXPECT_EQ(command.kind, FaultKind::kBroadcastDisable);
+  EXPECT_FALSE(command.if_moving);
+  command = parseControlLine("probe");
+  EXPECT_TRUE(command.probe);
+  EXPECT_FALSE(command.kind);
+  for (const char* bad : {"if-moving", "bogus if-moving", "probe if-moving", "disable if-moving now", "PROBE"}) {
+    command = parseControlLine(bad);
+    EXPECT_FALSE(command.kind) << bad;
+    EXPECT_FALSE(command.probe) << bad;
+    EXPECT_FALSE(command.if_moving) << bad;
+  }
+}
+
 }  // namespace
 }  // namespace cyber::plant

@@ -13,6 +13,25 @@ std::string_view trim(std::string_view text) {
 
 }  // namespace
 
+ControlCommand parseControlLine(std::string_view text) {
+  const std::string_view line = trim(text);
+  ControlCommand command;
+  command.line = std::string(line);
+  if (line == "probe") {
+    command.probe = true;
+    return command;
+  }
+  constexpr std::string_view kIfMoving = " if-moving";
+  std::string_view name = line;
+  if (name.ends_with(kIfMoving)) {
+    name = trim(name.substr(0, name.size() - kIfMoving.size()));
+    command.if_moving = true;
+  }
+  command.kind = parseFaultKind(name);
+  if (!command.kind) command.if_moving = false;
+  return command;
+}
+
 std::vector<ControlCommand> ControlLines::feed(std::string_view bytes) {
   std::vector<ControlCommand> commands;
   for (char c : bytes) {
@@ -20,8 +39,7 @@ std::vector<ControlCommand> ControlLines::feed(std::string_view bytes) {
       if (partial_.size() < kMaxLine) partial_ += c;
       continue;
     }
-    const std::string_view line = trim(partial_);
-    if (!line.empty()) commands.push_back(ControlCommand{parseFaultKind(line), std::string(line)});
+    if (!trim(partial_).empty()) commands.push_back(parseControlLine(partial_));
     partial_.clear();
   }
   return commands;

@@ -1,6 +1,11 @@
 #pragma once
-// The --control FIFO of cyber-plant-sim: a test writes fault kinds, one per line (`echo disable >
-// FIFO`), and the simulator applies each at once. This splits the byte stream into commands.
+// The --control FIFO of cyber-plant-sim: a test writes commands, one per line, and the simulator
+// carries each out at once:
+//   KIND            inject fault KIND (`echo disable > FIFO`)
+//   KIND if-moving  only if a setpoint with a non-zero velocity arrived in the last 20 ms
+//                   (so a test hits a motion, not a daemon that just stopped on its own)
+//   probe           log whether the setpoints are moving in that sense
+// This splits the byte stream into commands.
 
 #include <optional>
 #include <string>
@@ -12,9 +17,14 @@
 namespace cyber::plant {
 
 struct ControlCommand {
-  std::optional<FaultKind> kind;  // empty: the line named no fault kind
-  std::string line;               // as received, without the newline
+  std::optional<FaultKind> kind;  // the fault to inject; empty for probe or a bad line
+  bool if_moving = false;         // KIND if-moving
+  bool probe = false;             // probe
+  std::string line;               // as received, trimmed; a bad line has neither kind nor probe
 };
+
+// One line's command (no newline).
+ControlCommand parseControlLine(std::string_view line);
 
 class ControlLines {
  public:
