@@ -26,6 +26,8 @@ fail() {
   exit 1
 }
 
+# Foreground only: a shell function run in the background is a subshell, and $! would be its pid
+# rather than the program's. Background processes use `ip netns exec` directly (it execs).
 in_ns() { ip netns exec "$ns" "$@"; }
 
 setup_namespace() {
@@ -38,19 +40,20 @@ setup_namespace() {
 # until the daemon holds (ARM_DAEMON_STATUS mode 1).
 start_daemon() {
   setup_namespace
-  in_ns "$daemon" --config "$config" --can none >"$tmp/daemon.log" 2>&1 &
+  ip netns exec "$ns" "$daemon" --config "$config" --can none >"$tmp/daemon.log" 2>&1 &
   daemon_pid=$!
   pids+=("$daemon_pid")
-  in_ns "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
+  ip netns exec "$ns" "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
   pids+=("$!")
-  for _ in $(seq 1 150); do
+  # The planner builds its grids at start-up: allow for a loaded machine.
+  for _ in $(seq 1 600); do
     kill -0 "$daemon_pid" 2>/dev/null || fail "the daemon exited during start-up"
     if in_ns "$peer" status --timeout 0.5 >"$tmp/status" 2>/dev/null && grep -qx 'mode=1' "$tmp/status"; then
       return 0
     fi
     sleep 0.1
   done
-  fail "the daemon did not start holding within 15 s"
+  fail "the daemon did not start holding within 60 s"
 }
 
 status_value() {  # status_value KEY -> value from a fresh ARM_DAEMON_STATUS
@@ -73,9 +76,11 @@ case "$case_name" in
   goal_done)
     start_daemon
     expect_goal 0 "request 11 done" --to 1.97,5.17 --id 11
-    # accepted -> executing -> done, in that order, with a trajectory.
-    grep -n "request 11" "$tmp/goal.out" | awk -F'request 11 ' '{print $2}' | cut -d' ' -f1 | tr -d ':(' | tr '\n' ' ' >"$tmp/seq"
-    grep -q "^accepted planning trajectory executing done" "$tmp/seq" || fail "status sequence: $(cat "$tmp/seq")"
+    # accepted -> planning -> executing -> done, in that order, and a trajectory.
+    grep "request 11 " "$tmp/goal.out" | grep -v trajectory | awk '{print $3}' | tr -d ':' | tr '\n' ' ' >"$tmp/seq"
+    [ "$(cat "$tmp/seq")" = "accepted planning executing done " ] || fail "status sequence: $(cat "$tmp/seq")"
+    grep -q "request 11 trajectory: [0-9]* samples" "$tmp/goal.out" || fail "no trajectory"
+
     [ "$(status_value plans_succeeded)" -ge 1 ] || fail "plans_succeeded not counted"
     ;;
 
@@ -92,7 +97,7 @@ case "$case_name" in
 
   flood)
     start_daemon
-    in_ns "$peer" watch --first-id 1000 --count 1000 --timeout 60 >"$tmp/watch.out" 2>&1 &
+    ip netns exec "$ns" "$peer" watch --first-id 1000 --count 1000 --timeout 60 >"$tmp/watch.out" 2>&1 &
     watch_pid=$!
     pids+=("$watch_pid")
     sleep 0.5
@@ -100,6 +105,7 @@ case "$case_name" in
     rc=0
     wait "$watch_pid" || rc=$?
     cat "$tmp/watch.out"
+    echo "daemon: goals_received=$(status_value goals_received) decode_errors=$(status_value decode_errors)"
     [ "$rc" -eq 0 ] || fail "not every flooded goal got exactly one final status"
     kill -0 "$daemon_pid" || fail "the daemon died in the flood"
     expect_goal 0 "request 2001 done" --to 0.20,1.57 --id 2001
@@ -112,14 +118,14 @@ case "$case_name" in
     sleep 0.5
     errors=$(status_value decode_errors)
     echo "decode_errors=$errors"
-    [ "$errors" -ge 150 ] || fail "decode_errors $errors: garbage not counted"
+    [ "$errors" -ge 190 ] || fail "decode_errors $errors: garbage not counted"
     kill -0 "$daemon_pid" || fail "the daemon died of garbage"
     expect_goal 0 "request 31 done" --to 1.22,5.69 --id 31
     ;;
 
   sigterm)
     start_daemon
-    in_ns "$goal" --to 1.97,5.17 --id 41 --timeout 30 >"$tmp/goal.out" 2>&1 &
+    ip netns exec "$ns" "$goal" --to 1.97,5.17 --id 41 --timeout 30 >"$tmp/goal.out" 2>&1 &
     goal_pid=$!
     pids+=("$goal_pid")
     for _ in $(seq 1 300); do

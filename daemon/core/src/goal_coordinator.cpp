@@ -83,12 +83,10 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
   open_[goal.request_id] = OpenGoal{};
   publish(goal.request_id, GoalStatus::kAccepted);
 
-  // Latest wins: a goal waiting for the worker and one being planned are both superseded.
+  // Latest wins among the goals waiting for the worker. The plan being computed is not thrown
+  // away: it runs when ready and the newest goal is spliced into it, so a steady stream of goals
+  // faster than the planner still moves the mechanism instead of starving it.
   if (pending_) finish(pending_->goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
-  if (in_flight_ && !in_flight_->superseded) {
-    in_flight_->superseded = true;
-    finish(in_flight_->pending.goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
-  }
   pending_ = Pending{valid.value(), 0, false};
   tryStart(now);
 }
@@ -157,10 +155,6 @@ void GoalCoordinator::onPlanResult(std::uint64_t job_id, planner::Result<Planned
   budget_.record(plan_time_s);
   const std::int64_t id = job.pending.goal.request_id;
 
-  if (job.superseded) {  // already answered "cancelled"
-    tryStart(now);
-    return;
-  }
   if (stopped_) {
     finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + stop_reason_);
     return;
@@ -225,7 +219,7 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
       const std::int64_t id = posted.pending.goal.request_id;
       for (std::int64_t dropped : posted.dropped) finish(dropped, GoalStatus::kCancelled, superseded(id));
       const Segment& added = mirror_.segment(mirror_.segmentCount() - 1);
-      sink_.publishTrajectory(id, *added.source, added.start_ns);
+      sink_.publishTrajectory(id, added.source, added.start_ns);
       tryStart(now);
       return;
     }
@@ -246,6 +240,10 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
     case StreamEventKind::kExecuting: {
       if (executing_ && *executing_ != event.request_id) {
         finish(*executing_, GoalStatus::kCancelled, superseded(event.request_id));
+      }
+      // Segments before this one that no tick sampled (spliced less than a period apart) are over.
+      for (int i = 0; i < mirror_.segmentCount() && mirror_.segment(i).request_id != event.request_id; ++i) {
+        finish(mirror_.segment(i).request_id, GoalStatus::kCancelled, superseded(event.request_id));
       }
       if (auto it = open_.find(event.request_id); it != open_.end() && !it->second.executing) {
         it->second.executing = true;

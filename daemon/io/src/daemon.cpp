@@ -4,13 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+
+#include <unistd.h>
 
 #include "cyber/can/frame_kind.hpp"
 #include "cyber/can/robot_frames.hpp"
 #include "cyber/can/status_codec.hpp"
 #include "cyber/daemon/io/lcm_messages.hpp"
 #include "cyber/daemon/io/logging.hpp"
+#include "cyber/notify/notifier.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 
 namespace cyber::daemon::io {
@@ -21,6 +25,7 @@ constexpr MonoNs kSecond = 1'000'000'000;
 constexpr double kShutdownHoldS = 0.05;     // hold setpoints streamed before exiting
 constexpr double kWorkerJoinS = 0.3;        // a plan still running after this is abandoned
 constexpr int kMaxMessagesPerWake = 64;
+constexpr MonoNs kTrajectoryInterval = 100'000'000;  // at most 10 ARM_TRAJECTORY messages per second
 
 GateSettings gateOf(const DaemonOptions& options) {
   GateSettings gate;
@@ -56,9 +61,35 @@ CoordinatorSettings coordinatorSettingsOf(const DaemonOptions& options) {
   return out;
 }
 
+// liblcm reports why it cannot open a URL on stderr itself, over several lines. Capture that text
+// so a start-up failure stays one line, with LCM's reason in it.
 std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
+  std::FILE* capture = std::tmpfile();
+  const int saved = capture != nullptr ? ::dup(STDERR_FILENO) : -1;
+  if (saved >= 0) {
+    std::fflush(stderr);
+    ::dup2(::fileno(capture), STDERR_FILENO);
+  }
   auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw StartupError("cannot open LCM at '" + url + "' (bad URL, or no multicast route: see docs/operations.md)");
+  std::string text;
+  if (saved >= 0) {
+    std::fflush(stderr);
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+    std::rewind(capture);
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, capture) != nullptr) {
+      std::string line(buffer);
+      while (!line.empty() && (line.back() == '\n' || line.back() == '\r' || line.back() == ' ')) line.pop_back();
+      if (line.empty()) continue;
+      text += (text.empty() ? "" : "; ") + line;
+    }
+  }
+  if (capture != nullptr) std::fclose(capture);
+  if (!lcm->good()) {
+    throw StartupError("cannot open LCM at '" + url + "'" + (text.empty() ? std::string() : ": " + text));
+  }
+  if (!text.empty()) spdlog::warn("LCM: {}", text);
   return lcm;
 }
 
@@ -116,12 +147,23 @@ int Daemon::run() {
   spdlog::info("cyber-plannerd: robot '{}', LCM '{}', CAN {}, {} Hz streaming, robot-enabled gate {}", robot_.name,
                s.lcm_url, options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'",
                s.stream_rate_hz, gate_.require_robot_enabled ? "on" : "off");
+  // Opens the service manager's socket here, not on the streaming thread (no-op without systemd).
+  notify::notifyStatus("starting");
+  const auto watchdog = notify::watchdogInterval();
+  if (watchdog.count() > 0) {
+    const MonoNs interval = static_cast<MonoNs>(watchdog.count()) * 1000;
+    channels_.watchdog_period_ns.store(std::min(interval / 2, MonoNs{500'000'000}));
+    channels_.loop_alive_limit_ns.store(interval / 2);
+  }
+  channels_.loop_alive_ns.store(monotonicNow());
   worker_.start();
   streamer_thread_.start();
   const MonoNs now = monotonicNow();
   status_timer_.startPeriodic(now + periodOf(s.status_rate_hz), periodOf(s.status_rate_hz));
   echo_timer_.startPeriodic(now + periodOf(s.setpoint_echo_rate_hz), periodOf(s.setpoint_echo_rate_hz));
 
+  // LCM is open and the CAN socket bound (both in the constructor): ready.
+  notify::notifyReadyWithStatus(serviceStatus());
   loop_.run();
 
   streamer_thread_.stop();
@@ -145,6 +187,7 @@ void Daemon::beginShutdown(const char* why) {
   if (shutting_down_) return;
   shutting_down_ = true;
   spdlog::info("{}: holding the commanded position and exiting", why);
+  notify::notifyStopping();
   channels_.stop_requested.store(true);
   coordinator_.onShutdown(monotonicNow());
   exit_timer_.startOnce(monotonicNow() + secondsToNs(kShutdownHoldS));
@@ -319,12 +362,22 @@ void Daemon::publishStatus(const StatusUpdate& update) {
   if (isFinal(update.status)) goal_received_ns_.erase(id);
 }
 
-void Daemon::publishTrajectory(std::int64_t request_id, const SetpointSource& trajectory, MonoNs start_ns) {
-  const MonoNs now = monotonicNow();
+void Daemon::publishTrajectory(std::int64_t request_id, const SharedSetpointSource& trajectory, MonoNs start_ns) {
+  pending_trajectory_ = PendingTrajectory{request_id, trajectory, start_ns};
+  flushTrajectory(monotonicNow(), false);
+}
+
+void Daemon::flushTrajectory(MonoNs now, bool force) {
+  if (!pending_trajectory_) return;
+  if (!force && last_trajectory_ns_ != kNever && now - last_trajectory_ns_ < kTrajectoryInterval) return;
+  last_trajectory_ns_ = now;
   const std::int64_t wall = wallMicros();
+  const PendingTrajectory pending = std::move(*pending_trajectory_);
+  pending_trajectory_.reset();
   bridge_->publish(bridge_->channels().trajectory,
-                   trajectoryMessage(request_id, trajectory, monoToWallMicros(start_ns, now, wall),
-                                     options_.settings.trajectory_step_s, wall));
+                   trajectoryMessage(pending.request_id, *pending.trajectory,
+                                     monoToWallMicros(pending.start_ns, now, wall), options_.settings.trajectory_step_s,
+                                     wall));
 }
 
 void Daemon::startPlanning(const PlanJob& job) { worker_.submit(job); }
@@ -355,6 +408,16 @@ void Daemon::note(NoteLevel level, const std::string& text) {
 
 // ---- periodic ----
 
+std::string Daemon::serviceStatus() const {
+  const StreamSnapshot snapshot = channels_.snapshot.load();
+  const CoordinatorCounters& c = coordinator_.counters();
+  return fmt::format("{}, request {}, {} goals, {} plans, {} failed or rejected, {} CAN errors, {} decode errors",
+                     toString(snapshot.mode), snapshot.request_id, c.goals_received, c.plans_succeeded,
+                     c.plans_failed + c.goals_rejected,
+                     channels_.write_failures.load() + counters_.bus_errors + counters_.can_read_errors,
+                     counters_.lcm_decode_errors + counters_.bad_states + counters_.can_decode_errors);
+}
+
 bool Daemon::robotEnabled(MonoNs now) const {
   if (!gate_.require_robot_enabled) return true;
   const GateReason reason = evaluateGate(inputs_.toInputs(), now, gate_).reason;
@@ -364,7 +427,13 @@ bool Daemon::robotEnabled(MonoNs now) const {
 void Daemon::onStatusTimer() {
   status_timer_.consume();
   const MonoNs now = monotonicNow();
+  channels_.loop_alive_ns.store(now, std::memory_order_relaxed);
   coordinator_.onTimer(now);
+  flushTrajectory(now, false);
+  if (last_service_status_ns_ == kNever || now - last_service_status_ns_ >= kSecond) {
+    last_service_status_ns_ = now;
+    notify::notifyStatus(serviceStatus());
+  }
   if (can_ && can_suspended_until_ != kNever && now >= can_suspended_until_) {
     can_suspended_until_ = kNever;
     loop_.add(can_->fd(), [this] { onCanReadable(); });

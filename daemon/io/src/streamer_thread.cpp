@@ -2,6 +2,9 @@
 
 #include <pthread.h>
 #include <sched.h>
+#include <sys/prctl.h>
+
+#include "cyber/notify/notifier.hpp"
 
 namespace cyber::daemon::io {
 
@@ -35,11 +38,14 @@ void StreamerThread::run() {
   if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) {
     channels_.realtime_priority.store(param.sched_priority);
   }
+  // Without this, a normal thread's timer wake-ups may be deferred by the default 50 us slack.
+  prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
 
   MonoNs scheduled = (monotonicNow() / period_ns_ + 1) * period_ns_;
   timer_.startPeriodic(scheduled, period_ns_);
   TickOutput out;
   std::int64_t ticks = 0;
+  MonoNs last_watchdog_ns = kNever;
   while (!quit_.load(std::memory_order_relaxed)) {
     const std::uint64_t expirations = timer_.wait();
     if (expirations == 0) continue;
@@ -94,6 +100,13 @@ void StreamerThread::run() {
       notice.time_ns = now;
       if (!channels_.notices.push(notice)) channels_.lost_messages.fetch_add(1, std::memory_order_relaxed);
       wake = true;
+    }
+    const MonoNs watchdog_period = channels_.watchdog_period_ns.load(std::memory_order_relaxed);
+    if (watchdog_period > 0 && (last_watchdog_ns == kNever || now - last_watchdog_ns >= watchdog_period) &&
+        now - channels_.loop_alive_ns.load(std::memory_order_relaxed) <
+            channels_.loop_alive_limit_ns.load(std::memory_order_relaxed)) {
+      notify::notifyWatchdog();  // one non-blocking datagram, no allocation
+      last_watchdog_ns = now;
     }
     if (observer_ != nullptr) observer_(observer_context_, now, out, report);
     if (wake) channels_.wake.signal();

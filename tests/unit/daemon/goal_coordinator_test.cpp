@@ -115,22 +115,38 @@ TEST(GoalCoordinator, GoalsWithoutStateOrWhileDisabledAreRejected) {
   EXPECT_NE(h.sink.last(4)->reason.find("stale"), std::string::npos) << h.sink.last(4)->reason;
 }
 
-TEST(GoalCoordinator, LatestGoalWinsWhileAPlanIsRunning) {
+TEST(GoalCoordinator, LatestGoalWinsAmongTheGoalsWaitingForThePlanner) {
   Harness h(false, 0.02);  // plans take 20 ms
   h.start(kStow);
   h.goal(1, kHigh);  // starts planning
   h.step();
-  h.goal(2, kLow);   // supersedes 1 (being planned)
-  h.goal(3, kHigh);  // supersedes 2 (waiting)
+  h.goal(2, kLow);   // waits
+  h.goal(3, kHigh);  // supersedes 2, which never gets planned
   ASSERT_TRUE(h.runUntilFinal(3));
-  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
-  EXPECT_EQ(h.sink.last(1)->reason, "superseded by request 2");
   EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kCancelled}));
   EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  // The plan in progress was not wasted: it ran until 3 was spliced into it.
+  EXPECT_EQ(h.sink.of(1), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(1)->reason, "superseded by request 3");
   EXPECT_EQ(h.sink.of(3), sequence({S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
-  // Only 1 and 3 were ever planned; 1's result was thrown away.
   ASSERT_EQ(h.sink.jobs_started.size(), 2u);
-  EXPECT_EQ(h.sink.trajectories.size(), 1u);
+  EXPECT_GT(h.sink.jobs_started[1].request.start_velocity.norm(), 0.0);  // 3 starts from 1's motion
+  EXPECT_EQ(h.sink.trajectories.size(), 2u);
+}
+
+TEST(GoalCoordinator, AStreamOfGoalsFasterThanThePlannerStillMovesTheMechanism) {
+  Harness h(false, 0.02);
+  h.start(kStow);
+  std::int64_t id = 0;
+  int moving_ticks = 0;
+  for (int period = 0; period < 200; ++period) {  // a new goal every period for a second
+    h.goal(id++, period % 2 == 0 ? kHigh : kLow);
+    h.step();
+    moving_ticks += h.lastRecord().mode == StreamMode::kMoving ? 1 : 0;
+  }
+  EXPECT_GT(moving_ticks, 150);
+  ASSERT_TRUE(h.runUntilFinal(id - 1, 20.0));
+  EXPECT_EQ(h.sink.last(id - 1)->status, S::kDone);
 }
 
 TEST(GoalCoordinator, AFloodOfGoalsGivesEveryGoalExactlyOneFinalStatusAndTheLastOneRuns) {
@@ -216,6 +232,30 @@ TEST(GoalCoordinator, AGoalDuringMotionIsSplicedWithContinuousPositionAndVelocit
   EXPECT_LE(velocity_step, usual_velocity + 1e-12);
   // And the new plan's first sample is exactly the old plan's state at the splice point.
   EXPECT_LT((request.start - h.coordinator().mirror().segment(0).source->at(0).position).norm(), 1.0);
+}
+
+TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenTheNextOneStarts) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  h.goal(2, kLow);
+  h.step();  // plan 2 is back and adopted: it starts 30 ms after its goal
+  h.step();
+  h.goal(3, kStow);
+  h.step();
+  h.step();  // plan 3 adopted, starting after plan 2
+  ASSERT_EQ(h.coordinator().mirror().segmentCount(), 3);
+  EXPECT_FALSE(isFinal(h.sink.last(2)->status));
+  // Had plan 3 started less than a period after plan 2, no tick would have streamed plan 2.
+  StreamEvent executing;
+  executing.kind = StreamEventKind::kExecuting;
+  executing.request_id = 3;
+  h.coordinator().onStreamEvent(executing, h.now);
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+  EXPECT_EQ(h.sink.last(2)->status, S::kCancelled);
+  EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  EXPECT_EQ(h.sink.last(3)->status, S::kExecuting);
 }
 
 TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {

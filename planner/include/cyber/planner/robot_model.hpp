@@ -93,15 +93,26 @@ struct SearchSettings {
   double potential_range = 0.15;   // weighted C-space distance over which the potential decays
 };
 
+// Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
+// depends on the spacing). Tuned on the public moves: with w_p = 0.1, w_s = 10 the obstacle term
+// dragged waypoints out of the reef's channels and bunched them (then the spline cut corners
+// and fell back to the unsmoothed path), and L-BFGS needed ~40 iterations; these values keep the
+// search's topology, halve the curvature integral and converge in ~4 iterations.
 struct SmoothingSettings {
-  double waypoint_spacing = 0.05;  // weighted C-space spacing of the optimised waypoints
-  double obstacle_weight = 1.0;    // w_o  (eq. 8)
-  double obstacle_decay_m = 0.05;  // d0   (eq. 8)
-  double prior_weight = 0.1;       // w_p
-  double length_weight = 1.0;      // w_l
-  double smoothness_weight = 10.0; // w_s
+  double waypoint_spacing = 0.05;    // weighted C-space spacing of the optimised waypoints
+  double obstacle_weight = 0.5;      // w_o  (eq. 8)
+  double obstacle_decay_m = 0.03;    // d0   (eq. 8)
+  double prior_weight = 20.0;        // w_p
+  double length_weight = 1.0;        // w_l
+  double smoothness_weight = 1000.0; // w_s
   int max_iterations = 200;
   double gradient_tolerance = 1e-6;
+  // L-BFGS also stops when a step lowers J by less than this fraction of max(1, |J|) (0: off).
+  double relative_cost_tolerance = 1e-9;
+  // With a start velocity v0 the path first runs straight along v0 for |v0|_Sigma * lead_in_time_s
+  // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
+  double lead_in_time_s = 0.1;
+  double max_lead_in = 0.3;
 };
 
 struct ToppSettings {
@@ -111,6 +122,11 @@ struct ToppSettings {
   int max_outer_iterations = 50;     // a cap, never the stopping rule
   int max_inner_iterations = 500;
   double limit_check_step_s = 0.001; // the continuous trajectory is checked at this step
+  double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
+  int max_limit_refinements = 8;     // re-solves with tightened limits after a failed check
+  double penalty_initial = 1e3;      // rho_0 of the augmented Lagrangian (cost scaled to order one)
+  double penalty_growth = 1.0;       // gamma: rho <- min((1 + gamma) rho, beta)
+  double penalty_max = 1e6;          // beta
 };
 
 struct PlannerSettings {

@@ -28,7 +28,7 @@ struct RecordingSink final : CoordinatorSink {
   std::vector<std::string> notes;
 
   void publishStatus(const StatusUpdate& update) override { statuses.push_back(update); }
-  void publishTrajectory(std::int64_t id, const SetpointSource&, MonoNs start) override {
+  void publishTrajectory(std::int64_t id, const SharedSetpointSource&, MonoNs start) override {
     trajectories.emplace_back(id, start);
   }
   void startPlanning(const PlanJob& j) override {

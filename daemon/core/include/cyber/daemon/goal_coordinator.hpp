@@ -1,5 +1,6 @@
 #pragma once
-// The life of every goal, on the event-loop thread: validation, latest-wins coalescing, choosing
+// The life of every goal, on the event-loop thread: validation, latest-wins coalescing of the goals
+// waiting for the planner (the plan in progress still runs; the newest goal is spliced into it), choosing
 // where a plan starts (at rest, or the commanded state a measured budget ahead of a running
 // motion), splicing finished plans into the streamer's program, and answering on ARM_PLAN_STATUS.
 // Single-threaded and clock-free: the caller passes "now", the plan results and the streamer's
@@ -37,7 +38,7 @@ class CoordinatorSink {
   virtual ~CoordinatorSink() = default;
   virtual void publishStatus(const StatusUpdate& update) = 0;
   // Once the streamer has adopted the plan: sample 0 is commanded at start_ns.
-  virtual void publishTrajectory(std::int64_t request_id, const SetpointSource& trajectory, MonoNs start_ns) = 0;
+  virtual void publishTrajectory(std::int64_t request_id, const SharedSetpointSource& trajectory, MonoNs start_ns) = 0;
   // Hand a job to the planning worker; its result comes back through onPlanResult.
   virtual void startPlanning(const PlanJob& job) = 0;
   // Hand a program to the streamer; it answers with an adopted or rejected event.
@@ -97,7 +98,6 @@ class GoalCoordinator {
     std::uint64_t base_epoch = 0;
     MonoNs branch_ns = 0;
     bool floating = false;
-    bool superseded = false;
   };
   struct Posted {
     std::uint64_t program_id = 0;

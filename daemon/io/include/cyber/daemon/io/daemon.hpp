@@ -75,7 +75,7 @@ class Daemon final : private CoordinatorSink {
  private:
   // CoordinatorSink
   void publishStatus(const StatusUpdate& update) override;
-  void publishTrajectory(std::int64_t request_id, const SetpointSource& trajectory, MonoNs start_ns) override;
+  void publishTrajectory(std::int64_t request_id, const SharedSetpointSource& trajectory, MonoNs start_ns) override;
   void startPlanning(const PlanJob& job) override;
   void postProgram(std::unique_ptr<Program> program) override;
   void note(NoteLevel level, const std::string& text) override;
@@ -91,8 +91,10 @@ class Daemon final : private CoordinatorSink {
   void onSignal();
   void beginShutdown(const char* why);
   void publishDaemonStatus(MonoNs now);
+  void flushTrajectory(MonoNs now, bool force);
   void storeInputs() { channels_.inputs.store(inputs_); }
   [[nodiscard]] bool robotEnabled(MonoNs now) const;
+  [[nodiscard]] std::string serviceStatus() const;  // one line for systemd's STATUS=
 
   planner::RobotModel robot_;
   DaemonOptions options_;
@@ -121,6 +123,17 @@ class Daemon final : private CoordinatorSink {
   LatencyHistogram goal_latency_;
   std::unordered_map<std::int64_t, MonoNs> goal_received_ns_;
   std::int64_t last_echo_tick_ = 0;
+  // ARM_TRAJECTORY is rate-limited (a flood of goals would otherwise put ~200 messages of up to
+  // 56 kB per second on the network): a plan adopted too soon after the last one published waits,
+  // and is replaced by a newer one, which supersedes it.
+  struct PendingTrajectory {
+    std::int64_t request_id = 0;
+    SharedSetpointSource trajectory;
+    MonoNs start_ns = 0;
+  };
+  std::optional<PendingTrajectory> pending_trajectory_;
+  MonoNs last_trajectory_ns_ = kNever;
+  MonoNs last_service_status_ns_ = kNever;
   bool last_goal_failed_ = false;
   MonoNs bus_error_ns_ = kNever;
   MonoNs can_suspended_until_ = kNever;

@@ -72,6 +72,13 @@ struct StreamerChannels {
   std::atomic<MonoNs> last_overrun_ns{kNever};
   LatencyHistogram jitter;
   std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused
+
+  // Service-manager watchdog: the streamer sends WATCHDOG=1 every watchdog_period_ns (0 = off),
+  // but only while the event loop has shown life within loop_alive_limit_ns, so a stuck loop
+  // is caught as well as a stuck streamer.
+  std::atomic<MonoNs> watchdog_period_ns{0};
+  std::atomic<MonoNs> loop_alive_ns{kNever};
+  std::atomic<MonoNs> loop_alive_limit_ns{0};
 };
 
 // Bench/test hook, called on the streamer thread after each tick's frames are written.

@@ -1,0 +1,36 @@
+#pragma once
+// The improved A* of algorithm.md section 2.2 on a CSpaceGrid: 8-connected, step cost
+//   |step|_Sigma * (1 + potential_weight * (p(a) + p(b)) / 2)
+// (the weighted length plus the weight times the potential integrated along the step), and the
+// heuristic h(n) = |node(n) - target|_Sigma. Several source and goal nodes may be given, each with
+// the cost of connecting it to the exact start or goal pose.
+
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cyber/planner/cspace_grid.hpp"
+
+namespace cyber::planner {
+
+struct SearchEndpoint {
+  int cell = 0;
+  double cost = 0.0;  // cost of the connection between the exact pose and this node
+};
+
+struct SearchPath {
+  std::vector<int> cells;  // from a source node to a goal node
+  double cost = 0.0;       // source connection + steps + goal connection
+  int source = -1;         // index into the sources given
+  int goal = -1;           // index into the goals given
+  int expanded = 0;        // nodes taken off the open list
+};
+
+// The cheapest path from any free source to any free goal, or nullopt when none is reachable.
+// With use_heuristic the search is A*; it is admissible (returns the optimal cost) when every goal
+// cost is >= |node(goal) - target|_Sigma. Without it the search is Dijkstra's.
+std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
+                                      std::span<const SearchEndpoint> goals, const JointVector& target,
+                                      bool use_heuristic = true);
+
+}  // namespace cyber::planner

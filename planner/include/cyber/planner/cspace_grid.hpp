@@ -1,0 +1,96 @@
+#pragma once
+// The configuration-space grid of algorithm.md section 2.1: nodes over the joint box, the nodes
+// where the robot is too close to an obstacle (blocked), and a potential that decays with the
+// weighted distance from blocked nodes (a dynamic-programming distance transform).
+
+#include <cstdint>
+#include <vector>
+
+#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::planner {
+
+// Nodes min, min + step, ..., min + (count - 1) step; the last node is the range's max.
+struct GridAxis {
+  double min = 0.0;
+  double step = 1.0;
+  int count = 1;
+
+  [[nodiscard]] double at(int i) const { return min + step * i; }
+  // The fewest nodes with spacing <= max_step that cover [range.min + inset, range.max - inset].
+  static GridAxis covering(const JointRange& range, double max_step, double inset = 0.0);
+};
+
+// Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
+// a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
+inline constexpr double kJointLimitMargin = 0.005;
+
+class CSpaceGrid {
+ public:
+  CSpaceGrid() = default;
+  // From a blocked mask (cell = i_elevator * arm.count + i_arm); every step between free nodes is
+  // free. Computes the potential.
+  CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t> blocked, const JointVector& metric,
+             const SearchSettings& search);
+
+  // The grid of one collision world. A node is blocked when d(node) < clearance. A step between
+  // two free nodes is free when it keeps d >= clearance along its whole length: certain without a
+  // check when both ends have d >= clearance + L(step)/2 (d is Lipschitz, see
+  // CollisionWorld::lipschitzBound, and every point of the step is within half of it of an end),
+  // otherwise decided by a continuous segment check. Only nodes near obstacles need that check.
+  static CSpaceGrid build(const CollisionWorld& world, const RobotModel& model);
+
+  [[nodiscard]] int cellCount() const { return elevator_.count * arm_.count; }
+  [[nodiscard]] int cell(int i_elevator, int i_arm) const { return i_elevator * arm_.count + i_arm; }
+  [[nodiscard]] int elevatorIndex(int cell) const { return cell / arm_.count; }
+  [[nodiscard]] int armIndex(int cell) const { return cell % arm_.count; }
+  [[nodiscard]] JointVector node(int cell) const {
+    return JointVector(elevator_.at(elevatorIndex(cell)), arm_.at(armIndex(cell)));
+  }
+  [[nodiscard]] bool blocked(int cell) const { return blocked_[static_cast<size_t>(cell)] != 0; }
+  // Whether the step from cell by (di, dj), each in {-1, 0, 1}, not both 0, stays clear. The
+  // target must be inside the grid; blocked ends make the step blocked.
+  [[nodiscard]] bool stepFree(int cell, int di, int dj) const {
+    // Steps are stored once, at the end they leave in the forward directions (+1, -1), (+1, 0),
+    // (+1, +1) and (0, +1); the others are looked up at their target.
+    const int bit = kStepBit[di + 1][dj + 1];
+    if (bit >= 0) return (steps_[static_cast<size_t>(cell)] >> bit) & 1U;
+    const int target = cell + di * arm_.count + dj;
+    return (steps_[static_cast<size_t>(target)] >> kStepBit[1 - di][1 - dj]) & 1U;
+  }
+  // In [0, 1]: 1 on blocked nodes, falling to 0 at potential_range (weighted) from them.
+  [[nodiscard]] double potential(int cell) const { return potential_[static_cast<size_t>(cell)]; }
+  [[nodiscard]] const GridAxis& elevatorAxis() const { return elevator_; }
+  [[nodiscard]] const GridAxis& armAxis() const { return arm_; }
+  [[nodiscard]] const JointVector& metric() const { return metric_; }
+  [[nodiscard]] double potentialWeight() const { return potential_weight_; }
+  [[nodiscard]] double clearance_m() const { return clearance_m_; }
+  // Steps that needed a continuous check when the grid was built.
+  [[nodiscard]] int checkedStepCount() const { return checked_steps_; }
+  [[nodiscard]] int blockedCount() const;
+  // Weighted length of a step of (di, dj) nodes.
+  [[nodiscard]] double stepLength(int di, int dj) const;
+  // The node with the largest indices <= q's (clamped to the grid).
+  [[nodiscard]] int lowerCorner(const JointVector& q) const;
+
+ private:
+  void computePotential(double range);
+  void allowAllStepsBetweenFreeNodes();
+
+  // kStepBit[di + 1][dj + 1]: bit of a forward step, -1 for the backward ones.
+  static constexpr int kStepBit[3][3] = {{-1, -1, -1}, {-1, -1, 3}, {0, 1, 2}};
+
+  GridAxis elevator_;
+  GridAxis arm_;
+  std::vector<std::uint8_t> blocked_;
+  std::vector<std::uint8_t> steps_;  // bit per forward step, see stepFree
+  std::vector<float> potential_;
+  JointVector metric_ = JointVector(1.0, 1.0);
+  double potential_weight_ = 0.0;
+  double clearance_m_ = 0.0;
+  int checked_steps_ = 0;
+};
+
+}  // namespace cyber::planner

@@ -1,0 +1,61 @@
+#pragma once
+// The path stage of algorithm.md section 2: validate the request, search the grid of the held
+// game-piece set (or take the straight segment when it is clear), optimise the waypoints (eq. 8),
+// interpolate them with a C^2 spline and check the spline's clearance continuously, with
+// fallbacks when the check fails.
+//
+// Constructed once per scene: builds the collision worlds and grids of all four game-piece sets.
+// plan() is const and keeps no state between calls, so one planner may serve several threads.
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/cspace_grid.hpp"
+#include "cyber/planner/cubic_spline_path.hpp"
+#include "cyber/planner/result.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::planner {
+
+struct PlannedPath {
+  std::shared_ptr<const CubicSplinePath> path;  // q(s), s in [0, length]; a GeometricPath
+  std::vector<JointVector> waypoints;           // the spline's knots: exact start ... exact goal
+  std::vector<JointVector> search_waypoints;    // the search (or direct) polyline before smoothing
+  double search_ms = 0.0;                       // lead-in, direct check, connections, A*
+  double smooth_ms = 0.0;                       // resampling, optimisation, spline, clearance check
+  double min_clearance_m = std::numeric_limits<double>::infinity();  // smallest d found on the path
+  bool direct = false;   // the straight segment to the goal was clear: no grid search
+  bool lead_in = false;  // a straight lead-in along the start velocity was added
+  int search_expanded = 0;
+  int optimizer_iterations = 0;
+  std::string method;    // which attempt produced the path (e.g. "optimised", "prior")
+};
+
+class PathPlanner {
+ public:
+  PathPlanner(const RobotModel& model, const Scene& scene);
+
+  // start_velocity (joint units/s) only shapes the start of the path: the spline leaves along it
+  // with unit Sigma-speed, after a straight lead-in. Typed errors, never an exception.
+  [[nodiscard]] Result<PlannedPath> plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
+                                         const JointVector& start_velocity = JointVector::Zero()) const;
+
+  [[nodiscard]] const RobotModel& model() const { return model_; }
+  [[nodiscard]] const Scene& scene() const { return scene_; }
+  [[nodiscard]] const CollisionWorld& world(HeldPieces pieces) const { return worlds_[static_cast<size_t>(pieces.index())]; }
+  [[nodiscard]] const CSpaceGrid& grid(HeldPieces pieces) const { return grids_[static_cast<size_t>(pieces.index())]; }
+  [[nodiscard]] double gridBuildMs(HeldPieces pieces) const { return grid_build_ms_[static_cast<size_t>(pieces.index())]; }
+
+ private:
+  RobotModel model_;
+  Scene scene_;
+  std::vector<CollisionWorld> worlds_;  // by HeldPieces::index()
+  std::vector<CSpaceGrid> grids_;
+  std::array<double, kPieceSetCount> grid_build_ms_{};
+};
+
+}  // namespace cyber::planner

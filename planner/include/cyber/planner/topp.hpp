@@ -1,0 +1,69 @@
+#pragma once
+// Time-optimal path parameterisation (algorithm.md section 3): the fastest traversal of a
+// geometric path under the voltage, current (and optional velocity/acceleration) limits of both
+// drives, starting with path speed^2 b_start and ending at rest.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "cyber/planner/geometric_path.hpp"
+#include "cyber/planner/result.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/topp_augmented_lagrangian.hpp"
+#include "cyber/planner/topp_problem.hpp"
+#include "cyber/planner/trajectory.hpp"
+
+namespace cyber::planner {
+
+// What the solver did; filled on success and on failure.
+struct ToppReport {
+  int grid_points = 0;
+  int outer_iterations = 0;   // summed over all solves (first solve and limit refinements)
+  int inner_iterations = 0;   // L-BFGS iterations, summed
+  int evaluations = 0;        // evaluations of L_rho, summed
+  int refinements = 0;        // re-solves after the continuous limit check tightened limits
+  double primal_residual = 0.0;  // of the last solve (see topp::AlReport)
+  double dual_residual = 0.0;
+  double penalty = 0.0;
+  double warm_start_duration_s = 0.0;  // of the forward-backward profile the solver started from
+  double controllable_start_b = 0.0;   // largest b_start the path could have stopped from
+  // Largest |value| / limit over the samples of the continuous check (1 = at the limit).
+  double peak_voltage_ratio = 0.0;
+  double peak_current_ratio = 0.0;
+  double peak_velocity_ratio = 0.0;      // 0 when no joint has a velocity limit
+  double peak_acceleration_ratio = 0.0;  // 0 when no joint has an acceleration limit
+};
+
+// Reusable solver: keeps its buffers between calls (a planning daemon holds one).
+class ToppSolver {
+ public:
+  explicit ToppSolver(ToppSettings settings = {}) : settings_(settings) {}
+
+  // b_start = |v0|_Sigma^2 when the path starts along the start velocity v0 with |q'(0)|_Sigma = 1
+  // (0 at rest); the trajectory always ends at rest. Errors: kInvalidInput (null/non-finite
+  // path, bad b_start or drive figures, limits that cannot hold on the path), kInfeasibleStart
+  // (b_start cannot be brought to rest within the limits), kSolverNotConverged (the augmented
+  // Lagrangian or the limit refinement hit its cap; the reason gives the residuals).
+  Result<Trajectory> solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                           const DriveParams& arm, double b_start = 0.0, ToppReport* report = nullptr);
+
+  [[nodiscard]] const ToppSettings& settings() const { return settings_; }
+
+ private:
+  ToppSettings settings_;
+  topp::Problem problem_;       // unit length, seconds
+  topp::Problem scaled_;        // unit length, time in units of the warm start's duration
+  topp::LimitMargins margins_;
+  std::vector<double> profile_;
+  std::vector<double> controllable_;
+  topp::AlState state_;
+  topp::AlWorkspace workspace_;
+};
+
+// One-shot convenience wrapper around ToppSolver.
+Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                                           const DriveParams& arm, const ToppSettings& settings,
+                                           double b_start = 0.0, ToppReport* report = nullptr);
+
+}  // namespace cyber::planner

@@ -1,0 +1,92 @@
+#pragma once
+// The discretised time-optimal parameterisation problem of algorithm.md section 3: the grid
+// s_0 < ... < s_{K-1}, the path samples on it, and every limit as a linear inequality in
+// (a_k, b_n, c_n) with c_n = sqrt(b_n).
+//
+// Each interval k carries one constant path acceleration a_k (b linear in s in between), so each
+// limit is imposed at BOTH ends of the interval with that interval's a_k: the trajectory between
+// grid points then only deviates from the limits by the curvature of the path and of sqrt(b).
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cyber/planner/geometric_path.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::planner::topp {
+
+enum class LimitKind : std::uint8_t { kVoltage = 0, kCurrent = 1, kAcceleration = 2, kVelocity = 3 };
+inline constexpr int kLimitKindCount = 4;
+
+// lo <= alpha * a[interval] + beta * b[node] + gamma * c[node] <= hi, divided by the size of its
+// limit so every row is of order one. lo may be -infinity (one-sided rows).
+struct LinearRow {
+  int interval = 0;
+  int node = 0;
+  double alpha = 0.0;
+  double beta = 0.0;
+  double gamma = 0.0;
+  double lo = 0.0;
+  double hi = 0.0;
+  std::int8_t joint = 0;
+  LimitKind kind = LimitKind::kVoltage;
+};
+
+// Per interval, joint and kind: how much the limit is lowered (volts for voltage, R*amps for
+// current, joint units for acceleration and velocity). Filled when the continuous check finds
+// the trajectory between grid points over a limit (topp.cpp).
+class LimitMargins {
+ public:
+  void reset(int intervals) { values_.assign(static_cast<size_t>(intervals) * kJointCount * kLimitKindCount, 0.0); }
+  [[nodiscard]] double get(int interval, int joint, LimitKind kind) const {
+    return values_.empty() ? 0.0 : values_[index(interval, joint, kind)];
+  }
+  double& at(int interval, int joint, LimitKind kind) { return values_[index(interval, joint, kind)]; }
+
+ private:
+  static size_t index(int interval, int joint, LimitKind kind) {
+    return (static_cast<size_t>(interval) * kJointCount + static_cast<size_t>(joint)) * kLimitKindCount +
+           static_cast<size_t>(kind);
+  }
+  std::vector<double> values_;
+};
+
+// Units: the grid runs over s/L in [0, 1] (L the path length), so b is (ds/dt)^2 / L^2 and the
+// path derivatives are scaled to match (q' L, q'' L^2); scaleTime() further measures time in
+// units of a time scale. The optimiser then sees numbers of order one for any path.
+struct Problem {
+  std::vector<double> s;          // K grid points, s[0] = 0, s[K-1] = 1
+  std::vector<PathPoint> points;  // path samples at s
+  std::vector<LinearRow> rows;    // sorted by interval; within an interval the left node first
+  std::vector<int> row_begin;     // rows of interval k: [row_begin[k], row_begin[k+1])
+  double b_start = 0.0;
+  double b_end = 0.0;
+  // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
+  // problem, with multipliers of the same size whatever the length of the path.
+  double cost_scale = 1.0;
+  // No speed c = sqrt(b) above this is searched for (a bound far above any motor's reach, in
+  // the problem's units).
+  double speed_bound = 1e3;
+  [[nodiscard]] int gridPoints() const { return static_cast<int>(s.size()); }
+  [[nodiscard]] int intervals() const { return gridPoints() - 1; }
+  [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
+};
+
+// Samples the path (length > 0) on a uniform grid of `grid_points` (>= 2) points, normalised to
+// unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
+void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem);
+
+// `out` = `in` with time measured in units of time_scale_s: b and c^2 scale by T^2, a by T^2.
+// Copies grid and rows (no path samples); the cost sum 2 ds d becomes the duration divided by T.
+void scaleTime(const Problem& in, double time_scale_s, Problem& out);
+
+// Builds the limit rows of algorithm.md section 3 for the sampled grid. The Coulomb term
+// kS*sgn(qdot) uses every sign qdot takes on the interval (both when q'_j changes sign in it, 0 at
+// a node where the profile is pinned at rest). Returns false with `error` set when a limit
+// cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
+bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
+               std::string* error);
+
+}  // namespace cyber::planner::topp

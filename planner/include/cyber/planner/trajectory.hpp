@@ -1,0 +1,64 @@
+#pragma once
+// A time-parameterised path: the geometric path q(s) and the time map t(s) of algorithm.md
+// section 3. Between grid points the path acceleration a = s'' is constant (b = s'^2 linear in s),
+// so positions, velocities and accelerations follow exactly from the grid values (b_k, a_k).
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "cyber/planner/geometric_path.hpp"
+#include "cyber/planner/result.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::planner {
+
+struct TrajectorySample {
+  double t = 0.0;       // s
+  double s = 0.0;       // path parameter
+  double sdot = 0.0;    // ds/dt
+  double sddot = 0.0;   // d2s/dt2 (constant on each grid interval)
+  JointVector q = JointVector::Zero();
+  JointVector qdot = JointVector::Zero();
+  JointVector qddot = JointVector::Zero();
+  JointVector volts = JointVector::Zero();  // feedforward voltage of each joint (DriveParams::volts)
+  JointVector amps = JointVector::Zero();   // current of each motor of each joint (DriveParams::amps)
+};
+
+class Trajectory {
+ public:
+  // Validates the profile: grid strictly increasing from 0 to path->length(), b >= 0 finite, no
+  // interval with b = 0 at both ends (it would take forever) unless the path has zero length.
+  static Result<Trajectory> create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                                   const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid);
+
+  [[nodiscard]] double duration_s() const { return t_grid_.empty() ? 0.0 : t_grid_.back(); }
+  // The state at time t (clamped to [0, duration]). Does not allocate.
+  [[nodiscard]] TrajectorySample sample(double t) const;
+  // t(s) and its inverse s(t); both clamp their argument.
+  [[nodiscard]] double timeAt(double s) const;
+  [[nodiscard]] double pathParameterAt(double t) const;
+
+  [[nodiscard]] const GeometricPath& path() const { return *path_; }
+  [[nodiscard]] const std::shared_ptr<const GeometricPath>& sharedPath() const { return path_; }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[static_cast<size_t>(joint)]; }
+  [[nodiscard]] const std::vector<double>& sGrid() const { return s_grid_; }
+  [[nodiscard]] const std::vector<double>& bGrid() const { return b_grid_; }
+  [[nodiscard]] const std::vector<double>& tGrid() const { return t_grid_; }
+
+ private:
+  Trajectory() = default;
+  // Interval index k with grid time t_k <= t (the last interval for t at the end).
+  [[nodiscard]] size_t intervalAtTime(double t) const;
+  [[nodiscard]] size_t intervalAtS(double s) const;
+
+  std::shared_ptr<const GeometricPath> path_;
+  std::array<DriveParams, kJointCount> drives_{};
+  std::vector<double> s_grid_;
+  std::vector<double> b_grid_;
+  std::vector<double> a_grid_;  // per interval: (b_{k+1} - b_k) / (2 ds_k)
+  std::vector<double> t_grid_;
+};
+
+}  // namespace cyber::planner

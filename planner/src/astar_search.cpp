@@ -1,0 +1,140 @@
+#include "cyber/planner/astar_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace cyber::planner {
+namespace {
+
+struct OpenEntry {
+  double f;
+  double g;
+  int node;
+};
+
+// Min-heap on f; among equal f the deeper node (larger g) first, which expands fewer nodes.
+struct LaterEntry {
+  bool operator()(const OpenEntry& a, const OpenEntry& b) const {
+    return a.f > b.f || (a.f == b.f && a.g < b.g);
+  }
+};
+
+}  // namespace
+
+std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
+                                      std::span<const SearchEndpoint> goals, const JointVector& target,
+                                      bool use_heuristic) {
+  const int n = grid.cellCount();
+  const int goal_node = n;  // virtual node behind every goal connection
+  const double inf = std::numeric_limits<double>::infinity();
+  const int nj = grid.armAxis().count;
+  const int ni = grid.elevatorAxis().count;
+  const JointVector metric = grid.metric();
+  const double weight = grid.potentialWeight();
+
+  // Goal nodes are few and close together: a bounding box of their indices makes the membership
+  // test on every expansion cheap.
+  int goal_i_lo = ni, goal_i_hi = -1, goal_j_lo = nj, goal_j_hi = -1;
+  for (const SearchEndpoint& goal : goals) {
+    if (goal.cell < 0 || goal.cell >= n || grid.blocked(goal.cell)) continue;
+    goal_i_lo = std::min(goal_i_lo, grid.elevatorIndex(goal.cell));
+    goal_i_hi = std::max(goal_i_hi, grid.elevatorIndex(goal.cell));
+    goal_j_lo = std::min(goal_j_lo, grid.armIndex(goal.cell));
+    goal_j_hi = std::max(goal_j_hi, grid.armIndex(goal.cell));
+  }
+  if (goal_i_hi < 0) return std::nullopt;
+
+  auto heuristic = [&](int node) {
+    if (!use_heuristic || node == goal_node) return 0.0;
+    const JointVector d = grid.node(node) - target;
+    return std::sqrt(metric[kElevator] * d[0] * d[0] + metric[kArm] * d[1] * d[1]);
+  };
+
+  std::vector<double> g(static_cast<size_t>(n) + 1, inf);
+  std::vector<int> parent(static_cast<size_t>(n) + 1, -1);
+  std::vector<std::uint8_t> closed(static_cast<size_t>(n) + 1, 0);
+  std::vector<OpenEntry> open;
+  open.reserve(1024);
+  auto push = [&](int node, double cost, int from) {
+    if (cost >= g[static_cast<size_t>(node)]) return;
+    g[static_cast<size_t>(node)] = cost;
+    parent[static_cast<size_t>(node)] = from;
+    open.push_back({cost + heuristic(node), cost, node});
+    std::push_heap(open.begin(), open.end(), LaterEntry{});
+  };
+  for (const SearchEndpoint& source : sources) {
+    if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
+    push(source.cell, source.cost, -1);
+  }
+
+  const double step_length[3][3] = {
+      {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
+      {grid.stepLength(0, 1), 0.0, grid.stepLength(0, 1)},
+      {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
+  };
+  int expanded = 0;
+  while (!open.empty()) {
+    std::pop_heap(open.begin(), open.end(), LaterEntry{});
+    const OpenEntry top = open.back();
+    open.pop_back();
+    if (closed[static_cast<size_t>(top.node)] != 0 || top.g > g[static_cast<size_t>(top.node)]) continue;
+    closed[static_cast<size_t>(top.node)] = 1;
+    ++expanded;
+    if (top.node == goal_node) break;
+
+    const int i = grid.elevatorIndex(top.node);
+    const int j = grid.armIndex(top.node);
+    if (i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
+      for (const SearchEndpoint& goal : goals) {
+        if (goal.cell == top.node) push(goal_node, top.g + goal.cost, top.node);
+      }
+    }
+    const double p_here = grid.potential(top.node);
+    for (int di = -1; di <= 1; ++di) {
+      const int a = i + di;
+      if (a < 0 || a >= ni) continue;
+      for (int dj = -1; dj <= 1; ++dj) {
+        const int b = j + dj;
+        if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
+        const int next = grid.cell(a, b);
+        if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(top.node, di, dj)) continue;
+        const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next)));
+        push(next, top.g + step, top.node);
+      }
+    }
+  }
+  if (closed[static_cast<size_t>(goal_node)] == 0) return std::nullopt;
+
+  SearchPath path;
+  path.cost = g[static_cast<size_t>(goal_node)];
+  path.expanded = expanded;
+  const int last = parent[static_cast<size_t>(goal_node)];
+  for (int node = last; node >= 0; node = parent[static_cast<size_t>(node)]) path.cells.push_back(node);
+  std::reverse(path.cells.begin(), path.cells.end());
+  // The endpoints actually used (the cheapest entry when a node is listed twice).
+  const double goal_link = path.cost - g[static_cast<size_t>(last)];
+  double best_goal_error = inf;
+  for (size_t k = 0; k < goals.size(); ++k) {
+    if (goals[k].cell != last) continue;
+    const double error = std::abs(goals[k].cost - goal_link);
+    if (error < best_goal_error) {
+      best_goal_error = error;
+      path.goal = static_cast<int>(k);
+    }
+  }
+  const int first = path.cells.front();
+  double best_source_error = inf;
+  for (size_t k = 0; k < sources.size(); ++k) {
+    if (sources[k].cell != first) continue;
+    const double error = std::abs(sources[k].cost - g[static_cast<size_t>(first)]);
+    if (error < best_source_error) {
+      best_source_error = error;
+      path.source = static_cast<int>(k);
+    }
+  }
+  return path;
+}
+
+}  // namespace cyber::planner

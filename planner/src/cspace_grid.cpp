@@ -1,0 +1,155 @@
+#include "cyber/planner/cspace_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "cyber/planner/path_clearance.hpp"
+
+namespace cyber::planner {
+
+GridAxis GridAxis::covering(const JointRange& range, double max_step, double inset) {
+  GridAxis axis;
+  const double span = range.max - range.min - 2.0 * inset;
+  if (!(span > 0.0) || !(max_step > 0.0)) {
+    axis.min = 0.5 * (range.min + range.max);
+    axis.count = 1;
+    axis.step = 1.0;
+    return axis;
+  }
+  axis.min = range.min + inset;
+  axis.count = static_cast<int>(std::ceil(span / max_step - 1e-9)) + 1;
+  axis.step = span / (axis.count - 1);
+  return axis;
+}
+
+CSpaceGrid::CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t> blocked, const JointVector& metric,
+                       const SearchSettings& search)
+    : elevator_(elevator),
+      arm_(arm),
+      blocked_(std::move(blocked)),
+      metric_(metric),
+      potential_weight_(search.potential_weight) {
+  blocked_.resize(static_cast<size_t>(cellCount()), 0);
+  allowAllStepsBetweenFreeNodes();
+  computePotential(search.potential_range);
+}
+
+void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
+  steps_.assign(static_cast<size_t>(cellCount()), 0);
+  for (int i = 0; i < elevator_.count; ++i) {
+    for (int j = 0; j < arm_.count; ++j) {
+      const int c = cell(i, j);
+      if (blocked(c)) continue;
+      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+        const int a = i + di, b = j + dj;
+        if (a >= elevator_.count || b < 0 || b >= arm_.count || blocked(cell(a, b))) continue;
+        steps_[static_cast<size_t>(c)] |= static_cast<std::uint8_t>(1U << kStepBit[di + 1][dj + 1]);
+      }
+    }
+  }
+}
+
+CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
+  const GridSettings& settings = model.planner.grid;
+  const GridAxis elevator = GridAxis::covering(model.elevator_range_m, settings.elevator_step_m, kJointLimitMargin);
+  const GridAxis arm = GridAxis::covering(model.arm_range_rad, settings.arm_step_rad, kJointLimitMargin);
+  const double clearance = model.clearance_m;
+  // Half a diagonal step can lose at most this much distance; farther nodes need no exact value.
+  const double widest_margin = 0.5 * world.lipschitzBound(JointVector(elevator.step, arm.step));
+  const auto count = static_cast<size_t>(elevator.count) * static_cast<size_t>(arm.count);
+  std::vector<double> distance(count);
+  std::vector<std::uint8_t> blocked(count, 0);
+  for (int i = 0; i < elevator.count; ++i) {
+    for (int j = 0; j < arm.count; ++j) {
+      const size_t c = static_cast<size_t>(i) * static_cast<size_t>(arm.count) + static_cast<size_t>(j);
+      distance[c] = world.distance(JointVector(elevator.at(i), arm.at(j)), clearance + widest_margin).value;
+      blocked[c] = distance[c] < clearance;
+    }
+  }
+  CSpaceGrid grid(elevator, arm, std::move(blocked), model.planner.metric, model.planner.search);
+  grid.clearance_m_ = clearance;
+  // Steps near obstacles: keep only those a continuous check clears.
+  for (int i = 0; i < elevator.count; ++i) {
+    for (int j = 0; j < arm.count; ++j) {
+      const int c = grid.cell(i, j);
+      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
+        const int bit = kStepBit[di + 1][dj + 1];
+        if (((grid.steps_[static_cast<size_t>(c)] >> bit) & 1U) == 0) continue;
+        const int target = grid.cell(i + di, j + dj);
+        const double margin = 0.5 * world.lipschitzBound(JointVector(std::abs(di) * elevator.step, std::abs(dj) * arm.step));
+        if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin) continue;
+        ++grid.checked_steps_;
+        if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
+          grid.steps_[static_cast<size_t>(c)] &= static_cast<std::uint8_t>(~(1U << bit));
+        }
+      }
+    }
+  }
+  return grid;
+}
+
+int CSpaceGrid::blockedCount() const {
+  return static_cast<int>(std::count(blocked_.begin(), blocked_.end(), std::uint8_t{1}));
+}
+
+double CSpaceGrid::stepLength(int di, int dj) const {
+  const double dt = di * elevator_.step;
+  const double dth = dj * arm_.step;
+  return std::sqrt(metric_[kElevator] * dt * dt + metric_[kArm] * dth * dth);
+}
+
+int CSpaceGrid::lowerCorner(const JointVector& q) const {
+  auto index = [](const GridAxis& axis, double x) {
+    const double f = std::floor((x - axis.min) / axis.step);
+    return static_cast<int>(std::clamp(f, 0.0, static_cast<double>(axis.count - 1)));
+  };
+  return cell(index(elevator_, q[kElevator]), index(arm_, q[kArm]));
+}
+
+void CSpaceGrid::computePotential(double range) {
+  // Chamfer distance transform with the weighted lengths of the 8 neighbour steps: a forward and
+  // a backward raster pass, each relaxing the 4 already-visited neighbours.
+  const int ni = elevator_.count;
+  const int nj = arm_.count;
+  const double straight_i = stepLength(1, 0);
+  const double straight_j = stepLength(0, 1);
+  const double diagonal = stepLength(1, 1);
+  std::vector<double> dist(static_cast<size_t>(cellCount()), std::numeric_limits<double>::infinity());
+  for (size_t c = 0; c < dist.size(); ++c) {
+    if (blocked_[c] != 0) dist[c] = 0.0;
+  }
+  auto relax = [&](int i, int j, int di, int dj, double w) {
+    const int a = i + di;
+    const int b = j + dj;
+    if (a < 0 || a >= ni || b < 0 || b >= nj) return;
+    double& here = dist[static_cast<size_t>(cell(i, j))];
+    here = std::min(here, dist[static_cast<size_t>(cell(a, b))] + w);
+  };
+  for (int i = 0; i < ni; ++i) {
+    for (int j = 0; j < nj; ++j) {
+      relax(i, j, -1, -1, diagonal);
+      relax(i, j, -1, 0, straight_i);
+      relax(i, j, -1, 1, diagonal);
+      relax(i, j, 0, -1, straight_j);
+    }
+  }
+  for (int i = ni - 1; i >= 0; --i) {
+    for (int j = nj - 1; j >= 0; --j) {
+      relax(i, j, 1, 1, diagonal);
+      relax(i, j, 1, 0, straight_i);
+      relax(i, j, 1, -1, diagonal);
+      relax(i, j, 0, 1, straight_j);
+    }
+  }
+  potential_.assign(dist.size(), 0.0F);
+  if (!(range > 0.0)) return;
+  for (size_t c = 0; c < dist.size(); ++c) {
+    // Quadratic fall-off: 1 at a blocked node, 0 with zero slope at the range.
+    const double x = 1.0 - dist[c] / range;
+    potential_[c] = x > 0.0 ? static_cast<float>(x * x) : 0.0F;
+  }
+}
+
+}  // namespace cyber::planner

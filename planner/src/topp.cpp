@@ -1,0 +1,267 @@
+#include "cyber/planner/topp.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "cyber/planner/topp_reachability.hpp"
+
+namespace cyber::planner {
+namespace {
+
+using topp::LimitKind;
+
+constexpr int kMinGridPoints = 3;          // rest to rest needs one node in between
+constexpr double kSpeedBound = 1e3;        // path units/s: far beyond any motor (reachability search)
+constexpr double kMaxMargin = 0.05;        // limits are lowered by at most this fraction
+constexpr double kRefineAbove = 0.02;      // overshoots beyond this fraction refine the grid instead
+constexpr int kMaxGridFactor = 8;          // the grid may grow to this multiple of grid_points
+
+bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
+
+bool validDrive(const DriveParams& d, const char* name, std::string* error) {
+  const MotorParams& m = d.motor;
+  const bool ok = positiveFinite(m.nominal_voltage_volts) && positiveFinite(m.stall_current_amps) &&
+                  positiveFinite(m.free_speed_radps) && std::isfinite(m.free_current_amps) &&
+                  positiveFinite(m.kvRadpsPerVolt()) && positiveFinite(d.gearing) && d.motor_count >= 1 &&
+                  std::isfinite(d.kS_volts) && d.kS_volts >= 0.0 && std::isfinite(d.kG_volts) &&
+                  std::isfinite(d.kV) && d.kV >= 0.0 && std::isfinite(d.kA) && d.kA >= 0.0 &&
+                  positiveFinite(d.voltage_limit_volts) && positiveFinite(d.current_limit_amps) &&
+                  (!d.velocity_limit || positiveFinite(*d.velocity_limit)) &&
+                  (!d.acceleration_limit || positiveFinite(*d.acceleration_limit));
+  if (!ok) *error = std::string("the ") + name + " drive figures are not finite and positive where required";
+  return ok;
+}
+
+std::string residualText(const topp::AlReport& r) {
+  char text[200];
+  std::snprintf(text, sizeof text, "primal residual %.3g, dual residual %.3g after %d outer / %d inner iterations",
+                r.primal_residual, r.dual_residual, r.outer_iterations, r.inner_iterations);
+  return text;
+}
+
+void accumulate(ToppReport& report, const topp::AlReport& r) {
+  report.outer_iterations += r.outer_iterations;
+  report.inner_iterations += r.inner_iterations;
+  report.evaluations += r.evaluations;
+  report.primal_residual = r.primal_residual;
+  report.dual_residual = r.dual_residual;
+  report.penalty = r.penalty;
+}
+
+double profileDuration(const topp::Problem& problem, const std::vector<double>& b) {
+  double t = 0.0;
+  for (int k = 0; k < problem.intervals(); ++k) {
+    t += 2.0 * problem.ds(k) / (std::sqrt(b[static_cast<size_t>(k)]) + std::sqrt(b[static_cast<size_t>(k) + 1]));
+  }
+  return t;
+}
+
+// Samples the trajectory every `step` seconds (and at its end) and raises the margins of every
+// interval where a limit is exceeded by more than half the tolerance. Returns true when no sample
+// exceeds a limit by more than the tolerance. Fills the peak ratios of the report.
+bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, topp::LimitMargins& margins,
+                 ToppReport& report) {
+  const double tolerance = settings.limit_check_tolerance;
+  const double duration = trajectory.duration_s();
+  const double step = settings.limit_check_step_s;
+  const std::vector<double>& t_grid = trajectory.tGrid();
+  const long samples = static_cast<long>(std::floor(duration / step)) + 1;
+  report.peak_voltage_ratio = report.peak_current_ratio = 0.0;
+  report.peak_velocity_ratio = report.peak_acceleration_ratio = 0.0;
+
+  bool within = true;
+  struct Excess {
+    int interval, joint;
+    LimitKind kind;
+    double amount;
+    double limit;
+  };
+  // Few intervals exceed at once; a small fixed buffer would do, but the count is unbounded.
+  std::vector<Excess> excesses;
+  size_t k = 0;
+  for (long i = 0; i <= samples; ++i) {
+    const double t = i == samples ? duration : std::min(duration, static_cast<double>(i) * step);
+    while (k + 2 < t_grid.size() && t_grid[k + 1] <= t) ++k;
+    const TrajectorySample sample = trajectory.sample(t);
+    for (int j = 0; j < kJointCount; ++j) {
+      const DriveParams& d = trajectory.drive(j);
+      auto judge = [&](double value, double limit, LimitKind kind, double& peak) {
+        const double ratio = std::abs(value) / limit;
+        peak = std::max(peak, ratio);
+        if (ratio > 1.0 + tolerance) within = false;
+        if (ratio > 1.0 + 0.5 * tolerance) {
+          excesses.push_back({static_cast<int>(k), j, kind, std::abs(value) - limit, limit});
+        }
+      };
+      judge(sample.volts[j], d.voltage_limit_volts, LimitKind::kVoltage, report.peak_voltage_ratio);
+      judge(sample.amps[j], d.current_limit_amps, LimitKind::kCurrent, report.peak_current_ratio);
+      if (d.velocity_limit) judge(sample.qdot[j], *d.velocity_limit, LimitKind::kVelocity, report.peak_velocity_ratio);
+      if (d.acceleration_limit) {
+        judge(sample.qddot[j], *d.acceleration_limit, LimitKind::kAcceleration, report.peak_acceleration_ratio);
+      }
+    }
+  }
+  if (!within) {
+    // The bulge between the grid points stays about the same when the limits at the ends move,
+    // so lowering the end limits by the excess (plus a little) brings the peak to the limit.
+    for (const Excess& e : excesses) {
+      double& margin = margins.at(e.interval, e.joint, e.kind);
+      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, kMaxMargin * e.limit);
+    }
+  }
+  return within;
+}
+
+}  // namespace
+
+Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                                     const DriveParams& arm, double b_start, ToppReport* report_out) {
+  ToppReport local_report;
+  ToppReport& report = report_out ? *report_out : local_report;
+  report = ToppReport{};
+  auto fail = [](PlanStatus status, std::string reason) { return Result<Trajectory>::failure(status, std::move(reason)); };
+
+  if (!path) return fail(PlanStatus::kInvalidInput, "no path to parameterise");
+  const double length = path->length();
+  if (!std::isfinite(length) || length < 0.0) return fail(PlanStatus::kInvalidInput, "path length is not finite");
+  if (!std::isfinite(b_start) || b_start < 0.0) {
+    return fail(PlanStatus::kInvalidInput, "start path speed^2 b_start must be finite and >= 0");
+  }
+  std::string error;
+  if (!validDrive(elevator, "elevator", &error) || !validDrive(arm, "arm", &error)) {
+    return fail(PlanStatus::kInvalidInput, error);
+  }
+  const std::array<DriveParams, kJointCount> drives{elevator, arm};
+
+  if (length == 0.0) {
+    if (b_start > 0.0) {
+      return fail(PlanStatus::kInfeasibleStart, "a moving start cannot be brought to rest on a zero-length path");
+    }
+    report.grid_points = 1;
+    return Trajectory::create(std::move(path), elevator, arm, {0.0}, {0.0});
+  }
+
+  // The problem is normalised to unit length, so short paths need no special grid.
+  const int grid_points = std::max(kMinGridPoints, settings_.grid_points);
+  // The problem is solved on the unit-length path (s / length): b scales by 1 / length^2.
+  const double length_squared = length * length;
+  problem_.b_start = b_start / length_squared;
+  problem_.b_end = 0.0;
+  problem_.cost_scale = 1.0;
+  problem_.speed_bound = kSpeedBound / length;
+  // Samples the path on `points` grid points and builds the rows without margins.
+  auto prepare = [&](int points) {
+    report.grid_points = points;
+    topp::sampleGrid(*path, points, problem_);
+    for (const PathPoint& p : problem_.points) {
+      if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
+        error = "the path returns non-finite values";
+        return false;
+      }
+    }
+    margins_.reset(problem_.intervals());
+    return topp::buildRows(drives, margins_, problem_, &error);
+  };
+  if (!prepare(grid_points)) return fail(PlanStatus::kInvalidInput, error);
+
+  topp::AlSettings al;
+  al.primal_tolerance = settings_.primal_tolerance;
+  al.dual_tolerance = settings_.dual_tolerance;
+  al.max_outer_iterations = settings_.max_outer_iterations;
+  al.max_inner_iterations = settings_.max_inner_iterations;
+  al.penalty_initial = settings_.penalty_initial;
+  al.penalty_growth = settings_.penalty_growth;
+  al.penalty_max = settings_.penalty_max;
+  const int max_points = std::max(grid_points, kMaxGridFactor * settings_.grid_points);
+  bool tightened = false;  // the rows carry margins from a failed continuous check
+
+  for (int refinement = 0;; ++refinement) {
+    // A tightened problem that turned out infeasible or hard is given up for a finer grid:
+    // between closer grid points the trajectory stays closer to the limits it meets at them.
+    auto refineGrid = [&]() {
+      const int points = std::min(max_points, 2 * problem_.gridPoints() - 1);
+      tightened = false;
+      return points > problem_.gridPoints() && prepare(points);
+    };
+    // Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
+    // multipliers that make it stationary. Repeated after every refinement: a feasible start is
+    // cheaper to polish than a stale one.
+    const topp::ReachabilityResult reach = topp::forwardBackward(problem_, profile_, controllable_);
+    if (reach.status != topp::ReachabilityStatus::kOk) {
+      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+        ++report.refinements;
+        continue;
+      }
+      if (reach.status == topp::ReachabilityStatus::kStartNotControllable) {
+        return fail(PlanStatus::kInfeasibleStart, reach.reason);
+      }
+      return fail(PlanStatus::kInvalidInput, reach.reason);
+    }
+    if (refinement == 0) report.controllable_start_b = reach.controllable_start_b * length_squared;
+    // Time in units of the warm start's duration: the optimiser sees a duration of about one.
+    const double warm_duration = profileDuration(problem_, profile_);
+    if (refinement == 0) report.warm_start_duration_s = warm_duration;
+    const double time_scale = warm_duration > 0.0 && std::isfinite(warm_duration) ? warm_duration : 1.0;
+    topp::scaleTime(problem_, time_scale, scaled_);
+    for (double& b : profile_) b *= time_scale * time_scale;
+    topp::initialGuess(scaled_, profile_, state_.x);
+    topp::estimateMultipliers(scaled_, state_.x, state_.multipliers);
+    state_.penalty = 0.0;
+
+    const topp::AlReport solved = topp::solveAugmentedLagrangian(scaled_, al, state_, workspace_);
+    accumulate(report, solved);
+    if (!solved.converged) {
+      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+        ++report.refinements;
+        continue;
+      }
+      return fail(PlanStatus::kSolverNotConverged, "time-optimal parameterisation did not converge: " + residualText(solved));
+    }
+    const topp::VariableLayout layout{problem_.gridPoints()};
+    // Back to path units: b = (ds/dt)^2 = b_scaled length^2 / T^2.
+    const double to_path_units = length_squared / (time_scale * time_scale);
+    std::vector<double> s_grid(problem_.s.size());
+    std::vector<double> b_grid(problem_.s.size());
+    for (int k = 0; k < problem_.gridPoints(); ++k) {
+      s_grid[static_cast<size_t>(k)] = problem_.s[static_cast<size_t>(k)] * length;
+      b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
+    }
+    s_grid.back() = length;
+    b_grid.front() = b_start;
+    b_grid.back() = 0.0;
+    Result<Trajectory> trajectory = Trajectory::create(path, elevator, arm, std::move(s_grid), std::move(b_grid));
+    if (!trajectory) {
+      return fail(PlanStatus::kInternalError, "the solved profile is not a valid trajectory: " + trajectory.error().reason);
+    }
+    if (checkLimits(trajectory.value(), settings_, margins_, report)) return trajectory;
+    if (refinement >= settings_.max_limit_refinements) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "limits still exceeded between grid points after %d refinements (peak voltage %.4f, current "
+                    "%.4f of the limit)",
+                    refinement, report.peak_voltage_ratio, report.peak_current_ratio);
+      return fail(PlanStatus::kSolverNotConverged, text);
+    }
+    ++report.refinements;
+    const double overshoot = std::max({report.peak_voltage_ratio, report.peak_current_ratio,
+                                       report.peak_velocity_ratio, report.peak_acceleration_ratio}) - 1.0;
+    if (overshoot > kRefineAbove && refineGrid()) continue;
+    // Small overshoots: lower the limits of the intervals concerned (checkLimits set the margins).
+    if (!topp::buildRows(drives, margins_, problem_, &error)) {
+      if (!refineGrid()) return fail(PlanStatus::kInvalidInput, error);
+      continue;
+    }
+    tightened = true;
+  }
+}
+
+Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                                           const DriveParams& arm, const ToppSettings& settings, double b_start,
+                                           ToppReport* report) {
+  ToppSolver solver(settings);
+  return solver.solve(std::move(path), elevator, arm, b_start, report);
+}
+
+}  // namespace cyber::planner

@@ -1,0 +1,142 @@
+#include "cyber/planner/topp_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace cyber::planner::topp {
+namespace {
+
+constexpr double kTinyCoefficient = 1e-14;
+
+int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); }
+
+std::string describe(LimitKind kind, int joint, double s) {
+  static constexpr const char* kKinds[] = {"voltage", "current", "acceleration", "velocity"};
+  char text[160];
+  std::snprintf(text, sizeof text, "the %s limit of the %s cannot hold at s = %.4f whatever the motion",
+                kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
+  return text;
+}
+
+// Appends lo <= alpha a + beta b + gamma c <= hi scaled by 1/scale; a row without coefficients
+// is a fixed condition that holds or makes the problem infeasible.
+bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
+  row.alpha /= scale;
+  row.beta /= scale;
+  row.gamma /= scale;
+  row.lo /= scale;
+  row.hi /= scale;
+  if (std::abs(row.alpha) < kTinyCoefficient && std::abs(row.beta) < kTinyCoefficient &&
+      std::abs(row.gamma) < kTinyCoefficient) {
+    if (row.lo > 0.0 || row.hi < 0.0) {
+      if (error) *error = describe(row.kind, row.joint, problem.s[static_cast<size_t>(row.node)]);
+      return false;
+    }
+    return true;
+  }
+  problem.rows.push_back(row);
+  return true;
+}
+
+}  // namespace
+
+void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem) {
+  const int k_points = std::max(2, grid_points);
+  const double length = path.length();
+  problem.s.resize(static_cast<size_t>(k_points));
+  problem.points.resize(static_cast<size_t>(k_points));
+  for (int k = 0; k < k_points; ++k) {
+    const double u = k + 1 == k_points ? 1.0 : static_cast<double>(k) / (k_points - 1);
+    problem.s[static_cast<size_t>(k)] = u;
+    PathPoint p = path.at(k + 1 == k_points ? length : length * u);
+    p.dq_ds *= length;
+    p.d2q_ds2 *= length * length;
+    problem.points[static_cast<size_t>(k)] = p;
+  }
+}
+
+void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
+  const double t2 = time_scale_s * time_scale_s;
+  out.s = in.s;
+  out.points.clear();
+  out.rows = in.rows;
+  out.row_begin = in.row_begin;
+  for (LinearRow& row : out.rows) {
+    // alpha a + beta b + gamma c with a = a'/T^2, b = b'/T^2, c = c'/T.
+    row.alpha /= t2;
+    row.beta /= t2;
+    row.gamma /= time_scale_s;
+  }
+  out.b_start = in.b_start * t2;
+  out.b_end = in.b_end * t2;
+  out.cost_scale = in.cost_scale;  // sum 2 ds d is now the duration in units of the time scale
+  out.speed_bound = in.speed_bound * time_scale_s;
+}
+
+bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
+               std::string* error) {
+  const int intervals = problem.intervals();
+  problem.rows.clear();
+  problem.row_begin.assign(static_cast<size_t>(intervals) + 1, 0);
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < intervals; ++k) {
+    problem.row_begin[static_cast<size_t>(k)] = static_cast<int>(problem.rows.size());
+    for (int end = 0; end < 2; ++end) {
+      const int node = k + end;
+      const PathPoint& p = problem.points[static_cast<size_t>(node)];
+      const bool pinned_at_rest =
+          (node == 0 && problem.b_start == 0.0) || (node == intervals && problem.b_end == 0.0);
+      for (int j = 0; j < kJointCount; ++j) {
+        const DriveParams& d = drives[static_cast<size_t>(j)];
+        const double qp = p.dq_ds[j];
+        const double qpp = p.d2q_ds2[j];
+        // Signs of qdot_j on the interval: a sign change of q'_j means it passes through zero.
+        int sign_lo = std::min(signOf(problem.points[static_cast<size_t>(k)].dq_ds[j]),
+                               signOf(problem.points[static_cast<size_t>(k) + 1].dq_ds[j]));
+        int sign_hi = std::max(signOf(problem.points[static_cast<size_t>(k)].dq_ds[j]),
+                               signOf(problem.points[static_cast<size_t>(k) + 1].dq_ds[j]));
+        if (pinned_at_rest) {
+          sign_lo = std::min(sign_lo, 0);
+          sign_hi = std::max(sign_hi, 0);
+        }
+        const double coulomb_lo = d.kS_volts * sign_lo;
+        const double coulomb_hi = d.kS_volts * sign_hi;
+        const double gravity = d.kG_volts * d.gravityFactor(p.q[j]);
+        const auto joint = static_cast<std::int8_t>(j);
+
+        // Voltage: V = kS sgn + kG g + kV q' c + kA (q'' b + q' a), |V| <= Vmax.
+        const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
+        LinearRow voltage{k, node, d.kA * qp, d.kA * qpp, d.kV * qp, -v_limit - gravity - coulomb_lo,
+                          v_limit - gravity - coulomb_hi, joint, LimitKind::kVoltage};
+        if (!addRow(problem, voltage, d.voltage_limit_volts, error)) return false;
+
+        // Current: I R = V - G q' c / Kv, |I| <= Imax.
+        const double r = d.motor.resistanceOhms();
+        const double back_emf = d.gearing / d.motor.kvRadpsPerVolt();
+        const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
+        LinearRow current{k, node, d.kA * qp, d.kA * qpp, (d.kV - back_emf) * qp,
+                          -r * i_limit - gravity - coulomb_lo, r * i_limit - gravity - coulomb_hi, joint,
+                          LimitKind::kCurrent};
+        if (!addRow(problem, current, r * d.current_limit_amps, error)) return false;
+
+        if (d.acceleration_limit) {
+          const double a_limit = *d.acceleration_limit - margins.get(k, j, LimitKind::kAcceleration);
+          LinearRow accel{k, node, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
+          if (!addRow(problem, accel, *d.acceleration_limit, error)) return false;
+        }
+        // The velocity limit involves b only: once per node.
+        if (d.velocity_limit && (end == 0 || k + 1 == intervals)) {
+          const double v_max = std::max(0.0, *d.velocity_limit - margins.get(k, j, LimitKind::kVelocity));
+          LinearRow velocity{k, node, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
+          if (!addRow(problem, velocity, *d.velocity_limit * *d.velocity_limit, error)) return false;
+        }
+      }
+    }
+  }
+  problem.row_begin[static_cast<size_t>(intervals)] = static_cast<int>(problem.rows.size());
+  return true;
+}
+
+}  // namespace cyber::planner::topp

@@ -1,0 +1,238 @@
+#include "cyber/planner/topp_reachability.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace cyber::planner::topp {
+namespace {
+
+constexpr double kRowTolerance = 1e-11;  // rows are normalised to order one
+constexpr int kMaxCandidates = 64;
+
+// A row of interval k as a quadratic q(t) = A t^2 + B t + C in the free end's speed t.
+struct Quadratic {
+  double a, b, c, lo, hi;
+  [[nodiscard]] double at(double t) const { return (a * t + b) * t + c; }
+};
+
+// Appends the real roots of a t^2 + b t + c in [0, t_max].
+void addRoots(double a, double b, double c, double t_max, std::array<double, kMaxCandidates>& out, int& count) {
+  auto push = [&](double t) {
+    if (t >= 0.0 && t <= t_max && count < kMaxCandidates) out[static_cast<size_t>(count++)] = t;
+  };
+  if (std::abs(a) < 1e-300) {
+    if (b != 0.0) push(-c / b);
+    return;
+  }
+  const double disc = b * b - 4.0 * a * c;
+  if (disc < 0.0) return;
+  const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+  push(q / a);
+  if (q != 0.0) push(c / q);
+}
+
+// Rows of interval k in the speed of one end with the other end's speed fixed. `forward`: the
+// free speed is c_{k+1} (given c_k = fixed), else c_k (given c_{k+1} = fixed).
+int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward, std::array<Quadratic, kMaxCandidates>& q) {
+  const double inv = 1.0 / (2.0 * problem.ds(k));
+  const int begin = problem.row_begin[static_cast<size_t>(k)];
+  const int end = problem.row_begin[static_cast<size_t>(k) + 1];
+  int count = 0;
+  for (int i = begin; i < end && count < kMaxCandidates; ++i) {
+    const LinearRow& r = problem.rows[static_cast<size_t>(i)];
+    const bool left = r.node == k;
+    const double f2 = fixed * fixed;
+    Quadratic out{0.0, 0.0, 0.0, r.lo, r.hi};
+    // value = alpha (c1^2 - c0^2) inv + beta c_node^2 + gamma c_node
+    if (forward) {
+      out.a = r.alpha * inv + (left ? 0.0 : r.beta);
+      out.b = left ? 0.0 : r.gamma;
+      out.c = -r.alpha * f2 * inv + (left ? r.beta * f2 + r.gamma * fixed : 0.0);
+    } else {
+      out.a = -r.alpha * inv + (left ? r.beta : 0.0);
+      out.b = left ? r.gamma : 0.0;
+      out.c = r.alpha * f2 * inv + (left ? 0.0 : r.beta * f2 + r.gamma * fixed);
+    }
+    q[static_cast<size_t>(count++)] = out;
+  }
+  return count;
+}
+
+// Largest t in [0, t_max] where every quadratic is within its bounds; -1 when none is. The
+// feasible set is a finite union of closed intervals whose ends are roots or 0 or t_max.
+double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max, bool any = false) {
+  auto feasible = [&](double t) {
+    for (int j = 0; j < rows; ++j) {
+      const Quadratic& r = q[static_cast<size_t>(j)];
+      const double v = r.at(t);
+      if (v > r.hi + kRowTolerance || v < r.lo - kRowTolerance) return false;
+    }
+    return true;
+  };
+  if (feasible(t_max)) return t_max;
+  std::array<double, kMaxCandidates> candidates{};
+  int count = 0;
+  for (int i = 0; i < rows; ++i) {
+    const Quadratic& r = q[static_cast<size_t>(i)];
+    const int before = count;
+    addRoots(r.a, r.b, r.c - r.hi, t_max, candidates, count);
+    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t_max, candidates, count);
+    if (any) {
+      for (int c = before; c < count; ++c) {
+        if (feasible(candidates[static_cast<size_t>(c)])) return candidates[static_cast<size_t>(c)];
+      }
+    }
+  }
+  if (any) return feasible(0.0) ? 0.0 : -1.0;
+  candidates[static_cast<size_t>(count++)] = 0.0;
+  std::sort(candidates.begin(), candidates.begin() + count, std::greater<>());
+  for (int i = 0; i < count; ++i) {
+    if (feasible(candidates[static_cast<size_t>(i)])) return candidates[static_cast<size_t>(i)];
+  }
+  return -1.0;
+}
+
+// Some c_{k+1} in [0, c_next_max] admits every row of interval k with c_k = c_now.
+bool reachable(const Problem& problem, int interval, double c_now, double c_next_max) {
+  std::array<Quadratic, kMaxCandidates> q{};
+  const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
+  return largestFeasible(q, rows, c_next_max, true) >= 0.0;
+}
+
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-8: C_k is a cap
+// for the forward pass, and the optimiser absorbs anything below that.
+template <class Pred>
+double bisect(Pred pred, double lo, double hi) {
+  while (hi - lo > 1e-8 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (pred(mid) ? lo : hi) = mid;
+  }
+  return lo;
+}
+
+// Largest c in [known, c_max] with pred(c) true, pred(known) true, searched near `guess`: the
+// controllable speed varies little from node to node, so a geometric search from the guess
+// brackets it in a few steps (assumes pred holds on an interval).
+template <class Pred>
+double largestTrueNear(Pred pred, double known, double guess, double c_max) {
+  guess = std::clamp(guess, known, c_max);
+  double step = 1e-4 * std::max(guess, 1e-3);
+  if (guess > known && !pred(guess)) {
+    double hi = guess;
+    for (double c = guess - step; c > known; step *= 4.0, c = guess - step) {
+      if (pred(c)) return bisect(pred, c, hi);
+      hi = c;
+    }
+    return bisect(pred, known, hi);
+  }
+  double lo = guess;
+  for (double c = lo + step; c < c_max; step *= 4.0, c = lo + step) {
+    if (!pred(c)) return bisect(pred, lo, c);
+    lo = c;
+  }
+  return pred(c_max) ? c_max : bisect(pred, lo, c_max);
+}
+
+}  // namespace
+
+AccelInterval admissibleAcceleration(const Problem& problem, int interval, int node, double b) {
+  const double c = std::sqrt(std::max(0.0, b));
+  AccelInterval out{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  const int begin = problem.row_begin[static_cast<size_t>(interval)];
+  const int end = problem.row_begin[static_cast<size_t>(interval) + 1];
+  for (int i = begin; i < end; ++i) {
+    const LinearRow& row = problem.rows[static_cast<size_t>(i)];
+    if (row.node != node) continue;
+    const double rest = row.beta * b + row.gamma * c;
+    if (row.alpha > 0.0) {
+      out.lo = std::max(out.lo, (row.lo - rest) / row.alpha);
+      out.hi = std::min(out.hi, (row.hi - rest) / row.alpha);
+    } else if (row.alpha < 0.0) {
+      out.lo = std::max(out.lo, (row.hi - rest) / row.alpha);
+      out.hi = std::min(out.hi, (row.lo - rest) / row.alpha);
+    } else if (rest < row.lo || rest > row.hi) {
+      return AccelInterval{1.0, -1.0};
+    }
+  }
+  return out;
+}
+
+double fastestNextSpeed(const Problem& problem, int interval, double c_now, double c_next_max) {
+  std::array<Quadratic, kMaxCandidates> q{};
+  const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
+  return largestFeasible(q, rows, c_next_max);
+}
+
+ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable) {
+  ReachabilityResult result;
+  const int k_points = problem.gridPoints();
+  b.assign(static_cast<size_t>(k_points), 0.0);
+  controllable.assign(static_cast<size_t>(k_points), 0.0);
+  const int last = k_points - 1;
+
+  controllable[static_cast<size_t>(last)] = problem.b_end;
+  double previous = 0.0;  // C of the node after: the starting guess for this one
+  for (int k = last - 1; k >= 0; --k) {
+    const double c_next = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
+    // Usually the largest c_k is the one that lands exactly on sqrt(C_{k+1}) (braking binds);
+    // where c_k is limited by its own limits a harder braking may allow more, so search above.
+    auto stoppable = [&](double c) { return reachable(problem, k, c, c_next); };
+    std::array<Quadratic, kMaxCandidates> q{};
+    const int rows = rowsAsQuadratics(problem, k, c_next, false, q);
+    double c = largestFeasible(q, rows, problem.speed_bound);
+    if (c < 0.0) {
+      if (!stoppable(0.0)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the path cannot be followed even slowly near s = %.4f",
+                      problem.s[static_cast<size_t>(k)]);
+        result.status = ReachabilityStatus::kNotControllable;
+        result.reason = text;
+        return result;
+      }
+      c = 0.0;
+    }
+    if (stoppable(c * (1.0 + 1e-9) + 1e-12)) {
+      // The left-end rows alone (a linear interval in a) bound c_k cheaply from above; all rows
+      // are checked there and searched below it only when the right-end rows cut it down.
+      const double next = c_next * c_next;
+      const double ds = problem.ds(k);
+      auto stoppable_left = [&](double cc) {
+        const AccelInterval a = admissibleAcceleration(problem, k, k, cc * cc);
+        return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
+      };
+      const double guess = std::max(c, previous);
+      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, problem.speed_bound) : c;
+      c = stoppable(c_left) ? c_left : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left);
+    }
+    previous = c;
+    controllable[static_cast<size_t>(k)] = c * c;
+  }
+  result.controllable_start_b = controllable[0];
+
+  if (problem.b_start > controllable[0] * (1.0 + 1e-9) + 1e-12) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "start speed^2 b = %.6g along the path cannot be brought to rest within the limits "
+                  "(largest controllable b = %.6g)",
+                  problem.b_start, controllable[0]);
+    result.status = ReachabilityStatus::kStartNotControllable;
+    result.reason = text;
+    return result;
+  }
+  b[0] = problem.b_start;
+  double c = std::sqrt(problem.b_start);
+  for (int k = 0; k < last; ++k) {
+    const double c_max = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
+    double c_next = fastestNextSpeed(problem, k, c, c_max);
+    if (c_next < 0.0) c_next = c_max;  // roundoff at the controllable boundary; the optimiser repairs it
+    b[static_cast<size_t>(k) + 1] = c_next * c_next;
+    c = c_next;
+  }
+  b[static_cast<size_t>(last)] = problem.b_end;
+  return result;
+}
+
+}  // namespace cyber::planner::topp

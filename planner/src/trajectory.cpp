@@ -1,0 +1,117 @@
+#include "cyber/planner/trajectory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace cyber::planner {
+
+Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
+                                      const DriveParams& arm, std::vector<double> s_grid,
+                                      std::vector<double> b_grid) {
+  if (!path) return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "trajectory without a path");
+  const double length = path->length();
+  if (!std::isfinite(length) || length < 0.0) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "path length is not a finite non-negative number");
+  }
+  if (s_grid.empty() || s_grid.size() != b_grid.size()) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid and profile sizes differ or are empty");
+  }
+  const size_t n = s_grid.size();
+  if (n == 1 && (length != 0.0 || s_grid[0] != 0.0 || b_grid[0] != 0.0)) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
+                                       "a single grid point is only valid for a zero-length path at rest");
+  }
+  if (n > 1 && (s_grid.front() != 0.0 || std::abs(s_grid.back() - length) > 1e-9 * std::max(1.0, length))) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid does not span [0, path length]");
+  }
+  for (size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(s_grid[k]) || !std::isfinite(b_grid[k]) || b_grid[k] < 0.0) {
+      return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
+                                         "profile value " + std::to_string(k) + " is negative or not finite");
+    }
+    if (k > 0 && !(s_grid[k] > s_grid[k - 1])) {
+      return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid is not strictly increasing");
+    }
+  }
+
+  Trajectory trajectory;
+  trajectory.path_ = std::move(path);
+  trajectory.drives_ = {elevator, arm};
+  trajectory.t_grid_.assign(n, 0.0);
+  trajectory.a_grid_.assign(n > 1 ? n - 1 : 0, 0.0);
+  for (size_t k = 0; k + 1 < n; ++k) {
+    const double ds = s_grid[k + 1] - s_grid[k];
+    const double speed_sum = std::sqrt(b_grid[k]) + std::sqrt(b_grid[k + 1]);
+    if (!(speed_sum > 0.0)) {
+      return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
+                                         "profile is at rest over interval " + std::to_string(k));
+    }
+    trajectory.a_grid_[k] = (b_grid[k + 1] - b_grid[k]) / (2.0 * ds);
+    trajectory.t_grid_[k + 1] = trajectory.t_grid_[k] + 2.0 * ds / speed_sum;  // exact for constant a
+  }
+  trajectory.s_grid_ = std::move(s_grid);
+  trajectory.b_grid_ = std::move(b_grid);
+  return trajectory;
+}
+
+size_t Trajectory::intervalAtTime(double t) const {
+  const auto it = std::upper_bound(t_grid_.begin(), t_grid_.end(), t);
+  const size_t k = it == t_grid_.begin() ? 0 : static_cast<size_t>(it - t_grid_.begin()) - 1;
+  return std::min(k, t_grid_.size() - 2);
+}
+
+size_t Trajectory::intervalAtS(double s) const {
+  const auto it = std::upper_bound(s_grid_.begin(), s_grid_.end(), s);
+  const size_t k = it == s_grid_.begin() ? 0 : static_cast<size_t>(it - s_grid_.begin()) - 1;
+  return std::min(k, s_grid_.size() - 2);
+}
+
+TrajectorySample Trajectory::sample(double t) const {
+  TrajectorySample out;
+  const double duration = duration_s();
+  const bool holding = !(t <= duration);  // after the end (or NaN): hold the goal at rest
+  out.t = holding ? duration : std::max(0.0, t);
+  if (s_grid_.size() >= 2 && !holding) {
+    const size_t k = intervalAtTime(out.t);
+    const double tau = std::max(0.0, out.t - t_grid_[k]);
+    const double v0 = std::sqrt(b_grid_[k]);
+    const double a = a_grid_[k];
+    out.sdot = std::max(0.0, v0 + a * tau);
+    out.s = std::clamp(s_grid_[k] + v0 * tau + 0.5 * a * tau * tau, s_grid_[k], s_grid_[k + 1]);
+    out.sddot = a;
+  } else {
+    out.s = s_grid_.empty() ? 0.0 : s_grid_.back();
+  }
+  const PathPoint p = path_->at(out.s);
+  out.q = p.q;
+  out.qdot = p.dq_ds * out.sdot;
+  out.qddot = p.d2q_ds2 * (out.sdot * out.sdot) + p.dq_ds * out.sddot;  // eq. 11: q'' b + q' a
+  for (int j = 0; j < kJointCount; ++j) {
+    const DriveParams& d = drives_[static_cast<size_t>(j)];
+    out.volts[j] = d.volts(out.q[j], out.qdot[j], out.qddot[j]);
+    out.amps[j] = d.amps(out.volts[j], out.qdot[j]);
+  }
+  return out;
+}
+
+double Trajectory::timeAt(double s) const {
+  if (s_grid_.size() < 2) return 0.0;
+  s = std::clamp(s, 0.0, s_grid_.back());
+  const size_t k = intervalAtS(s);
+  const double ds = s - s_grid_[k];
+  const double b = std::max(0.0, b_grid_[k] + 2.0 * a_grid_[k] * ds);
+  const double speed_sum = std::sqrt(b_grid_[k]) + std::sqrt(b);
+  return speed_sum > 0.0 ? t_grid_[k] + 2.0 * ds / speed_sum : t_grid_[k];
+}
+
+double Trajectory::pathParameterAt(double t) const {
+  if (s_grid_.size() < 2) return 0.0;
+  t = std::clamp(t, 0.0, duration_s());
+  const size_t k = intervalAtTime(t);
+  const double tau = t - t_grid_[k];
+  return std::clamp(s_grid_[k] + std::sqrt(b_grid_[k]) * tau + 0.5 * a_grid_[k] * tau * tau, s_grid_[k],
+                    s_grid_[k + 1]);
+}
+
+}  // namespace cyber::planner

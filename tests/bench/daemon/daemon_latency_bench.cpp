@@ -1,0 +1,248 @@
+// Daemon benchmarks (docs/performance.md), run by hand: build/tests/bench/daemon/daemon_latency_bench
+//  1. goal received -> first setpoint of its plan streamed, for every public move planned from rest
+//     (the arm is put at the move's start by letting the measured state go stale and resuming it
+//     there: the daemon then holds the measured position). Targets: median <= 10 ms, p99 <= 30 ms.
+//  2. streamer wake-up jitter at 200 Hz, idle and under a flood of 1000 goals/s. Target p99 <= 200 us.
+// The real daemon (event loop, worker and streamer threads, real planner) on memq://, no CAN socket.
+
+#include <pthread.h>
+#include <sched.h>
+#include <sys/prctl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <future>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <spdlog/spdlog.h>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/daemon/io/daemon.hpp"
+#include "cyber/daemon/motion_planner_service.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "public_moves.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+using cyber::daemon::io::Daemon;
+
+void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
+  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n",
+              label, static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
+              channels.jitter.percentileUs(0.99), channels.jitter.maxUs(),
+              static_cast<long long>(channels.overruns.load()),
+              channels.realtime_priority.load() > 0 ? "on" : "refused");
+}
+
+// Runs a daemon on its own thread and plays the robot: ARM_STATE follows the commanded position
+// (or a forced one), goals go in through LCM, final statuses are counted.
+class Rig {
+ public:
+  Rig(const cyber::planner::RobotModel& robot, const cyber::daemon::PlanningService& planning, double state_timeout_s) {
+    cyber::daemon::io::DaemonOptions options;
+    options.settings.lcm_url = "memq://";
+    options.settings.state_timeout_s = state_timeout_s;
+    options.settings.log_level = "warn";
+    options.simulate_can = true;
+    daemon_ = std::make_unique<Daemon>(robot, options, planning, nullptr);
+    runner_ = std::async(std::launch::async, [this] { return daemon_->run(); });
+    onLoop([this] { daemon_->lcm().subscribe("ARM_PLAN_STATUS", &Rig::onStatus, this); });
+    feeder_ = std::thread([this] { feed(); });
+  }
+  ~Rig() {
+    quit_ = true;
+    feeder_.join();
+    daemon_->requestStop();
+    runner_.get();
+  }
+
+  void onLoop(std::function<void()> task) {
+    auto done = std::make_shared<std::promise<void>>();
+    auto future = done->get_future();
+    daemon_->post([task = std::move(task), done] {
+      task();
+      done->set_value();
+    });
+    future.wait();
+  }
+
+  void goal(std::int64_t id, const cyber::planner::JointVector& q, const cyber::planner::HeldPieces& pieces) {
+    cyberplanner::arm_goal_t goal{};
+    goal.request_id = id;
+    goal.elevator_m = q[0];
+    goal.arm_rad = q[1];
+    goal.held_coral = pieces.coral;
+    goal.held_algae = pieces.algae;
+    onLoop([&] { daemon_->lcm().publish("ARM_GOAL", &goal); });
+  }
+
+  // Stops the state long enough for the gate to close, then resumes it at q: the daemon holds q.
+  void teleport(const cyber::planner::JointVector& q, double state_timeout_s) {
+    forced_.store(true);
+    paused_.store(true);
+    std::this_thread::sleep_for(std::chrono::duration<double>(state_timeout_s + 0.03));
+    forced_q_[0].store(q[0]);
+    forced_q_[1].store(q[1]);
+    paused_.store(false);
+    const auto end = std::chrono::steady_clock::now() + 5s;
+    while (std::chrono::steady_clock::now() < end) {
+      const auto snapshot = daemon_->channels().snapshot.load();
+      if (snapshot.mode == cyber::daemon::StreamMode::kHolding && std::abs(snapshot.elevator.position - q[0]) < 1e-4 &&
+          std::abs(snapshot.arm.position - q[1]) < 1e-4) {
+        break;
+      }
+      std::this_thread::sleep_for(1ms);
+    }
+    forced_.store(false);
+  }
+
+  bool waitFinal(std::int64_t id, double timeout_s) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (std::chrono::steady_clock::now() < end) {
+      if (final_id_.load() >= id) return true;
+      std::this_thread::sleep_for(1ms);
+    }
+    return false;
+  }
+  [[nodiscard]] int lastFinalStatus() const { return final_status_.load(); }
+  std::string lastReason() {
+    std::lock_guard<std::mutex> lock(reason_mutex_);
+    return last_reason_;
+  }
+  Daemon& daemon() { return *daemon_; }
+
+ private:
+  // "Answered": executing (its first setpoint is out) or a final status.
+  void onStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_plan_status_t* m) {
+    if (m->status >= cyberplanner::arm_plan_status_t::STATUS_EXECUTING && m->request_id > final_id_.load()) {
+      {
+        std::lock_guard<std::mutex> lock(reason_mutex_);
+        last_reason_ = std::to_string(m->status) + " " + m->reason;
+      }
+      final_status_.store(m->status);
+      final_id_.store(m->request_id);
+    }
+  }
+  void feed() {
+    while (!quit_) {
+      if (!paused_) {
+        const auto snapshot = daemon_->channels().snapshot.load();
+        cyberplanner::arm_state_t state{};
+        state.elevator_m = forced_ || snapshot.ticks == 0 ? forced_q_[0].load() : snapshot.elevator.position;
+        state.arm_rad = forced_ || snapshot.ticks == 0 ? forced_q_[1].load() : snapshot.arm.position;
+        onLoop([&] { daemon_->lcm().publish("ARM_STATE", &state); });
+      }
+      std::this_thread::sleep_for(10ms);
+    }
+  }
+
+  std::unique_ptr<Daemon> daemon_;
+  std::future<int> runner_;
+  std::thread feeder_;
+  std::atomic<bool> quit_{false}, paused_{false}, forced_{true};
+  std::atomic<double> forced_q_[2] = {0.20, 1.57};
+  std::atomic<std::int64_t> final_id_{-1};
+  std::atomic<int> final_status_{-1};
+  std::mutex reason_mutex_;
+  std::string last_reason_;
+};
+
+// The machine's own timer latency: a bare SCHED_FIFO thread on a 200 Hz timerfd, no daemon.
+void printTimerBaseline(double seconds) {
+  cyber::daemon::io::StreamerChannels channels;
+  std::thread thread([&] {
+    sched_param param{};
+    param.sched_priority = 50;
+    if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) channels.realtime_priority.store(50);
+    prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
+    constexpr cyber::daemon::MonoNs kPeriod = 5'000'000;
+    cyber::daemon::io::TimerFd timer(true);
+    cyber::daemon::MonoNs scheduled = (cyber::daemon::monotonicNow() / kPeriod + 1) * kPeriod;
+    timer.startPeriodic(scheduled, kPeriod);
+    const auto ticks = static_cast<int>(seconds * 200);
+    for (int i = 0; i < ticks; ++i) {
+      const std::uint64_t expirations = timer.wait();
+      const cyber::daemon::MonoNs now = cyber::daemon::monotonicNow();
+      scheduled += static_cast<cyber::daemon::MonoNs>(expirations - 1) * kPeriod;
+      channels.jitter.record(cyber::daemon::nsToSeconds(now - scheduled) * 1e6);
+      if (expirations > 1) channels.overruns.fetch_add(static_cast<std::int64_t>(expirations - 1));
+      scheduled += kPeriod;
+    }
+  });
+  thread.join();
+  printJitter("timer baseline, no daemon (3 s):", channels);
+}
+
+
+}  // namespace
+
+int main() {
+  spdlog::set_level(spdlog::level::err);
+  const cyber::config::Config config = cyber::config::loadEmbeddedDefaultConfig();
+  auto planning = cyber::daemon::makeMotionPlannerService(config.robot);
+  if (!planning) {
+    std::fprintf(stderr, "planner set-up failed: %s\n", planning.error().reason.c_str());
+    return 1;
+  }
+
+  // 1. Latency from rest over the public moves.
+  constexpr double kStateTimeout = 0.05;
+  {
+    Rig rig(config.robot, *planning.value(), kStateTimeout);
+    std::int64_t id = 1;
+    int done = 0, other = 0;
+    for (const auto& move : cyber::test::publicMoves()) {
+      rig.teleport(move.from, kStateTimeout);
+      rig.goal(id, move.to, move.pieces);
+      if (!rig.waitFinal(id, 30.0)) {
+        std::fprintf(stderr, "%s: no answer\n", move.label.c_str());
+        return 1;
+      }
+      if (rig.lastFinalStatus() == cyberplanner::arm_plan_status_t::STATUS_EXECUTING) {
+        ++done;
+      } else {
+        ++other;
+        std::printf("  %s: answered %s\n", move.label.c_str(), rig.lastReason().c_str());
+      }
+      ++id;
+    }
+    const auto& latency = rig.daemon().goalToSetpointLatency();
+    std::printf("goal -> first setpoint, %lld public moves from rest (%d executed, %d not): median %.2f ms  p99 %.2f ms  "
+                "max %.2f ms\n",
+                static_cast<long long>(latency.count()), done, other, latency.percentileUs(0.5) * 1e-3,
+                latency.percentileUs(0.99) * 1e-3, latency.maxUs() * 1e-3);
+    printJitter("stream jitter while moving:", rig.daemon().channels());
+  }
+
+  // 2. Jitter: the machine's own timer latency, the daemon idle, then under a goal flood
+  //    (1000 goals/s for 3 s among the public poses).
+  printTimerBaseline(3.0);
+  {
+    Rig rig(config.robot, *planning.value(), 0.25);
+    std::this_thread::sleep_for(3s);
+    printJitter("stream jitter idle (3 s):", rig.daemon().channels());
+  }
+  {
+    Rig rig(config.robot, *planning.value(), 0.25);
+    std::this_thread::sleep_for(300ms);
+    const auto& poses = cyber::test::publicPoses("none");
+    const auto start = std::chrono::steady_clock::now();
+    std::int64_t id = 1;
+    for (int k = 0; k < 3000; ++k, ++id) {
+      rig.goal(id, poses[static_cast<size_t>(k) % poses.size()].q, {});
+      std::this_thread::sleep_until(start + std::chrono::microseconds(1000 * (k + 1)));
+    }
+    rig.waitFinal(id - 1, 30.0);
+    printJitter("stream jitter, 1000 goals/s (3 s):", rig.daemon().channels());
+  }
+  return 0;
+}

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# system.operations_docs: the commands docs/operations.md shows in the sections this checks
+# (install, systemd, CAN, lcm-spy) are exactly the commands the system tests run, as each test
+# prints them with --print-doc-commands (build dir "build"): none shown that no test runs, none
+# run that the page does not show. Other sections of the page are not checked here.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+doc=docs/operations.md
+[[ -f $doc ]] || { echo "check_operations_docs: $doc missing" >&2; exit 1; }
+checked_sections=("## Install and package" "## Running under systemd" "## CAN interface with systemd-networkd"
+                  "## lcm-spy, recording and replay")
+
+declare -A run_by_test=()
+for script in package unit_files lcm_spy lcm_record_replay; do
+  printed=$("tests/system/$script.sh" --print-doc-commands) ||
+    { echo "check_operations_docs: $script.sh --print-doc-commands failed" >&2; exit 1; }
+  while IFS= read -r command; do
+    run_by_test[$command]=$script
+  done <<<"$printed"
+done
+
+# The lines of the ```sh blocks inside the checked sections.
+shown_commands() {
+  local in_section=0 in_block=0 line heading
+  while IFS= read -r line; do
+    if [[ $line == '## '* ]]; then
+      in_section=0
+      for heading in "${checked_sections[@]}"; do [[ $line == "$heading" ]] && in_section=1; done
+      continue
+    fi
+    if [[ $line == '```'* ]]; then
+      if ((in_block)); then in_block=0; elif [[ $line == '```sh' ]]; then in_block=1; fi
+      continue
+    fi
+    ((in_section && in_block)) && [[ -n $line ]] && echo "$line"
+  done <"$doc"
+  return 0
+}
+
+status=0
+for heading in "${checked_sections[@]}"; do
+  grep -qxF "$heading" "$doc" || { echo "check_operations_docs: no section '$heading'" >&2; status=1; }
+done
+declare -A shown=()
+while IFS= read -r command; do
+  shown[$command]=1
+  if [[ -z ${run_by_test[$command]:-} ]]; then
+    echo "check_operations_docs: $doc shows a command no system test runs: $command" >&2
+    status=1
+  fi
+done < <(shown_commands)
+for command in "${!run_by_test[@]}"; do
+  if [[ -z ${shown[$command]:-} ]]; then
+    echo "check_operations_docs: ${run_by_test[$command]}.sh runs a command $doc does not show: $command" >&2
+    status=1
+  fi
+done
+((status == 0)) && echo "check_operations_docs: all ${#shown[@]} commands in $doc are run by system tests"
+exit "$status"

@@ -1,0 +1,215 @@
+// A* against an independent Dijkstra on seeded random grids, and the grid's distance-transform
+// potential against a brute-force shortest distance to the blocked set.
+
+#include "cyber/planner/astar_search.hpp"
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cyber/planner/cspace_grid.hpp"
+
+namespace cyber::planner {
+namespace {
+
+CSpaceGrid randomGrid(std::mt19937& rng, int ni, int nj, double blocked_fraction, double weight) {
+  std::bernoulli_distribution is_blocked(blocked_fraction);
+  std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj));
+  for (auto& b : blocked) b = is_blocked(rng) ? 1 : 0;
+  SearchSettings search;
+  search.potential_weight = weight;
+  search.potential_range = 0.1;
+  return CSpaceGrid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, std::move(blocked), JointVector(1.0, 0.1),
+                    search);
+}
+
+double stepCost(const CSpaceGrid& grid, int a, int b) {
+  const JointVector d = grid.node(b) - grid.node(a);
+  const double length = std::sqrt(grid.metric()[0] * d[0] * d[0] + grid.metric()[1] * d[1] * d[1]);
+  return length * (1.0 + grid.potentialWeight() * 0.5 * (grid.potential(a) + grid.potential(b)));
+}
+
+// Textbook Dijkstra with an O(V^2) selection: no heap, no heuristic, nothing shared with A*.
+double dijkstraCost(const CSpaceGrid& grid, const std::vector<SearchEndpoint>& sources,
+                    const std::vector<SearchEndpoint>& goals) {
+  const int n = grid.cellCount();
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> dist(static_cast<size_t>(n), inf);
+  std::vector<bool> done(static_cast<size_t>(n), false);
+  for (const auto& s : sources) {
+    if (!grid.blocked(s.cell)) dist[static_cast<size_t>(s.cell)] = std::min(dist[static_cast<size_t>(s.cell)], s.cost);
+  }
+  for (;;) {
+    int u = -1;
+    for (int c = 0; c < n; ++c) {
+      if (!done[static_cast<size_t>(c)] && std::isfinite(dist[static_cast<size_t>(c)]) &&
+          (u < 0 || dist[static_cast<size_t>(c)] < dist[static_cast<size_t>(u)])) {
+        u = c;
+      }
+    }
+    if (u < 0) break;
+    done[static_cast<size_t>(u)] = true;
+    const int i = grid.elevatorIndex(u), j = grid.armIndex(u);
+    for (int di = -1; di <= 1; ++di) {
+      for (int dj = -1; dj <= 1; ++dj) {
+        const int a = i + di, b = j + dj;
+        if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= grid.elevatorAxis().count || b >= grid.armAxis().count) continue;
+        const int v = grid.cell(a, b);
+        if (grid.blocked(v)) continue;
+        dist[static_cast<size_t>(v)] = std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + stepCost(grid, u, v));
+      }
+    }
+  }
+  double best = inf;
+  for (const auto& g : goals) {
+    if (!grid.blocked(g.cell)) best = std::min(best, dist[static_cast<size_t>(g.cell)] + g.cost);
+  }
+  return best;
+}
+
+double weightedDistance(const CSpaceGrid& grid, const JointVector& a, const JointVector& b) {
+  const JointVector d = a - b;
+  return std::sqrt(grid.metric()[0] * d[0] * d[0] + grid.metric()[1] * d[1] * d[1]);
+}
+
+TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
+  std::mt19937 rng(2025);
+  int found = 0, unreachable = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::uniform_int_distribution<int> size(4, 18);
+    const int ni = size(rng), nj = size(rng);
+    const CSpaceGrid grid = randomGrid(rng, ni, nj, 0.3, trial % 3 == 0 ? 0.0 : 3.0);
+    std::uniform_int_distribution<int> any_cell(0, grid.cellCount() - 1);
+    // A target pose near a random node; goals are nodes around it with at least the weighted
+    // distance as connection cost (the admissibility precondition), sometimes more.
+    const JointVector target = grid.node(any_cell(rng)) + JointVector(0.004, -0.01);
+    std::vector<SearchEndpoint> sources, goals;
+    std::uniform_real_distribution<double> extra(0.0, 0.05);
+    for (int k = 0; k < 1 + trial % 3; ++k) sources.push_back({any_cell(rng), extra(rng)});
+    for (int c = 0; c < grid.cellCount(); ++c) {
+      if (weightedDistance(grid, grid.node(c), target) < 0.03) {
+        goals.push_back({c, weightedDistance(grid, grid.node(c), target) + (trial % 2 == 0 ? extra(rng) : 0.0)});
+      }
+    }
+    const double expected = dijkstraCost(grid, sources, goals);
+    const auto astar = astarSearch(grid, sources, goals, target, true);
+    const auto dijkstra = astarSearch(grid, sources, goals, target, false);
+    if (!std::isfinite(expected)) {
+      ++unreachable;
+      EXPECT_FALSE(astar.has_value()) << "trial " << trial;
+      EXPECT_FALSE(dijkstra.has_value()) << "trial " << trial;
+      continue;
+    }
+    ++found;
+    ASSERT_TRUE(astar.has_value()) << "trial " << trial;
+    ASSERT_TRUE(dijkstra.has_value()) << "trial " << trial;
+    EXPECT_NEAR(astar->cost, expected, 1e-9) << "trial " << trial;
+    EXPECT_NEAR(dijkstra->cost, expected, 1e-9) << "trial " << trial;
+    EXPECT_LE(astar->expanded, dijkstra->expanded + 1);
+    // The returned path is a chain of free 8-neighbours whose costs add up to the cost.
+    ASSERT_GE(astar->source, 0);
+    ASSERT_GE(astar->goal, 0);
+    EXPECT_EQ(astar->cells.front(), sources[static_cast<size_t>(astar->source)].cell);
+    EXPECT_EQ(astar->cells.back(), goals[static_cast<size_t>(astar->goal)].cell);
+    double total = sources[static_cast<size_t>(astar->source)].cost + goals[static_cast<size_t>(astar->goal)].cost;
+    for (size_t k = 0; k < astar->cells.size(); ++k) {
+      EXPECT_FALSE(grid.blocked(astar->cells[k]));
+      if (k == 0) continue;
+      const int a = astar->cells[k - 1], b = astar->cells[k];
+      EXPECT_LE(std::abs(grid.elevatorIndex(a) - grid.elevatorIndex(b)), 1);
+      EXPECT_LE(std::abs(grid.armIndex(a) - grid.armIndex(b)), 1);
+      EXPECT_NE(a, b);
+      total += stepCost(grid, a, b);
+    }
+    EXPECT_NEAR(total, astar->cost, 1e-9) << "trial " << trial;
+  }
+  EXPECT_GT(found, 150);
+  EXPECT_GT(unreachable, 10);
+}
+
+TEST(AstarSearch, BlockedOrMissingEndpointsFindNothing) {
+  std::vector<std::uint8_t> blocked(25, 0);
+  blocked[12] = 1;
+  const CSpaceGrid grid(GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}, blocked, JointVector(1.0, 1.0), SearchSettings{});
+  const std::vector<SearchEndpoint> sources{{0, 0.0}};
+  EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{{12, 0.0}}, grid.node(12)).has_value());
+  EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{}, grid.node(12)).has_value());
+  EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{{99, 0.0}}, grid.node(4)).has_value());
+  EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{12, 0.0}}, std::vector<SearchEndpoint>{{24, 0.0}},
+                           grid.node(24)).has_value());
+  // A source that is also a goal: a one-node path.
+  const auto same = astarSearch(grid, sources, std::vector<SearchEndpoint>{{0, 0.5}}, grid.node(0));
+  ASSERT_TRUE(same.has_value());
+  EXPECT_EQ(same->cells.size(), 1U);
+  EXPECT_DOUBLE_EQ(same->cost, 0.5);
+}
+
+TEST(AstarSearch, WallWithoutGapIsUnreachable) {
+  std::vector<std::uint8_t> blocked(7 * 7, 0);
+  for (int j = 0; j < 7; ++j) blocked[static_cast<size_t>(3 * 7 + j)] = 1;
+  const CSpaceGrid grid(GridAxis{0.0, 0.1, 7}, GridAxis{0.0, 0.1, 7}, blocked, JointVector(1.0, 1.0), SearchSettings{});
+  EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{grid.cell(0, 0), 0.0}},
+                           std::vector<SearchEndpoint>{{grid.cell(6, 6), 0.0}}, grid.node(grid.cell(6, 6))).has_value());
+}
+
+TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {
+  std::mt19937 rng(9);
+  for (int trial = 0; trial < 30; ++trial) {
+    const CSpaceGrid grid = randomGrid(rng, 12, 15, 0.08, 1.0);
+    // Brute force: Dijkstra from all blocked nodes over the free 8-neighbour graph of weighted
+    // step lengths (the chamfer metric), blocked nodes not excluded as intermediate nodes.
+    const int n = grid.cellCount();
+    std::vector<double> dist(static_cast<size_t>(n), std::numeric_limits<double>::infinity());
+    std::vector<bool> done(static_cast<size_t>(n), false);
+    for (int c = 0; c < n; ++c) {
+      if (grid.blocked(c)) dist[static_cast<size_t>(c)] = 0.0;
+    }
+    for (;;) {
+      int u = -1;
+      for (int c = 0; c < n; ++c) {
+        if (!done[static_cast<size_t>(c)] && std::isfinite(dist[static_cast<size_t>(c)]) &&
+            (u < 0 || dist[static_cast<size_t>(c)] < dist[static_cast<size_t>(u)])) u = c;
+      }
+      if (u < 0) break;
+      done[static_cast<size_t>(u)] = true;
+      for (int di = -1; di <= 1; ++di) {
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int a = grid.elevatorIndex(u) + di, b = grid.armIndex(u) + dj;
+          if (a < 0 || b < 0 || a >= 12 || b >= 15) continue;
+          const int v = grid.cell(a, b);
+          dist[static_cast<size_t>(v)] = std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + grid.stepLength(di, dj));
+        }
+      }
+    }
+    for (int c = 0; c < n; ++c) {
+      const double x = std::max(0.0, 1.0 - dist[static_cast<size_t>(c)] / 0.1);
+      EXPECT_NEAR(grid.potential(c), x * x, 1e-6) << "trial " << trial << " cell " << c;
+    }
+  }
+}
+
+TEST(CSpaceGrid, AxisCoversTheRangeWithNodesAtBothEnds) {
+  const GridAxis axis = GridAxis::covering(JointRange{0.0, 6.108652381980153}, 0.02);
+  EXPECT_EQ(axis.count, 307);
+  EXPECT_LE(axis.step, 0.02);
+  EXPECT_DOUBLE_EQ(axis.at(0), 0.0);
+  EXPECT_NEAR(axis.at(axis.count - 1), 6.108652381980153, 1e-12);
+  const GridAxis exact = GridAxis::covering(JointRange{0.0, 2.0}, 0.02);
+  EXPECT_EQ(exact.count, 101);
+  const GridAxis point = GridAxis::covering(JointRange{1.0, 1.0}, 0.02);
+  EXPECT_EQ(point.count, 1);
+}
+
+TEST(CSpaceGrid, LowerCornerClampsToTheGrid) {
+  const CSpaceGrid grid(GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}, std::vector<std::uint8_t>(25, 0),
+                        JointVector(1.0, 1.0), SearchSettings{});
+  EXPECT_EQ(grid.lowerCorner(JointVector(0.25, 0.31)), grid.cell(2, 3));
+  EXPECT_EQ(grid.lowerCorner(JointVector(-1.0, 9.0)), grid.cell(0, 4));
+  EXPECT_EQ(grid.blockedCount(), 0);
+}
+
+}  // namespace
+}  // namespace cyber::planner

@@ -1,0 +1,193 @@
+// d(q) for the reference robot: pose transform, brute-force agreement, cutoff bounds, held pieces
+// only adding geometry, and the gradient against central differences.
+
+#include "cyber/planner/collision_world.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cyber/planner/signed_distance.hpp"
+#include "reference_model.hpp"
+
+namespace cyber::planner {
+namespace {
+
+const RobotModel& model() { return test::referenceModel(); }
+const Scene& scene() { return model().scenes.front(); }
+
+JointVector randomPose(std::mt19937& rng) {
+  std::uniform_real_distribution<double> t(model().elevator_range_m.min, model().elevator_range_m.max);
+  std::uniform_real_distribution<double> th(model().arm_range_rad.min, model().arm_range_rad.max);
+  return JointVector(t(rng), th(rng));
+}
+
+std::vector<Point2> normalsOf(const std::vector<Point2>& v) {
+  std::vector<Point2> n;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const Point2 e = v[(i + 1) % v.size()] - v[i];
+    n.emplace_back(Point2(e.y(), -e.x()).normalized());
+  }
+  return n;
+}
+
+// Every robot polygon moved to the world by hand, every pair computed without pruning.
+double bruteForceDistance(const JointVector& q, HeldPieces pieces) {
+  const double tilt = model().rail.tilt_rad;
+  const Point2 pivot = model().rail.base_m + q[0] * Point2(std::cos(tilt), std::sin(tilt));
+  std::vector<const ConvexPolygon*> robot;
+  for (const auto& p : model().geometry.arm) robot.push_back(&p);
+  if (pieces.coral) for (const auto& p : model().geometry.coral) robot.push_back(&p);
+  if (pieces.algae) for (const auto& p : model().geometry.algae) robot.push_back(&p);
+  double best = std::numeric_limits<double>::infinity();
+  for (const ConvexPolygon* polygon : robot) {
+    std::vector<Point2> world;
+    for (const Point2& p : polygon->vertices()) {
+      world.emplace_back(pivot.x() + std::cos(q[1]) * p.x() - std::sin(q[1]) * p.y(),
+                         pivot.y() + std::sin(q[1]) * p.x() + std::cos(q[1]) * p.y());
+    }
+    const std::vector<Point2> world_normals = normalsOf(world);
+    for (const NamedPolygon& obstacle : scene().obstacles) {
+      const std::vector<Point2>& ov = obstacle.polygon.vertices();
+      const std::vector<Point2> on = normalsOf(ov);
+      const PairDistance d = signedDistance(WorldPolygonView{world.data(), world_normals.data(), static_cast<int>(world.size())},
+                                            WorldPolygonView{ov.data(), on.data(), static_cast<int>(ov.size())});
+      best = std::min(best, d.value);
+    }
+  }
+  return best;
+}
+
+TEST(PoseTransform, PivotMovesAlongTheTiltedRailAndTheArmRotates) {
+  Rail rail;
+  rail.base_m = Point2(-0.4, 0.2);
+  rail.tilt_rad = 80.0 * std::numbers::pi / 180.0;
+  const ArmPose pose = armPose(rail, JointVector(1.5, std::numbers::pi / 2));
+  EXPECT_NEAR(pose.pivot.x(), -0.4 + 1.5 * std::cos(rail.tilt_rad), 1e-15);
+  EXPECT_NEAR(pose.pivot.y(), 0.2 + 1.5 * std::sin(rail.tilt_rad), 1e-15);
+  // Straight up: the arm's +x points along world +y.
+  const Point2 tip = pose.toWorld(Point2(0.25, 0.0));
+  EXPECT_NEAR(tip.x(), pose.pivot.x(), 1e-15);
+  EXPECT_NEAR(tip.y(), pose.pivot.y() + 0.25, 1e-15);
+}
+
+TEST(PoseTransform, PointJacobianMatchesDifferences) {
+  const Rail& rail = model().rail;
+  const Point2 p_arm(0.3, -0.07);
+  std::mt19937 rng(3);
+  for (int trial = 0; trial < 50; ++trial) {
+    const JointVector q = randomPose(rng);
+    const ArmPose pose = armPose(rail, q);
+    const Eigen::Matrix2d jacobian = pose.pointJacobian(pose.toWorld(p_arm));
+    const double h = 1e-6;
+    for (int j = 0; j < 2; ++j) {
+      JointVector dq = JointVector::Zero();
+      dq[j] = h;
+      const Point2 diff = (armPose(rail, q + dq).toWorld(p_arm) - armPose(rail, q - dq).toWorld(p_arm)) / (2 * h);
+      EXPECT_NEAR((diff - jacobian.col(j)).norm(), 0.0, 1e-8);
+    }
+  }
+}
+
+TEST(CollisionWorld, AgreesWithBruteForceOverAllPairs) {
+  std::mt19937 rng(11);
+  for (int set = 0; set < kPieceSetCount; ++set) {
+    const HeldPieces pieces = HeldPieces::fromIndex(set);
+    const CollisionWorld world(model(), scene(), pieces);
+    for (int trial = 0; trial < 500; ++trial) {
+      const JointVector q = randomPose(rng);
+      const SignedDistance d = world.distance(q);
+      ASSERT_TRUE(d.exact);
+      EXPECT_NEAR(d.value, bruteForceDistance(q, pieces), 1e-12) << "set " << set << " q " << q.transpose();
+    }
+  }
+}
+
+TEST(CollisionWorld, CutoffGivesExactValuesBelowItAndLowerBoundsAbove) {
+  const CollisionWorld world(model(), scene(), HeldPieces{true, true});
+  std::mt19937 rng(12);
+  int bounded = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const JointVector q = randomPose(rng);
+    const double exact = world.distance(q).value;
+    for (double cutoff : {-0.05, 0.0, 0.03, 0.1, 0.4}) {
+      const SignedDistance d = world.distance(q, cutoff);
+      if (exact < cutoff) {
+        EXPECT_TRUE(d.exact);
+        EXPECT_DOUBLE_EQ(d.value, exact);
+      } else {
+        ++bounded;
+        EXPECT_GE(d.value, cutoff);
+        EXPECT_LE(d.value, exact + 1e-15);
+      }
+    }
+  }
+  EXPECT_GT(bounded, 1000);
+}
+
+TEST(CollisionWorld, HeldPiecesOnlyAddGeometry) {
+  std::vector<CollisionWorld> worlds;
+  for (int set = 0; set < kPieceSetCount; ++set) worlds.emplace_back(model(), scene(), HeldPieces::fromIndex(set));
+  EXPECT_EQ(worlds[0].robotPolygonCount(), 1);
+  EXPECT_EQ(worlds[3].robotPolygonCount(), 3);
+  std::mt19937 rng(13);
+  int strictly_closer = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const JointVector q = randomPose(rng);
+    const double none = worlds[0].distance(q).value;
+    const double coral = worlds[1].distance(q).value;
+    const double algae = worlds[2].distance(q).value;
+    const double both = worlds[3].distance(q).value;
+    EXPECT_LE(coral, none);
+    EXPECT_LE(algae, none);
+    EXPECT_LE(both, std::min(coral, algae));
+    if (both < none - 1e-6) ++strictly_closer;
+  }
+  EXPECT_GT(strictly_closer, 100);  // the pieces matter, they are not ignored
+  EXPECT_GT(worlds[3].reach_m(), worlds[0].reach_m());
+}
+
+TEST(CollisionWorld, GradientMatchesCentralDifferences) {
+  std::mt19937 rng(14);
+  int checked = 0, penetrating = 0;
+  for (int set = 0; set < kPieceSetCount; ++set) {
+    const CollisionWorld world(model(), scene(), HeldPieces::fromIndex(set));
+    for (int trial = 0; trial < 400; ++trial) {
+      const JointVector q = randomPose(rng);
+      const SignedDistance d = world.distance(q);
+      const double h = 1e-7;
+      JointVector central, forward, backward;
+      for (int j = 0; j < 2; ++j) {
+        JointVector dq = JointVector::Zero();
+        dq[j] = h;
+        const double plus = world.distance(q + dq).value;
+        const double minus = world.distance(q - dq).value;
+        central[j] = (plus - minus) / (2 * h);
+        forward[j] = (plus - d.value) / h;
+        backward[j] = (d.value - minus) / h;
+      }
+      // Skip the measure-zero kinks (a switch of the closest pair or feature inside the step).
+      if ((forward - backward).norm() > 1e-4) continue;
+      ++checked;
+      if (d.value < 0) ++penetrating;
+      EXPECT_NEAR((d.gradient - central).norm(), 0.0, 1e-5 * std::max(1.0, central.norm()))
+          << "set " << set << " q " << q.transpose() << " d " << d.value << " grad " << d.gradient.transpose()
+          << " fd " << central.transpose();
+    }
+  }
+  EXPECT_GT(checked, 1400);
+  EXPECT_GT(penetrating, 50);
+}
+
+TEST(CollisionWorld, EmptySceneIsInfinitelyFarAway) {
+  const CollisionWorld world(model(), Scene{"empty", {}}, HeldPieces{});
+  const SignedDistance d = world.distance(JointVector(1.0, 1.0));
+  EXPECT_FALSE(d.exact);
+  EXPECT_TRUE(std::isinf(d.value));
+}
+
+}  // namespace
+}  // namespace cyber::planner
