@@ -172,6 +172,22 @@ def guest_stall_s(run, t0, t1):
 
 # --- checks shared by the scenarios ---------------------------------------------------------------
 
+def note_cpu(c, run):
+    """The CPU share of each process over its life (cpu.txt: utime, stime, start in 10 ms ticks)."""
+    path = os.path.join(run.out, "cpu.txt")
+    if not os.path.exists(path):
+        return
+    lines = [line.split() for line in open(path)]
+    uptime = float(lines[0][1]) if lines and lines[0][0] == "uptime" else None
+    shares = []
+    for fields in lines[1:]:
+        if len(fields) == 4 and uptime:
+            user, system, start = (int(x) for x in fields[1:])
+            life = uptime - start / 100.0
+            shares.append(f"{fields[0]} {100.0 * (user + system) / 100.0 / life:.0f} %" if life > 0 else fields[0])
+    c.note("guest CPU time over each process's life: " + ", ".join(shares))
+
+
 def check_protocol(c, run, allow_sequence_jumps=False, injected=None):
     """Ids, lengths and sequence numbers per docs/can-protocol.md, and cyber-can-decode's reading.
     Short frames with the daemon's ids inside `injected` (t0, t1) were put on the bus by the test
@@ -381,6 +397,7 @@ TARGETS = {1: (1.97, 5.17), 2: (0.16, 0.10), 3: (0.2, 1.57)}
 def check_motion(out):
     c = hil.Checks("daemon_motion")
     run = Run(out)
+    note_cpu(c, run)
     check_protocol(c, run)
     for request_id, expected in ((1, "done"), (2, "cancelled"), (3, "done")):
         check_goal(c, run, request_id, expected)
@@ -468,17 +485,28 @@ def marker(run, payload):
 
 
 def note_retries(c, run):
+    """Goals the script sent again because the daemon had stopped them on its own: reported with
+    how long the guest stood still just before (the simulator's 100 Hz rows) and the longest gap
+    between heartbeats on the bus then. A short bus gap means the heartbeats were there but the
+    daemon took them in late."""
     for request_id in run.scenario.get("retry", []):
         final = run.final_status(int(request_id))
         when = final["utime"] * 1e-6 if final else None
-        stall = guest_stall_s(run, when - 0.6, when) if when else float("nan")
-        c.note(f"request {request_id} was stopped by the daemon on its own ({final['reason'] if final else '?'}); "
-               f"the guest stood still for up to {stall * 1e3:.0f} ms just before; the script sent it again")
+        if when is None:
+            c.note(f"request {request_id} was sent again (no final status recorded)")
+            continue
+        stall = guest_stall_s(run, when - 0.6, when)
+        beats = [f.t for f in run.heartbeats if when - 0.6 <= f.t <= when]
+        gap = max((b - a for a, b in zip(beats, beats[1:])), default=float("nan"))
+        c.note(f"request {request_id} was stopped by the daemon on its own ({final['reason']}); in the 0.6 s before, "
+               f"the guest stood still for up to {stall * 1e3:.0f} ms and heartbeats on the bus were at most "
+               f"{gap * 1e3:.0f} ms apart; the script sent it again")
 
 
 def check_faults(out):
     c = hil.Checks("daemon_faults")
     run = Run(out)
+    note_cpu(c, run)
     t_garbage, t_end = marker(run, b"GARB"), marker(run, b"END")
     check_protocol(c, run, injected=(t_garbage, t_end) if t_garbage and t_end else None)
     note_retries(c, run)
@@ -551,14 +579,17 @@ def check_faults(out):
     check_final_error(c, run, "last goal reached (end of the run)", run.rows[-1]["utime"] * 1e-6, TARGETS[3])
     last = run.daemon_status[-1]
     sent = 4 + len(run.scenario.get("retry", []))
-    c.check(last["goals_received"] == sent and last["plans_succeeded"] == sent,
-            f"daemon counters: {last['goals_received']} goals, {last['plans_succeeded']} plans ({sent} sent)")
+    planned = len(run.trajectories)
+    c.check(last["goals_received"] == sent and last["plans_succeeded"] == planned,
+            f"daemon counters: {last['goals_received']} goals ({sent} sent), {last['plans_succeeded']} plans "
+            f"({planned} trajectories published)")
     return c.status()
 
 
 def check_link(out):
     c = hil.Checks("daemon_link_down")
     run = Run(out)
+    note_cpu(c, run)
     check_protocol(c, run, allow_sequence_jumps=True)
     note_retries(c, run)
     ids = {key: run.request(key) for key in ("link", "done")}

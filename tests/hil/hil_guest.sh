@@ -178,8 +178,20 @@ reap() {
   wait "$1" || exit_status=$?
 }
 
+# CPU time (clock ticks: user, system) of each process so far, and the guest's uptime, for the
+# host-side report: who kept the emulated CPU busy.
+cpu_report() {
+  {
+    echo "uptime $(cut -d' ' -f1 /proc/uptime)"
+    for name_pid in "cyber-plannerd:$daemon" "cyber-plant-sim:$plant" "lcm-logger:$logger" "candump:$dump"; do
+      echo "${name_pid%%:*} $(cut -d' ' -f14,15,22 "/proc/${name_pid#*:}/stat" 2>/dev/null)"
+    done
+  } >"$work/cpu.txt"
+}
+
 # Stops the daemon and the simulator with SIGTERM (both must exit 0), then the recorders.
 stop_all() {
+  cpu_report
   kill -TERM "$daemon" "$plant"
   reap "$daemon" cyber-plannerd
   [ "$exit_status" -eq 0 ] || fail "cyber-plannerd exited with $exit_status on SIGTERM"
