@@ -3,11 +3,13 @@
 // options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
 
 #include <fcntl.h>
+#include <pthread.h>
 #include <sched.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -36,6 +38,14 @@ bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxD
 }  // namespace
 
 int main(int argc, char** argv) {
+  // SIGINT/SIGTERM are taken through the event loop's signalfd; block them before any library
+  // can start a thread that would otherwise receive them.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
   std::vector<std::string_view> args(argv + 1, argv + argc);
   const auto parsed = cyber::plant::parseSimArguments(args);
   if (parsed.help) {
