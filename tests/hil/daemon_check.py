@@ -176,12 +176,19 @@ def describe(periods, nominal):
             f"{100 * fraction_within(periods, nominal, 0.001):.1f} % within +-1 ms of {nominal * 1e3:.0f} ms")
 
 
+def longest_gap(times, t0, t1):
+    """The longest interval between consecutive times that overlaps [t0, t1] (sorted times)."""
+    i = max(bisect.bisect_left(times, t0) - 1, 0)
+    j = min(bisect.bisect_right(times, t1) + 1, len(times))
+    near = times[i:j]
+    return max((b - a for a, b in zip(near, near[1:]) if b >= t0 and a <= t1), default=float("nan"))
+
+
 def guest_stall_s(run, t0, t1):
-    """The longest gap in the simulator's 100 Hz CSV rows (a timerfd loop in the same guest) between
-    t0 and t1, beyond its 10 ms period: how long the emulated guest stood still there."""
-    rows = [u * 1e-6 for u in run.row_utime if t0 * 1e6 <= u <= t1 * 1e6]
-    gaps = [b - a for a, b in zip(rows, rows[1:])]
-    return max(max(gaps, default=0.0) - 0.010, 0.0)
+    """How long the emulated guest stood still around [t0, t1]: the longest gap overlapping it
+    between the simulator's 100 Hz CSV rows (a timerfd loop in the same guest), beyond 10 ms."""
+    gap = longest_gap([u * 1e-6 for u in run.row_utime], t0, t1)
+    return max(gap - 0.010, 0.0) if gap == gap else 0.0
 
 
 # --- checks shared by the scenarios ---------------------------------------------------------------
@@ -519,8 +526,7 @@ def note_retries(c, run):
             c.note(f"request {request_id} was sent again (no final status recorded)")
             continue
         stall = guest_stall_s(run, when - 0.6, when)
-        beats = [f.t for f in run.heartbeats if when - 0.6 <= f.t <= when]
-        gap = max((b - a for a, b in zip(beats, beats[1:])), default=float("nan"))
+        gap = longest_gap([f.t for f in run.heartbeats], when - 0.6, when)
         c.note(f"request {request_id} was stopped by the daemon on its own ({final['reason']}); in the 0.6 s before, "
                f"the guest stood still for up to {stall * 1e3:.0f} ms and heartbeats on the bus were at most "
                f"{gap * 1e3:.0f} ms apart; the script sent it again")
@@ -572,8 +578,11 @@ def check_faults(out):
     if c.check(t_fault and len(disables) == 1 and abs(disables[0] - t_fault) < 0.05,
                f"one broadcast disable on the bus ({len(disables)}), when the simulator sent it"):
         t_d = disables[0]
-        t_stop = check_stop(c, run, "broadcast disable", t_d, PERIOD_S)
         next_beat = next((t for t in beats if t > t_d), None)
+        if next_beat is not None:
+            c.note(f"the next enabled heartbeat followed the disable by {1e3 * (next_beat - t_d):.1f} ms "
+                   f"(the daemon lifts a disable at the first enabled heartbeat after it)")
+        t_stop = check_stop(c, run, "broadcast disable", t_d, PERIOD_S)
         if t_stop is not None and next_beat is not None:
             quiet = [s for j in (0, 1) for s in frames_between(run, j, t_stop + 0.001, next_beat)]
             c.check(not quiet, f"no setpoints until the next enabled heartbeat {1e3 * (next_beat - t_d):.0f} ms later")

@@ -35,7 +35,7 @@ cansend "$CAN_IFACE" 0A080803#00
 cansend "$CAN_IFACE" 7FF#454E44
 sleep 0.5
 during_motion disable 2 0.2,1.57 0.3 "fault_if_moving disable" 1.97,5.17
-wait_goal "$id" 5
+wait_goal_noted "$id"
 sleep 0.5
 during_motion silent 3 1.97,5.17 0.3 "fault_if_moving silent" 0.2,1.57
 sleep 0.6

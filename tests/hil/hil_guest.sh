@@ -108,6 +108,13 @@ start_goal() {
   goal_pid=$!
 }
 
+# Waits for the background goal $1 and notes how it ended (the host checks it).
+wait_goal_noted() {
+  status=0
+  wait "$goal_pid" || status=$?
+  say "goal $1: $(tail -n 1 "$work/goal$1.out")"
+}
+
 # Waits for the background goal $1; fails unless cyber-goal exits $2 (0 done, 5 cancelled).
 wait_goal() {
   status=0
