@@ -53,7 +53,7 @@ assert abs(float(rows[-1]['elevator_m']) - 1.97) < 1e-4 and abs(float(rows[-1]['
 assert summary['min_clearance_m'] >= 0.03 - 1e-9, summary
 print('ok   csv: %d rows, %.3f s' % (len(rows), t[-1]))
 PY
-check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.98,5.39 --coral --plot "$tmp/p.png"
+check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.27,5.79 --coral --plot "$tmp/p.png"
 if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a" ]; then
   echo "FAIL plot: not a PNG"; failures=$((failures + 1))
 fi
@@ -73,6 +73,9 @@ check "invalid config" 2 --config "$tmp/bad.toml" --from 0.2,1.57 --to 1.97,5.17
 check "unknown scene" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene nowhere
 check "goal out of range" 3 --config "$config" --from 0.2,1.57 --to 2.5,1.57
 check "start out of range" 3 --config "$config" --from 0.2,-1 --to 1.97,5.17
+# Coral L4 of the public poses lies in a pocket no other coral pose reaches (issue 2 note).
+check "unreachable goal" 3 --config "$config" --from 0.20,1.57 --to 1.98,5.39 --coral
+expect_in "no path reason" "$tmp/err" "no path"
 check "goal in collision" 3 --config "$config" --from 0.2,1.57 --to 0.0,0.0
 expect_in "collision reason" "$tmp/err" "collision"
 check "unwritable csv" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --csv /nonexistent/dir/t.csv

@@ -43,8 +43,11 @@ depends=$(field Depends)
 IFS=',' read -ra alternatives <<<"$depends"
 for dependency in "${alternatives[@]}"; do
   name=$(sed -E 's/^ *//; s/[ (|].*//' <<<"$dependency")
+  # A real package, or a virtual one that an installed package provides (libspdlog1.10-fmt9).
   dpkg-query -W -f='${Status}\n' "$name" 2>/dev/null | grep -q 'install ok installed' ||
-    fail "dependency '$name' is not an installed package"
+    dpkg-query -W -f='${db:Status-Abbrev}|${Provides}\n' 2>/dev/null | grep '^ii' | cut -d'|' -f2 |
+      tr ',' '\n' | sed -E 's/^ *//; s/ .*//' | grep -qx -- "$name" ||
+    fail "dependency '$name' is neither installed nor provided by an installed package"
 done
 for program in "${programs[@]}"; do
   case $program in

@@ -141,6 +141,9 @@ void readPlanner(TableReader p, planner::PlannerSettings& s) {
     s.smoothing.smoothness_weight = g.number("smoothness_weight", kNonNegative);
     s.smoothing.max_iterations = static_cast<int>(g.integer("max_iterations", 0, 100000));
     s.smoothing.gradient_tolerance = g.number("gradient_tolerance", kPositive);
+    s.smoothing.relative_cost_tolerance = g.number("relative_cost_tolerance", Bounds{0.0, 1.0});
+    s.smoothing.lead_in_time_s = g.number("lead_in_time_s", Bounds{0.0, 1.0});
+    s.smoothing.max_lead_in = g.number("max_lead_in", Bounds{0.0, 2.0});
     g.finish();
   }
   {
@@ -151,6 +154,11 @@ void readPlanner(TableReader p, planner::PlannerSettings& s) {
     s.topp.max_outer_iterations = static_cast<int>(g.integer("max_outer_iterations", 1, 100000));
     s.topp.max_inner_iterations = static_cast<int>(g.integer("max_inner_iterations", 1, 1000000));
     s.topp.limit_check_step_s = g.number("limit_check_step_s", Bounds{1e-5, 0.01});
+    s.topp.limit_check_tolerance = g.number("limit_check_tolerance", Bounds{0.0, 0.1});
+    s.topp.max_limit_refinements = static_cast<int>(g.integer("max_limit_refinements", 0, 100));
+    s.topp.penalty_initial = g.number("penalty_initial", kPositive);
+    s.topp.penalty_growth = g.number("penalty_growth", kNonNegative);
+    s.topp.penalty_max = g.number("penalty_max", Bounds{s.topp.penalty_initial, 1e300});
     g.finish();
   }
   p.finish();

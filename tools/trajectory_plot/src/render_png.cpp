@@ -56,6 +56,7 @@ void text(cairo_t* cr, double x, double y, const std::string& s, double size, bo
 }
 
 std::string format(double v, double step) {
+  if (std::abs(v) < 1e-9 * step) v = 0.0;  // a tick at zero reached by summing steps: no "-0"
   char buf[32];
   const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
   std::snprintf(buf, sizeof buf, "%.*f", std::clamp(decimals, 0, 4), v);

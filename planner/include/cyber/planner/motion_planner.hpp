@@ -1,0 +1,62 @@
+#pragma once
+// The planner's front door: a request in, a time-optimal collision-free trajectory out.
+// Chains the path stage (algorithm.md section 2) and TOPP (section 3). Built once per robot:
+// the grids of every scene and game-piece set are made in create(), never per request.
+// plan() is const and keeps no state between calls, so several threads may share one planner.
+
+#include <memory>
+#include <vector>
+
+#include "cyber/planner/path_planner.hpp"
+#include "cyber/planner/result.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/topp.hpp"
+#include "cyber/planner/trajectory.hpp"
+
+namespace cyber::planner {
+
+struct PlanRequest {
+  JointVector start = JointVector::Zero();           // (m, rad)
+  JointVector goal = JointVector::Zero();            // (m, rad)
+  JointVector start_velocity = JointVector::Zero();  // (m/s, rad/s); zero: start at rest
+  HeldPieces pieces;
+  int scene = 0;  // index into RobotModel::scenes
+};
+
+struct StageTimesMs {
+  double grid = 0.0;    // building the grid of this scene and piece set, once at create()
+  double search = 0.0;  // this request: grid search (or the direct check)
+  double smooth = 0.0;  // this request: optimisation, spline, clearance check
+  double topp = 0.0;    // this request: time-optimal parameterisation and its limit check
+  double total = 0.0;   // this request, end to end (excludes the one-off grid build)
+};
+
+using SolverReport = ToppReport;
+
+struct Plan {
+  std::shared_ptr<const Trajectory> trajectory;
+  std::vector<JointVector> waypoints;  // the spline's knots, exact start to exact goal
+  StageTimesMs times_ms;
+  SolverReport solver;
+  double min_clearance_m = 0.0;  // smallest distance to an obstacle found along the path
+  std::string path_method;       // which path attempt succeeded (see PlannedPath::method)
+};
+
+class MotionPlanner {
+ public:
+  // Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
+  // has no scene or no arm geometry.
+  static Result<MotionPlanner> create(const RobotModel& model);
+
+  [[nodiscard]] Result<Plan> plan(const PlanRequest& request) const;
+
+  [[nodiscard]] const RobotModel& model() const { return model_; }
+  [[nodiscard]] const PathPlanner& pathPlanner(int scene) const { return path_planners_[static_cast<size_t>(scene)]; }
+
+ private:
+  MotionPlanner() = default;
+  RobotModel model_;
+  std::vector<PathPlanner> path_planners_;  // by scene index
+};
+
+}  // namespace cyber::planner

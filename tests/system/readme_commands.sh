@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Runs the commands README.md shows (besides tools/setup and tools/test, which .ci/run runs) exactly
+# as written, from a scratch folder that sees the build as "build", and checks what they write.
+# Usage: readme_commands.sh BUILD_DIR
+set -euo pipefail
+source "$(dirname "$0")/lib.sh"
+system_setup "$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+ln -s "$build_abs" "$work/build"
+ln -s "$src/config" "$work/config"
+mapfile -t commands < <(sed -n 's/^    \(build\/.*\)$/\1/p' "$src/README.md")
+[[ ${#commands[@]} -gt 0 ]] || fail "README.md shows no build/ commands"
+grep -qx '    tools/setup' "$src/README.md" && grep -qx '    tools/test' "$src/README.md" || fail "README.md lost its quick start"
+grep -q 'tools/test' "$src/.ci/run" || fail ".ci/run does not run tools/test"
+cd "$work"
+for c in "${commands[@]}"; do
+  run_shown "$c"
+done
+[[ $(head -n 1 move.csv) == t,elevator_m,* ]] || fail "move.csv has no header"
+[[ $(head -c 4 move.png | od -An -c | tr -d ' ') == '211PNG' ]] || fail "move.png is not a PNG"
+echo "1 passed, 0 failed"

@@ -1,0 +1,122 @@
+#include "trajectory_sources.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+
+namespace cyber::tools {
+namespace {
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream in(line);
+  std::string cell;
+  while (std::getline(in, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+}  // namespace
+
+bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    *error = path + ": cannot open";
+    return false;
+  }
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  std::map<std::string, size_t> column;
+  for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
+  const char* needed[] = {"t", "elevator_m", "elevator_mps", "arm_rad", "arm_radps",
+                          "elevator_volts", "arm_volts", "elevator_amps", "arm_amps"};
+  for (const char* name : needed) {
+    if (!column.contains(name)) {
+      *error = path + ": no column \"" + name + "\" (expected cyber-plan --csv output)";
+      return false;
+    }
+  }
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    const std::vector<std::string> cells = split(line);
+    auto value = [&](const char* name, double* out) {
+      const size_t i = column[name];
+      char* end = nullptr;
+      if (i >= cells.size()) return false;
+      *out = std::strtod(cells[i].c_str(), &end);
+      return end != cells[i].c_str() && *end == '\0' && std::isfinite(*out);
+    };
+    double t, e, ev, a, av, evo, avo, ea, aa;
+    if (!value("t", &t) || !value("elevator_m", &e) || !value("elevator_mps", &ev) || !value("arm_rad", &a) ||
+        !value("arm_radps", &av) || !value("elevator_volts", &evo) || !value("arm_volts", &avo) ||
+        !value("elevator_amps", &ea) || !value("arm_amps", &aa)) {
+      *error = path + ":" + std::to_string(row) + ": not a row of finite numbers";
+      return false;
+    }
+    data.time_s.push_back(t);
+    const double values[2][4] = {{e, ev, evo, ea}, {a, av, avo, aa}};
+    for (int j = 0; j < 2; ++j) {
+      data.joints[j].position.push_back(values[j][0]);
+      data.joints[j].velocity.push_back(values[j][1]);
+      data.joints[j].volts.push_back(values[j][2]);
+      data.joints[j].amps.push_back(values[j][3]);
+    }
+  }
+  if (data.time_s.empty()) {
+    *error = path + ": no samples";
+    return false;
+  }
+  return true;
+}
+
+bool readTrajectoryFromLog(const std::string& path, const std::string& channel, std::optional<int64_t> request_id,
+                           const planner::RobotModel& robot, plot::TrajectoryPlotData& data, std::string* error) {
+  lcm::LogFile log(path, "r");
+  if (!log.good()) {
+    *error = path + ": cannot open the LCM log";
+    return false;
+  }
+  std::optional<cyberplanner::arm_trajectory_t> chosen;
+  int undecodable = 0;
+  for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
+    if (event->channel != channel) continue;
+    cyberplanner::arm_trajectory_t message;
+    if (lcmtypes::safeDecode(message, event->data, event->datalen) < 0) {
+      ++undecodable;
+      continue;
+    }
+    if (!request_id || message.request_id == *request_id) chosen = std::move(message);
+  }
+  if (!chosen) {
+    *error = path + ": no " + (request_id ? "matching " : "") + "message on " + channel +
+             (undecodable > 0 ? " (" + std::to_string(undecodable) + " undecodable)" : "");
+    return false;
+  }
+  const cyberplanner::arm_trajectory_t& m = *chosen;
+  for (int k = 0; k < m.num_samples; ++k) {
+    const size_t i = static_cast<size_t>(k);
+    data.time_s.push_back(m.t_s[i]);
+    const double q[2] = {m.elevator_m[i], m.arm_rad[i]};
+    const double v[2] = {m.elevator_mps[i], m.arm_radps[i]};
+    const double volts[2] = {m.elevator_volts[i], m.arm_volts[i]};
+    for (int j = 0; j < 2; ++j) {
+      data.joints[j].position.push_back(q[j]);
+      data.joints[j].velocity.push_back(v[j]);
+      data.joints[j].volts.push_back(volts[j]);
+      data.joints[j].amps.push_back(robot.drive(j).amps(volts[j], v[j]));
+    }
+  }
+  data.title = "ARM_TRAJECTORY request " + std::to_string(m.request_id);
+  return !data.time_s.empty() || (*error = path + ": the trajectory has no samples", false);
+}
+
+}  // namespace cyber::tools
