@@ -631,7 +631,9 @@ def check_link(out):
     check_goal(c, run, ids["done"], "done")
     times = [f.t for f in run.frames]
     gap = max((b - a, a, b) for a, b in zip(times, times[1:]))
-    c.check(1.8 <= gap[0] <= 2.6, f"nothing on the bus for {gap[0]:.2f} s while vcan0 was down (2 s)")
+    # The script sleeps 2 s between `ip link set down` and `up`; starting `ip` under emulation adds
+    # a fraction of a second.
+    c.check(1.9 <= gap[0] <= 4.0, f"nothing on the bus for {gap[0]:.2f} s while vcan0 was down (the script's 2 s)")
     t_down, t_up = gap[1], gap[2]
 
     # The daemon kept running and said so: LCM status all along, failed writes logged and counted.
