@@ -6,7 +6,7 @@ each check.
   daemon_check.py motion OUT_DIR    hil.daemon_motion
   daemon_check.py faults OUT_DIR    hil.daemon_faults
   daemon_check.py link_down OUT_DIR hil.daemon_link_down
-  daemon_check.py relaxed-config SRC DST   the motion test's config (see relaxed_config)
+  daemon_check.py hil-config SRC DST [relaxed]   the tests' config (see hil_config)
 """
 
 import bisect
@@ -41,16 +41,30 @@ JOINTS = ("elevator", "arm")
 POSITION_TOLERANCE = (0.005, 0.01)  # final error: 5 mm, 0.01 rad
 
 
-def relaxed_config(src, dst):
-    """The reference config with heartbeat_timeout_s and state_timeout_s at 0.5 s: the motion test
-    checks tracking, timing and splicing, and a stall of the emulated guest longer than 100 ms
-    (seen under load) must not stop its moves. The fault tests keep the reference values."""
+HIL_VELOCITY_LIMITS = (("elevator", "0.6"), ("arm", "1.5"))  # m/s, rad/s
+
+
+def hil_config(src, dst, relaxed_gates):
+    """The config the daemon HIL tests run with: the reference robot with joint velocities capped
+    at 0.6 m/s and 1.5 rad/s. Planning in the emulated guest takes 0.2-1.1 s and the daemon's
+    splice budget follows it, so the reference robot's sub-second moves would end before a goal
+    sent mid-motion could be spliced in, or before a fault 0.3 s in could act; capped, the moves
+    last 2-4 s. The simulated plant keeps the reference drive figures (kS, kG, kV, kA). With
+    relaxed_gates (the motion test) heartbeat_timeout_s and state_timeout_s are 0.5 s, so a stall
+    of the emulated guest longer than 100 ms does not stop its moves; the fault tests keep the
+    reference gates."""
     text = open(src).read()
-    for key, value in (("heartbeat_timeout_s", "0.1"), ("state_timeout_s", "0.25")):
-        line = f"{key} = {value}\n"
-        if line not in text:
-            raise SystemExit(f"relaxed-config: '{line.strip()}' not in {src}")
-        text = text.replace(line, f"{key} = 0.5\n")
+    for joint, limit in HIL_VELOCITY_LIMITS:
+        header = f"[drives.{joint}]\n"
+        if header not in text or "velocity_limit" in text.split(header, 1)[1].split("\n[", 1)[0]:
+            raise SystemExit(f"hil-config: no {header.strip()} without velocity_limit in {src}")
+        text = text.replace(header, f"{header}velocity_limit = {limit}\n")
+    if relaxed_gates:
+        for key, value in (("heartbeat_timeout_s", "0.1"), ("state_timeout_s", "0.25")):
+            line = f"{key} = {value}\n"
+            if line not in text:
+                raise SystemExit(f"hil-config: '{line.strip()}' not in {src}")
+            text = text.replace(line, f"{key} = 0.5\n")
     with open(dst, "w") as f:
         f.write(text)
 
@@ -670,8 +684,8 @@ def check_link(out):
 
 
 def main(argv):
-    if len(argv) == 4 and argv[1] == "relaxed-config":
-        relaxed_config(argv[2], argv[3])
+    if argv[1:2] == ["hil-config"] and (len(argv) == 4 or (len(argv) == 5 and argv[4] == "relaxed")):
+        hil_config(argv[2], argv[3], len(argv) == 5)
         return 0
     if len(argv) == 3 and argv[1] in ("motion", "faults", "link_down"):
         return {"motion": check_motion, "faults": check_faults, "link_down": check_link}[argv[1]](argv[2])

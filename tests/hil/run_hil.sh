@@ -47,7 +47,7 @@ args_for() {
         --run tests/hil/daemon_motion.sh)
       ;;
     daemon_faults | daemon_link_down)
-      args=(--auto "${daemon_bins[@]}" --file config/reefscape-2025.toml:robot.toml --out "$out"
+      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml" --out "$out"
         --run "tests/hil/$1.sh")
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
@@ -118,11 +118,12 @@ case $1 in
     tests/hil/plant_sim_check.py check "$out" || fail plant_sim "the results do not hold (see the checks above)"
     ;;
   daemon_motion | daemon_faults | daemon_link_down)
+    mkdir -p "$build/hil"
     if [[ $1 == daemon_motion ]]; then
-      mkdir -p "$build/hil"
-      tests/hil/daemon_check.py relaxed-config config/reefscape-2025.toml "$build/hil/robot-relaxed.toml" ||
-        fail "$1" "cannot write the relaxed config"
-    fi
+      tests/hil/daemon_check.py hil-config config/reefscape-2025.toml "$build/hil/robot-relaxed.toml" relaxed
+    else
+      tests/hil/daemon_check.py hil-config config/reefscape-2025.toml "$build/hil/robot-slow.toml"
+    fi || fail "$1" "cannot write the test config"
     vcan_vm
     [[ $status -eq 0 ]] || fail "$1" "the guest script failed"
     tests/hil/daemon_check.py "${1#daemon_}" "$out" || fail "$1" "the results do not hold (see the checks above)"
