@@ -215,12 +215,19 @@ def note_cpu(c, run):
     lines = [line.split() for line in open(path)]
     uptime = float(lines[0][1]) if lines and lines[0][0] == "uptime" else None
     shares = []
+    threads = [f for f in lines[1:] if f and f[0] == "thread" and len(f) == 5]
     for fields in lines[1:]:
+        if fields and fields[0] == "thread":
+            continue
         if len(fields) == 4 and uptime:
             user, system, start = (int(x) for x in fields[1:])
             life = uptime - start / 100.0
             shares.append(f"{fields[0]} {100.0 * (user + system) / 100.0 / life:.0f} %" if life > 0 else fields[0])
     c.note("guest CPU time over each process's life: " + ", ".join(shares))
+    if threads:
+        policy = {"0": "normal", "1": "FIFO", "2": "RR"}
+        c.note("cyber-plannerd threads (policy: CPU s): " + ", ".join(
+            f"{t[1]} ({policy.get(t[2], t[2])}: {(int(t[3]) + int(t[4])) / 100.0:.2f})" for t in threads))
 
 
 def check_protocol(c, run, allow_sequence_jumps=False, injected=None):
@@ -317,6 +324,8 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
         return
     worst = [-1.0, -1.0, -1.0]
     raw = [0.0, 0.0]
+    offenders = []
+    uncovered = 0
     lags = []
     counts = {r: 0 for r in request_ids}
     ticks = ticks_between(run, t0, t1)
@@ -324,14 +333,19 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
         # Per trajectory, the time that fits both joints best; then the trajectory whose errors are
         # smallest against their tolerances (right at a splice both fit, within a period).
         best = None
-        for r, traj in trajs:
+        for n, (r, traj) in enumerate(trajs):
+            # Only where the samples reach (they stop at the last multiple of dt_s, which can be
+            # short of duration_s: counted below), and only until the next trajectory took over.
+            end = traj.t[-1]
+            if n + 1 < len(trajs):
+                end = min(end, trajs[n + 1][1].start - traj.start)
             tau0 = t - traj.start
-            if tau0 < -0.02 or tau0 > traj.duration + 0.02:
+            if tau0 < -0.02 or tau0 > end + 0.0005:
                 continue
             fit = None
             for k in range(-150, 51):
                 tau = tau0 + k * 1e-4
-                if tau < 0.0 or tau > traj.duration:
+                if tau < 0.0 or tau > end:
                     continue
                 cost = 0.0
                 for j in (0, 1):
@@ -352,17 +366,27 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
             if best is None or score < best[0]:
                 best = (score, r, errors, fit[2])
         if best is None:
+            uncovered += 1
             continue
         _, r, errors, lag = best
+        if max(errors[:3]) > 0.0 and len(offenders) < 3:
+            offenders.append(f"t={t - trajs[0][1].start:.3f} s on {r}: position {errors[3] * 1e3:.3f}, "
+                             f"velocity {errors[4]:.4f}, feedforward excess {max(errors[2], 0):.3f} V")
         counts[r] += 1
         lags.append(lag)
         worst = [max(a, b) for a, b in zip(worst, errors[:3])]
         raw = [max(raw[0], errors[3]), max(raw[1], errors[4])]
     matched = sum(counts.values())
-    c.check(matched > 0 and matched == len(ticks) and max(worst) <= 0.0,
+    gaps = [traj.duration - traj.t[-1] for _, traj in trajs]
+    if uncovered:
+        c.note(f"requests {request_ids}: {uncovered} ticks after the last ARM_TRAJECTORY sample, not compared (the "
+               f"samples end {', '.join(f'{g * 1e3:.1f}' for g in gaps)} ms before duration_s)")
+    c.check(matched > 0 and matched + uncovered == len(ticks) and uncovered <= 3 * len(trajs) and max(worst) <= 0.0,
             f"requests {request_ids}: {matched} of {len(ticks)} ticks on the planned trajectories {counts}; beyond the "
             f"interpolation tolerances (0.3 mm|mrad, 0.01, 0.05 V, widened where the acceleration switches): "
             f"position {max(worst[0], 0) * 1e3:.3f} mm|mrad, velocity {max(worst[1], 0):.4f}, feedforward {max(worst[2], 0):.3f} V")
+    for text in offenders:
+        c.note(f"requests {request_ids}: off the trajectory at {text}")
     if lags:
         c.note(f"requests {request_ids}: largest differences from the trajectory: position {raw[0] * 1e3:.3f} mm|mrad, "
                f"velocity {raw[1]:.4f}")

@@ -25,7 +25,6 @@ finish() {
   exit "$1"
 }
 
-fail() { finish 1 "$*"; }
 
 # candump -L of the bus into $work/bus.log (-D: keep going while the interface is down), once it
 # is seen listening.
@@ -190,10 +189,20 @@ reap() {
 cpu_report() {
   {
     echo "uptime $(cut -d' ' -f1 /proc/uptime)"
-    for name_pid in "cyber-plannerd:$daemon" "cyber-plant-sim:$plant" "lcm-logger:$logger" "candump:$dump"; do
+    for name_pid in "cyber-plannerd:${daemon:-0}" "cyber-plant-sim:${plant:-0}" "lcm-logger:${logger:-0}" "candump:${dump:-0}"; do
       echo "${name_pid%%:*} $(cut -d' ' -f14,15,22 "/proc/${name_pid#*:}/stat" 2>/dev/null)"
     done
+    # The daemon's threads one by one (fields: tid, scheduling policy, user and system ticks).
+    for task in /proc/"${daemon:-0}"/task/*; do
+      echo "thread ${task##*/} $(cut -d' ' -f41 "$task/stat") $(cut -d' ' -f14,15 "$task/stat")"
+    done
   } >"$work/cpu.txt"
+}
+
+# Copies what goes wrong before stop_all too: the CPU report and the guest's kernel messages.
+fail() {
+  [ -n "${daemon:-}" ] && cpu_report 2>/dev/null
+  finish 1 "$*"
 }
 
 # Stops the daemon and the simulator with SIGTERM (both must exit 0), then the recorders.
