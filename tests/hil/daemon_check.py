@@ -49,7 +49,9 @@ def hil_config(src, dst, relaxed_gates):
     at 0.6 m/s and 1.5 rad/s. Planning in the emulated guest takes 0.2-1.1 s and the daemon's
     splice budget follows it, so the reference robot's sub-second moves would end before a goal
     sent mid-motion could be spliced in, or before a fault 0.3 s in could act; capped, the moves
-    last 2-4 s. The simulated plant keeps the reference drive figures (kS, kG, kV, kA). With
+    last 2-4 s. (Capping the acceleration instead makes the spliced goal infeasible: the lowered
+    limits cannot stop the mechanism along the new path's lead-in.) The simulated plant keeps the
+    reference drive figures (kS, kG, kV, kA). With
     relaxed_gates (the motion test) heartbeat_timeout_s and state_timeout_s are 0.5 s, so a stall
     of the emulated guest longer than 100 ms does not stop its moves; the fault tests keep the
     reference gates."""
