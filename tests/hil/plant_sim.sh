@@ -30,7 +30,13 @@ cyber-plant-sim --can "$CAN_IFACE" --realtime 40 --initial 0.5,1.57 --log "$work
   --fault silent@motion+1.0 --fault state-resume@motion+1.2 \
   --fault disable@motion+1.3 --fault exit@motion+2.5 2>"$work/plant_sim.err" &
 sim=$!
-sleep 0.5
+# The replay starts once the simulator's socket is open (it logs "running on" then).
+tries=0
+until grep -qs "running on" "$work/plant_sim.err"; do
+  tries=$((tries + 1))
+  [ "$tries" -le 600 ] || { echo "plant_sim: the simulator never started" >&2; exit 1; }
+  sleep 0.05
+done
 # canplayer at SCHED_FIFO 30 keeps its 5 ms spacing better while the simulator (and the guest)
 # is busy; it stands in for the daemon's real-time streamer thread.
 chrt -f 30 canplayer -I "$FILES_DIR/setpoints.log" "$CAN_IFACE=can0"
