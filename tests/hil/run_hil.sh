@@ -2,7 +2,8 @@
 # Host side of the HIL tests (ctest label hil): runs tools/vcan-vm for one case from the source
 # root, the same command docs/testing.md shows, and checks its exit status and what came out.
 # Usage: tests/hil/run_hil.sh [--print] CASE BUILD_DIR
-#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode
+#   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode | plant_sim |
+#         daemon_motion | daemon_faults | daemon_link_down
 #   --print: only print the tools/vcan-vm command of the case (for the docs check)
 set -uo pipefail
 
@@ -16,6 +17,9 @@ cd "$src" || exit 2
 build=$(realpath -m --relative-base="$src" "$build_abs")
 export CYBER_VCAN_CACHE=$build/vcan-vm
 probe=$build/tests/hil/vcan_probe
+plant_sim=$build/tools/cyber-plant-sim/cyber-plant-sim
+daemon_bins=(--bin "$build/daemon/app/cyber-plannerd" --bin "$build/tools/cyber_goal/cyber-goal" --bin "$plant_sim"
+  --bin "$build/tools/cyber-can-decode/cyber-can-decode" --bin /usr/bin/lcm-logger --file tests/hil/hil_guest.sh)
 out=$build/hil/$1
 log=$build/hil/$1.log
 
@@ -32,6 +36,19 @@ args_for() {
       args=(--vm --bin /usr/bin/bash --bin /usr/bin/unshare --bin /usr/bin/timeout --bin /usr/bin/setpriv
         --bin "$probe" --file tools/vcan-vm --file tests/hil/vcan_smoke.sh --file tests/hil/vcan_exit3.sh
         --out "$out" --run tests/hil/vcan_host_mode.sh)
+      ;;
+    plant_sim)
+      args=(--auto --bin "$plant_sim" --bin /usr/bin/lcm-logger --bin /usr/bin/chrt
+        --file "$build/hil/plant_sim.setpoints.log:setpoints.log"
+        --out "$out" --run tests/hil/plant_sim.sh)
+      ;;
+    daemon_motion)
+      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml" --out "$out"
+        --run tests/hil/daemon_motion.sh)
+      ;;
+    daemon_faults | daemon_link_down)
+      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml" --out "$out"
+        --run "tests/hil/$1.sh")
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
   esac
@@ -92,6 +109,24 @@ case $1 in
     grep -q "auto: using host mode" "$out/console.log" || fail host_mode "--auto did not pick host mode"
     check_capture "$out/root"
     check_capture "$out/user"
+    ;;
+  plant_sim)
+    mkdir -p "$build/hil"
+    tests/hil/plant_sim_check.py setpoints "$build/hil/plant_sim.setpoints.log" || fail plant_sim "cannot write the setpoint stream"
+    vcan_vm
+    [[ $status -eq 0 ]] || fail plant_sim "the guest script failed"
+    tests/hil/plant_sim_check.py check "$out" || fail plant_sim "the results do not hold (see the checks above)"
+    ;;
+  daemon_motion | daemon_faults | daemon_link_down)
+    mkdir -p "$build/hil"
+    if [[ $1 == daemon_motion ]]; then
+      tests/hil/daemon_check.py hil-config config/reefscape-2025.toml "$build/hil/robot-relaxed.toml" relaxed
+    else
+      tests/hil/daemon_check.py hil-config config/reefscape-2025.toml "$build/hil/robot-slow.toml"
+    fi || fail "$1" "cannot write the test config"
+    vcan_vm
+    [[ $status -eq 0 ]] || fail "$1" "the guest script failed"
+    tests/hil/daemon_check.py "${1#daemon_}" "$out" || fail "$1" "the results do not hold (see the checks above)"
     ;;
 esac
 echo "run_hil: $1 passed"

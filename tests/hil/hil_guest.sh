@@ -1,0 +1,229 @@
+# Shared guest-side helpers of the daemon HIL scripts (sourced; POSIX sh, dash + busybox).
+# Work files go to the guest's tmpfs ($work) and are copied to $OUT_DIR by finish: one write per
+# frame to the 9p share costs the emulated guest too much. Progress lines (a few per run) go to
+# the console and to $work/script.log.
+
+work=/tmp/hil
+mkdir -p "$work"
+control=$work/control
+pids=""
+
+say() { echo "$script_name: $*" | tee -a "$work/script.log"; }
+
+# Records KEY=VALUE for the host-side check.
+note() { echo "$1" >>"$work/scenario.txt"; }
+
+# Copies the work files out, then exits with status $1 (message $2 on failure).
+finish() {
+  for pid in $pids; do kill "$pid" 2>/dev/null || true; done
+  for pid in $pids; do wait "$pid" 2>/dev/null || true; done
+  cp "$work"/*.* "$OUT_DIR"/ 2>/dev/null || true
+  if [ "$1" -ne 0 ]; then
+    echo "$script_name: FAIL: $2" >&2
+    tail -n 20 "$work/daemon.log" >&2 2>/dev/null || true
+  fi
+  exit "$1"
+}
+
+
+# candump -L of the bus into $work/bus.log (-D: keep going while the interface is down), once it
+# is seen listening.
+start_bus_capture() {
+  sync_frame=7FF#53594E43
+  candump -L -D "$CAN_IFACE" >"$work/bus.log" 2>"$work/candump.err" &
+  dump=$!
+  tries=0
+  until grep -qs " $CAN_IFACE $sync_frame\$" "$work/bus.log"; do
+    tries=$((tries + 1))
+    [ "$tries" -le 600 ] || fail "candump never started"
+    cansend "$CAN_IFACE" "$sync_frame"
+    sleep 0.05
+  done
+}
+
+start_lcm_log() {
+  lcm-logger -f -q "$work/lcm.log" &
+  logger=$!
+}
+
+# The plant simulator with extra arguments, its faults also driven through the FIFO $control. It
+# runs under SCHED_FIFO 40 (below the daemon's streamer at 50): it stands for the roboRIO and the
+# motor controllers, separate hardware whose heartbeat does not wait for the daemon's other
+# threads or this script's commands.
+start_plant() {
+  mkfifo "$control"
+  cyber-plant-sim --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" --log "$work/plant.csv" --realtime 40 \
+    --control "$control" "$@" 2>"$work/plant_sim.err" &
+  plant=$!
+}
+
+start_daemon() {
+  cyber-plannerd --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" >"$work/daemon.log" 2>&1 &
+  daemon=$!
+}
+
+# Injects fault KIND now.
+fault() { echo "$1" >"$control"; }
+
+# Sends control line $1 and waits for the simulator's answer in its log: returns 0 when the new
+# line matches the extended regex $2, 1 when it matches $3.
+control_answer() {
+  before=$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)
+  echo "$1" >"$control"
+  tries=0
+  while [ "$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)" -le "$before" ]; do
+    tries=$((tries + 1))
+    [ "$tries" -le 250 ] || fail "no answer from the simulator to '$1'"
+    sleep 0.02
+  done
+  grep -E "$2|$3" "$work/plant_sim.err" | tail -n 1 | grep -Eq "$2"
+}
+
+# Injects fault KIND only if the setpoints are moving right now (the simulator decides on the
+# frames it sees); returns 1 when it did not.
+fault_if_moving() { control_answer "$1 if-moving" "fault $1 \(control\)" "$1 if-moving skipped"; }
+
+# Returns 0 when the simulator saw a moving setpoint within the last 20 ms.
+moving_now() { control_answer probe "probe: moving" "probe: not moving"; }
+
+# Waits up to $3 seconds for a line matching the extended regex $2 in file $1.
+wait_for_line() {
+  tries=0
+  until grep -Eqs "$2" "$1"; do
+    tries=$((tries + 1))
+    [ "$tries" -le $(($3 * 50)) ] || fail "no '$2' in $(basename "$1") after $3 s"
+    sleep 0.02
+  done
+}
+
+finals='request [0-9]+ (done|rejected|failed|cancelled)'
+
+# Starts goal $1 to $2 in the background (pid in $goal_pid); more cyber-goal options may follow.
+start_goal() {
+  id_=$1
+  to_=$2
+  shift 2
+  cyber-goal --to "$to_" --id "$id_" --timeout 25 "$@" >"$work/goal$id_.out" 2>&1 &
+  goal_pid=$!
+}
+
+# Waits for the background goal $1 and notes how it ended (the host checks it).
+wait_goal_noted() {
+  status=0
+  wait "$goal_pid" || status=$?
+  say "goal $1: $(tail -n 1 "$work/goal$1.out")"
+}
+
+# Waits for the background goal $1; fails unless cyber-goal exits $2 (0 done, 5 cancelled).
+wait_goal() {
+  status=0
+  wait "$goal_pid" || status=$?
+  [ "$status" -eq "$2" ] || fail "goal $1: cyber-goal exited $status, expected $2 ($(cat "$work/goal$1.out"))"
+  say "goal $1: $(tail -n 1 "$work/goal$1.out")"
+}
+
+# Starts goal $2 to $3 and, once it has been executing for $4 s, runs the command $5 (a fault
+# through fault_if_moving, or a link change after moving_now), noting "$1=ID"; the goal's id is
+# left in $id. Under emulation the guest sometimes stands still long enough for the daemon to stop
+# on a stale heartbeat by itself; when the goal was no longer moving the command is not carried
+# out and the goal is sent again with the id + 100 (noted as retry=ID), up to three times,
+# alternating its target with $6 so that each try is a long move again.
+during_motion() {
+  id=$2
+  target=$3
+  for attempt in 1 2 3; do
+    start_goal "$id" "$target"
+    wait_for_line "$work/goal$id.out" "executing|$finals" 60
+    sleep "$4"
+    if ! grep -Eqs "$finals" "$work/goal$id.out" && $5; then
+      note "$1=$id"
+      return 0
+    fi
+    wait "$goal_pid" || true
+    say "goal $id was not moving any more for '$5': $(tail -n 1 "$work/goal$id.out")"
+    note "retry=$id"
+    id=$((id + 100))
+    if [ "$target" = "$3" ]; then target=$6; else target=$3; fi
+  done
+  fail "no goal was still moving $4 s after it started executing, in three tries"
+}
+
+# Goal $1 to $2 that must end done; sent again (id + 100, noted retry=ID) when the daemon stopped
+# it on a stale heartbeat or state (see during_motion), up to three times.
+goal_done() {
+  id=$1
+  for attempt in 1 2 3; do
+    start_goal "$id" "$2"
+    status=0
+    wait "$goal_pid" || status=$?
+    say "goal $id: $(tail -n 1 "$work/goal$id.out")"
+    if [ "$status" -eq 0 ]; then
+      note "done=$id"
+      return 0
+    fi
+    grep -Eqs "cancelled: motion stopped.*(heartbeat|stale)" "$work/goal$id.out" ||
+      fail "goal $id to $2: cyber-goal exited $status ($(cat "$work/goal$id.out"))"
+    note "retry=$id"
+    id=$((id + 100))
+  done
+  fail "goal $1 to $2 never finished in three tries"
+}
+
+# Waits up to 10 s for process $1 ($2 names it) to exit; sets $exit_status. Kills it after that.
+reap() {
+  tries=0
+  while kill -0 "$1" 2>/dev/null; do
+    tries=$((tries + 1))
+    if [ "$tries" -gt 200 ]; then
+      kill -KILL "$1" 2>/dev/null || true
+      fail "$2 did not exit within 10 s of its signal"
+    fi
+    sleep 0.05
+  done
+  exit_status=0
+  wait "$1" || exit_status=$?
+}
+
+# CPU time (clock ticks: user, system) of each process so far, and the guest's uptime, for the
+# host-side report: who kept the emulated CPU busy.
+cpu_report() {
+  {
+    echo "uptime $(cut -d' ' -f1 /proc/uptime)"
+    for name_pid in "cyber-plannerd:${daemon:-0}" "cyber-plant-sim:${plant:-0}" "lcm-logger:${logger:-0}" "candump:${dump:-0}"; do
+      echo "${name_pid%%:*} $(cut -d' ' -f14,15,22 "/proc/${name_pid#*:}/stat" 2>/dev/null)"
+    done
+    # The daemon's threads one by one (fields: tid, scheduling policy, user and system ticks).
+    for task in /proc/"${daemon:-0}"/task/*; do
+      echo "thread ${task##*/} $(cut -d' ' -f41 "$task/stat") $(cut -d' ' -f14,15 "$task/stat")"
+    done
+  } >"$work/cpu.txt"
+}
+
+# Copies what goes wrong before stop_all too: the CPU report and the guest's kernel messages.
+fail() {
+  [ -n "${daemon:-}" ] && cpu_report 2>/dev/null
+  finish 1 "$*"
+}
+
+# Stops the daemon and the simulator with SIGTERM (both must exit 0), then the recorders.
+stop_all() {
+  cpu_report
+  kill -TERM "$daemon" "$plant"
+  reap "$daemon" cyber-plannerd
+  [ "$exit_status" -eq 0 ] || fail "cyber-plannerd exited with $exit_status on SIGTERM"
+  reap "$plant" cyber-plant-sim
+  [ "$exit_status" -eq 0 ] || fail "cyber-plant-sim exited with $exit_status on SIGTERM"
+  kill -INT "$logger"
+  reap "$logger" lcm-logger
+  kill "$dump"
+  reap "$dump" candump
+  pids=""
+}
+
+# cyber-can-decode of the capture, in the guest, into $work/bus.csv (its summary in bus.decode.err).
+decode_bus() {
+  status=0
+  cyber-can-decode --csv "$@" "$work/bus.log" >"$work/bus.csv" 2>"$work/bus.decode.err" || status=$?
+  [ "$status" -eq 0 ] || fail "cyber-can-decode $* exited $status: $(cat "$work/bus.decode.err")"
+  say "$(cat "$work/bus.decode.err")"
+}

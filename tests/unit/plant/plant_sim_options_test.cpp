@@ -1,0 +1,105 @@
+// The command line of cyber-plant-sim.
+
+#include <gtest/gtest.h>
+
+#include "cyber/plant/sim_options.hpp"
+
+namespace cyber::plant {
+namespace {
+
+SimArguments parse(std::vector<std::string_view> args) { return parseSimArguments(args); }
+
+TEST(SimOptions, DefaultsWithoutArguments) {
+  const auto parsed = parse({});
+  ASSERT_TRUE(parsed.error.empty());
+  EXPECT_FALSE(parsed.help);
+  const SimOptions& o = parsed.options;
+  EXPECT_FALSE(o.config_path);
+  EXPECT_FALSE(o.can_interface);
+  EXPECT_FALSE(o.lcm_url);
+  EXPECT_EQ(o.initial_q, planner::JointVector(0.20, 1.57));
+  EXPECT_FALSE(o.held_coral);
+  EXPECT_FALSE(o.held_algae);
+  EXPECT_EQ(o.state_rate_hz, 100.0);
+  EXPECT_TRUE(o.heartbeat);
+  EXPECT_TRUE(o.faults.empty());
+  EXPECT_FALSE(o.log_path);
+  EXPECT_EQ(o.duration_s, 0.0);
+  EXPECT_EQ(o.setpoint_timeout_s, 0.1);
+  EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, kDefaultElevatorGains.kp_volts_per_unit);
+  EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, kDefaultArmGains.kd_volts_per_unit_per_s);
+  EXPECT_EQ(o.realtime_priority, 0);
+  EXPECT_FALSE(o.control_path);
+}
+
+TEST(SimOptions, EveryOption) {
+  const auto parsed = parse({"--config", "robot.toml", "--can", "vcan0", "--lcm-url", "memq://",
+                             "--initial", "1.2,-0.5", "--coral", "--algae", "--state-rate", "50",
+                             "--no-heartbeat", "--fault", "heartbeat-stop@1.5", "--fault",
+                             "disable@motion+0.2", "--log", "out.csv", "--duration", "7.5",
+                             "--setpoint-timeout", "0.25", "--elevator-gains", "200,2",
+                             "--arm-gains", "40,0", "--realtime", "40", "--control", "ctl.fifo"});
+  ASSERT_TRUE(parsed.error.empty()) << parsed.error;
+  const SimOptions& o = parsed.options;
+  EXPECT_EQ(o.config_path, "robot.toml");
+  EXPECT_EQ(o.can_interface, "vcan0");
+  EXPECT_EQ(o.lcm_url, "memq://");
+  EXPECT_EQ(o.initial_q, planner::JointVector(1.2, -0.5));
+  EXPECT_TRUE(o.held_coral);
+  EXPECT_TRUE(o.held_algae);
+  EXPECT_EQ(o.state_rate_hz, 50.0);
+  EXPECT_FALSE(o.heartbeat);
+  ASSERT_EQ(o.faults.size(), 2u);
+  EXPECT_EQ(o.faults[0], (FaultEvent{FaultKind::kHeartbeatStop, 0, 1.5}));
+  EXPECT_EQ(o.faults[1], (FaultEvent{FaultKind::kBroadcastDisable, 1, 0.2}));
+  EXPECT_EQ(o.log_path, "out.csv");
+  EXPECT_EQ(o.duration_s, 7.5);
+  EXPECT_EQ(o.setpoint_timeout_s, 0.25);
+  EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, 200.0);
+  EXPECT_EQ(o.elevator_gains.kd_volts_per_unit_per_s, 2.0);
+  EXPECT_EQ(o.arm_gains.kp_volts_per_unit, 40.0);
+  EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, 0.0);
+  EXPECT_EQ(o.realtime_priority, 40);
+  EXPECT_EQ(o.control_path, "ctl.fifo");
+}
+
+TEST(SimOptions, Help) {
+  EXPECT_TRUE(parse({"--help"}).help);
+  EXPECT_TRUE(parse({"--can", "vcan0", "-h"}).help);
+  EXPECT_NE(simUsage().find("--fault KIND@WHEN"), std::string_view::npos);
+}
+
+TEST(SimOptions, BadUsageNamesTheProblem) {
+  const std::vector<std::vector<std::string_view>> bad = {
+      {"--bogus"},
+      {"vcan0"},
+      {"--can"},
+      {"--can", ""},
+      {"--initial", "1.0"},
+      {"--initial", "1.0,2.0,3.0"},
+      {"--initial", "a,b"},
+      {"--initial", "1.0,nan"},
+      {"--state-rate", "0"},
+      {"--state-rate", "2000"},
+      {"--state-rate", "fast"},
+      {"--fault", "boom@1"},
+      {"--fault"},
+      {"--duration", "-1"},
+      {"--setpoint-timeout", "0"},
+      {"--elevator-gains", "1"},
+      {"--arm-gains", "-1,0"},
+      {"--log"},
+      {"--control"},
+      {"--realtime", "0"},
+      {"--realtime", "100"},
+      {"--realtime", "1.5"},
+  };
+  for (const auto& args : bad) {
+    const auto parsed = parse(args);
+    EXPECT_FALSE(parsed.error.empty()) << args.front();
+    EXPECT_NE(parsed.error.find(args.front()), std::string::npos) << parsed.error;
+  }
+}
+
+}  // namespace
+}  // namespace cyber::plant

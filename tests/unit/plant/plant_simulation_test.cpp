@@ -1,0 +1,206 @@
+// PlantSimulation: two joints tracking setpoint streams like the daemon's, timeouts, disables.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cyber/plant/plant_simulation.hpp"
+#include "reference_model.hpp"
+
+namespace cyber::plant {
+namespace {
+
+using planner::kArm;
+using planner::kElevator;
+
+constexpr double kStreamPeriod_s = 0.005;  // the daemon's default 200 Hz
+
+SimulationSettings referenceSettings() {
+  const auto& model = test::referenceModel();
+  SimulationSettings settings;
+  settings.plants[kElevator] = JointPlant::fromDrive(model.elevator_drive, model.elevator_range_m);
+  settings.plants[kArm] = JointPlant::fromDrive(model.arm_drive, model.arm_range_rad);
+  settings.gains[kElevator] = kDefaultElevatorGains;
+  settings.gains[kArm] = kDefaultArmGains;
+  return settings;
+}
+
+// Where stiction can hold a joint under hold setpoints (feedforward kG g(target)): the spring Kp e
+// must beat kS plus the gravity difference kG |g(q) - g(target)| <= kG |g'| e, with |g'| <= 1 for
+// the cosine and 0 for the constant model.
+double deadBand(const SimulationSettings& settings, int joint) {
+  const JointPlant& plant = settings.plants[joint];
+  const double gravity_slope = plant.gravity == planner::GravityModel::kCosine ? plant.kG_volts : 0.0;
+  return plant.kS_volts / (settings.gains[joint].kp_volts_per_unit - gravity_slope) + 1e-9;
+}
+
+// A rest-to-rest quintic move q0 -> q1 in duration_s: position, velocity, acceleration at t.
+struct Quintic {
+  double q0, q1, duration_s;
+  void sample(double t, double& q, double& v, double& a) const {
+    const double s = std::clamp(t / duration_s, 0.0, 1.0);
+    const double d = q1 - q0;
+    q = q0 + d * s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+    v = d * 30.0 * s * s * (1.0 - s) * (1.0 - s) / duration_s;
+    a = d * 60.0 * s * (1.0 - s) * (1.0 - 2.0 * s) / (duration_s * duration_s);
+  }
+};
+
+JointCommand commandAt(const Quintic& move, const planner::DriveParams& drive, double t) {
+  double q, v, a;
+  move.sample(t, q, v, a);
+  return JointCommand{q, v, drive.volts(q, v, a)};
+}
+
+struct TrackingResult {
+  double max_error[2] = {0.0, 0.0};
+  double final_error[2] = {0.0, 0.0};
+};
+
+// Streams both moves at 200 Hz (then hold setpoints until end_s), stepping the simulation between
+// frames, and records the position error against the planned position at each frame.
+TrackingResult track(PlantSimulation& sim, const Quintic (&moves)[2], double end_s) {
+  const auto& model = test::referenceModel();
+  TrackingResult result;
+  for (long k = 0; k * kStreamPeriod_s <= end_s + 1e-12; ++k) {
+    const double t = static_cast<double>(k) * kStreamPeriod_s;
+    for (int joint : {kElevator, kArm}) {
+      const JointCommand command = commandAt(moves[joint], model.drive(joint), t);
+      sim.receiveSetpoint(joint, command, t);
+      const double error = std::abs(sim.state(joint).position - command.position);
+      result.max_error[joint] = std::max(result.max_error[joint], error);
+      result.final_error[joint] = std::abs(sim.state(joint).position - moves[joint].q1);
+    }
+  }
+  return result;
+}
+
+TEST(PlantSimulation, TracksAFeedforwardMoveAndSettlesWithinTheFrictionBand) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(0.2, 1.57));
+  const Quintic moves[2] = {{0.2, 1.5, 1.0}, {1.57, 5.0, 1.0}};
+  const TrackingResult result = track(sim, moves, 1.5);
+  // The plant is the feedforward model itself, so only integration and extrapolation errors
+  // remain during the move (measured: 0.6 mm and 1.1 mrad).
+  EXPECT_LT(result.max_error[kElevator], 0.001);
+  EXPECT_LT(result.max_error[kArm], 0.002);
+  // At rest the PD loop leaves at most the friction dead band.
+  EXPECT_LE(result.final_error[kElevator], deadBand(sim.settings(), kElevator));
+  EXPECT_LE(result.final_error[kArm], deadBand(sim.settings(), kArm));
+  EXPECT_NEAR(sim.velocities()[kElevator], 0.0, 1e-6);
+  EXPECT_NEAR(sim.velocities()[kArm], 0.0, 1e-6);
+}
+
+// Feedback matters: from a start 5 cm / 0.2 rad off, hold setpoints pull both joints to within
+// the friction band, for seeded random targets across the range.
+TEST(PlantSimulation, HoldSetpointsConvergeFromAnOffsetStart) {
+  const auto& model = test::referenceModel();
+  std::mt19937 rng(20250611);
+  std::uniform_real_distribution<double> elevator(0.1, 1.9);
+  std::uniform_real_distribution<double> arm(0.3, 5.8);
+  for (int trial = 0; trial < 20; ++trial) {
+    const planner::JointVector target(elevator(rng), arm(rng));
+    PlantSimulation sim(referenceSettings(), target + planner::JointVector(-0.05, 0.2));
+    for (long k = 0; k <= 200; ++k) {
+      const double t = static_cast<double>(k) * kStreamPeriod_s;
+      for (int joint : {kElevator, kArm}) {
+        const JointCommand hold{target[joint], 0.0, model.drive(joint).volts(target[joint], 0.0, 0.0)};
+        sim.receiveSetpoint(joint, hold, t);
+      }
+    }
+    for (int joint : {kElevator, kArm}) {
+      EXPECT_LE(std::abs(sim.positions()[joint] - target[joint]), deadBand(sim.settings(), joint))
+          << "trial " << trial << " joint " << joint;
+    }
+  }
+}
+
+TEST(PlantSimulation, StepsOnAFixedGridAndNeverGoesBack) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(0.2, 1.57));
+  EXPECT_EQ(sim.time_s(), 0.0);
+  sim.advanceTo(0.0);
+  EXPECT_EQ(sim.time_s(), 0.0);
+  sim.advanceTo(0.0001);
+  EXPECT_DOUBLE_EQ(sim.time_s(), 0.001);  // the step starting at 0 ran
+  sim.advanceTo(0.0105);
+  EXPECT_DOUBLE_EQ(sim.time_s(), 0.011);
+  sim.advanceTo(0.003);
+  EXPECT_DOUBLE_EQ(sim.time_s(), 0.011);
+  sim.advanceTo(0.012);  // on the grid: exactly there, despite 0.012 / 0.001 rounding
+  EXPECT_DOUBLE_EQ(sim.time_s(), 0.012);
+  for (int k = 13; k < 1000; ++k) {
+    sim.advanceTo(k * 0.001);
+    ASSERT_DOUBLE_EQ(sim.time_s(), k * 0.001) << k;
+  }
+}
+
+TEST(PlantSimulation, IsDeterministic) {
+  const Quintic moves[2] = {{0.2, 1.0, 0.8}, {1.57, 3.0, 0.8}};
+  PlantSimulation a(referenceSettings(), planner::JointVector(0.2, 1.57));
+  PlantSimulation b(referenceSettings(), planner::JointVector(0.2, 1.57));
+  track(a, moves, 1.0);
+  track(b, moves, 1.0);
+  EXPECT_EQ(a.positions(), b.positions());
+  EXPECT_EQ(a.velocities(), b.velocities());
+}
+
+TEST(PlantSimulation, ExtrapolatesTheLatestSetpointUntilItTimesOut) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(0.2, 1.57));
+  EXPECT_FALSE(sim.effectiveCommand(kElevator, 0.0));  // nothing received: neutral
+  sim.receiveSetpoint(kElevator, JointCommand{0.3, 0.5, 2.0}, 1.0);
+  const auto at = sim.effectiveCommand(kElevator, 1.004);
+  ASSERT_TRUE(at);
+  EXPECT_DOUBLE_EQ(at->position, 0.3 + 0.5 * 0.004);
+  EXPECT_EQ(at->velocity, 0.5);
+  EXPECT_EQ(at->feedforward_volts, 2.0);
+  EXPECT_TRUE(sim.effectiveCommand(kElevator, 1.0999));
+  EXPECT_FALSE(sim.effectiveCommand(kElevator, 1.1001));
+  EXPECT_FALSE(sim.effectiveCommand(kArm, 1.0));  // per joint
+}
+
+// Setpoints stop (the daemon stopped streaming): after the timeout the controller is neutral and
+// the elevator slides down under gravity in brake mode, as a real one would.
+TEST(PlantSimulation, GoesNeutralAfterTheSetpointTimeout) {
+  const auto& model = test::referenceModel();
+  PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
+  const JointCommand hold{1.0, 0.0, model.elevator_drive.volts(1.0, 0.0, 0.0)};
+  for (int k = 0; k < 20; ++k) sim.receiveSetpoint(kElevator, hold, k * kStreamPeriod_s);
+  const double last_s = 19 * kStreamPeriod_s;
+  sim.advanceTo(last_s + 0.099);
+  EXPECT_NE(sim.appliedVolts(kElevator), 0.0);
+  EXPECT_NEAR(sim.positions()[kElevator], 1.0, 0.001);
+  sim.advanceTo(last_s + 0.3);
+  EXPECT_EQ(sim.appliedVolts(kElevator), 0.0);
+  EXPECT_NEAR(sim.velocities()[kElevator], neutralSlideVelocity(sim.settings().plants[kElevator], 1.0), 1e-6);
+  EXPECT_LT(sim.positions()[kElevator], 0.995);
+}
+
+TEST(PlantSimulation, RestsAtTheInitialPoseUntilTheFirstSetpoint) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 0.3));
+  sim.advanceTo(2.0);  // gravity would pull both down in neutral
+  EXPECT_EQ(sim.positions(), planner::JointVector(1.0, 0.3));
+  EXPECT_EQ(sim.velocities(), planner::JointVector(0.0, 0.0));
+  // A setpoint for the elevator only: the elevator is driven, the arm still rests.
+  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 2.0);
+  sim.advanceTo(2.5);  // past the timeout: neutral, sliding
+  EXPECT_LT(sim.positions()[kElevator], 0.99);
+  EXPECT_EQ(sim.positions()[kArm], 0.3);
+}
+
+TEST(PlantSimulation, BroadcastDisableIsNeutralAtOnceUntilTheNextSetpoint) {
+  PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
+  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 0.0);
+  sim.receiveSetpoint(kArm, JointCommand{1.57, 0.0, 0.0}, 0.0);
+  sim.advanceTo(0.01);
+  sim.disableOutputs();
+  EXPECT_FALSE(sim.effectiveCommand(kElevator, 0.011));
+  EXPECT_FALSE(sim.effectiveCommand(kArm, 0.011));
+  sim.advanceTo(0.02);
+  EXPECT_EQ(sim.appliedVolts(kElevator), 0.0);
+  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 0.02);
+  EXPECT_TRUE(sim.effectiveCommand(kElevator, 0.021));
+  EXPECT_FALSE(sim.effectiveCommand(kArm, 0.021));  // only the joint that got a setpoint
+}
+
+}  // namespace
+}  // namespace cyber::plant

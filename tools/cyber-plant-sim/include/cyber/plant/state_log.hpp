@@ -1,0 +1,31 @@
+#pragma once
+// The --log CSV of cyber-plant-sim: one row per ARM_STATE period (also while silent) and one at
+// exit, so a test can read the trajectory the plant actually followed and its final error.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "cyber/plant/joint_model.hpp"
+#include "cyber/plant/plant_simulation.hpp"
+
+namespace cyber::plant {
+
+struct StateLogRow {
+  double t_s = 0.0;              // simulator time since start-up (monotonic), s
+  std::int64_t utime = 0;        // wall clock, us: the ARM_STATE utime, comparable to candump's
+  std::array<JointState, kJointCount> state{};
+  std::array<std::optional<JointCommand>, kJointCount> command{};  // empty: neutral
+  std::array<double, kJointCount> applied_volts{};
+  bool heartbeat = false;        // the heartbeat is being sent
+  bool robot_enabled = false;    // ... with the enabled and system-watchdog bits
+  bool state_published = false;  // ARM_STATE went out this period (false while silent)
+};
+
+// t_s,utime,elevator_m,elevator_mps,arm_rad,arm_radps,elevator_cmd_m,elevator_cmd_mps,
+// elevator_ff_volts,elevator_volts,arm_cmd_rad,arm_cmd_radps,arm_ff_volts,arm_volts,
+// heartbeat,robot_enabled,state_published  (command fields empty while neutral)
+std::string stateLogHeader();
+std::string stateLogRow(const StateLogRow& row);
+
+}  // namespace cyber::plant

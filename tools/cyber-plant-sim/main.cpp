@@ -1,0 +1,161 @@
+// cyber-plant-sim: the elevator and arm motor controllers and their mechanism, simulated on a CAN
+// interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
+// options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
+
+#include <fcntl.h>
+#include <pthread.h>
+#include <sched.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cyber/can/frc_id.hpp"
+#include "cyber/can/id_filter.hpp"
+#include "cyber/config/load_config.hpp"
+#include "cyber/plant/sim_options.hpp"
+#include "cyber/plant/state_log.hpp"
+#include "sim_runner.hpp"
+
+namespace {
+
+using cyber::plant::SimOptions;
+
+int usageError(const std::string& message) {
+  std::cerr << "cyber-plant-sim: " << message << "\n" << cyber::plant::simUsage();
+  return 2;
+}
+
+bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxDeviceNumber; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // SIGINT/SIGTERM are taken through the event loop's signalfd; block them before any library
+  // can start a thread that would otherwise receive them.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  std::vector<std::string_view> args(argv + 1, argv + argc);
+  const auto parsed = cyber::plant::parseSimArguments(args);
+  if (parsed.help) {
+    std::cout << cyber::plant::simUsage();
+    return 0;
+  }
+  if (!parsed.error.empty()) return usageError(parsed.error);
+  const SimOptions& options = parsed.options;
+
+  cyber::config::Config config;
+  try {
+    config = options.config_path ? cyber::config::loadConfigFile(*options.config_path)
+                                 : cyber::config::loadEmbeddedDefaultConfig();
+  } catch (const std::exception& error) {
+    std::cerr << "cyber-plant-sim: " << error.what() << "\n";
+    return 2;
+  }
+  const auto& robot = config.robot;
+  if (!robot.withinLimits(options.initial_q)) {
+    return usageError("--initial " + std::to_string(options.initial_q[0]) + "," +
+                      std::to_string(options.initial_q[1]) + " is outside the joint ranges of " +
+                      robot.name);
+  }
+  const auto& devices = config.daemon.devices;
+  if (!validDevice(devices.elevator) || !validDevice(devices.arm) || devices.elevator == devices.arm) {
+    std::cerr << "cyber-plant-sim: [daemon.devices] elevator and arm must be distinct numbers 0..63\n";
+    return 2;
+  }
+
+  cyber::plant::RunnerSetup setup;
+  setup.options = options;
+  setup.elevator_device = static_cast<std::uint8_t>(devices.elevator);
+  setup.arm_device = static_cast<std::uint8_t>(devices.arm);
+  setup.state_channel = config.daemon.channels.state;
+  setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
+  auto& sim = setup.simulation;
+  sim.plants[cyber::planner::kElevator] =
+      cyber::plant::JointPlant::fromDrive(robot.elevator_drive, robot.elevator_range_m);
+  sim.plants[cyber::planner::kArm] =
+      cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.arm_range_rad);
+  sim.gains[cyber::planner::kElevator] = options.elevator_gains;
+  sim.gains[cyber::planner::kArm] = options.arm_gains;
+  sim.setpoint_timeout_s = options.setpoint_timeout_s;
+
+  // Only the two setpoint ids reach us; the kernel drops everything else.
+  cyber::can::SocketOptions socket_options;
+  socket_options.filters = std::vector<cyber::can::IdFilter>{
+      cyber::can::IdFilter::exact(cyber::can::teamFrameId(cyber::can::kSetpointApiClass,
+                                                          cyber::can::kSetpointApiIndex,
+                                                          setup.elevator_device),
+                                  true),
+      cyber::can::IdFilter::exact(cyber::can::teamFrameId(cyber::can::kSetpointApiClass,
+                                                          cyber::can::kSetpointApiIndex,
+                                                          setup.arm_device),
+                                  true)};
+  auto socket = cyber::can::CanSocket::open(setup.can_interface, socket_options);
+  if (!socket) {
+    std::cerr << "cyber-plant-sim: " << socket.error().message << "\n";
+    return 1;
+  }
+
+  const std::string lcm_url = options.lcm_url.value_or(config.daemon.lcm_url);
+  lcm::LCM lcm(lcm_url);
+  if (!lcm.good()) {
+    std::cerr << "cyber-plant-sim: cannot open LCM at " << lcm_url << "\n";
+    return 1;
+  }
+
+  std::FILE* log = nullptr;
+  if (options.log_path) {
+    log = std::fopen(options.log_path->c_str(), "w");
+    if (log == nullptr) {
+      std::perror(("cyber-plant-sim: " + *options.log_path).c_str());
+      return 1;
+    }
+    std::setvbuf(log, nullptr, _IOFBF, 1 << 16);
+    std::fprintf(log, "%s\n", cyber::plant::stateLogHeader().c_str());
+  }
+
+  if (options.realtime_priority > 0) {
+    sched_param param{};
+    param.sched_priority = options.realtime_priority;
+    if (sched_setscheduler(0, SCHED_FIFO, &param) != 0) {
+      std::perror("cyber-plant-sim: --realtime: sched_setscheduler");
+      return 1;
+    }
+  }
+
+  // The control FIFO is opened read-write: it then never reports end-of-file when a writer such
+  // as `echo KIND > FIFO` closes it.
+  int control_fd = -1;
+  if (options.control_path) {
+    const char* path = options.control_path->c_str();
+    if (::mkfifo(path, 0600) != 0 && errno != EEXIST) {
+      std::perror(("cyber-plant-sim: mkfifo " + *options.control_path).c_str());
+      return 1;
+    }
+    control_fd = ::open(path, O_RDWR | O_NONBLOCK | O_CLOEXEC);
+    struct stat info {};
+    if (control_fd < 0 || ::fstat(control_fd, &info) != 0 || !S_ISFIFO(info.st_mode)) {
+      std::cerr << "cyber-plant-sim: --control " << *options.control_path << " is not a FIFO it can open\n";
+      return 1;
+    }
+  }
+
+  const int status = cyber::plant::runSimulator(setup, std::move(socket).value(), lcm, log, control_fd);
+  if (control_fd >= 0) ::close(control_fd);
+  if (log != nullptr && std::fclose(log) != 0) {
+    std::perror("cyber-plant-sim: writing the log");
+    return 1;
+  }
+  return status;
+}
