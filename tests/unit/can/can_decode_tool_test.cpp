@@ -1,6 +1,8 @@
 // Runs tools/cyber-can-decode on candump -L logs written with the codec and the log writer.
 
 #include <gtest/gtest.h>
+
+#include "tool_run.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,39 +21,14 @@
 namespace cyber::can {
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using test::ToolRun;
+using test::readFile;
 
 std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "cyber_can_decode_" + std::to_string(::getpid()) + "_" + name;
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-// Runs the tool with a shell command tail (arguments and redirections).
-ToolRun runTool(const std::string& args) {
-  const std::string err_path = tempPath("stderr.txt");
-  const std::string command = std::string(CYBER_CAN_DECODE) + " " + args + " 2>" + err_path;
-  ToolRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, got);
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = readFile(err_path);
-  std::remove(err_path.c_str());
-  return run;
-}
+ToolRun runTool(const std::string& args) { return test::runTool(CYBER_CAN_DECODE, args); }
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;

@@ -3,6 +3,8 @@
 // by the HIL tests on vcan.)
 
 #include <gtest/gtest.h>
+
+#include "tool_run.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,38 +15,14 @@
 
 namespace {
 
-struct ToolRun {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+using cyber::test::ToolRun;
+using cyber::test::readFile;
 
 std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "cyber_plant_sim_" + std::to_string(::getpid()) + "_" + name;
 }
 
-std::string readFile(const std::string& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
-
-ToolRun runTool(const std::string& args) {
-  const std::string err_path = tempPath("stderr.txt");
-  const std::string command = std::string(CYBER_PLANT_SIM) + " " + args + " 2>" + err_path;
-  ToolRun run;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return run;
-  char buffer[4096];
-  size_t got;
-  while ((got = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) run.out.append(buffer, got);
-  const int status = ::pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.err = readFile(err_path);
-  std::remove(err_path.c_str());
-  return run;
-}
+ToolRun runTool(const std::string& args) { return cyber::test::runTool(CYBER_PLANT_SIM, args); }
 
 TEST(PlantSimTool, HelpExitsZero) {
   const ToolRun run = runTool("--help");
