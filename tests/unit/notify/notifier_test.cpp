@@ -4,6 +4,8 @@
 #include "cyber/notify/notifier.hpp"
 
 #include <gtest/gtest.h>
+
+#include "allocation_counter.hpp"
 #include <poll.h>
 #include <sys/socket.h>
 #include <sys/un.h>
@@ -20,25 +22,6 @@
 #include <string>
 #include <thread>
 #include <vector>
-
-namespace {
-
-// Counts global allocations so the test can prove the watchdog path never allocates.
-std::atomic<long> g_allocations{0};
-
-}  // namespace
-
-// g++ 12 sees the inlined free() below paired with a new-expression and calls it a mismatch,
-// though this operator new is exactly what those expressions call.
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace {
 
@@ -192,16 +175,16 @@ TEST(Notifier, WatchdogAndStatusDoNotAllocate) {
   FakeManager manager(true);
   Notifier notifier(manager.notifySocket());
   const std::string text = "moving request 42, 3 plans, 0 CAN errors";
-  const long before = g_allocations.load();
+  const long before = cyber::test::allocationCount();
   for (int i = 0; i < 10; ++i) {
     EXPECT_EQ(notifier.watchdog(), SendResult::sent);
   }
   EXPECT_EQ(notifier.status(text), SendResult::sent);
-  const long after = g_allocations.load();
+  const long after = cyber::test::allocationCount();
   EXPECT_EQ(after - before, 0);
   // The counter works: a string this long must allocate.
   std::string probe(100, 'p');
-  EXPECT_GT(g_allocations.load(), after);
+  EXPECT_GT(cyber::test::allocationCount(), after);
   EXPECT_EQ(manager.receive(), "WATCHDOG=1");
 }
 
@@ -278,9 +261,9 @@ TEST(ProcessNotifier, FreeFunctionsUseNotifySocketAndDoNotAllocateAfterFirstUse)
   ::setenv("NOTIFY_SOCKET", manager.notifySocket().c_str(), 1);
   EXPECT_EQ(cyber::notify::notifyStatus("starting"), SendResult::sent);
   EXPECT_EQ(manager.receive(), "STATUS=starting");
-  const long before = g_allocations.load();
+  const long before = cyber::test::allocationCount();
   EXPECT_EQ(cyber::notify::notifyWatchdog(), SendResult::sent);
-  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(cyber::test::allocationCount(), before);
   EXPECT_EQ(manager.receive(), "WATCHDOG=1");
   EXPECT_EQ(cyber::notify::notifyReady(), SendResult::sent);
   EXPECT_EQ(manager.receive(), "READY=1");

@@ -13,22 +13,8 @@
 
 #include <gtest/gtest.h>
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
+#include "allocation_counter.hpp"
 
-// Count every allocation of the test binary, to prove at() makes none. (GCC cannot see that the
-// replaced new and delete below pair malloc with free.)
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
 
 namespace cyber::planner {
 namespace {
@@ -218,10 +204,10 @@ TEST(CubicSplinePath, EvaluationDoesNotAllocate) {
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   const GeometricPath& geometric = path.value();
-  const long before = g_allocations.load();
+  const long before = cyber::test::allocationCount();
   double sum = 0.0;
   for (int i = 0; i <= 10000; ++i) sum += geometric.at(geometric.length() * i / 10000.0).q.sum();
-  const long after = g_allocations.load();
+  const long after = cyber::test::allocationCount();
   EXPECT_EQ(after, before);
   EXPECT_TRUE(std::isfinite(sum));
 }

@@ -11,23 +11,10 @@
 
 #include <gtest/gtest.h>
 
+#include "allocation_counter.hpp"
+
 #include "topp_fixtures.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// Counts every global allocation of this test binary (new/delete forward to malloc/free).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
 
 namespace cyber::planner {
 namespace {
@@ -157,10 +144,10 @@ TEST(Trajectory, VoltsAndAmpsFollowTheDriveModel) {
 
 TEST(Trajectory, SampleDoesNotAllocate) {
   const Trajectory t = makeTrajectory(wiggle());
-  const long before = g_allocations.load();
+  const long before = cyber::test::allocationCount();
   double sum = 0.0;
   for (int i = 0; i < 1000; ++i) sum += t.sample(t.duration_s() * i / 999.0).volts.sum();
-  EXPECT_EQ(g_allocations.load(), before);
+  EXPECT_EQ(cyber::test::allocationCount(), before);
   EXPECT_TRUE(std::isfinite(sum));
 }
 
