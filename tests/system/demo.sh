@@ -94,6 +94,9 @@ doctored
 awk -F, -v OFS=, 'NR > 1 { $3 += 0.01 } { print }' "$out/plant.csv" >"$scratch/out/plant.csv"
 expect_fail "the mechanism did not reach its targets" "goal $first_done .*from where it should be"
 
+tools/demo --help >"$scratch/help" || fail "tools/demo --help failed"
+grep -q -- "--out DIR" "$scratch/help" || fail "tools/demo --help does not document --out"
+
 # An --out directory tools/demo did not write is refused and left alone.
 mkdir "$scratch/mine"
 echo keep >"$scratch/mine/precious"
