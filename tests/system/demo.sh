@@ -41,7 +41,7 @@ while IFS='|' read -r id label _target _pieces expected; do
   grep -qE "^$id\. .{0,40} $expected " "$log" || fail "no row for goal $id ($label) ending $expected"
   grep -qF "$id. $label" "$log" || fail "goal $id's row does not name it '$label'"
   png=$out/goal-$id.png
-  if [[ $expected == done ]]; then
+  if [[ $expected == "done" ]]; then
     [[ $(head -c 8 "$png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || fail "$png is not a PNG"
     [[ $(stat -c %s "$png") -gt 20000 ]] || fail "$png is too small to hold the plot"
     grep -q "goal-$id.png" "$log" || fail "the output does not name $png"
