@@ -150,7 +150,8 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   const int grid_points = std::max(kMinGridPoints, settings_.grid_points);
   // The problem is solved on the unit-length path (s / length): b scales by 1 / length^2.
   const double length_squared = length * length;
-  problem_.b_start = b_start / length_squared;
+  const double requested_b_start = b_start / length_squared;
+  problem_.b_start = requested_b_start;
   problem_.b_end = 0.0;
   problem_.cost_scale = 1.0;
   problem_.speed_bound = kSpeedBound / length;
@@ -191,7 +192,9 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
     // Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
     // multipliers that make it stationary. Repeated after every refinement: a feasible start is
     // cheaper to polish than a stale one.
-    const topp::ReachabilityResult reach = topp::forwardBackward(problem_, profile_, controllable_);
+    problem_.b_start = requested_b_start;
+    const topp::ReachabilityResult reach =
+        topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
     if (reach.status != topp::ReachabilityStatus::kOk) {
       if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
         ++report.refinements;
@@ -203,6 +206,8 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       return fail(PlanStatus::kInvalidInput, reach.reason);
     }
     if (refinement == 0) report.controllable_start_b = reach.controllable_start_b * length_squared;
+    problem_.b_start = reach.start_b;
+    report.start_speed_ratio = requested_b_start > 0.0 ? std::sqrt(reach.start_b / requested_b_start) : 1.0;
     // Time in units of the warm start's duration: the optimiser sees a duration of about one.
     const double warm_duration = profileDuration(problem_, profile_);
     if (refinement == 0) report.warm_start_duration_s = warm_duration;
@@ -232,7 +237,7 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
     }
     s_grid.back() = length;
-    b_grid.front() = b_start;
+    b_grid.front() = problem_.b_start == requested_b_start ? b_start : problem_.b_start * length_squared;
     b_grid.back() = 0.0;
     Result<Trajectory> trajectory = Trajectory::create(path, elevator, arm, std::move(s_grid), std::move(b_grid));
     if (!trajectory) {

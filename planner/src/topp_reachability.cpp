@@ -166,7 +166,8 @@ double fastestNextSpeed(const Problem& problem, int interval, double c_now, doub
   return largestFeasible(q, rows, c_next_max);
 }
 
-ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable) {
+ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable,
+                                   double start_speed_tolerance) {
   ReachabilityResult result;
   const int k_points = problem.gridPoints();
   b.assign(static_cast<size_t>(k_points), 0.0);
@@ -212,7 +213,9 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
   }
   result.controllable_start_b = controllable[0];
 
-  if (problem.b_start > controllable[0] * (1.0 + 1e-9) + 1e-12) {
+  const double slack = 1.0 + std::max(0.0, start_speed_tolerance);
+  const bool beyond = problem.b_start > controllable[0] * (1.0 + 1e-9) + 1e-12;
+  if (beyond && problem.b_start > controllable[0] * slack * slack * (1.0 + 1e-9) + 1e-12) {
     char text[200];
     std::snprintf(text, sizeof text,
                   "start speed^2 b = %.6g along the path cannot be brought to rest within the limits "
@@ -222,8 +225,9 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     result.reason = text;
     return result;
   }
-  b[0] = problem.b_start;
-  double c = std::sqrt(problem.b_start);
+  result.start_b = beyond ? controllable[0] : problem.b_start;
+  b[0] = result.start_b;
+  double c = std::sqrt(result.start_b);
   for (int k = 0; k < last; ++k) {
     const double c_max = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
     double c_next = fastestNextSpeed(problem, k, c, c_max);

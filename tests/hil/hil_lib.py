@@ -146,7 +146,7 @@ DAEMON_STATUS_FIELDS = (
     ("utime", "q"), ("mode", "b"), ("robot_enabled", "b"), ("motion_allowed", "b"),
     ("active_request_id", "q"), ("state_age_ms", "d"), ("heartbeat_age_ms", "d"),
     ("goals_received", "q"), ("plans_succeeded", "q"), ("plans_failed", "q"), ("frames_sent", "q"),
-    ("can_errors", "q"), ("decode_errors", "q"), ("stream_overruns", "q"),
+    ("can_errors", "q"), ("decode_errors", "q"), ("stream_overruns", "q"), ("publish_failures", "q"),
     ("plan_time_p50_ms", "d"), ("plan_time_p99_ms", "d"), ("plan_time_max_ms", "d"),
     ("stream_jitter_p50_us", "d"), ("stream_jitter_p99_us", "d"), ("stream_jitter_max_us", "d"))
 

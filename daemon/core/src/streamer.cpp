@@ -130,6 +130,10 @@ bool Streamer::withinLimits(const JointSetpoints& s) const {
 void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out) {
   out.reset();
   GateVerdict verdict = evaluateGate(inputs, now, settings_.gate);
+  // A disable this tick has not seen stops motion even when an enabled heartbeat already followed it.
+  const bool new_disable = inputs.broadcast_disable_count != disables_seen_;
+  disables_seen_ = inputs.broadcast_disable_count;
+  if (verdict.open() && new_disable) verdict.reason = GateReason::kBroadcastDisable;
   if (verdict.open() && now < fault_until_ns_) verdict.reason = GateReason::kFault;
   out.gate_reason = verdict.reason;
   if (!verdict.open()) {

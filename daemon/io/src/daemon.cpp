@@ -93,9 +93,10 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
   return lcm;
 }
 
-std::optional<can::CanSocket> openCan(const DaemonOptions& options) {
+std::optional<can::CanSocket> openCan(const DaemonOptions& options,
+                                      const can::SocketOptions& socket_options = can::SocketOptions{}) {
   if (options.simulate_can) return std::nullopt;
-  auto socket = can::CanSocket::open(options.settings.can_interface);
+  auto socket = can::CanSocket::open(options.settings.can_interface, socket_options);
   if (!socket) throw StartupError(socket.error().message);
   return std::move(socket).value();
 }
@@ -112,6 +113,8 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       can_(openCan(options)),
       port_(can_ ? std::unique_ptr<CanPort>(std::make_unique<SocketCanPort>(*can_))
                  : std::unique_ptr<CanPort>(std::make_unique<DiscardingCanPort>())),
+      robot_can_(openCan(options, robotLinkSocketOptions())),
+      robot_source_(robot_can_ ? std::make_unique<SocketRobotFrameSource>(*robot_can_) : nullptr),
       streamer_(HoldModel(robot), streamerSettingsOf(options)),
       writer_(*port_, writerSettingsOf(options)),
       streamer_thread_(channels_, streamer_, writer_, periodOf(options.settings.stream_rate_hz)),
@@ -122,6 +125,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       LcmBridge::Callbacks{[this](const cyberplanner::arm_goal_t& m) { onGoalMessage(m); },
                            [this](const cyberplanner::arm_state_t& m) { onStateMessage(m); },
                            [this](const std::string& channel, int size) { onUndecodable(channel, size); }});
+  streamer_thread_.setRobotFrameSource(robot_source_.get());
   loop_.add(bridge_->fd(), [this] { bridge_->handleReady(kMaxMessagesPerWake); });
   if (can_) loop_.add(can_->fd(), [this] { onCanReadable(); });
   if (signals_ != nullptr) loop_.add(signals_->fd(), [this] { onSignal(); });
@@ -269,6 +273,7 @@ void Daemon::onCanReadable() {
       }
       case can::FrameKind::kBroadcastDisable: {
         inputs_.broadcast_disable_ns = now;
+        ++inputs_.broadcast_disable_count;
         storeInputs();
         ++counters_.broadcast_disables;
         std::int64_t suppressed = 0;
@@ -466,6 +471,7 @@ void Daemon::publishDaemonStatus(MonoNs now) {
                  counters_.can_read_errors;
   m.decode_errors = counters_.lcm_decode_errors + counters_.bad_states + counters_.can_decode_errors;
   m.stream_overruns = channels_.overruns.load(std::memory_order_relaxed);
+  m.publish_failures = bridge_->publishFailures();
   m.plan_time_p50_ms = plan_times_.percentileUs(0.5) * 1e-3;
   m.plan_time_p99_ms = plan_times_.percentileUs(0.99) * 1e-3;
   m.plan_time_max_ms = plan_times_.maxUs() * 1e-3;

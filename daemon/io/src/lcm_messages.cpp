@@ -65,16 +65,20 @@ cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const 
   message.start_utime = start_utime;
   const double duration = std::max(0.0, trajectory.durationS());
   message.duration_s = duration;
-  const double dt = std::max(step_s, duration / (kMax - 1));
+  // Samples at k * dt, and one more at the end when the duration is not a multiple of dt: the
+  // rest state the motion ends in is part of the plan. dt is widened so that both fit in kMax.
+  const double dt = std::max(step_s, duration / (kMax - 2));
   message.dt_s = dt;
-  const int count = std::min(kMax, static_cast<int>(std::floor(duration / dt + 1e-9)) + 1);
+  const int on_step = static_cast<int>(std::floor(duration / dt + 1e-9)) + 1;
+  const bool end_off_step = (on_step - 1) * dt < duration - 1e-6;  // else the last step sample moves to the end
+  const int count = std::min(kMax, on_step + (end_off_step ? 1 : 0));
   message.num_samples = count;
   for (auto* column : {&message.t_s, &message.elevator_m, &message.arm_rad, &message.elevator_mps, &message.arm_radps,
                        &message.elevator_volts, &message.arm_volts}) {
     column->resize(static_cast<size_t>(count));
   }
   for (int k = 0; k < count; ++k) {
-    const double t = std::min(duration, k * dt);
+    const double t = k + 1 == count ? duration : std::min(duration, k * dt);
     const JointSetpoints s = trajectory.at(t);
     const auto i = static_cast<size_t>(k);
     message.t_s[i] = t;

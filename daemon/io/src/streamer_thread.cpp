@@ -16,6 +16,7 @@ RobotInputs RobotInputsData::toInputs() const {
   inputs.heartbeat_ns = heartbeat_ns;
   inputs.heartbeat_watchdog = heartbeat_watchdog;
   inputs.broadcast_disable_ns = broadcast_disable_ns;
+  inputs.broadcast_disable_count = broadcast_disable_count;
   return inputs;
 }
 
@@ -58,7 +59,11 @@ void StreamerThread::run() {
     }
     scheduled += period_ns_;
 
-    const RobotInputs inputs = channels_.inputs.load().toInputs();
+    RobotInputs inputs = channels_.inputs.load().toInputs();
+    if (robot_source_ != nullptr) {
+      drainRobotFrames(*robot_source_, now, robot_link_);
+      mergeRobotLink(robot_link_, inputs);
+    }
     Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
     streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);
     const WriteReport report = writer_.write(out, channels_.fault_bits.load(std::memory_order_relaxed));

@@ -13,7 +13,9 @@
 #include <new>
 
 #include "cyber/daemon/frame_writer.hpp"
+#include "cyber/daemon/robot_link.hpp"
 #include "cyber/daemon/streamer.hpp"
+#include "cyber/can/robot_frames.hpp"
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
 
@@ -41,6 +43,22 @@ struct NullPort final : CanPort {
   can::IoResult write(const can::Frame&) override { return fail ? can::ioResultFromErrno(ENOBUFS) : can::IoResult{}; }
 };
 
+// While live, a heartbeat and a malformed one per tick, then EAGAIN; otherwise ENETDOWN.
+struct BusSource final : RobotFrameSource {
+  bool live = true;
+  int step = 0;
+  can::IoResult read(can::Frame& frame) override {
+    if (!live) return can::ioResultFromErrno(ENETDOWN);
+    can::Heartbeat enabled;
+    enabled.system_watchdog = true;
+    switch (step++ % 3) {
+      case 0: frame = can::encodeHeartbeat(enabled); return {};
+      case 1: frame = can::encodeHeartbeat(enabled); frame.dlc = 3; return {};
+      default: return can::ioResultFromErrno(EAGAIN);
+    }
+  }
+};
+
 class NanAfter final : public SetpointSource {
  public:
   double durationS() const override { return 1.0; }
@@ -58,6 +76,8 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   Streamer streamer(HoldModel(robot), settings);
   NullPort port;
   FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 20});
+  BusSource bus;
+  RobotLink link;
   RobotInputs inputs;
   MonoNs now = 1000 * kMs;
   const JointVector a(0.2, 1.57), b(1.5, 3.0), c(0.6, 2.9);
@@ -79,8 +99,12 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
         inputs.heartbeat_watchdog = true;
       }
       TickOutput out;
+      bus.live = enabled;
       g_counting = true;
-      streamer.tick(now, inputs, i == 0 ? offered : nullptr, false, out);
+      RobotInputs merged = inputs;  // as the streamer thread does: its own reading of the bus first
+      drainRobotFrames(bus, now, link);
+      mergeRobotLink(link, merged);
+      streamer.tick(now, merged, i == 0 ? offered : nullptr, false, out);
       writer.write(out, 0);
       g_counting = false;
       allocations += g_allocations.exchange(0);

@@ -204,6 +204,40 @@ TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
   EXPECT_EQ(again.setpoints.position, JointVector(0.25, 1.05));
 }
 
+// The bug hil.daemon_faults caught: the disable and the next enabled heartbeat arrived 1-3 ms apart,
+// both between two ticks, and the gate alone saw nothing but an enabled heartbeat after the disable.
+TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
+  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  feed(a);
+  tick();
+  tick(moveFromRest(1, 1, a, b, 2.0));
+  for (int i = 0; i < 3; ++i) tick();
+  feed(a);
+  inputs.broadcast_disable_ns = now - 3 * kMs;
+  inputs.broadcast_disable_count = 1;
+  inputs.heartbeat_ns = now - 1 * kMs;
+  ASSERT_TRUE(evaluateGate(inputs, now, settings().gate).open());
+  const TickOutput out = tick();
+  EXPECT_FALSE(out.send_setpoints);
+  EXPECT_EQ(out.gate_reason, GateReason::kBroadcastDisable);
+  EXPECT_EQ(out.mode, StreamMode::kRobotDisabled);
+  ASSERT_EQ(kinds().back(), StreamEventKind::kStopped);
+  EXPECT_EQ(events.back().request_id, 1);
+  EXPECT_EQ(events.back().gate_reason, GateReason::kBroadcastDisable);
+  // Latched once: the next tick, with the same count and the robot enabled, holds the measured position.
+  const JointVector measured(0.3, 1.1);
+  feed(measured);
+  const TickOutput again = tick();
+  ASSERT_TRUE(again.send_setpoints);
+  EXPECT_EQ(again.mode, StreamMode::kHolding);
+  EXPECT_EQ(again.setpoints.position, measured);
+  EXPECT_EQ(events.back().hold_cause, HoldCause::kEnabled);
+  // A second disable is a new event again.
+  inputs.broadcast_disable_count = 2;
+  EXPECT_FALSE(tick().send_setpoints);
+  EXPECT_TRUE(tick().send_setpoints);
+}
+
 TEST_F(StreamerTest, ProgramsOfAStoppedEpochAreRejected) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
   feed(a);

@@ -218,6 +218,7 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     in.can_errors = v.integer();
     in.decode_errors = v.integer();
     in.stream_overruns = v.integer();
+    in.publish_failures = v.integer();
     in.plan_time_p50_ms = v.real();
     in.plan_time_p99_ms = v.real();
     in.plan_time_max_ms = v.real();
@@ -239,6 +240,7 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     ASSERT_EQ(out.can_errors, in.can_errors);
     ASSERT_EQ(out.decode_errors, in.decode_errors);
     ASSERT_EQ(out.stream_overruns, in.stream_overruns);
+    ASSERT_EQ(out.publish_failures, in.publish_failures);
     ASSERT_EQ(out.plan_time_p50_ms, in.plan_time_p50_ms);
     ASSERT_EQ(out.plan_time_p99_ms, in.plan_time_p99_ms);
     ASSERT_EQ(out.plan_time_max_ms, in.plan_time_max_ms);

@@ -182,6 +182,17 @@ TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
   // A start faster than C_0 is reported as such.
   topp::Problem fast = makeProblem(150, 1.5 * r.controllable_start_b);
   EXPECT_EQ(topp::forwardBackward(fast, b, controllable).status, topp::ReachabilityStatus::kStartNotControllable);
+  EXPECT_EQ(topp::forwardBackward(fast, b, controllable, 0.2).status, topp::ReachabilityStatus::kStartNotControllable);
+  // Within the start tolerance it starts from C_0 (the edge of the controllable set) instead.
+  // (C_0 of a moving start: a start at rest pins the first node to qdot = 0, which changes its rows.)
+  const double edge = topp::forwardBackward(makeProblem(150, 0.5 * r.controllable_start_b), b, controllable)
+                          .controllable_start_b;
+  topp::Problem near_edge = makeProblem(150, 1.01 * 1.01 * edge);
+  EXPECT_EQ(topp::forwardBackward(near_edge, b, controllable, 0.005).status, topp::ReachabilityStatus::kStartNotControllable);
+  const topp::ReachabilityResult clamped = topp::forwardBackward(near_edge, b, controllable, 0.02);
+  ASSERT_EQ(clamped.status, topp::ReachabilityStatus::kOk);
+  EXPECT_EQ(clamped.start_b, clamped.controllable_start_b);
+  EXPECT_EQ(b.front(), clamped.controllable_start_b);
 }
 
 TEST(ToppAugmentedLagrangian, GradientMatchesFiniteDifferences) {

@@ -219,6 +219,39 @@ TEST(Topp, StartSpeedThatCannotBeStoppedIsATypedFailure) {
   EXPECT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.95 * limit).ok());
 }
 
+// A splice from one of the solver's own trajectories cruising at a limit can sit just past the new
+// path's controllable set, because a trajectory may overshoot a limit by limit_check_tolerance
+// (hil.daemon_motion caught b = 0.09175 against C_0 = 0.09166). Within that tolerance the start is
+// planned from the fastest start that can be stopped; beyond it, it is refused.
+TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
+  const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(0.6, 1.4));
+  ToppSolver solver;
+  ToppReport report;
+  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.0, &report).ok());
+  // C_0 of a moving start (a start at rest pins the first node to qdot = 0, which changes its rows).
+  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.5 * report.controllable_start_b, &report).ok());
+  EXPECT_EQ(report.start_speed_ratio, 1.0);
+  const double limit = report.controllable_start_b;
+  const double tolerance = ToppSettings{}.limit_check_tolerance;
+  for (double speed_factor : {1.0005, 1.002, 0.999 + tolerance}) {
+    SCOPED_TRACE(speed_factor);
+    const double b_start = limit * speed_factor * speed_factor;
+    const Result<Trajectory> result = solver.solve(path, elevatorDrive(), armDrive(), b_start, &report);
+    ASSERT_TRUE(result.ok()) << result.error().reason;
+    EXPECT_NEAR(report.start_speed_ratio, 1.0 / speed_factor, 1e-9);
+    EXPECT_NEAR(result.value().sample(0.0).sdot, std::sqrt(limit), 1e-9);
+    const Checked checked = checkTrajectory(result.value(), *path, elevatorDrive(), armDrive(), limit);
+    EXPECT_LE(std::max(checked.peak_voltage_ratio, checked.peak_current_ratio), 1.0 + tolerance);
+  }
+  const double beyond = 1.001 + tolerance;
+  const Result<Trajectory> too_fast = solver.solve(path, elevatorDrive(), armDrive(), limit * beyond * beyond, &report);
+  ASSERT_FALSE(too_fast.ok());
+  EXPECT_EQ(too_fast.status(), PlanStatus::kInfeasibleStart);
+  // Below the edge nothing changes: the start speed is the one asked for.
+  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.99 * limit, &report).ok());
+  EXPECT_EQ(report.start_speed_ratio, 1.0);
+}
+
 TEST(Topp, NonConvergenceIsReportedWithResiduals) {
   const auto path = std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0),
                                                  JointVector(0.05, 0.8), 3.0, 2.0);

@@ -28,6 +28,10 @@ struct ToppReport {
   double penalty = 0.0;
   double warm_start_duration_s = 0.0;  // of the forward-backward profile the solver started from
   double controllable_start_b = 0.0;   // largest b_start the path could have stopped from
+  // Start speed planned / start speed asked: 1, or just below when a start past the controllable
+  // set by at most ToppSettings::limit_check_tolerance (a splice from the solver's own trajectory
+  // at a limit) was planned from the fastest start that can be stopped.
+  double start_speed_ratio = 1.0;
   // Largest |value| / limit over the samples of the continuous check (1 = at the limit).
   double peak_voltage_ratio = 0.0;
   double peak_current_ratio = 0.0;
@@ -43,7 +47,8 @@ class ToppSolver {
   // b_start = |v0|_Sigma^2 when the path starts along the start velocity v0 with |q'(0)|_Sigma = 1
   // (0 at rest); the trajectory always ends at rest. Errors: kInvalidInput (null/non-finite
   // path, bad b_start or drive figures, limits that cannot hold on the path), kInfeasibleStart
-  // (b_start cannot be brought to rest within the limits), kSolverNotConverged (the augmented
+  // (b_start cannot be brought to rest within the limits, even allowing limit_check_tolerance on
+  // the start speed; see ToppReport::start_speed_ratio), kSolverNotConverged (the augmented
   // Lagrangian or the limit refinement hit its cap; the reason gives the residuals).
   Result<Trajectory> solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
                            const DriveParams& arm, double b_start = 0.0, ToppReport* report = nullptr);

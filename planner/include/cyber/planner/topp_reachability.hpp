@@ -34,10 +34,15 @@ struct ReachabilityResult {
   ReachabilityStatus status = ReachabilityStatus::kOk;
   std::string reason;
   double controllable_start_b = 0.0;  // C_0: the largest b_start that can still be stopped
+  double start_b = 0.0;               // b[0]: problem.b_start, or C_0 when it was above C_0 within the tolerance
 };
 
 // Fills b (K values) with the greedy profile from problem.b_start to problem.b_end.
-// `controllable` is a caller-owned buffer (resized to K).
-ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable);
+// `controllable` is a caller-owned buffer (resized to K). A start up to (1 + start_speed_tolerance)
+// times faster than sqrt(C_0) starts from C_0 instead of failing: the solver's own trajectories may
+// overshoot a limit by its check tolerance, so a splice taken from one of them can sit just past
+// the controllable set of the new path.
+ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable,
+                                   double start_speed_tolerance = 0.0);
 
 }  // namespace cyber::planner::topp

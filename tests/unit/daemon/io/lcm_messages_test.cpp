@@ -83,9 +83,16 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
   EXPECT_EQ(message.request_id, 4);
   EXPECT_EQ(message.start_utime, 1000);
   EXPECT_DOUBLE_EQ(message.dt_s, 0.01);
-  EXPECT_EQ(message.num_samples, 124);  // 0 .. 1.23 s
-  ASSERT_EQ(message.t_s.size(), 124u);
-  EXPECT_EQ(message.arm_volts.size(), 124u);
+  EXPECT_EQ(message.num_samples, 125);  // 0 .. 1.23 s, then the end at 1.234 s
+  ASSERT_EQ(message.t_s.size(), 125u);
+  EXPECT_EQ(message.arm_volts.size(), 125u);
+  EXPECT_DOUBLE_EQ(message.t_s[123], 1.23);
+  // The last sample is the rest state the motion ends in.
+  EXPECT_EQ(message.t_s.back(), 1.234);
+  EXPECT_DOUBLE_EQ(message.elevator_m.back(), 1.5);
+  EXPECT_DOUBLE_EQ(message.arm_rad.back(), 2.5);
+  EXPECT_EQ(message.elevator_mps.back(), 0.0);
+  EXPECT_EQ(message.arm_radps.back(), 0.0);
   EXPECT_DOUBLE_EQ(message.t_s[10], 0.1);
   const JointSetpoints s = trajectory->at(0.1);
   EXPECT_EQ(message.elevator_m[10], s.position[0]);
@@ -96,14 +103,15 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
 
 TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
   const auto& robot = cyber::test::referenceModel();
-  for (double duration : {9.99, 10.0, 33.3, 120.0}) {
+  for (double duration : {9.98, 9.99, 10.0, 33.3, 120.0}) {
     auto trajectory = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), duration, robot);
     const auto message = trajectoryMessage(1, *trajectory, 0, 0.01, 0);
     EXPECT_LE(message.num_samples, cyberplanner::arm_trajectory_t::MAX_SAMPLES) << duration;
     EXPECT_GE(message.dt_s, 0.01);
-    // The last sample is within one step of the end.
-    EXPECT_GT(message.t_s.back(), duration - message.dt_s - 1e-9) << duration;
-    EXPECT_LE(message.t_s.back(), duration);
+    // The last sample is the end of the motion, and the others are on the step.
+    EXPECT_EQ(message.t_s.back(), duration) << duration;
+    EXPECT_NEAR(message.t_s[message.t_s.size() - 2], (message.num_samples - 2) * message.dt_s, 1e-9) << duration;
+    EXPECT_LE(message.t_s.back() - message.t_s[message.t_s.size() - 2], message.dt_s + 1e-9) << duration;
     EXPECT_LT(message.getEncodedSize(), 60000);
   }
   auto still = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(0.1, 1.0), 0.0, robot);

@@ -3,6 +3,7 @@
 // while the roboRIO heartbeat lacks the system-watchdog bit or is older than its timeout, and after
 // a broadcast disable (design.md, CAN section).
 
+#include <cstdint>
 #include <string_view>
 
 #include "cyber/daemon/mono_time.hpp"
@@ -24,6 +25,9 @@ struct RobotInputs {
   MonoNs heartbeat_ns = kNever;       // arrival of the latest roboRIO heartbeat
   bool heartbeat_watchdog = false;    // its system-watchdog bit
   MonoNs broadcast_disable_ns = kNever;  // arrival of the latest broadcast disable
+  // Broadcast disables seen so far. The streamer latches each new one as an event: a disable
+  // followed within a period by an enabled heartbeat would otherwise be lifted before any tick saw it.
+  std::uint32_t broadcast_disable_count = 0;
 };
 
 enum class GateReason {

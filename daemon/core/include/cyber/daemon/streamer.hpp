@@ -95,6 +95,7 @@ class Streamer {
   std::int64_t last_request_ = -1;
   bool done_reported_ = true;
   MonoNs fault_until_ns_ = kNever;
+  std::uint32_t disables_seen_ = 0;  // RobotInputs::broadcast_disable_count at the last tick
 };
 
 }  // namespace cyber::daemon

@@ -21,6 +21,7 @@
 #include "cyber/daemon/io/planning_worker.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/latency_histogram.hpp"
+#include "cyber/daemon/robot_link.hpp"
 #include "cyber/daemon/streamer.hpp"
 #include "cyber/planner/robot_model.hpp"
 
@@ -104,6 +105,9 @@ class Daemon final : private CoordinatorSink {
   std::unique_ptr<lcm::LCM> lcm_;
   std::optional<can::CanSocket> can_;
   std::unique_ptr<CanPort> port_;
+  // The streamer's own receive-only socket for the frames that gate motion (robot_link.hpp).
+  std::optional<can::CanSocket> robot_can_;
+  std::unique_ptr<RobotFrameSource> robot_source_;
 
   StreamerChannels channels_;
   Streamer streamer_;

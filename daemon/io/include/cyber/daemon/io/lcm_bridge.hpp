@@ -31,10 +31,12 @@ class LcmBridge {
   // other descriptors of the loop). Returns how many were handled.
   int handleReady(int max_messages);
 
+  // A failed send (e.g. ENOBUFS in a burst) is counted, not retried: the loop must not block.
   template <class Message>
   void publish(const std::string& channel, const Message& message) {
-    lcm_.publish(channel, &message);
+    if (lcm_.publish(channel, &message) != 0) ++publish_failures_;
   }
+  [[nodiscard]] std::int64_t publishFailures() const { return publish_failures_; }
   [[nodiscard]] const config::ChannelNames& channels() const { return channels_; }
 
  private:
@@ -44,6 +46,7 @@ class LcmBridge {
   lcm::LCM& lcm_;
   config::ChannelNames channels_;
   Callbacks callbacks_;
+  std::int64_t publish_failures_ = 0;
 };
 
 }  // namespace cyber::daemon::io

@@ -12,6 +12,7 @@
 #include "cyber/daemon/io/fd.hpp"
 #include "cyber/daemon/latency_histogram.hpp"
 #include "cyber/daemon/latest_value.hpp"
+#include "cyber/daemon/robot_link.hpp"
 #include "cyber/daemon/spsc_ring.hpp"
 #include "cyber/daemon/streamer.hpp"
 
@@ -25,6 +26,7 @@ struct RobotInputsData {
   MonoNs heartbeat_ns = kNever;
   bool heartbeat_watchdog = false;
   MonoNs broadcast_disable_ns = kNever;
+  std::uint32_t broadcast_disable_count = 0;
 
   [[nodiscard]] RobotInputs toInputs() const;
 };
@@ -91,6 +93,9 @@ class StreamerThread {
   StreamerThread(const StreamerThread&) = delete;
   StreamerThread& operator=(const StreamerThread&) = delete;
 
+  // The streamer's own source of heartbeats and disables (null: only what the event loop stores
+  // in channels.inputs). Set before start().
+  void setRobotFrameSource(RobotFrameSource* source) { robot_source_ = source; }
   void setObserver(TickObserver observer, void* context) {
     observer_ = observer;
     observer_context_ = context;
@@ -108,6 +113,8 @@ class StreamerThread {
   MonoNs period_ns_;
   TimerFd timer_{true};
   std::atomic<bool> quit_{false};
+  RobotFrameSource* robot_source_ = nullptr;
+  RobotLink robot_link_;
   TickObserver observer_ = nullptr;
   void* observer_context_ = nullptr;
   std::thread thread_;

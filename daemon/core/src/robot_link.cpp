@@ -1,0 +1,53 @@
+#include "cyber/daemon/robot_link.hpp"
+
+#include <algorithm>
+
+#include "cyber/can/frame_kind.hpp"
+#include "cyber/can/id_filter.hpp"
+#include "cyber/can/robot_frames.hpp"
+
+namespace cyber::daemon {
+
+can::SocketOptions robotLinkSocketOptions() {
+  can::SocketOptions options;
+  options.filters = can::daemonReceiveFilters();
+  options.receive_bus_errors = false;
+  return options;
+}
+
+int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int max_frames) {
+  int count = 0;
+  can::Frame frame;
+  while (count < max_frames && source.read(frame).ok()) {
+    ++count;
+    switch (can::classify(frame)) {
+      case can::FrameKind::kHeartbeat: {
+        const auto heartbeat = can::decodeHeartbeat(frame);
+        if (!heartbeat) break;
+        link.heartbeat_ns = now;
+        link.heartbeat_watchdog = heartbeat.value().system_watchdog;
+        break;
+      }
+      case can::FrameKind::kBroadcastDisable:
+        link.broadcast_disable_ns = now;
+        ++link.broadcast_disable_count;
+        break;
+      default:
+        break;
+    }
+  }
+  return count;
+}
+
+void mergeRobotLink(const RobotLink& link, RobotInputs& inputs) {
+  // kNever is the smallest time, so "newer" needs no special case. At equal times the link's
+  // reading counts: it is the one taken in at this tick.
+  if (link.heartbeat_ns != kNever && link.heartbeat_ns >= inputs.heartbeat_ns) {
+    inputs.heartbeat_ns = link.heartbeat_ns;
+    inputs.heartbeat_watchdog = link.heartbeat_watchdog;
+  }
+  inputs.broadcast_disable_ns = std::max(inputs.broadcast_disable_ns, link.broadcast_disable_ns);
+  inputs.broadcast_disable_count = link.broadcast_disable_count;
+}
+
+}  // namespace cyber::daemon

@@ -1,0 +1,162 @@
+#include "cyber/daemon/robot_link.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cerrno>
+#include <vector>
+
+#include "cyber/can/id_filter.hpp"
+#include "cyber/can/robot_frames.hpp"
+
+namespace cyber::daemon {
+namespace {
+
+constexpr MonoNs kMs = 1'000'000;
+
+// Hands out its frames in order, then EAGAIN (or `final_error` once, e.g. ENETDOWN).
+class QueueSource final : public RobotFrameSource {
+ public:
+  std::vector<can::Frame> frames;
+  size_t next = 0;
+  int reads = 0;
+  int final_error = EAGAIN;
+
+  can::IoResult read(can::Frame& frame) override {
+    ++reads;
+    if (next >= frames.size()) return can::ioResultFromErrno(final_error);
+    frame = frames[next++];
+    return {};
+  }
+};
+
+can::Frame heartbeat(bool watchdog) {
+  can::Heartbeat h;
+  h.enabled = watchdog;
+  h.system_watchdog = watchdog;
+  return can::encodeHeartbeat(h);
+}
+
+can::Frame standardIdZero() {
+  can::Frame f;
+  f.id = 0;
+  f.extended = false;
+  f.dlc = 2;
+  return f;
+}
+
+TEST(RobotLink, HeartbeatsAndDisablesAreTakenInAtTheTick) {
+  QueueSource source;
+  source.frames = {heartbeat(true), can::makeBroadcastDisable(), standardIdZero(), heartbeat(false), heartbeat(true)};
+  RobotLink link;
+  EXPECT_EQ(drainRobotFrames(source, 50 * kMs, link), 5);
+  EXPECT_EQ(link.heartbeat_ns, 50 * kMs);
+  EXPECT_TRUE(link.heartbeat_watchdog);  // the latest heartbeat's bit
+  EXPECT_EQ(link.broadcast_disable_ns, 50 * kMs);
+  EXPECT_EQ(link.broadcast_disable_count, 2u);  // both forms of id 0
+  // Nothing new: nothing changes.
+  EXPECT_EQ(drainRobotFrames(source, 55 * kMs, link), 0);
+  EXPECT_EQ(link.heartbeat_ns, 50 * kMs);
+  source.frames.push_back(heartbeat(false));
+  EXPECT_EQ(drainRobotFrames(source, 60 * kMs, link), 1);
+  EXPECT_EQ(link.heartbeat_ns, 60 * kMs);
+  EXPECT_FALSE(link.heartbeat_watchdog);
+}
+
+TEST(RobotLink, MalformedHeartbeatsAndOtherFramesChangeNothing) {
+  QueueSource source;
+  can::Frame short_heartbeat = heartbeat(true);
+  short_heartbeat.dlc = 3;
+  for (int i = 3; i < 8; ++i) short_heartbeat.data[static_cast<size_t>(i)] = 0;
+  can::Frame remote = heartbeat(true);
+  remote.remote = true;
+  remote.data = {};
+  can::Frame other = heartbeat(true);
+  other.id = 0x123;
+  other.extended = false;
+  can::Frame bus_error;
+  bus_error.error = true;
+  bus_error.id = 0x40;
+  source.frames = {short_heartbeat, remote, other, bus_error};
+  RobotLink link;
+  EXPECT_EQ(drainRobotFrames(source, 10 * kMs, link), 4);
+  EXPECT_EQ(link.heartbeat_ns, kNever);
+  EXPECT_FALSE(link.heartbeat_watchdog);
+  EXPECT_EQ(link.broadcast_disable_count, 0u);
+}
+
+TEST(RobotLink, AFloodIsReadInBoundedSlicesAndAReadErrorEndsTheDrain) {
+  QueueSource source;
+  source.frames.assign(100, heartbeat(true));
+  RobotLink link;
+  EXPECT_EQ(drainRobotFrames(source, kMs, link, 32), 32);
+  EXPECT_EQ(source.reads, 32);
+  EXPECT_EQ(drainRobotFrames(source, 2 * kMs, link, 32), 32);
+  EXPECT_EQ(drainRobotFrames(source, 3 * kMs, link, 32), 32);
+  EXPECT_EQ(drainRobotFrames(source, 4 * kMs, link, 32), 4);
+  QueueSource down;
+  down.final_error = ENETDOWN;
+  EXPECT_EQ(drainRobotFrames(down, 5 * kMs, link), 0);
+  EXPECT_EQ(down.reads, 1);
+  EXPECT_EQ(link.heartbeat_ns, 4 * kMs);
+}
+
+TEST(RobotLink, MergeTakesTheNewerHeartbeatAndTheLinksDisables) {
+  RobotInputs inputs;
+  inputs.heartbeat_ns = 100 * kMs;
+  inputs.heartbeat_watchdog = true;
+  inputs.broadcast_disable_ns = 80 * kMs;
+  inputs.broadcast_disable_count = 1;  // the event loop saw the same disable
+  RobotLink link;
+  link.heartbeat_ns = 90 * kMs;
+  link.heartbeat_watchdog = false;
+  link.broadcast_disable_ns = 82 * kMs;
+  link.broadcast_disable_count = 1;
+  RobotInputs merged = inputs;
+  mergeRobotLink(link, merged);
+  EXPECT_EQ(merged.heartbeat_ns, 100 * kMs);  // the loop's is newer
+  EXPECT_TRUE(merged.heartbeat_watchdog);
+  EXPECT_EQ(merged.broadcast_disable_ns, 82 * kMs);
+  EXPECT_EQ(merged.broadcast_disable_count, 1u);  // not 2: one disable on the bus
+
+  link.heartbeat_ns = 104 * kMs;  // the event loop is behind: the streamer's own reading counts
+  merged = inputs;
+  mergeRobotLink(link, merged);
+  EXPECT_EQ(merged.heartbeat_ns, 104 * kMs);
+  EXPECT_FALSE(merged.heartbeat_watchdog);
+
+  RobotLink empty;  // nothing read yet: the loop's inputs stand
+  merged = inputs;
+  merged.broadcast_disable_count = 0;
+  mergeRobotLink(empty, merged);
+  EXPECT_EQ(merged.heartbeat_ns, 100 * kMs);
+  EXPECT_EQ(merged.broadcast_disable_ns, 80 * kMs);
+}
+
+// The gate a late event loop would close stays open on the streamer's own reading, and the
+// heartbeat timeout still applies to it.
+TEST(RobotLink, TheGateUsesTheStreamersReadingWhenTheEventLoopIsLate) {
+  GateSettings settings;
+  settings.require_robot_enabled = true;
+  RobotInputs inputs;
+  inputs.state_ns = 500 * kMs;
+  inputs.heartbeat_ns = 380 * kMs;  // the loop last took one in 120 ms ago
+  inputs.heartbeat_watchdog = true;
+  ASSERT_EQ(evaluateGate(inputs, 500 * kMs, settings).reason, GateReason::kNoHeartbeat);
+  QueueSource source;
+  source.frames = {heartbeat(true)};
+  RobotLink link;
+  drainRobotFrames(source, 495 * kMs, link);
+  mergeRobotLink(link, inputs);
+  EXPECT_TRUE(evaluateGate(inputs, 500 * kMs, settings).open());
+  EXPECT_EQ(evaluateGate(inputs, 595 * kMs, settings).reason, GateReason::kNoHeartbeat);
+}
+
+TEST(RobotLink, ItsSocketPassesOnlyTheFramesThatGateMotion) {
+  const can::SocketOptions options = robotLinkSocketOptions();
+  EXPECT_FALSE(options.receive_bus_errors);
+  ASSERT_TRUE(options.filters.has_value());
+  EXPECT_EQ(options.filters->size(), can::daemonReceiveFilters().size());
+}
+
+}  // namespace
+}  // namespace cyber::daemon
