@@ -573,7 +573,8 @@ def note_retries(c, run):
             continue
         stall = guest_stall_s(run, when - 0.6, when)
         gap = longest_gap([f.t for f in run.heartbeats], when - 0.6, when)
-        c.note(f"request {request_id} was stopped by the daemon on its own ({final['reason']}); in the 0.6 s before, "
+        c.note(f"request {request_id} ended {STATUS_NAME.get(final['status'], final['status'])} before the script's "
+               f"fault ({final['reason'] or 'no reason given'}); in the 0.6 s before, "
                f"the guest stood still for up to {stall * 1e3:.0f} ms and heartbeats on the bus were at most "
                f"{gap * 1e3:.0f} ms apart; the script sent it again")
 

@@ -132,7 +132,7 @@ case $1 in
       verdict=0
       if [[ $status -ne 0 ]]; then
         verdict="the guest script failed"
-      elif ! tests/hil/daemon_check.py "${1#daemon_}" "$out"; then
+      elif ! tests/hil/daemon_check.py "${1#daemon_}" "$out" | tee "$out/check.txt"; then
         verdict="the results do not hold (see the checks above)"
       fi
       [[ $verdict == 0 ]] && break

@@ -186,7 +186,9 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   Tally tally;
   tally.first = args.first_id;
   tally.count = args.count;
-  lcm.subscribe("ARM_PLAN_STATUS", &Tally::onStatus, &tally);
+  // Unbounded: LCM's default of 30 queued messages per subscription drops statuses in the flood
+  // whenever this process is descheduled for a few milliseconds.
+  lcm.subscribe("ARM_PLAN_STATUS", &Tally::onStatus, &tally)->setQueueCapacity(0);
   const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   while (Clock::now() < end && static_cast<long long>(tally.finals.size()) < args.count) lcm.handleTimeout(50);
   // A little longer, to catch a second final status for any id.

@@ -41,12 +41,15 @@ depends=$(field Depends)
 [[ $depends == *libc6* && $depends == *libstdc++6* ]] || fail "Depends lacks libc6/libstdc++6: $depends"
 # Each dependency names a real package (here: one that is installed, since the build used it).
 IFS=',' read -ra alternatives <<<"$depends"
+# Virtual packages the installed ones provide (libspdlog1.10 provides libspdlog1.10-fmt9). Read
+# once into a variable: `grep -q` at the end of a pipeline exits at the first match, and under
+# pipefail the SIGPIPE of the commands before it failed this check now and then.
+provided=$(dpkg-query -W -f='${db:Status-Abbrev}|${Provides}\n' 2>/dev/null | sed -n 's/^ii *|//p' | tr ',' '\n' |
+  sed -E 's/^ *//; s/ .*//')
 for dependency in "${alternatives[@]}"; do
   name=$(sed -E 's/^ *//; s/[ (|].*//' <<<"$dependency")
-  # A real package, or a virtual one that an installed package provides (libspdlog1.10-fmt9).
-  dpkg-query -W -f='${Status}\n' "$name" 2>/dev/null | grep -q 'install ok installed' ||
-    dpkg-query -W -f='${db:Status-Abbrev}|${Provides}\n' 2>/dev/null | grep '^ii' | cut -d'|' -f2 |
-      tr ',' '\n' | sed -E 's/^ *//; s/ .*//' | grep -qx -- "$name" ||
+  status=$(dpkg-query -W -f='${Status}' "$name" 2>/dev/null || true)
+  [[ $status == 'install ok installed' ]] || grep -qx -- "$name" <<<"$provided" ||
     fail "dependency '$name' is neither installed nor provided by an installed package"
 done
 for program in "${programs[@]}"; do

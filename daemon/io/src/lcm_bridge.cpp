@@ -6,7 +6,10 @@ namespace cyber::daemon::io {
 
 LcmBridge::LcmBridge(lcm::LCM& lcm, const config::ChannelNames& channels, Callbacks callbacks)
     : lcm_(lcm), channels_(channels), callbacks_(std::move(callbacks)) {
-  lcm_.subscribe(channels_.goal, &LcmBridge::onGoal, this);
+  // LCM's receive thread queues at most 30 messages per subscription by default and drops the
+  // rest without a word. Every goal must be answered, so goals may queue far more (a 1000/s flood
+  // for 10 s); states are latest-wins, and old ones are worth nothing.
+  lcm_.subscribe(channels_.goal, &LcmBridge::onGoal, this)->setQueueCapacity(kGoalQueueCapacity);
   lcm_.subscribe(channels_.state, &LcmBridge::onState, this);
 }
 

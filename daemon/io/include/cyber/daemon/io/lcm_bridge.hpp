@@ -22,6 +22,8 @@ class LcmBridge {
     std::function<void(const std::string& channel, int size)> undecodable;
   };
 
+  static constexpr int kGoalQueueCapacity = 10000;
+
   LcmBridge(lcm::LCM& lcm, const config::ChannelNames& channels, Callbacks callbacks);
   LcmBridge(const LcmBridge&) = delete;
   LcmBridge& operator=(const LcmBridge&) = delete;
