@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Runs the commands README.md shows (besides tools/setup and tools/test, which .ci/run runs) exactly
-# as written, from a scratch folder that sees the build as "build", and checks what they write.
+# Runs the commands README.md shows (besides tools/test, which .ci/run runs, and tools/demo, which
+# system.demo runs) exactly as written, from a scratch folder that sees the build as "build", and
+# checks what they write.
 # Usage: readme_commands.sh BUILD_DIR
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
@@ -11,7 +12,7 @@ ln -s "$build_abs" "$work/build"
 ln -s "$src/config" "$work/config"
 mapfile -t commands < <(sed -n 's/^    \(build\/.*\)$/\1/p' "$src/README.md")
 [[ ${#commands[@]} -gt 0 ]] || fail "README.md shows no build/ commands"
-grep -qx '    tools/setup' "$src/README.md" && grep -qx '    tools/test' "$src/README.md" || fail "README.md lost its quick start"
+grep -qx '    tools/test' "$src/README.md" && grep -qx '    tools/demo' "$src/README.md" || fail "README.md lost its quick start"
 grep -q 'tools/test' "$src/.ci/run" || fail ".ci/run does not run tools/test"
 cd "$work"
 for c in "${commands[@]}"; do

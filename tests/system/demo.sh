@@ -1,0 +1,108 @@
+#!/usr/bin/env bash
+# system.demo: runs tools/demo exactly as README.md shows it, from the source root with BUILD_DIR
+# set to this build (tools/setup, cmake and ninja then have nothing to do), and checks what it
+# printed and wrote: every goal's expected status, a PNG per planned goal, a capture that decodes
+# strictly. Then checks, without the VM, that the demo's verdict can fail: the report on doctored
+# copies of the results, and the refusal of an --out directory it did not write.
+# Usage: demo.sh BUILD_DIR
+set -euo pipefail
+source "$(dirname "$0")/lib.sh"
+system_setup "$1"
+
+# The one tools/demo command README.md shows; any the docs show must be the same.
+mapfile -t shown < <(sed -n 's/^    \(tools\/demo\>.*\)$/\1/p' README.md)
+[[ ${#shown[@]} -eq 1 ]] || fail "README.md shows ${#shown[@]} tools/demo commands, expected one"
+command=${shown[0]}
+while IFS= read -r line; do
+  [[ $line == "$command" ]] || fail "the docs show '$line', which is not the command this test runs ('$command')"
+done < <(grep -hE '^( {4}|\$ )?tools/demo\>' README.md docs/*.md | sed -E 's/^( {4}|\$ )//')
+
+# tools/demo configures the build as tools/test does; a build tree configured otherwise would be
+# reconfigured and rebuilt under the running tests, so it is then run without setup and build.
+cache=$build_abs/CMakeCache.txt
+if grep -qx 'CMAKE_BUILD_TYPE:STRING=RelWithDebInfo' "$cache" && grep -qx 'CMAKE_GENERATOR:INTERNAL=Ninja' "$cache"; then
+  run=$command
+else
+  run="$command --no-setup"
+  echo "note: $build is not a RelWithDebInfo Ninja build: running '$run'"
+fi
+out=$build_abs/demo
+log=$build_abs/demo.log
+echo "+ BUILD_DIR=$build $run"
+status=0
+BUILD_DIR=$build eval "$run" >"$log" 2>&1 || status=$?
+cat "$log"
+[[ $status -eq 0 ]] || fail "tools/demo exited with status $status"
+
+# Every goal's row shows its expected status; the verdict line is there.
+ngoals=0
+while IFS='|' read -r id label _target _pieces expected; do
+  ngoals=$((ngoals + 1))
+  grep -qE "^$id\. .{0,40} $expected " "$log" || fail "no row for goal $id ($label) ending $expected"
+  grep -qF "$id. $label" "$log" || fail "goal $id's row does not name it '$label'"
+  png=$out/goal-$id.png
+  if [[ $expected == "done" ]]; then
+    [[ $(head -c 8 "$png" | od -An -tx1 | tr -d ' \n') == 89504e470d0a1a0a ]] || fail "$png is not a PNG"
+    [[ $(stat -c %s "$png") -gt 20000 ]] || fail "$png is too small to hold the plot"
+    grep -q "goal-$id.png" "$log" || fail "the output does not name $png"
+  else
+    [[ ! -e $png ]] || fail "goal $id expected $expected, yet it has a plot"
+  fi
+done <"$out/goals.txt"
+((ngoals >= 6)) || fail "only $ngoals goals"
+grep -Eq '^[0-9]+\. .* (failed|rejected) ' "$log" || fail "no goal is refused in the demo"
+grep -qx "demo: all $ngoals goals ended as expected" "$log" || fail "no verdict line for $ngoals goals"
+
+# The capture decodes strictly and holds the setpoints of both joints; the LCM log is there.
+decode=$build_abs/tools/cyber-can-decode/cyber-can-decode
+"$decode" --strict "$out/bus.log" >"$out/check.decoded" 2>"$out/check.decode.err" ||
+  fail "cyber-can-decode --strict $out/bus.log: $(cat "$out/check.decode.err")"
+for joint in elevator arm; do
+  n=$(grep -c " setpoint $joint " "$out/check.decoded" || true)
+  ((n > 200)) || fail "only $n $joint setpoints in bus.log"
+done
+[[ $(head -c 4 "$out/lcm.log" | od -An -tx1 | tr -d ' \n') == eda1da01 ]] || fail "$out/lcm.log is not an LCM log"
+rm -f "$out/check.decoded" "$out/check.decode.err"
+
+# The verdict can fail: doctored copies of the results make tools/demo-report exit 1 naming why.
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+doctored() {
+  rm -rf "$scratch/out"
+  cp -r "$out" "$scratch/out"
+}
+expect_fail() {
+  local why=$1 got=0
+  tools/demo-report "$scratch/out" >"$scratch/report" 2>&1 || got=$?
+  [[ $got -eq 1 ]] || { cat "$scratch/report"; fail "demo-report exited $got, not 1, when $why"; }
+  grep -q "^demo: FAIL: $2" "$scratch/report" || { cat "$scratch/report"; fail "no 'demo: FAIL: $2' when $why"; }
+  echo "ok: the report fails when $why"
+}
+first_done=$(grep -m1 '|done$' "$out/goals.txt" | cut -d'|' -f1)
+refused=$(grep -m1 -vE '\|done$' "$out/goals.txt" | cut -d'|' -f1)
+doctored
+sed -i "s/^$first_done|\(.*\)|done\$/$first_done|\1|failed/" "$scratch/out/goals.txt"
+expect_fail "goal $first_done was expected to fail" "goal $first_done .*ended done, expected failed"
+doctored
+sed -i -E "s/^($refused\|.*)\|[a-z]+\$/\1|done/" "$scratch/out/goals.txt"
+expect_fail "the refused goal $refused was expected done" "goal $refused .*expected done"
+doctored
+rm "$scratch/out/goal-$first_done.png"
+expect_fail "a plot is missing" "goal $first_done .*no plot"
+doctored
+# Moves the simulated elevator 10 mm away from every position it logged.
+awk -F, -v OFS=, 'NR > 1 { $3 += 0.01 } { print }' "$out/plant.csv" >"$scratch/out/plant.csv"
+expect_fail "the mechanism did not reach its targets" "goal $first_done .*from where it should be"
+
+tools/demo --help >"$scratch/help" || fail "tools/demo --help failed"
+grep -q -- "--out DIR" "$scratch/help" || fail "tools/demo --help does not document --out"
+
+# An --out directory tools/demo did not write is refused and left alone.
+mkdir "$scratch/mine"
+echo keep >"$scratch/mine/precious"
+got=0
+BUILD_DIR=$build tools/demo --no-setup --out "$scratch/mine" >"$scratch/refused" 2>&1 || got=$?
+[[ $got -eq 2 && $(cat "$scratch/mine/precious") == keep ]] || fail "tools/demo --out on a foreign directory: exit $got"
+grep -q "not written by tools/demo" "$scratch/refused" || fail "no reason given for refusing --out"
+echo "ok: a foreign --out directory is refused and left alone"
+echo "1 passed, 0 failed"
