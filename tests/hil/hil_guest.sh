@@ -3,8 +3,9 @@
 # frame to the 9p share costs the emulated guest too much. Progress lines (a few per run) go to
 # the console and to $work/script.log.
 
-work=/tmp/hil
-mkdir -p "$work"
+# A fresh directory each run: in the VM /tmp is a new tmpfs anyway, but in host mode it is the
+# host's own /tmp, where an earlier run's files (its control FIFO) would still be.
+work=$(mktemp -d "${TMPDIR:-/tmp}/hil.XXXXXX")
 control=$work/control
 pids=""
 
@@ -22,6 +23,7 @@ finish() {
     echo "$script_name: FAIL: $2" >&2
     tail -n 20 "$work/daemon.log" >&2 2>/dev/null || true
   fi
+  rm -rf "$work"
   exit "$1"
 }
 
