@@ -43,6 +43,27 @@ class StreamerTest : public ::testing::Test {
     return out;
   }
 
+  // The latest event stopped request `id` because of `reason`.
+  void expectStopped(std::int64_t id, GateReason reason) {
+    ASSERT_FALSE(events.empty());
+    EXPECT_EQ(events.back().kind, StreamEventKind::kStopped);
+    EXPECT_EQ(events.back().request_id, id);
+    EXPECT_EQ(events.back().gate_reason, reason);
+  }
+
+  // (Re-)enabled with the mechanism at `measured`: the next tick holds it, not the last command.
+  TickOutput expectEnabledHoldAt(const JointVector& measured) {
+    feed(measured);
+    const TickOutput out = tick();
+    EXPECT_TRUE(out.send_setpoints);
+    EXPECT_EQ(out.mode, StreamMode::kHolding);
+    EXPECT_EQ(out.setpoints.position, measured);
+    EXPECT_EQ(out.setpoints.velocity, JointVector::Zero());
+    EXPECT_EQ(events.back().kind, StreamEventKind::kHolding);
+    EXPECT_EQ(events.back().hold_cause, HoldCause::kEnabled);
+    return out;
+  }
+
   std::vector<StreamEventKind> kinds() const {
     std::vector<StreamEventKind> k;
     for (const auto& e : events) k.push_back(e.kind);
@@ -78,12 +99,7 @@ TEST_F(StreamerTest, StreamsNothingBeforeAnyState) {
 
 TEST_F(StreamerTest, FirstFreshStateHoldsTheMeasuredPositionWithGravityFeedforward) {
   const JointVector measured(0.7, 0.9);
-  feed(measured);
-  const TickOutput out = tick();
-  ASSERT_TRUE(out.send_setpoints);
-  EXPECT_EQ(out.mode, StreamMode::kHolding);
-  EXPECT_EQ(out.setpoints.position, measured);
-  EXPECT_EQ(out.setpoints.velocity, JointVector::Zero());
+  const TickOutput out = expectEnabledHoldAt(measured);
   EXPECT_DOUBLE_EQ(out.setpoints.volts[0], robot.elevator_drive.kG_volts);
   EXPECT_DOUBLE_EQ(out.setpoints.volts[1], robot.arm_drive.kG_volts * std::cos(0.9));
   ASSERT_EQ(events.size(), 1u);
@@ -169,20 +185,9 @@ TEST_F(StreamerTest, HeartbeatTimeoutStopsMotionAndReEnableHoldsTheMeasuredPosit
     }
   }
   EXPECT_EQ(sent_after_timeout, 0);
-  ASSERT_EQ(kinds().back(), StreamEventKind::kStopped);
-  EXPECT_EQ(events.back().request_id, 1);
-  EXPECT_EQ(events.back().gate_reason, GateReason::kNoHeartbeat);
-
+  expectStopped(1, GateReason::kNoHeartbeat);
   // The mechanism sagged while disabled; on re-enable the streamer holds where it is now.
-  const JointVector measured(0.9, 1.7);
-  feed(measured);
-  const TickOutput out = tick();
-  ASSERT_TRUE(out.send_setpoints);
-  EXPECT_EQ(out.mode, StreamMode::kHolding);
-  EXPECT_EQ(out.setpoints.position, measured);
-  EXPECT_EQ(out.setpoints.velocity, JointVector::Zero());
-  EXPECT_EQ(events.back().kind, StreamEventKind::kHolding);
-  EXPECT_EQ(events.back().hold_cause, HoldCause::kEnabled);
+  expectEnabledHoldAt(JointVector(0.9, 1.7));
 }
 
 TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
@@ -221,17 +226,9 @@ TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
   EXPECT_FALSE(out.send_setpoints);
   EXPECT_EQ(out.gate_reason, GateReason::kBroadcastDisable);
   EXPECT_EQ(out.mode, StreamMode::kRobotDisabled);
-  ASSERT_EQ(kinds().back(), StreamEventKind::kStopped);
-  EXPECT_EQ(events.back().request_id, 1);
-  EXPECT_EQ(events.back().gate_reason, GateReason::kBroadcastDisable);
+  expectStopped(1, GateReason::kBroadcastDisable);
   // Latched once: the next tick, with the same count and the robot enabled, holds the measured position.
-  const JointVector measured(0.3, 1.1);
-  feed(measured);
-  const TickOutput again = tick();
-  ASSERT_TRUE(again.send_setpoints);
-  EXPECT_EQ(again.mode, StreamMode::kHolding);
-  EXPECT_EQ(again.setpoints.position, measured);
-  EXPECT_EQ(events.back().hold_cause, HoldCause::kEnabled);
+  expectEnabledHoldAt(JointVector(0.3, 1.1));
   // A second disable is a new event again.
   inputs.broadcast_disable_count = 2;
   EXPECT_FALSE(tick().send_setpoints);
