@@ -1,7 +1,5 @@
 #include "cyber/daemon/robot_link.hpp"
 
-#include <algorithm>
-
 #include "cyber/can/frame_kind.hpp"
 #include "cyber/can/id_filter.hpp"
 #include "cyber/can/robot_frames.hpp"
@@ -39,14 +37,10 @@ int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int 
   return count;
 }
 
-void mergeRobotLink(const RobotLink& link, RobotInputs& inputs) {
-  // kNever is the smallest time, so "newer" needs no special case. At equal times the link's
-  // reading counts: it is the one taken in at this tick.
-  if (link.heartbeat_ns != kNever && link.heartbeat_ns >= inputs.heartbeat_ns) {
-    inputs.heartbeat_ns = link.heartbeat_ns;
-    inputs.heartbeat_watchdog = link.heartbeat_watchdog;
-  }
-  inputs.broadcast_disable_ns = std::max(inputs.broadcast_disable_ns, link.broadcast_disable_ns);
+void applyRobotLink(const RobotLink& link, RobotInputs& inputs) {
+  inputs.heartbeat_ns = link.heartbeat_ns;
+  inputs.heartbeat_watchdog = link.heartbeat_watchdog;
+  inputs.broadcast_disable_ns = link.broadcast_disable_ns;
   inputs.broadcast_disable_count = link.broadcast_disable_count;
 }
 

@@ -62,7 +62,7 @@ void StreamerThread::run() {
     RobotInputs inputs = channels_.inputs.load().toInputs();
     if (robot_source_ != nullptr) {
       drainRobotFrames(*robot_source_, now, robot_link_);
-      mergeRobotLink(robot_link_, inputs);
+      applyRobotLink(robot_link_, inputs);
     }
     Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
     streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);

@@ -100,36 +100,36 @@ TEST(RobotLink, AFloodIsReadInBoundedSlicesAndAReadErrorEndsTheDrain) {
   EXPECT_EQ(link.heartbeat_ns, 4 * kMs);
 }
 
-TEST(RobotLink, MergeTakesTheNewerHeartbeatAndTheLinksDisables) {
+// The event loop stamps a heartbeat when it reads it; when it reads late, that stamp is newer than
+// the streamer's, which is at most one tick after the arrival. Only the streamer's reading counts.
+TEST(RobotLink, TheStreamersReadingReplacesTheEventLoopsEvenWhenTheLoopsLooksNewer) {
   RobotInputs inputs;
-  inputs.heartbeat_ns = 100 * kMs;
+  inputs.state_ns = 90 * kMs;
+  inputs.heartbeat_ns = 125 * kMs;  // the loop took in the 0 ms heartbeat 125 ms late
   inputs.heartbeat_watchdog = true;
   inputs.broadcast_disable_ns = 80 * kMs;
-  inputs.broadcast_disable_count = 1;  // the event loop saw the same disable
+  inputs.broadcast_disable_count = 1;  // the event loop saw the same disable the link did
   RobotLink link;
-  link.heartbeat_ns = 90 * kMs;
-  link.heartbeat_watchdog = false;
+  link.heartbeat_ns = 5 * kMs;
+  link.heartbeat_watchdog = true;
   link.broadcast_disable_ns = 82 * kMs;
   link.broadcast_disable_count = 1;
-  RobotInputs merged = inputs;
-  mergeRobotLink(link, merged);
-  EXPECT_EQ(merged.heartbeat_ns, 100 * kMs);  // the loop's is newer
-  EXPECT_TRUE(merged.heartbeat_watchdog);
-  EXPECT_EQ(merged.broadcast_disable_ns, 82 * kMs);
-  EXPECT_EQ(merged.broadcast_disable_count, 1u);  // not 2: one disable on the bus
+  RobotInputs applied = inputs;
+  applyRobotLink(link, applied);
+  EXPECT_EQ(applied.heartbeat_ns, 5 * kMs);
+  EXPECT_EQ(applied.broadcast_disable_ns, 82 * kMs);
+  EXPECT_EQ(applied.broadcast_disable_count, 1u);  // not 2: one disable on the bus
+  EXPECT_EQ(applied.state_ns, 90 * kMs);           // the rest is the event loop's
+  GateSettings settings;
+  EXPECT_EQ(evaluateGate(applied, 110 * kMs, settings).reason, GateReason::kNoHeartbeat);
+  EXPECT_TRUE(evaluateGate(inputs, 110 * kMs, settings).reason != GateReason::kNoHeartbeat);
 
-  link.heartbeat_ns = 104 * kMs;  // the event loop is behind: the streamer's own reading counts
-  merged = inputs;
-  mergeRobotLink(link, merged);
-  EXPECT_EQ(merged.heartbeat_ns, 104 * kMs);
-  EXPECT_FALSE(merged.heartbeat_watchdog);
-
-  RobotLink empty;  // nothing read yet: the loop's inputs stand
-  merged = inputs;
-  merged.broadcast_disable_count = 0;
-  mergeRobotLink(empty, merged);
-  EXPECT_EQ(merged.heartbeat_ns, 100 * kMs);
-  EXPECT_EQ(merged.broadcast_disable_ns, 80 * kMs);
+  RobotLink empty;  // nothing on the bus yet: no heartbeat, whatever the loop says
+  applied = inputs;
+  applyRobotLink(empty, applied);
+  EXPECT_EQ(applied.heartbeat_ns, kNever);
+  EXPECT_FALSE(applied.heartbeat_watchdog);
+  EXPECT_EQ(applied.broadcast_disable_count, 0u);
 }
 
 // The gate a late event loop would close stays open on the streamer's own reading, and the
@@ -146,7 +146,7 @@ TEST(RobotLink, TheGateUsesTheStreamersReadingWhenTheEventLoopIsLate) {
   source.frames = {heartbeat(true)};
   RobotLink link;
   drainRobotFrames(source, 495 * kMs, link);
-  mergeRobotLink(link, inputs);
+  applyRobotLink(link, inputs);
   EXPECT_TRUE(evaluateGate(inputs, 500 * kMs, settings).open());
   EXPECT_EQ(evaluateGate(inputs, 595 * kMs, settings).reason, GateReason::kNoHeartbeat);
 }

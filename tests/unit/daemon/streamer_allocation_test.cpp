@@ -103,7 +103,7 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
       g_counting = true;
       RobotInputs merged = inputs;  // as the streamer thread does: its own reading of the bus first
       drainRobotFrames(bus, now, link);
-      mergeRobotLink(link, merged);
+      applyRobotLink(link, merged);
       streamer.tick(now, merged, i == 0 ? offered : nullptr, false, out);
       writer.write(out, 0);
       g_counting = false;

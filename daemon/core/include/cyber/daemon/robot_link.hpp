@@ -46,8 +46,11 @@ struct RobotLink {
 // the interface down: the gate then sees the heartbeat age). Never allocates.
 int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int max_frames = 32);
 
-// The gate's inputs with the streamer's own reading folded in: the newer heartbeat wins, and the
-// disables are the link's (the event loop sees the same frames and must not count them twice).
-void mergeRobotLink(const RobotLink& link, RobotInputs& inputs);
+// The gate's inputs with the robot fields replaced by the streamer's own reading. Not the newer of
+// the two: both stamp a frame with the time it was read, so a late reader makes a heartbeat look
+// fresher than it is, and the event loop is the one that can be late (hil.daemon_faults once saw
+// motion stop 130 ms after the last heartbeat with the newer-wins rule). The streamer reads at
+// every tick, so its stamp is at most one period after the arrival.
+void applyRobotLink(const RobotLink& link, RobotInputs& inputs);
 
 }  // namespace cyber::daemon
