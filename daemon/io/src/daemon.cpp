@@ -462,7 +462,9 @@ void Daemon::publishDaemonStatus(MonoNs now) {
   m.motion_allowed = snapshot.ticks > 0 && snapshot.gate_reason == GateReason::kOpen;
   m.active_request_id = snapshot.request_id;
   m.state_age_ms = inputs_.state_ns == kNever ? -1.0 : nsToMs(now - inputs_.state_ns);
-  m.heartbeat_age_ms = inputs_.heartbeat_ns == kNever ? -1.0 : nsToMs(now - inputs_.heartbeat_ns);
+  // The gate's view when the streamer reads the bus itself (robot_link.hpp), else the loop's.
+  const MonoNs heartbeat_ns = robot_source_ && snapshot.ticks > 0 ? snapshot.heartbeat_ns : inputs_.heartbeat_ns;
+  m.heartbeat_age_ms = heartbeat_ns == kNever ? -1.0 : nsToMs(now - heartbeat_ns);
   m.goals_received = c.goals_received;
   m.plans_succeeded = c.plans_succeeded;
   m.plans_failed = c.plans_failed + c.goals_rejected;

@@ -76,6 +76,7 @@ void StreamerThread::run() {
     snapshot.request_id = out.request_id;
     snapshot.segment_time_s = out.segment_time_s;
     snapshot.remaining_s = out.remaining_s;
+    snapshot.heartbeat_ns = inputs.heartbeat_ns;
     snapshot.setpoints_written = report.wire.written;
     snapshot.elevator = report.wire.elevator;
     snapshot.arm = report.wire.arm;

@@ -40,6 +40,7 @@ struct StreamSnapshot {
   std::int64_t request_id = -1;
   double segment_time_s = 0.0;
   double remaining_s = 0.0;
+  MonoNs heartbeat_ns = kNever;  // the latest heartbeat as the gate saw it at this tick
   bool setpoints_written = false;
   can::Setpoint elevator;
   can::Setpoint arm;
