@@ -273,7 +273,6 @@ void Daemon::onCanReadable() {
       }
       case can::FrameKind::kBroadcastDisable: {
         inputs_.broadcast_disable_ns = now;
-        ++inputs_.broadcast_disable_count;
         storeInputs();
         ++counters_.broadcast_disables;
         std::int64_t suppressed = 0;

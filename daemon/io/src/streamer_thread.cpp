@@ -16,7 +16,6 @@ RobotInputs RobotInputsData::toInputs() const {
   inputs.heartbeat_ns = heartbeat_ns;
   inputs.heartbeat_watchdog = heartbeat_watchdog;
   inputs.broadcast_disable_ns = broadcast_disable_ns;
-  inputs.broadcast_disable_count = broadcast_disable_count;
   return inputs;
 }
 

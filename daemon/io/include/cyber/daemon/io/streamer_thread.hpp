@@ -18,7 +18,9 @@
 
 namespace cyber::daemon::io {
 
-// RobotInputs as plain data for the seqlock (Eigen vectors are not trivially copyable).
+// RobotInputs as plain data for the seqlock (Eigen vectors are not trivially copyable). With a CAN
+// bus, the streamer replaces the heartbeat and disable fields with its own reading (robot_link.hpp);
+// the event loop's are for ARM_DAEMON_STATUS and the log.
 struct RobotInputsData {
   MonoNs state_ns = kNever;
   double measured_q[2] = {0.0, 0.0};
@@ -26,7 +28,6 @@ struct RobotInputsData {
   MonoNs heartbeat_ns = kNever;
   bool heartbeat_watchdog = false;
   MonoNs broadcast_disable_ns = kNever;
-  std::uint32_t broadcast_disable_count = 0;
 
   [[nodiscard]] RobotInputs toInputs() const;
 };
