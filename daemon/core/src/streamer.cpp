@@ -53,37 +53,32 @@ void Streamer::dropOwned(TickOutput& out) {
   program_ = &own_;
 }
 
-void Streamer::stop(MonoNs now, GateReason reason, TickOutput& out) {
-  StreamEvent event;
-  event.kind = StreamEventKind::kStopped;
+void Streamer::restartOwnHold(MonoNs now, const JointVector& q, StreamEvent event, TickOutput& out) {
   event.time_ns = now;
   event.request_id = executing_request_;
-  event.gate_reason = reason;
-  event.position = last_position_;
+  event.position = q;
   dropOwned(out);
-  running_ = false;
-  ++epoch_;
-  own_.resetToHold(epoch_, last_position_);
+  ++epoch_;  // programs planned on the old epoch are stale from here on
+  own_.resetToHold(epoch_, q);
   executing_request_ = -1;
   done_reported_ = true;
   event.epoch = epoch_;
   out.push(event);
 }
 
+void Streamer::stop(MonoNs now, GateReason reason, TickOutput& out) {
+  StreamEvent event;
+  event.kind = StreamEventKind::kStopped;
+  event.gate_reason = reason;
+  running_ = false;
+  restartOwnHold(now, last_position_, event, out);
+}
+
 void Streamer::holdOwn(MonoNs now, const JointVector& q, HoldCause cause, TickOutput& out) {
   StreamEvent event;
   event.kind = StreamEventKind::kHolding;
-  event.time_ns = now;
-  event.request_id = executing_request_;
   event.hold_cause = cause;
-  event.position = q;
-  dropOwned(out);
-  ++epoch_;
-  own_.resetToHold(epoch_, q);
-  executing_request_ = -1;
-  done_reported_ = true;
-  event.epoch = epoch_;
-  out.push(event);
+  restartOwnHold(now, q, event, out);
 }
 
 void Streamer::reject(MonoNs now, Program* offered, RejectReason reason, TickOutput& out) {

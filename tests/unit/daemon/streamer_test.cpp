@@ -70,6 +70,13 @@ class StreamerTest : public ::testing::Test {
     return k;
   }
 
+  // Enabled and holding at `from`, then request 1 moving to `to` over 2 s.
+  void holdThenMove(const JointVector& from, const JointVector& to) {
+    feed(from);
+    tick();
+    tick(moveFromRest(1, 1, from, to, 2.0));
+  }
+
   // A program moving from the streamer's hold at `from` to `to`, based on its current epoch.
   Program* moveFromRest(std::int64_t id, std::uint64_t program_id, JointVector from, JointVector to, double duration_s) {
     auto* p = new Program();
@@ -165,9 +172,7 @@ TEST_F(StreamerTest, RejectsAProgramBuiltOnAnotherBase) {
 
 TEST_F(StreamerTest, HeartbeatTimeoutStopsMotionAndReEnableHoldsTheMeasuredPosition) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
-  feed(a);
-  tick();
-  tick(moveFromRest(1, 1, a, b, 2.0));
+  holdThenMove(a, b);
   // Heartbeats stop; state keeps coming.
   const MonoNs last_heartbeat = now;
   feed(a);
@@ -192,9 +197,7 @@ TEST_F(StreamerTest, HeartbeatTimeoutStopsMotionAndReEnableHoldsTheMeasuredPosit
 
 TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
-  feed(a);
-  tick();
-  tick(moveFromRest(1, 1, a, b, 2.0));
+  holdThenMove(a, b);
   feed(a);
   inputs.broadcast_disable_ns = now;
   const TickOutput out = tick();
@@ -213,9 +216,7 @@ TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
 // both between two ticks, and the gate alone saw nothing but an enabled heartbeat after the disable.
 TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
-  feed(a);
-  tick();
-  tick(moveFromRest(1, 1, a, b, 2.0));
+  holdThenMove(a, b);
   for (int i = 0; i < 3; ++i) tick();
   feed(a);
   inputs.broadcast_disable_ns = now - 3 * kMs;
@@ -248,9 +249,7 @@ TEST_F(StreamerTest, ProgramsOfAStoppedEpochAreRejected) {
 
 TEST_F(StreamerTest, StopRequestHoldsTheCommandedPositionAndRefusesNewPrograms) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
-  feed(a);
-  tick();
-  tick(moveFromRest(1, 1, a, b, 2.0));
+  holdThenMove(a, b);
   TickOutput moving;
   for (int i = 0; i < 20; ++i) {
     feed(a);

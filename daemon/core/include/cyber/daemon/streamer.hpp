@@ -76,6 +76,8 @@ class Streamer {
  private:
   void stop(MonoNs now, GateReason reason, TickOutput& out);
   void holdOwn(MonoNs now, const JointVector& q, HoldCause cause, TickOutput& out);
+  // The streamer's own hold at q on a new epoch, reporting `event` (kind and cause set by the caller).
+  void restartOwnHold(MonoNs now, const JointVector& q, StreamEvent event, TickOutput& out);
   void consider(MonoNs now, Program* offered, TickOutput& out);
   void reject(MonoNs now, Program* offered, RejectReason reason, TickOutput& out);
   [[nodiscard]] bool withinLimits(const JointSetpoints& setpoints) const;
