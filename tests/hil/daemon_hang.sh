@@ -6,11 +6,7 @@ set -eu
 script_name=daemon_hang
 . "$FILES_DIR/hil_guest.sh"
 
-start_bus_capture
-start_lcm_log
-start_plant --initial 0.2,1.57
-start_daemon
-pids="$daemon $plant $logger $dump"
+start_system --initial 0.2,1.57
 wait_for_line "$work/daemon.log" "holding elevator" 60
 step "hanging on purpose"
 sleep 100000 &

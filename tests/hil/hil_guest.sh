@@ -81,6 +81,16 @@ start_daemon() {
   daemon=$!
 }
 
+# The whole set-up of a daemon run: bus capture, LCM log, the simulator (with arguments "$@") and
+# the daemon; finish and stop_all stop them.
+start_system() {
+  start_bus_capture
+  start_lcm_log
+  start_plant "$@"
+  start_daemon
+  pids="$daemon $plant $logger $dump"
+}
+
 # Injects fault KIND now.
 fault() { echo "$1" >"$control"; }
 
