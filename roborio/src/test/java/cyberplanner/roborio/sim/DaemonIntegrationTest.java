@@ -86,21 +86,20 @@ class DaemonIntegrationTest {
     }
   }
 
-  record Move(Pose goal) {}
-
   @Test
   @Order(2)
   void aSimulatedRobotFollowsASequenceOfMovesWithAndWithoutGamePieces() throws Exception {
+    // From L3, where the client's move left the daemon holding.
     List<Pose> sequence = List.of(
-        Pose.of(1.22, 5.69),                 // none: INTAKE -> L3
         Pose.of(0.20, 1.57),                 // none: L3 -> STOW
         Pose.of(0.58, 2.97),                 // none: STOW -> INTAKE
         Pose.of(0.78, 6.09).withCoral(),     // coral: INTAKE -> L2
         Pose.of(1.27, 5.79).withCoral(),     // coral: L2 -> L3
         Pose.of(0.20, 1.57).withCoral(),     // coral: L3 -> STOW
         Pose.of(1.93, 1.71).withAlgae(),     // algae: STOW -> NET
-        Pose.of(0.20, 1.57).withAlgae());    // algae: NET -> STOW
-    SimulatedMechanism mechanism = new SimulatedMechanism(0.58, 2.97);
+        Pose.of(0.20, 1.57).withAlgae(),     // algae: NET -> STOW
+        Pose.of(1.97, 5.17));                // none: STOW -> L4
+    SimulatedMechanism mechanism = new SimulatedMechanism(1.22, 5.69);
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
       awaitDaemon(client);
       SetpointGuard guard = new SetpointGuard(0.05, 0.25);
@@ -120,6 +119,7 @@ class DaemonIntegrationTest {
           waited += LOOP_S;
         }
         assertTrue(command.succeeded(), goal + ": " + command.move());
+        assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
         loop.runFor(0.3);  // settle on the hold setpoints
         ArmState at = mechanism.state();
         double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
