@@ -1,7 +1,7 @@
 package com.revrobotics.spark;
 
 /** STAND-IN of REVLib's SparkBase (getClosedLoopController and ControlType; tests only). */
-public abstract class SparkBase {
+public abstract class SparkBase extends SparkLowLevel {
   public enum ControlType {
     kPosition
   }

@@ -9,6 +9,7 @@ import com.revrobotics.spark.ClosedLoopSlot;
 import com.revrobotics.spark.SparkBase;
 import com.revrobotics.spark.SparkClosedLoopController;
 import com.revrobotics.spark.SparkFlex;
+import com.revrobotics.spark.SparkLowLevel;
 import cyberplanner.arm_plan_status_t;
 import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.Channels;
@@ -34,7 +35,7 @@ import org.junit.jupiter.api.Test;
 class WpilibLayerTest {
   long nowMicros = 1_000_000;
   final TalonFX elevatorMotor = new TalonFX(11);
-  final SparkFlex armMotor = new SparkFlex(12);
+  final SparkFlex armMotor = new SparkFlex(12, SparkLowLevel.MotorType.kBrushless);
   final ArmState measured = new ArmState(0.30, 0.0, 1.50, 0.0, false, false);
   CyberArmSubsystem subsystem;
   LCM lcm;
