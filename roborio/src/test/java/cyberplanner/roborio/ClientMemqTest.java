@@ -27,6 +27,23 @@ class ClientMemqTest {
     lcm.publish("ARM_PLAN_STATUS", m);
   }
 
+  interface Decoder<T> {
+    T decode(lcm.lcm.LCMDataInputStream in) throws IOException;
+  }
+
+  /** Every message on channel, decoded (LCM's thread appends). */
+  static <T> List<T> collect(LCM lcm, String channel, Decoder<T> decoder) {
+    List<T> out = new CopyOnWriteArrayList<>();
+    lcm.subscribe(channel, (l, c, in) -> {
+      try {
+        out.add(decoder.decode(in));
+      } catch (IOException e) {
+        throw new AssertionError(e);
+      }
+    });
+    return out;
+  }
+
   static void until(java.util.function.BooleanSupplier condition) throws InterruptedException {
     for (int i = 0; i < 400 && !condition.getAsBoolean(); ++i) Thread.sleep(5);
     assertTrue(condition.getAsBoolean(), "timed out");
@@ -35,14 +52,7 @@ class ClientMemqTest {
   @Test
   void movesGetRequestIdsAndFollowTheirStatusToTheEnd() throws Exception {
     LCM lcm = new LCM("memq://");
-    List<arm_goal_t> goals = new CopyOnWriteArrayList<>();
-    lcm.subscribe("ARM_GOAL", (l, channel, in) -> {
-      try {
-        goals.add(new arm_goal_t(in));
-      } catch (IOException e) {
-        throw new AssertionError(e);
-      }
-    });
+    List<arm_goal_t> goals = collect(lcm, "ARM_GOAL", arm_goal_t::new);
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 100);
     MoveHandle first = client.moveTo(Pose.of(1.22, 5.69).withCoral());
     MoveHandle second = client.moveTo(new Pose(0.58, 2.97, false, true, "open"));
@@ -112,14 +122,7 @@ class ClientMemqTest {
   @Test
   void publishesTheMeasuredState() throws Exception {
     LCM lcm = new LCM("memq://");
-    List<arm_state_t> states = new CopyOnWriteArrayList<>();
-    lcm.subscribe("ARM_STATE", (l, channel, in) -> {
-      try {
-        states.add(new arm_state_t(in));
-      } catch (IOException e) {
-        throw new AssertionError(e);
-      }
-    });
+    List<arm_state_t> states = collect(lcm, "ARM_STATE", arm_state_t::new);
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
     client.publishState(0.2, 0.01, 1.57, -0.02, true, false);
     until(() -> states.size() == 1);

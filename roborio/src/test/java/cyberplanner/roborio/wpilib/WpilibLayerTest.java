@@ -66,6 +66,14 @@ class WpilibLayerTest {
     deliver(FrcCanId.STATUS_API_ID, 3, StatusFrame.encode(new DaemonStatus(3, mode, 1, 0, 0, sequence)).value().data());
   }
 
+  /** One stream period on the bus: a status, both setpoints (0.37 V and 0.1 V), then the robot loop. */
+  void tick(DaemonMode mode, int sequence, double elevatorM, double armRad) {
+    deliverStatus(mode, sequence);
+    deliverSetpoint(1, elevatorM, 0.0, 0.37, sequence);
+    deliverSetpoint(2, armRad, 0.0, 0.1, sequence);
+    subsystem.periodic();
+  }
+
   @Test
   void framesFromTheBusDriveTheTalonAndTheSpark() {
     deliverStatus(DaemonMode.MOVING, 0);
@@ -86,30 +94,21 @@ class WpilibLayerTest {
 
   @Test
   void staleSetpointsHoldTheMeasuredPositionUntilFreshOnesArrive() {
-    deliverStatus(DaemonMode.MOVING, 0);
-    deliverSetpoint(1, 0.5, 0.25, 0.37, 0);
-    deliverSetpoint(2, 1.0, 0.0, 0.1, 0);
-    subsystem.periodic();
+    tick(DaemonMode.MOVING, 0, 0.5, 1.0);
     nowMicros += 60_000;  // no frames for 60 ms: older than the 50 ms limit
     subsystem.periodic();
     assertEquals(SetpointGuard.Verdict.SETPOINT_STALE, subsystem.verdict());
     assertEquals(0.30 * 20.0, elevatorMotor.standInPosition, 1e-9);
     assertEquals(0.0, elevatorMotor.standInVelocity);
     assertEquals(1.50 / (2 * Math.PI), armMotor.getClosedLoopController().standInValue, 1e-9);
-    deliverStatus(DaemonMode.MOVING, 1);
-    deliverSetpoint(1, 0.6, 0.0, 0.37, 1);
-    deliverSetpoint(2, 1.1, 0.0, 0.1, 1);
-    subsystem.periodic();
+    tick(DaemonMode.MOVING, 1, 0.6, 1.1);
     assertEquals(SetpointGuard.Verdict.USE, subsystem.verdict());
     assertEquals(12.0, elevatorMotor.standInPosition, 1e-9);
   }
 
   @Test
   void aDisabledRobotOrALostDaemonFallsBack() {
-    deliverStatus(DaemonMode.ROBOT_DISABLED, 0);
-    deliverSetpoint(1, 0.5, 0.0, 0.37, 0);
-    deliverSetpoint(2, 1.0, 0.0, 0.1, 0);
-    subsystem.periodic();
+    tick(DaemonMode.ROBOT_DISABLED, 0, 0.5, 1.0);
     assertEquals(SetpointGuard.Verdict.DAEMON_NOT_STREAMING, subsystem.verdict());
     assertEquals(6.0, elevatorMotor.standInPosition, 1e-9);
     nowMicros += 300_000;
