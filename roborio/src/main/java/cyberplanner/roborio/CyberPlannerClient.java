@@ -26,6 +26,8 @@ public final class CyberPlannerClient implements AutoCloseable {
   /** The robot LAN: the URL of the installed /etc/cyber-planner/robot.toml (docs/roborio.md). */
   public static final String ROBOT_LAN_URL = "udpm://239.255.76.67:7667?ttl=1";
 
+  private static final long MAX_OPEN_MOVES = 1000;
+
   private final LCM lcm;
   private final Channels channels;
   private final AtomicLong nextRequestId;
@@ -103,6 +105,8 @@ public final class CyberPlannerClient implements AutoCloseable {
   /** Sends a goal with the next request id. A newer move replaces this one (it ends CANCELLED). */
   public MoveHandle moveTo(Pose pose) {
     MoveHandle move = new MoveHandle(nextRequestId.getAndIncrement(), pose);
+    // Moves the daemon never answered (it was gone) are forgotten after MAX_OPEN_MOVES newer ones.
+    moves.keySet().removeIf(id -> id <= move.requestId() - MAX_OPEN_MOVES);
     moves.put(move.requestId(), move);
     arm_goal_t goal = new arm_goal_t();
     goal.utime = System.currentTimeMillis() * 1000;

@@ -84,6 +84,20 @@ class ClientMemqTest {
   }
 
   @Test
+  void unansweredMovesAreForgottenAfterAThousandNewerOnes() throws Exception {
+    LCM lcm = new LCM("memq://");
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    MoveHandle forgotten = client.moveTo(Pose.of(0.2, 1.57));
+    MoveHandle kept = client.moveTo(Pose.of(0.2, 1.57));
+    for (int i = 0; i < 999; ++i) client.moveTo(Pose.of(0.2, 1.57));  // ids 3..1001
+    status(lcm, forgotten.requestId(), arm_plan_status_t.STATUS_DONE, "");
+    status(lcm, kept.requestId(), arm_plan_status_t.STATUS_DONE, "");
+    assertEquals(MoveState.DONE, kept.await(2));
+    assertEquals(MoveState.SENT, forgotten.state());
+    client.close();
+  }
+
+  @Test
   void rejectedAndFailedCarryTheirReason() throws Exception {
     LCM lcm = new LCM("memq://");
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 7);
