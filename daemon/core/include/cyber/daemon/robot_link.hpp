@@ -3,7 +3,7 @@
 // from a receive-only CAN socket of its own, drained at every tick on its real-time thread. The
 // event loop reads the same frames on its socket for counters and logs, but at normal priority:
 // in a busy system it can fall behind by more than the 100 ms heartbeat timeout and the gate would
-// stop motion on heartbeats that are on the bus (docs/testing.md, "What these tests found").
+// stop motion on heartbeats that are on the bus (docs/design.md, "The motion gate").
 
 #include <cstdint>
 
