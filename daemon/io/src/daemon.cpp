@@ -93,8 +93,16 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
   return lcm;
 }
 
-std::optional<can::CanSocket> openCan(const DaemonOptions& options,
-                                      const can::SocketOptions& socket_options = can::SocketOptions{}) {
+// The event loop's socket writes the frames and reads only the controller's error frames: the
+// streamer is the one reader of the robot frames (robot_link.hpp).
+can::SocketOptions eventLoopSocketOptions() {
+  can::SocketOptions options;
+  options.filters = std::vector<can::IdFilter>{};
+  options.receive_bus_errors = true;
+  return options;
+}
+
+std::optional<can::CanSocket> openCan(const DaemonOptions& options, const can::SocketOptions& socket_options) {
   if (options.simulate_can) return std::nullopt;
   auto socket = can::CanSocket::open(options.settings.can_interface, socket_options);
   if (!socket) throw StartupError(socket.error().message);
@@ -110,7 +118,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       gate_(gateOf(options)),
       signals_(signals),
       lcm_(openLcm(options.settings.lcm_url)),
-      can_(openCan(options)),
+      can_(openCan(options, eventLoopSocketOptions())),
       port_(can_ ? std::unique_ptr<CanPort>(std::make_unique<SocketCanPort>(*can_))
                  : std::unique_ptr<CanPort>(std::make_unique<DiscardingCanPort>())),
       robot_can_(openCan(options, robotLinkSocketOptions())),
@@ -210,7 +218,7 @@ void Daemon::handleGoal(const GoalRequest& goal) {
   goal_received_ns_[goal.request_id] = now;
   spdlog::debug("goal {}: elevator {} m, arm {} rad, coral {}, algae {}, scene '{}'", goal.request_id, goal.elevator_m,
                 goal.arm_rad, goal.held_coral, goal.held_algae, goal.scene_name);
-  coordinator_.onGoal(goal, now, evaluateGate(inputs_.toInputs(), now, gate_));
+  coordinator_.onGoal(goal, now, evaluateGate(gateInputs(), now, gate_));
 }
 
 void Daemon::onStateMessage(const cyberplanner::arm_state_t& message) {
@@ -226,12 +234,12 @@ void Daemon::onStateMessage(const cyberplanner::arm_state_t& message) {
     }
     return;
   }
-  inputs_.state_ns = now;
-  inputs_.measured_q[0] = state->q[0];
-  inputs_.measured_q[1] = state->q[1];
-  inputs_.measured_qdot[0] = state->qdot[0];
-  inputs_.measured_qdot[1] = state->qdot[1];
-  storeInputs();
+  state_.state_ns = now;
+  state_.measured_q[0] = state->q[0];
+  state_.measured_q[1] = state->q[1];
+  state_.measured_qdot[0] = state->qdot[0];
+  state_.measured_qdot[1] = state->qdot[1];
+  channels_.state.store(state_);
 }
 
 void Daemon::onUndecodable(const std::string& channel, int size) {
@@ -259,36 +267,11 @@ void Daemon::onCanReadable() {
       can_suspended_until_ = now + kSecond / 10;
       return;
     }
-    switch (can::classify(frame)) {
-      case can::FrameKind::kHeartbeat: {
-        const auto heartbeat = can::decodeHeartbeat(frame);
-        if (!heartbeat) {
-          ++counters_.can_decode_errors;
-          break;
-        }
-        inputs_.heartbeat_ns = now;
-        inputs_.heartbeat_watchdog = heartbeat.value().system_watchdog;
-        storeInputs();
-        break;
-      }
-      case can::FrameKind::kBroadcastDisable: {
-        inputs_.broadcast_disable_ns = now;
-        storeInputs();
-        ++counters_.broadcast_disables;
-        std::int64_t suppressed = 0;
-        if (disable_log_.allow(now, suppressed)) spdlog::warn("broadcast disable received: motion stopped");
-        break;
-      }
-      case can::FrameKind::kBusError: {
-        ++counters_.bus_errors;
-        bus_error_ns_ = now;
-        std::int64_t suppressed = 0;
-        if (can_log_.allow(now, suppressed)) spdlog::warn("CAN controller error frame (id 0x{:08x})", frame.id);
-        break;
-      }
-      default:
-        break;  // the receive filter passes only the frames above
-    }
+    if (can::classify(frame) != can::FrameKind::kBusError) continue;  // the socket passes no data frames
+    ++counters_.bus_errors;
+    bus_error_ns_ = now;
+    std::int64_t suppressed = 0;
+    if (can_log_.allow(now, suppressed)) spdlog::warn("CAN controller error frame (id 0x{:08x})", frame.id);
   }
 }
 
@@ -419,13 +402,22 @@ std::string Daemon::serviceStatus() const {
                      toString(snapshot.mode), snapshot.request_id, c.goals_received, c.plans_succeeded,
                      c.plans_failed + c.goals_rejected,
                      channels_.write_failures.load() + counters_.bus_errors + counters_.can_read_errors,
-                     counters_.lcm_decode_errors + counters_.bad_states + counters_.can_decode_errors);
+                     counters_.lcm_decode_errors + counters_.bad_states + snapshot.robot_link.bad_heartbeats);
 }
+
+RobotInputs Daemon::gateInputs() const { return io::gateInputs(state_, channels_.snapshot.load().robot_link); }
 
 bool Daemon::robotEnabled(MonoNs now) const {
   if (!gate_.require_robot_enabled) return true;
-  const GateReason reason = evaluateGate(inputs_.toInputs(), now, gate_).reason;
+  const GateReason reason = evaluateGate(gateInputs(), now, gate_).reason;
   return !isRobotDisabledReason(reason);
+}
+
+void Daemon::logBroadcastDisables(MonoNs now, const RobotLink& link) {
+  if (link.broadcast_disable_count == disables_logged_) return;
+  disables_logged_ = link.broadcast_disable_count;
+  std::int64_t suppressed = 0;
+  if (disable_log_.allow(now, suppressed)) spdlog::warn("broadcast disable received: motion stopped");
 }
 
 void Daemon::onStatusTimer() {
@@ -448,6 +440,7 @@ void Daemon::onStatusTimer() {
   const MonoNs overrun = channels_.last_overrun_ns.load(std::memory_order_relaxed);
   if (overrun != kNever && now - overrun < kSecond) bits |= can::fault::kStreamOverrun;
   channels_.fault_bits.store(bits, std::memory_order_relaxed);
+  logBroadcastDisables(now, channels_.snapshot.load().robot_link);
   publishDaemonStatus(now);
 }
 
@@ -460,9 +453,8 @@ void Daemon::publishDaemonStatus(MonoNs now) {
   m.robot_enabled = robotEnabled(now);
   m.motion_allowed = snapshot.ticks > 0 && snapshot.gate_reason == GateReason::kOpen;
   m.active_request_id = snapshot.request_id;
-  m.state_age_ms = inputs_.state_ns == kNever ? -1.0 : nsToMs(now - inputs_.state_ns);
-  // The gate's view when the streamer reads the bus itself (robot_link.hpp), else the loop's.
-  const MonoNs heartbeat_ns = robot_source_ && snapshot.ticks > 0 ? snapshot.heartbeat_ns : inputs_.heartbeat_ns;
+  m.state_age_ms = state_.state_ns == kNever ? -1.0 : nsToMs(now - state_.state_ns);
+  const MonoNs heartbeat_ns = snapshot.robot_link.heartbeat_ns;
   m.heartbeat_age_ms = heartbeat_ns == kNever ? -1.0 : nsToMs(now - heartbeat_ns);
   m.goals_received = c.goals_received;
   m.plans_succeeded = c.plans_succeeded;
@@ -470,7 +462,7 @@ void Daemon::publishDaemonStatus(MonoNs now) {
   m.frames_sent = channels_.frames_sent.load(std::memory_order_relaxed);
   m.can_errors = channels_.write_failures.load(std::memory_order_relaxed) + counters_.bus_errors +
                  counters_.can_read_errors;
-  m.decode_errors = counters_.lcm_decode_errors + counters_.bad_states + counters_.can_decode_errors;
+  m.decode_errors = counters_.lcm_decode_errors + counters_.bad_states + snapshot.robot_link.bad_heartbeats;
   m.stream_overruns = channels_.overruns.load(std::memory_order_relaxed);
   m.publish_failures = bridge_->publishFailures();
   m.plan_time_p50_ms = plan_times_.percentileUs(0.5) * 1e-3;

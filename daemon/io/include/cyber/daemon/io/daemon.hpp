@@ -41,10 +41,8 @@ struct DaemonOptions {
 struct DaemonCounters {
   std::int64_t lcm_decode_errors = 0;   // undecodable or foreign messages on ARM_GOAL / ARM_STATE
   std::int64_t bad_states = 0;          // decodable ARM_STATE with non-finite or absurd values
-  std::int64_t can_decode_errors = 0;   // heartbeat-id frames with a bad payload
   std::int64_t can_read_errors = 0;
   std::int64_t bus_errors = 0;          // error frames from the controller
-  std::int64_t broadcast_disables = 0;
 };
 
 class Daemon final : private CoordinatorSink {
@@ -93,7 +91,8 @@ class Daemon final : private CoordinatorSink {
   void beginShutdown(const char* why);
   void publishDaemonStatus(MonoNs now);
   void flushTrajectory(MonoNs now, bool force);
-  void storeInputs() { channels_.inputs.store(inputs_); }
+  void logBroadcastDisables(MonoNs now, const RobotLink& link);
+  [[nodiscard]] RobotInputs gateInputs() const;
   [[nodiscard]] bool robotEnabled(MonoNs now) const;
   [[nodiscard]] std::string serviceStatus() const;  // one line for systemd's STATUS=
 
@@ -105,7 +104,7 @@ class Daemon final : private CoordinatorSink {
   std::unique_ptr<lcm::LCM> lcm_;
   std::optional<can::CanSocket> can_;
   std::unique_ptr<CanPort> port_;
-  // The streamer's own receive-only socket for the frames that gate motion (robot_link.hpp).
+  // The streamer's receive-only socket for the frames that gate motion (robot_link.hpp).
   std::optional<can::CanSocket> robot_can_;
   std::unique_ptr<RobotFrameSource> robot_source_;
 
@@ -121,7 +120,8 @@ class Daemon final : private CoordinatorSink {
   TimerFd echo_timer_;
   TimerFd exit_timer_;
 
-  RobotInputsData inputs_;
+  MeasuredStateData state_;
+  std::uint32_t disables_logged_ = 0;
   DaemonCounters counters_;
   LatencyHistogram plan_times_;
   LatencyHistogram goal_latency_;

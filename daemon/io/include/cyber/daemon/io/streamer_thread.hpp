@@ -18,19 +18,16 @@
 
 namespace cyber::daemon::io {
 
-// RobotInputs as plain data for the seqlock (Eigen vectors are not trivially copyable). With a CAN
-// bus, the streamer replaces the heartbeat and disable fields with its own reading (robot_link.hpp);
-// the event loop's are for ARM_DAEMON_STATUS and the log.
-struct RobotInputsData {
+// The measured state as plain data for the seqlock (Eigen vectors are not trivially copyable),
+// stored by the event loop. The robot fields of RobotInputs are the streamer's (robot_link.hpp).
+struct MeasuredStateData {
   MonoNs state_ns = kNever;
   double measured_q[2] = {0.0, 0.0};
   double measured_qdot[2] = {0.0, 0.0};
-  MonoNs heartbeat_ns = kNever;
-  bool heartbeat_watchdog = false;
-  MonoNs broadcast_disable_ns = kNever;
-
-  [[nodiscard]] RobotInputs toInputs() const;
 };
+
+// The gate's inputs: the event loop's measured state and the streamer's reading of the robot link.
+RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link);
 
 // The latest tick, for ARM_SETPOINT and ARM_DAEMON_STATUS.
 struct StreamSnapshot {
@@ -41,7 +38,7 @@ struct StreamSnapshot {
   std::int64_t request_id = -1;
   double segment_time_s = 0.0;
   double remaining_s = 0.0;
-  MonoNs heartbeat_ns = kNever;  // the latest heartbeat as the gate saw it at this tick
+  RobotLink robot_link;  // the robot frames as the gate saw them at this tick
   bool setpoints_written = false;
   can::Setpoint elevator;
   can::Setpoint arm;
@@ -58,7 +55,7 @@ struct WriteNotice {
 
 // Everything the event loop and the streamer thread share.
 struct StreamerChannels {
-  LatestValue<RobotInputsData> inputs;
+  LatestValue<MeasuredStateData> state;
   std::atomic<Program*> offered{nullptr};
   std::atomic<bool> stop_requested{false};
   std::atomic<std::uint8_t> fault_bits{0};  // plan failed, bus error, overrun (set by the loop)
@@ -95,8 +92,8 @@ class StreamerThread {
   StreamerThread(const StreamerThread&) = delete;
   StreamerThread& operator=(const StreamerThread&) = delete;
 
-  // The streamer's own source of heartbeats and disables (null: only what the event loop stores
-  // in channels.inputs). Set before start().
+  // The streamer's source of heartbeats and disables (null: none, as without a CAN bus). Set
+  // before start().
   void setRobotFrameSource(RobotFrameSource* source) { robot_source_ = source; }
   void setObserver(TickObserver observer, void* context) {
     observer_ = observer;
