@@ -108,7 +108,6 @@ void StreamerThread::run() {
       notify::notifyWatchdog();  // one non-blocking datagram, no allocation
       last_watchdog_ns = now;
     }
-    if (observer_ != nullptr) observer_(observer_context_, now, out, report);
     if (wake) channels_.wake.signal();
   }
   if (Program* left = streamer_.releaseProgram()) channels_.retired.push(left);

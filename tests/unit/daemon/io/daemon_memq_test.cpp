@@ -1,7 +1,7 @@
 // The assembled daemon (event loop, worker and streamer threads, LCM bridge) on memq:// with a
 // fake planner and no CAN socket: goals in through LCM, answers out through LCM.
 
-#include "cyber/daemon/io/daemon.hpp"
+#include "cyber/daemon/io/daemon_probe.hpp"
 
 #include <gtest/gtest.h>
 
@@ -102,7 +102,7 @@ class DaemonMemq : public ::testing::Test {
     daemon = std::make_unique<Daemon>(cyber::test::referenceModel(), options, planning, nullptr);
     runner = std::async(std::launch::async, [this] { return daemon->run(); });
     onLoop([this] {
-      auto& lcm = daemon->lcm();
+      auto& lcm = DaemonProbe::lcm(*daemon);
       lcm.subscribe("ARM_PLAN_STATUS", &Listener::onStatus, &listener);
       lcm.subscribe("ARM_TRAJECTORY", &Listener::onTrajectory, &listener);
       lcm.subscribe("ARM_SETPOINT", &Listener::onSetpoint, &listener);
@@ -133,7 +133,7 @@ class DaemonMemq : public ::testing::Test {
   void onLoop(std::function<void()> task) {
     auto done = std::make_shared<std::promise<void>>();
     auto future = done->get_future();
-    daemon->post([task = std::move(task), done] {
+    DaemonProbe::post(*daemon, [task = std::move(task), done] {
       task();
       done->set_value();
     });
@@ -142,10 +142,10 @@ class DaemonMemq : public ::testing::Test {
 
   template <class M>
   void publish(const std::string& channel, const M& message) {
-    onLoop([&] { daemon->lcm().publish(channel, &message); });
+    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, &message); });
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    onLoop([&] { daemon->lcm().publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
   }
 
   void goal(std::int64_t id, double elevator_m, double arm_rad) {

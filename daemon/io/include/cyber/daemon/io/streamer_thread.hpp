@@ -82,9 +82,6 @@ struct StreamerChannels {
   std::atomic<MonoNs> loop_alive_limit_ns{0};
 };
 
-// Bench/test hook, called on the streamer thread after each tick's frames are written.
-using TickObserver = void (*)(void* context, MonoNs now, const TickOutput& tick, const WriteReport& report);
-
 class StreamerThread {
  public:
   StreamerThread(StreamerChannels& channels, Streamer& streamer, FrameWriter& writer, MonoNs period_ns);
@@ -95,10 +92,6 @@ class StreamerThread {
   // The streamer's source of heartbeats and disables (null: none, as without a CAN bus). Set
   // before start().
   void setRobotFrameSource(RobotFrameSource* source) { robot_source_ = source; }
-  void setObserver(TickObserver observer, void* context) {
-    observer_ = observer;
-    observer_context_ = context;
-  }
   void start();
   // Ends after the current period and joins.
   void stop();
@@ -114,8 +107,6 @@ class StreamerThread {
   std::atomic<bool> quit_{false};
   RobotFrameSource* robot_source_ = nullptr;
   RobotLink robot_link_;
-  TickObserver observer_ = nullptr;
-  void* observer_context_ = nullptr;
   std::thread thread_;
 };
 
