@@ -47,7 +47,6 @@ void GoalCoordinator::finish(std::int64_t request_id, GoalStatus status, std::st
   switch (status) {
     case GoalStatus::kRejected: ++counters_.goals_rejected; break;
     case GoalStatus::kFailed: ++counters_.plans_failed; break;
-    case GoalStatus::kCancelled: ++counters_.goals_cancelled; break;
     case GoalStatus::kDone: ++counters_.goals_done; break;
     default: break;
   }

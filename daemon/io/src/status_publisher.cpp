@@ -99,6 +99,7 @@ void StatusPublisher::publishDaemonStatus(const StreamSnapshot& snapshot, MonoNs
   m.stream_jitter_p50_us = jitter.percentileUs(0.5);
   m.stream_jitter_p99_us = jitter.percentileUs(0.99);
   m.stream_jitter_max_us = jitter.maxUs();
+  m.realtime_priority = s_.channels.realtime_priority.load(std::memory_order_relaxed);
   s_.bridge.publish(s_.bridge.channels().daemon_status, m);
 }
 

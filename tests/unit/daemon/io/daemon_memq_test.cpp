@@ -4,6 +4,8 @@
 #include "cyber/daemon/io/daemon_probe.hpp"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <chrono>
 #include <condition_variable>
@@ -242,6 +244,25 @@ TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
   ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
   EXPECT_EQ(listener.statuses.back().status, cyberplanner::arm_plan_status_t::STATUS_DONE);
+}
+
+// Whether this process may use SCHED_FIFO (root, CAP_SYS_NICE, RLIMIT_RTPRIO), tried on a thread.
+bool realtimeAllowed() {
+  bool allowed = false;
+  std::thread probe([&] {
+    sched_param param{};
+    param.sched_priority = 50;
+    allowed = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+  });
+  probe.join();
+  return allowed;
+}
+
+TEST_F(DaemonMemq, StatusSaysWhetherTheStreamerGotRealTimePriority) {
+  waitForHolding();
+  ASSERT_TRUE(listener.waitFor([&] { return !listener.daemon_statuses.empty(); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.daemon_statuses.back().realtime_priority, realtimeAllowed() ? 50 : 0);
 }
 
 TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {

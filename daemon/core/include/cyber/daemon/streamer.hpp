@@ -71,7 +71,6 @@ class Streamer {
   Program* releaseProgram();
 
   [[nodiscard]] std::uint64_t epoch() const { return epoch_; }
-  [[nodiscard]] bool running() const { return running_; }
 
  private:
   void stop(MonoNs now, GateReason reason, TickOutput& out);

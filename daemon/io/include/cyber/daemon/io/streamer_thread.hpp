@@ -69,10 +69,10 @@ struct StreamerChannels {
   std::atomic<std::int64_t> frames_sent{0};
   std::atomic<std::int64_t> write_failures{0};
   std::atomic<std::int64_t> overruns{0};
-  std::atomic<std::int64_t> lost_messages{0};  // ring full (never expected)
+  std::atomic<std::int64_t> lost_messages{0};  // ring full (never expected; logged as an error)
   std::atomic<MonoNs> last_overrun_ns{kNever};
   LatencyHistogram jitter;
-  std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused
+  std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused (ARM_DAEMON_STATUS)
 
   // Service-manager watchdog: the streamer sends WATCHDOG=1 every watchdog_period_ns (0 = off),
   // but only while the event loop has shown life within loop_alive_limit_ns, so a stuck loop
