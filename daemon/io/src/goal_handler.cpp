@@ -60,7 +60,8 @@ void GoalHandler::publishStatus(const StatusUpdate& update) {
       reject_warning_.warn(monotonicNow(), "request {} {}: {}", id, toString(update.status), update.reason);
       break;
     case GoalStatus::kExecuting:
-      spdlog::info("request {} executing ({:.3f} s, planned in {:.1f} ms)", id, update.duration_s, update.times_ms.total);
+      spdlog::info("request {} executing ({:.3f} s, planned in {:.1f} ms)", id, update.duration_s,
+                   update.times_ms.total);
       break;
     case GoalStatus::kDone:
       last_goal_failed_ = false;

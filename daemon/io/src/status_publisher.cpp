@@ -109,7 +109,8 @@ void StatusPublisher::onEchoTimer() {
   last_echo_tick_ = snapshot.ticks;
   const MonoNs now = monotonicNow();
   const std::int64_t wall = wallMicros();
-  s_.bridge.publish(s_.bridge.channels().setpoint, setpointMessage(snapshot, monoToWallMicros(snapshot.time_ns, now, wall)));
+  s_.bridge.publish(s_.bridge.channels().setpoint,
+                    setpointMessage(snapshot, monoToWallMicros(snapshot.time_ns, now, wall)));
 }
 
 }  // namespace cyber::daemon::io
