@@ -19,15 +19,9 @@
 set(cyber_data_dir share/cyber-planner)
 set(cyber_doc_dir share/doc/cyber-planner)
 
-foreach(program cyber-plannerd cyber-can-decode)
-  if(TARGET ${program})
-    install(TARGETS ${program} RUNTIME DESTINATION bin)
-  endif()
-endforeach()
+install(TARGETS cyber-plannerd cyber-can-decode RUNTIME DESTINATION bin)
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/lcm-spy DESTINATION bin RENAME cyber-lcm-spy)
-if(TARGET cyber_lcmtypes_jar)
-  install(FILES ${CYBER_LCMTYPES_JAR} DESTINATION ${cyber_data_dir}/java)
-endif()
+install(FILES ${CYBER_LCMTYPES_JAR} DESTINATION ${cyber_data_dir}/java)
 
 file(GLOB cyber_network_files CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/systemd/network/*)
 install(FILES ${cyber_network_files} DESTINATION ${cyber_data_dir}/network)

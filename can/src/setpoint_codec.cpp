@@ -1,27 +1,19 @@
 #include "cyber/can/setpoint_codec.hpp"
 
-#include <limits>
-
 #include "cyber/can/frc_id.hpp"
 #include "wire.hpp"
 
 namespace cyber::can {
-
-namespace {
-constexpr std::int32_t kInt16Min = std::numeric_limits<std::int16_t>::min();
-constexpr std::int32_t kInt16Max = std::numeric_limits<std::int16_t>::max();
-}  // namespace
 
 Result<Frame, CodecError> encodeSetpoint(std::uint8_t device, const Setpoint& setpoint) {
   if (device > kMaxDeviceNumber) return CodecError::kDeviceOutOfRange;
   const auto position = wire::toCounts(setpoint.position, kPositionCountsPerUnit,
                                        kPositionMinCount, kPositionMaxCount);
   if (!position) return CodecError::kPositionOutOfRange;
-  const auto velocity =
-      wire::toCounts(setpoint.velocity, kVelocityCountsPerUnit, kInt16Min, kInt16Max);
+  const auto velocity = wire::toCounts(setpoint.velocity, kVelocityCountsPerUnit, kInt16MinCount, kInt16MaxCount);
   if (!velocity) return CodecError::kVelocityOutOfRange;
   const auto millivolts =
-      wire::toCounts(setpoint.feedforward_volts, kVoltageCountsPerVolt, kInt16Min, kInt16Max);
+      wire::toCounts(setpoint.feedforward_volts, kVoltageCountsPerVolt, kInt16MinCount, kInt16MaxCount);
   if (!millivolts) return CodecError::kVoltageOutOfRange;
 
   Frame frame;

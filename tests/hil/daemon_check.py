@@ -238,6 +238,12 @@ def note_cpu(c, run):
         policy = {"0": "normal", "1": "FIFO", "2": "RR"}
         c.note("cyber-plannerd threads (policy: CPU s): " + ", ".join(
             f"{t[1]} ({policy.get(t[2], t[2])}: {(int(t[3]) + int(t[4])) / 100.0:.2f})" for t in threads))
+        if run.daemon_status:
+            fifo = any(t[2] == "1" for t in threads)
+            reported = run.daemon_status[-1]["realtime_priority"]
+            c.check(reported == (50 if fifo else 0),
+                    f"ARM_DAEMON_STATUS.realtime_priority {reported} agrees with the streamer thread's policy "
+                    f"({'FIFO' if fifo else 'normal'})")
 
 
 def check_protocol(c, run, allow_sequence_jumps=False, injected=None):

@@ -148,7 +148,8 @@ DAEMON_STATUS_FIELDS = (
     ("goals_received", "q"), ("plans_succeeded", "q"), ("plans_failed", "q"), ("frames_sent", "q"),
     ("can_errors", "q"), ("decode_errors", "q"), ("stream_overruns", "q"), ("publish_failures", "q"),
     ("plan_time_p50_ms", "d"), ("plan_time_p99_ms", "d"), ("plan_time_max_ms", "d"),
-    ("stream_jitter_p50_us", "d"), ("stream_jitter_p99_us", "d"), ("stream_jitter_max_us", "d"))
+    ("stream_jitter_p50_us", "d"), ("stream_jitter_p99_us", "d"), ("stream_jitter_max_us", "d"),
+    ("realtime_priority", "i"))
 
 
 def decode_daemon_status(data):

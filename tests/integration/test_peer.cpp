@@ -228,14 +228,14 @@ int runStatus(lcm::LCM& lcm, const Args& args) {
   std::printf("mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
               "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"
               "decode_errors=%lld\nstream_overruns=%lld\npublish_failures=%lld\nplan_time_p50_ms=%.2f\nplan_time_p99_ms=%.2f\n"
-              "stream_jitter_p50_us=%.1f\nstream_jitter_p99_us=%.1f\nstream_jitter_max_us=%.1f\n",
+              "stream_jitter_p50_us=%.1f\nstream_jitter_p99_us=%.1f\nstream_jitter_max_us=%.1f\nrealtime_priority=%d\n",
               s.mode, s.robot_enabled, s.motion_allowed, static_cast<long long>(s.active_request_id), s.state_age_ms,
               static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
               static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
               static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
               static_cast<long long>(s.stream_overruns),
               static_cast<long long>(s.publish_failures), s.plan_time_p50_ms, s.plan_time_p99_ms,
-              s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us);
+              s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us, s.realtime_priority);
   return 0;
 }
 

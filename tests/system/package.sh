@@ -84,9 +84,8 @@ for program in "${programs[@]}"; do
   out=$("$root/usr/bin/$program" --help 2>&1) || fail "$program --help exited with status $?: $out"
   grep -qi usage <<<"$out" || fail "$program --help printed no usage: $out"
 done
-if [[ -f $root/usr/share/cyber-planner/java/cyber_lcmtypes.jar ]]; then
-  classpath=$("$root/usr/bin/cyber-lcm-spy" --print-classpath)
-  [[ $classpath == "$(realpath "$root")/usr/share/cyber-planner/java/cyber_lcmtypes.jar:"* ]] ||
-    fail "cyber-lcm-spy does not use the packaged jar: $classpath"
-fi
+[[ -f $root/usr/share/cyber-planner/java/cyber_lcmtypes.jar ]] || fail "the package holds no cyber_lcmtypes.jar"
+classpath=$("$root/usr/bin/cyber-lcm-spy" --print-classpath)
+[[ $classpath == "$(realpath "$root")/usr/share/cyber-planner/java/cyber_lcmtypes.jar:"* ]] ||
+  fail "cyber-lcm-spy does not use the packaged jar: $classpath"
 echo "package: $(basename "$deb") holds ${programs[*]:-no programs}; Depends: $depends"

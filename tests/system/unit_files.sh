@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
 # The systemd and networkd files the project ships (systemd/), checked by systemd's own tools.
-#   unit_files.sh verify BUILD_DIR [--stand-in]
+#   unit_files.sh verify BUILD_DIR
 #       installs the build into a staging root (cmake --install, DESTDIR) and runs
 #       `systemd-analyze verify --root=STAGE cyber-planner.service`, which must print nothing.
-#       verify needs ExecStart's binary in the root; --stand-in (used while cyber-plannerd is not
-#       built yet) puts /bin/true there in its place.
+#       verify needs ExecStart's binary in the root.
 #   unit_files.sh security BUILD_DIR
 #       `systemd-analyze security --offline=yes` must rate the unit's exposure 2.5 or less.
 #   unit_files.sh networkd BUILD_DIR
@@ -27,7 +26,7 @@ if [[ ${1:-} == --print-doc-commands ]]; then
   printf '%s\n' "$stage_install" "$security"
   exit 0
 fi
-[[ $# -ge 2 ]] || { echo "usage: $0 verify|security|networkd BUILD_DIR [--stand-in]" >&2; exit 2; }
+[[ $# -ge 2 ]] || { echo "usage: $0 verify|security|networkd BUILD_DIR" >&2; exit 2; }
 case_name=$1
 system_setup "$2"
 commands
@@ -41,11 +40,6 @@ verify() {
   # verify resolves the unit's dependencies (basic.target, network-online.target, ...) in the
   # root too: take them from this machine, ours untouched.
   cp -an /usr/lib/systemd/system/. "$units/"
-  if [[ ${1:-} == --stand-in ]]; then
-    [[ -e $stage/usr/bin/cyber-plannerd ]] && fail "cyber-plannerd is built: run without --stand-in"
-    echo "verify: cyber-plannerd is not built yet; /bin/true stands in for it"
-    cp /bin/true "$stage/usr/bin/cyber-plannerd"
-  fi
   [[ -x $stage/usr/bin/cyber-plannerd ]] || fail "no executable $stage/usr/bin/cyber-plannerd after cmake --install"
   echo "+ systemd-analyze verify --root=$stage cyber-planner.service"
   out=$(systemd-analyze verify --root="$stage" cyber-planner.service 2>&1) || fail "systemd-analyze verify failed: $out"
@@ -115,7 +109,7 @@ networkd() {
 }
 
 case $case_name in
-  verify) verify "${3:-}" ;;
+  verify) verify ;;
   security) security ;;
   networkd) networkd ;;
   *) echo "unit_files: unknown case '$case_name'" >&2; exit 2 ;;

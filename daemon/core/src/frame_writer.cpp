@@ -57,7 +57,7 @@ WriteReport FrameWriter::write(const TickOutput& tick, std::uint8_t fault_bits) 
     if (tick.gate_reason == GateReason::kStateStale) bits |= can::fault::kStateStale;
     if (failing_) bits |= can::fault::kCanWriteFailed;
     can::Status status;
-    status.mode = static_cast<can::Mode>(tick.mode);
+    status.mode = tick.mode;
     status.request_id = can::requestIdLow16(tick.request_id);
     status.time_remaining_ms = can::saturateTimeRemainingMs(tick.remaining_s);
     status.fault_bits = bits;

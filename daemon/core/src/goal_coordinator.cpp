@@ -47,7 +47,6 @@ void GoalCoordinator::finish(std::int64_t request_id, GoalStatus status, std::st
   switch (status) {
     case GoalStatus::kRejected: ++counters_.goals_rejected; break;
     case GoalStatus::kFailed: ++counters_.plans_failed; break;
-    case GoalStatus::kCancelled: ++counters_.goals_cancelled; break;
     case GoalStatus::kDone: ++counters_.goals_done; break;
     default: break;
   }
@@ -94,9 +93,7 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
 void GoalCoordinator::tryStart(MonoNs now) {
   if (!pending_ || in_flight_ || posted_ || stopped_) return;
   // A chain without room for one more segment ages out within a budget; onTimer retries.
-  Program probe;
-  std::vector<std::int64_t> ignored;
-  if (!Program::splice(mirror_, now, Segment{nullptr, -1, kNever}, true, 0, probe, ignored)) return;
+  if (!Program::splice(mirror_, SpliceRequest{now, Segment{nullptr, -1, kNever}, true, 0})) return;
 
   InFlight job;
   job.job_id = next_job_id_++;
@@ -186,11 +183,13 @@ void GoalCoordinator::onPlanResult(std::uint64_t job_id, planner::Result<Planned
   posted.program_id = next_program_id_++;
   posted.pending = job.pending;
   Segment segment{motion.trajectory, id, job.branch_ns};
-  if (!Program::splice(mirror_, now, std::move(segment), job.floating, posted.program_id, posted.program,
-                       posted.dropped)) {
+  auto spliced = Program::splice(mirror_, SpliceRequest{now, std::move(segment), job.floating, posted.program_id});
+  if (!spliced) {
     pending_ = job.pending;  // no room in the chain: wait for it to age out (onTimer)
     return;
   }
+  posted.program = std::move(spliced->program);
+  posted.dropped = std::move(spliced->dropped_requests);
   if (auto it = open_.find(id); it != open_.end()) {
     it->second.times_ms = motion.times_ms;
     it->second.duration_s = motion.trajectory->durationS();

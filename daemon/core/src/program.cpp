@@ -74,14 +74,16 @@ void Program::resolveFloatingStart(MonoNs now) {
   floating = false;
 }
 
-bool Program::splice(const Program& base, MonoNs now, Segment added, bool is_floating, std::uint64_t new_id,
-                     Program& out, std::vector<std::int64_t>& dropped_requests) {
-  Program next;
-  next.id = new_id;
+std::optional<Program::Spliced> Program::splice(const Program& base, SpliceRequest request) {
+  const MonoNs now = request.now;
+  const bool is_floating = request.floating;
+  Segment& added = request.added;
+  Spliced spliced;
+  Program& next = spliced.program;
+  next.id = request.new_id;
   next.base_id = base.id;
   next.epoch = base.epoch;
   next.rest_q = base.rest_q;
-  const size_t dropped_before = dropped_requests.size();
   int first = 0;
   // Segments whose successor has started by `now` will never be sampled again.
   while (first + 1 < base.count_ && base.segments_[static_cast<size_t>(first + 1)].start_ns <= now) {
@@ -91,20 +93,16 @@ bool Program::splice(const Program& base, MonoNs now, Segment added, bool is_flo
   for (int i = first; i < base.count_; ++i) {
     const Segment& segment = base.segments_[static_cast<size_t>(i)];
     if (!is_floating && segment.start_ns >= added.start_ns) {
-      dropped_requests.push_back(segment.request_id);
+      spliced.dropped_requests.push_back(segment.request_id);
       continue;
     }
     next.segments_[static_cast<size_t>(next.count_++)] = segment;
   }
-  if (next.count_ >= kMaxSegments) {
-    dropped_requests.resize(dropped_before);
-    return false;
-  }
+  if (next.count_ >= kMaxSegments) return std::nullopt;
   next.floating = is_floating;
   next.splice_ns = is_floating ? 0 : added.start_ns;
   next.segments_[static_cast<size_t>(next.count_++)] = std::move(added);
-  out = std::move(next);
-  return true;
+  return spliced;
 }
 
 }  // namespace cyber::daemon

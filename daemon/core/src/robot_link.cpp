@@ -21,7 +21,10 @@ int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int 
     switch (can::classify(frame)) {
       case can::FrameKind::kHeartbeat: {
         const auto heartbeat = can::decodeHeartbeat(frame);
-        if (!heartbeat) break;
+        if (!heartbeat) {
+          ++link.bad_heartbeats;
+          break;
+        }
         link.heartbeat_ns = now;
         link.heartbeat_watchdog = heartbeat.value().system_watchdog;
         break;

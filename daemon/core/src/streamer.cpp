@@ -2,19 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace cyber::daemon {
-
-std::string_view toString(StreamMode mode) {
-  switch (mode) {
-    case StreamMode::kNoState: return "no-state";
-    case StreamMode::kHolding: return "holding";
-    case StreamMode::kMoving: return "moving";
-    case StreamMode::kFault: return "fault";
-    case StreamMode::kRobotDisabled: return "robot-disabled";
-  }
-  return "unknown";
-}
 
 void TickOutput::reset() {
   send_setpoints = false;
@@ -27,12 +17,18 @@ void TickOutput::reset() {
   retired_count = 0;
 }
 
+// Overflow is a defect of the streamer, never a run-time condition: a dropped event would leave the
+// coordinator waiting for an answer, a dropped program would leak. Checked in every build (not an
+// assert() that NDEBUG removes); abort() neither allocates nor blocks.
 void TickOutput::push(const StreamEvent& event) {
-  if (event_count < kMaxEvents) events[static_cast<size_t>(event_count++)] = event;
+  if (event_count >= kMaxEvents) std::abort();
+  events[static_cast<size_t>(event_count++)] = event;
 }
 
 void TickOutput::retire(Program* program) {
-  if (program != nullptr && retired_count < kMaxRetired) retired[static_cast<size_t>(retired_count++)] = program;
+  if (program == nullptr) return;
+  if (retired_count >= kMaxRetired) std::abort();
+  retired[static_cast<size_t>(retired_count++)] = program;
 }
 
 Streamer::Streamer(const HoldModel& hold, const StreamerSettings& settings) : hold_(hold), settings_(settings) {}

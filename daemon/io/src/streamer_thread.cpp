@@ -8,14 +8,12 @@
 
 namespace cyber::daemon::io {
 
-RobotInputs RobotInputsData::toInputs() const {
+RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link) {
   RobotInputs inputs;
-  inputs.state_ns = state_ns;
-  inputs.measured_q = JointVector(measured_q[0], measured_q[1]);
-  inputs.measured_qdot = JointVector(measured_qdot[0], measured_qdot[1]);
-  inputs.heartbeat_ns = heartbeat_ns;
-  inputs.heartbeat_watchdog = heartbeat_watchdog;
-  inputs.broadcast_disable_ns = broadcast_disable_ns;
+  inputs.state_ns = state.state_ns;
+  inputs.measured_q = JointVector(state.measured_q[0], state.measured_q[1]);
+  inputs.measured_qdot = JointVector(state.measured_qdot[0], state.measured_qdot[1]);
+  applyRobotLink(link, inputs);
   return inputs;
 }
 
@@ -58,11 +56,8 @@ void StreamerThread::run() {
     }
     scheduled += period_ns_;
 
-    RobotInputs inputs = channels_.inputs.load().toInputs();
-    if (robot_source_ != nullptr) {
-      drainRobotFrames(*robot_source_, now, robot_link_);
-      applyRobotLink(robot_link_, inputs);
-    }
+    if (robot_source_ != nullptr) drainRobotFrames(*robot_source_, now, robot_link_);
+    const RobotInputs inputs = gateInputs(channels_.state.load(), robot_link_);
     Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
     streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);
     const WriteReport report = writer_.write(out, channels_.fault_bits.load(std::memory_order_relaxed));
@@ -75,7 +70,7 @@ void StreamerThread::run() {
     snapshot.request_id = out.request_id;
     snapshot.segment_time_s = out.segment_time_s;
     snapshot.remaining_s = out.remaining_s;
-    snapshot.heartbeat_ns = inputs.heartbeat_ns;
+    snapshot.robot_link = robot_link_;
     snapshot.setpoints_written = report.wire.written;
     snapshot.elevator = report.wire.elevator;
     snapshot.arm = report.wire.arm;
@@ -113,7 +108,6 @@ void StreamerThread::run() {
       notify::notifyWatchdog();  // one non-blocking datagram, no allocation
       last_watchdog_ns = now;
     }
-    if (observer_ != nullptr) observer_(observer_context_, now, out, report);
     if (report.wire.written && channels_.wake_on_setpoints.load(std::memory_order_relaxed)) wake = true;
     if (wake) channels_.wake.signal();
   }

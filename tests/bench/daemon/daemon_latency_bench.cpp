@@ -23,7 +23,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cyber/config/load_config.hpp"
-#include "cyber/daemon/io/daemon.hpp"
+#include "cyber/daemon/io/daemon_probe.hpp"
 #include "cyber/daemon/motion_planner_service.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -34,6 +34,7 @@ namespace {
 
 using namespace std::chrono_literals;
 using cyber::daemon::io::Daemon;
+using cyber::daemon::io::DaemonProbe;
 
 void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
   std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n",
@@ -55,7 +56,7 @@ class Rig {
     options.simulate_can = true;
     daemon_ = std::make_unique<Daemon>(robot, options, planning, nullptr);
     runner_ = std::async(std::launch::async, [this] { return daemon_->run(); });
-    onLoop([this] { daemon_->lcm().subscribe("ARM_PLAN_STATUS", &Rig::onStatus, this); });
+    onLoop([this] { DaemonProbe::lcm(*daemon_).subscribe("ARM_PLAN_STATUS", &Rig::onStatus, this); });
     feeder_ = std::thread([this] { feed(); });
   }
   ~Rig() {
@@ -68,7 +69,7 @@ class Rig {
   void onLoop(std::function<void()> task) {
     auto done = std::make_shared<std::promise<void>>();
     auto future = done->get_future();
-    daemon_->post([task = std::move(task), done] {
+    DaemonProbe::post(*daemon_, [task = std::move(task), done] {
       task();
       done->set_value();
     });
@@ -82,7 +83,7 @@ class Rig {
     goal.arm_rad = q[1];
     goal.held_coral = pieces.coral;
     goal.held_algae = pieces.algae;
-    onLoop([&] { daemon_->lcm().publish("ARM_GOAL", &goal); });
+    onLoop([&] { DaemonProbe::lcm(*daemon_).publish("ARM_GOAL", &goal); });
   }
 
   // Stops the state long enough for the gate to close, then resumes it at q: the daemon holds q.
@@ -95,7 +96,7 @@ class Rig {
     paused_.store(false);
     const auto end = std::chrono::steady_clock::now() + 5s;
     while (std::chrono::steady_clock::now() < end) {
-      const auto snapshot = daemon_->channels().snapshot.load();
+      const auto snapshot = DaemonProbe::channels(*daemon_).snapshot.load();
       if (snapshot.mode == cyber::daemon::StreamMode::kHolding && std::abs(snapshot.elevator.position - q[0]) < 1e-4 &&
           std::abs(snapshot.arm.position - q[1]) < 1e-4) {
         break;
@@ -135,11 +136,11 @@ class Rig {
   void feed() {
     while (!quit_) {
       if (!paused_) {
-        const auto snapshot = daemon_->channels().snapshot.load();
+        const auto snapshot = DaemonProbe::channels(*daemon_).snapshot.load();
         cyberplanner::arm_state_t state{};
         state.elevator_m = forced_ || snapshot.ticks == 0 ? forced_q_[0].load() : snapshot.elevator.position;
         state.arm_rad = forced_ || snapshot.ticks == 0 ? forced_q_[1].load() : snapshot.arm.position;
-        onLoop([&] { daemon_->lcm().publish("ARM_STATE", &state); });
+        onLoop([&] { DaemonProbe::lcm(*daemon_).publish("ARM_STATE", &state); });
       }
       std::this_thread::sleep_for(10ms);
     }
@@ -215,12 +216,12 @@ int main() {
       }
       ++id;
     }
-    const auto& latency = rig.daemon().goalToSetpointLatency();
+    const auto& latency = DaemonProbe::goalToSetpointLatency(rig.daemon());
     std::printf("goal -> first setpoint, %lld public moves from rest (%d executed, %d not): median %.2f ms  p99 %.2f ms  "
                 "max %.2f ms\n",
                 static_cast<long long>(latency.count()), done, other, latency.percentileUs(0.5) * 1e-3,
                 latency.percentileUs(0.99) * 1e-3, latency.maxUs() * 1e-3);
-    printJitter("stream jitter while moving:", rig.daemon().channels());
+    printJitter("stream jitter while moving:", DaemonProbe::channels(rig.daemon()));
   }
 
   // 2. Jitter: the machine's own timer latency, the daemon idle, then under a goal flood
@@ -229,7 +230,7 @@ int main() {
   {
     Rig rig(config.robot, *planning.value(), 0.25);
     std::this_thread::sleep_for(3s);
-    printJitter("stream jitter idle (3 s):", rig.daemon().channels());
+    printJitter("stream jitter idle (3 s):", DaemonProbe::channels(rig.daemon()));
   }
   {
     Rig rig(config.robot, *planning.value(), 0.25);
@@ -242,7 +243,7 @@ int main() {
       std::this_thread::sleep_until(start + std::chrono::microseconds(1000 * (k + 1)));
     }
     rig.waitFinal(id - 1, 30.0);
-    printJitter("stream jitter, 1000 goals/s (3 s):", rig.daemon().channels());
+    printJitter("stream jitter, 1000 goals/s (3 s):", DaemonProbe::channels(rig.daemon()));
   }
   return 0;
 }

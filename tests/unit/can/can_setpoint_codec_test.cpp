@@ -87,6 +87,18 @@ TEST(SetpointCodec, VelocityAndVoltageLimits) {
   EXPECT_EQ(encodeError(Setpoint{0, 0, -32.769, 0}), CodecError::kVoltageOutOfRange);
 }
 
+// The magnitudes the streamer checks setpoints against (SetpointLimits) encode with both signs.
+TEST(SetpointCodec, TheMaxMagnitudesEncodeWithEitherSign) {
+  for (const double sign : {1.0, -1.0}) {
+    EXPECT_TRUE(encodeSetpoint(1, Setpoint{sign * kMaxPositionMagnitude, sign * kMaxVelocityMagnitude,
+                                           sign * kMaxVoltageMagnitude, 0})
+                    .ok());
+  }
+  EXPECT_EQ(encodeError(Setpoint{kMaxPositionMagnitude + 1e-5, 0, 0, 0}), CodecError::kPositionOutOfRange);
+  EXPECT_EQ(encodeError(Setpoint{0, kMaxVelocityMagnitude + 1e-3, 0, 0}), CodecError::kVelocityOutOfRange);
+  EXPECT_EQ(encodeError(Setpoint{0, 0, kMaxVoltageMagnitude + 1e-3, 0}), CodecError::kVoltageOutOfRange);
+}
+
 TEST(SetpointCodec, NonFiniteValuesAreErrors) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();

@@ -4,6 +4,7 @@
 
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
+#include "splice_into.hpp"
 
 namespace cyber::daemon {
 namespace {
@@ -41,7 +42,8 @@ TEST_F(ProgramTest, FloatingSpliceStartsFromRestAtAdoption) {
   const Program base = Program::holdAt(1, q0);
   Program next;
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(Program::splice(base, 0, segment(5, q0, JointVector::Zero(), q1, 0.5, kNever), true, 9, next, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(base, {0, segment(5, q0, JointVector::Zero(), q1, 0.5, kNever), true, 9}, next, dropped));
   EXPECT_TRUE(dropped.empty());
   EXPECT_EQ(next.id, 9u);
   EXPECT_EQ(next.base_id, 0u);
@@ -68,10 +70,11 @@ TEST_F(ProgramTest, FloatingStartWaitsForTheRunningMotionToEnd) {
   Program base = Program::holdAt(1, q0);
   std::vector<std::int64_t> dropped;
   Program one;
-  ASSERT_TRUE(Program::splice(base, 0, segment(1, q0, JointVector::Zero(), q1, 0.5, kNever), true, 1, one, dropped));
+  ASSERT_TRUE(test::spliceInto(base, {0, segment(1, q0, JointVector::Zero(), q1, 0.5, kNever), true, 1}, one, dropped));
   one.resolveFloatingStart(0);
   Program two;
-  ASSERT_TRUE(Program::splice(one, 100 * kMs, segment(2, q1, JointVector::Zero(), q2, 0.5, kNever), true, 2, two, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(one, {100 * kMs, segment(2, q1, JointVector::Zero(), q2, 0.5, kNever), true, 2}, two, dropped));
   two.resolveFloatingStart(100 * kMs);
   ASSERT_EQ(two.segmentCount(), 2);
   EXPECT_EQ(two.segment(1).start_ns, 500 * kMs);
@@ -81,16 +84,16 @@ TEST_F(ProgramTest, FixedSpliceEqualsTheBaseBeforeItAndContinuesPositionAndVeloc
   const JointVector q0(0.2, 1.0), q1(1.5, 3.0), q2(0.4, 0.3);
   Program base;
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(Program::splice(Program::holdAt(1, q0), 0, segment(1, q0, JointVector::Zero(), q1, 1.0, kNever), true,
-                              1, base, dropped));
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(1, q0),
+                               {0, segment(1, q0, JointVector::Zero(), q1, 1.0, kNever), true, 1}, base, dropped));
   base.resolveFloatingStart(0);
   const MonoNs t_b = 400 * kMs;
   const ProgramSample at_branch = base.sample(t_b, hold);
   ASSERT_TRUE(at_branch.moving);
   Program next;
-  ASSERT_TRUE(Program::splice(base, 370 * kMs,
-                              segment(2, at_branch.setpoints.position, at_branch.setpoints.velocity, q2, 0.8, t_b),
-                              false, 2, next, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      base, {370 * kMs, segment(2, at_branch.setpoints.position, at_branch.setpoints.velocity, q2, 0.8, t_b), false, 2},
+      next, dropped));
   EXPECT_EQ(next.splice_ns, t_b);
   for (MonoNs t = 370 * kMs; t < t_b; t += kMs) {
     EXPECT_EQ(next.sample(t, hold).setpoints.position, base.sample(t, hold).setpoints.position) << t;
@@ -107,15 +110,17 @@ TEST_F(ProgramTest, SpliceDropsSegmentsThatWouldStartAfterItAndPrunesFinishedOne
   const JointVector a(0.2, 1.0), b(1.0, 1.5), c(1.2, 2.0), d(0.3, 0.2);
   Program p;
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(Program::splice(Program::holdAt(1, a), 0, segment(1, a, JointVector::Zero(), b, 1.0, kNever), true, 1, p,
-                              dropped));
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(1, a), {0, segment(1, a, JointVector::Zero(), b, 1.0, kNever), true, 1},
+                               p, dropped));
   p.resolveFloatingStart(0);
   Program q;
-  ASSERT_TRUE(Program::splice(p, 10 * kMs, segment(2, b, JointVector::Zero(), c, 1.0, 500 * kMs), false, 2, q, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(p, {10 * kMs, segment(2, b, JointVector::Zero(), c, 1.0, 500 * kMs), false, 2}, q, dropped));
   ASSERT_EQ(q.segmentCount(), 2);
   // A plan branching at 300 ms replaces request 2, which never started.
   Program r;
-  ASSERT_TRUE(Program::splice(q, 20 * kMs, segment(3, c, JointVector::Zero(), d, 1.0, 300 * kMs), false, 3, r, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(q, {20 * kMs, segment(3, c, JointVector::Zero(), d, 1.0, 300 * kMs), false, 3}, r, dropped));
   ASSERT_EQ(dropped, std::vector<std::int64_t>{2});
   ASSERT_EQ(r.segmentCount(), 2);
   EXPECT_EQ(r.segment(0).request_id, 1);
@@ -123,7 +128,8 @@ TEST_F(ProgramTest, SpliceDropsSegmentsThatWouldStartAfterItAndPrunesFinishedOne
   // At 600 ms segment 1 can no longer be sampled: it is pruned and the rest position follows it.
   Program s;
   dropped.clear();
-  ASSERT_TRUE(Program::splice(r, 600 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4, s, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(r, {600 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4}, s, dropped));
   EXPECT_TRUE(dropped.empty());
   ASSERT_EQ(s.segmentCount(), 2);
   EXPECT_EQ(s.segment(0).request_id, 3);
@@ -137,14 +143,17 @@ TEST_F(ProgramTest, AFullChainRefusesAnotherSegmentAndReportsNothingDropped) {
   std::vector<std::int64_t> dropped;
   for (int i = 0; i < kMaxSegments; ++i) {
     Program next;
-    ASSERT_TRUE(Program::splice(p, 0, segment(i, a, JointVector::Zero(), a, 10.0, (i + 1) * 100 * kMs), false,
-                                static_cast<std::uint64_t>(i + 1), next, dropped));
+    ASSERT_TRUE(test::spliceInto(
+        p,
+        {0, segment(i, a, JointVector::Zero(), a, 10.0, (i + 1) * 100 * kMs), false, static_cast<std::uint64_t>(i + 1)},
+        next, dropped));
     p = next;
   }
   EXPECT_TRUE(p.full());
   Program refused;
   dropped = {42};
-  EXPECT_FALSE(Program::splice(p, 0, segment(99, a, JointVector::Zero(), a, 1.0, 5000 * kMs), false, 99, refused, dropped));
+  EXPECT_FALSE(
+      test::spliceInto(p, {0, segment(99, a, JointVector::Zero(), a, 1.0, 5000 * kMs), false, 99}, refused, dropped));
   EXPECT_EQ(dropped, std::vector<std::int64_t>{42});
 }
 

@@ -82,6 +82,7 @@ TEST(RobotLink, MalformedHeartbeatsAndOtherFramesChangeNothing) {
   EXPECT_EQ(link.heartbeat_ns, kNever);
   EXPECT_FALSE(link.heartbeat_watchdog);
   EXPECT_EQ(link.broadcast_disable_count, 0u);
+  EXPECT_EQ(link.bad_heartbeats, 2);  // the short one and the remote one; the others are not heartbeats
 }
 
 TEST(RobotLink, AFloodIsReadInBoundedSlicesAndAReadErrorEndsTheDrain) {

@@ -12,6 +12,7 @@
 #include "cyber/daemon/streamer.hpp"
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
+#include "splice_into.hpp"
 
 namespace cyber::daemon {
 namespace {
@@ -113,9 +114,10 @@ TEST_F(StreamToCan, AStaleHeartbeatStopsSetpointFramesWithinOnePeriodButNotTheSt
   enabledFor(0.1, a);
   auto* program = new Program();
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(Program::splice(Program::holdAt(streamer.epoch(), a), now,
-                              Segment{test::makeHermite(a, JointVector::Zero(), JointVector(1.5, 3.0), 2.0, robot), 9, 0},
-                              true, 1, *program, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      Program::holdAt(streamer.epoch(), a),
+      {now, Segment{test::makeHermite(a, JointVector::Zero(), JointVector(1.5, 3.0), 2.0, robot), 9, 0}, true, 1},
+      *program, dropped));
   inputs.heartbeat_ns = now;
   inputs.state_ns = now;
   tick(program);

@@ -12,12 +12,13 @@
 #include <limits>
 #include <new>
 
+#include "cyber/can/robot_frames.hpp"
 #include "cyber/daemon/frame_writer.hpp"
 #include "cyber/daemon/robot_link.hpp"
 #include "cyber/daemon/streamer.hpp"
-#include "cyber/can/robot_frames.hpp"
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
+#include "splice_into.hpp"
 
 namespace {
 std::atomic<long> g_allocations{0};
@@ -114,22 +115,23 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   };
 
   run(10, nullptr, true, false);  // enable, hold
-  ASSERT_TRUE(Program::splice(Program::holdAt(streamer.epoch(), a), now,
-                              Segment{test::makeHermite(a, JointVector::Zero(), b, 1.0, robot), 1, 0}, true, 1, *first,
-                              dropped));
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
+                               {now, Segment{test::makeHermite(a, JointVector::Zero(), b, 1.0, robot), 1, 0}, true, 1},
+                               *first, dropped));
   run(40, first, true, false);  // adopt and move
   const MonoNs branch = now + 30 * kMs;
   Program copy = *first;
   const ProgramSample at = copy.sample(branch, HoldModel(robot));
-  ASSERT_TRUE(Program::splice(copy, now,
-                              Segment{test::makeHermite(at.setpoints.position, at.setpoints.velocity, c, 1.0, robot), 2,
-                                      branch},
-                              false, 2, *splice, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      copy,
+      {now, Segment{test::makeHermite(at.setpoints.position, at.setpoints.velocity, c, 1.0, robot), 2, branch}, false,
+       2},
+      *splice, dropped));
   run(300, splice, true, true);  // splice and run to the end, every CAN write failing
   run(40, nullptr, false, false);  // heartbeat lost: stop
   run(10, nullptr, true, false);   // re-enabled: hold measured
-  ASSERT_TRUE(Program::splice(Program::holdAt(streamer.epoch(), a), now, Segment{std::make_shared<NanAfter>(), 3, 0},
-                              true, 3, *faulty, dropped));
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
+                               {now, Segment{std::make_shared<NanAfter>(), 3, 0}, true, 3}, *faulty, dropped));
   run(40, faulty, true, false);  // fault
   EXPECT_EQ(allocations, 0);
   EXPECT_GT(writer.framesSent(), 0);

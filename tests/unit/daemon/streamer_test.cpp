@@ -8,6 +8,7 @@
 
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
+#include "splice_into.hpp"
 
 namespace cyber::daemon {
 namespace {
@@ -82,8 +83,9 @@ class StreamerTest : public ::testing::Test {
     auto* p = new Program();
     std::vector<std::int64_t> dropped;
     Program base = Program::holdAt(streamer.epoch(), from);
-    EXPECT_TRUE(Program::splice(base, now, Segment{makeHermite(from, JointVector::Zero(), to, duration_s, robot), id, 0},
-                                true, program_id, *p, dropped));
+    EXPECT_TRUE(test::spliceInto(
+        base, {now, Segment{makeHermite(from, JointVector::Zero(), to, duration_s, robot), id, 0}, true, program_id},
+        *p, dropped));
     return p;
   }
 
@@ -149,8 +151,9 @@ TEST_F(StreamerTest, RejectsAFixedSpliceWhoseTimeWasAlreadyStreamed) {
   auto* late = new Program();
   std::vector<std::int64_t> dropped;
   Program running = *p;
-  ASSERT_TRUE(Program::splice(running, now, Segment{makeHermite(a, JointVector::Zero(), b, 1.0, robot), 2, streamed},
-                              false, 2, *late, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      running, {now, Segment{makeHermite(a, JointVector::Zero(), b, 1.0, robot), 2, streamed}, false, 2}, *late,
+      dropped));
   feed(a);
   tick(late);
   ASSERT_EQ(events.back().kind, StreamEventKind::kRejected);
@@ -285,8 +288,8 @@ TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPosit
   tick();
   auto* p = new Program();
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(Program::splice(Program::holdAt(streamer.epoch(), a), now,
-                              Segment{std::make_shared<NanTrajectory>(), 5, 0}, true, 1, *p, dropped));
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
+                               {now, Segment{std::make_shared<NanTrajectory>(), 5, 0}, true, 1}, *p, dropped));
   int sent = 0, faulted = 0;
   TickOutput out;
   const MonoNs begin = now;
@@ -318,6 +321,24 @@ TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPosit
   ASSERT_TRUE(out.send_setpoints);
   EXPECT_EQ(out.mode, StreamMode::kHolding);
   EXPECT_EQ(out.setpoints.position, JointVector(0.21, 1.0));
+}
+
+// A tick's event and retired lists are bounded; going past either is a defect, and it must stop
+// the daemon rather than drop an answer the coordinator waits for or leak a program.
+TEST(TickOutputDeathTest, PushingPastCapacityAborts) {
+  TickOutput out;
+  for (int i = 0; i < TickOutput::kMaxEvents; ++i) out.push(StreamEvent{});
+  EXPECT_EQ(out.event_count, TickOutput::kMaxEvents);
+  EXPECT_DEATH(out.push(StreamEvent{}), "");
+}
+
+TEST(TickOutputDeathTest, RetiringPastCapacityAborts) {
+  TickOutput out;
+  std::array<Program, TickOutput::kMaxRetired + 1> programs;
+  out.retire(nullptr);  // nothing to retire: not counted
+  for (int i = 0; i < TickOutput::kMaxRetired; ++i) out.retire(&programs[static_cast<size_t>(i)]);
+  EXPECT_EQ(out.retired_count, TickOutput::kMaxRetired);
+  EXPECT_DEATH(out.retire(&programs.back()), "");
 }
 
 }  // namespace

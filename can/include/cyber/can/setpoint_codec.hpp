@@ -8,6 +8,7 @@
 // an error, never a wrap.
 
 #include <cstdint>
+#include <limits>
 
 #include "cyber/can/codec_error.hpp"
 #include "cyber/can/frame.hpp"
@@ -21,6 +22,14 @@ inline constexpr double kVelocityCountsPerUnit = 1e3;  // counts per m/s or rad/
 inline constexpr double kVoltageCountsPerVolt = 1e3;   // millivolts
 inline constexpr std::int32_t kPositionMaxCount = (1 << 23) - 1;
 inline constexpr std::int32_t kPositionMinCount = -(1 << 23);
+inline constexpr std::int32_t kInt16MinCount = std::numeric_limits<std::int16_t>::min();
+inline constexpr std::int32_t kInt16MaxCount = std::numeric_limits<std::int16_t>::max();
+
+// The largest magnitude of each field that encodes with either sign (the negative range is one
+// count larger), in the joint's unit: what a setpoint may be before it is an encode error.
+inline constexpr double kMaxPositionMagnitude = kPositionMaxCount / kPositionCountsPerUnit;
+inline constexpr double kMaxVelocityMagnitude = kInt16MaxCount / kVelocityCountsPerUnit;
+inline constexpr double kMaxVoltageMagnitude = kInt16MaxCount / kVoltageCountsPerVolt;
 
 // Position and velocity are in the joint's unit: metres for the elevator, radians for the arm.
 struct Setpoint {

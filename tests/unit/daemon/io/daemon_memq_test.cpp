@@ -1,9 +1,11 @@
 // The assembled daemon (event loop, worker and streamer threads, LCM bridge) on memq:// with a
 // fake planner and no CAN socket: goals in through LCM, answers out through LCM.
 
-#include "cyber/daemon/io/daemon.hpp"
+#include "cyber/daemon/io/daemon_probe.hpp"
 
 #include <gtest/gtest.h>
+#include <pthread.h>
+#include <sched.h>
 
 #include <chrono>
 #include <condition_variable>
@@ -105,7 +107,7 @@ class DaemonMemq : public ::testing::Test {
     daemon = std::make_unique<Daemon>(cyber::test::referenceModel(), options, planning, nullptr);
     runner = std::async(std::launch::async, [this] { return daemon->run(); });
     onLoop([this] {
-      auto& lcm = daemon->lcm();
+      auto& lcm = DaemonProbe::lcm(*daemon);
       lcm.subscribe("ARM_PLAN_STATUS", &Listener::onStatus, &listener);
       lcm.subscribe("ARM_TRAJECTORY", &Listener::onTrajectory, &listener);
       lcm.subscribe("ARM_SETPOINT", &Listener::onSetpoint, &listener);
@@ -136,7 +138,7 @@ class DaemonMemq : public ::testing::Test {
   void onLoop(std::function<void()> task) {
     auto done = std::make_shared<std::promise<void>>();
     auto future = done->get_future();
-    daemon->post([task = std::move(task), done] {
+    DaemonProbe::post(*daemon, [task = std::move(task), done] {
       task();
       done->set_value();
     });
@@ -145,10 +147,10 @@ class DaemonMemq : public ::testing::Test {
 
   template <class M>
   void publish(const std::string& channel, const M& message) {
-    onLoop([&] { daemon->lcm().publish(channel, &message); });
+    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, &message); });
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    onLoop([&] { daemon->lcm().publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
   }
 
   void goal(std::int64_t id, double elevator_m, double arm_rad) {
@@ -266,6 +268,25 @@ TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
   ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
   EXPECT_EQ(listener.statuses.back().status, cyberplanner::arm_plan_status_t::STATUS_DONE);
+}
+
+// Whether this process may use SCHED_FIFO (root, CAP_SYS_NICE, RLIMIT_RTPRIO), tried on a thread.
+bool realtimeAllowed() {
+  bool allowed = false;
+  std::thread probe([&] {
+    sched_param param{};
+    param.sched_priority = 50;
+    allowed = pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0;
+  });
+  probe.join();
+  return allowed;
+}
+
+TEST_F(DaemonMemq, StatusSaysWhetherTheStreamerGotRealTimePriority) {
+  waitForHolding();
+  ASSERT_TRUE(listener.waitFor([&] { return !listener.daemon_statuses.empty(); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.daemon_statuses.back().realtime_priority, realtimeAllowed() ? 50 : 0);
 }
 
 TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {

@@ -60,7 +60,6 @@ struct CoordinatorCounters {
   std::int64_t plans_succeeded = 0;
   std::int64_t plans_failed = 0;     // FAILED answers
   std::int64_t plans_late = 0;       // plans that missed their splice time
-  std::int64_t goals_cancelled = 0;
   std::int64_t goals_done = 0;
 };
 
@@ -83,7 +82,6 @@ class GoalCoordinator {
   [[nodiscard]] bool idle() const { return !pending_ && !in_flight_ && !posted_; }
   // The program the streamer runs, as far as the coordinator knows (for tests and status).
   [[nodiscard]] const Program& mirror() const { return mirror_; }
-  [[nodiscard]] bool motionStopped() const { return stopped_; }
 
  private:
   struct Pending {

@@ -1,7 +1,7 @@
 #pragma once
 // The motion gate: may the daemon stream motion at "now"? Closed without fresh measured state,
 // while the roboRIO heartbeat lacks the system-watchdog bit or is older than its timeout, and after
-// a broadcast disable (design.md, CAN section).
+// a broadcast disable (docs/design.md, "The motion gate").
 
 #include <cstdint>
 #include <string_view>

@@ -1,6 +1,6 @@
 #pragma once
 // The seam between the daemon and the planner: one blocking call per plan, made on the worker
-// thread. RealPlanningService (planner_adapter.hpp) wraps planner::MotionPlanner; tests use fakes.
+// thread. makeMotionPlannerService (motion_planner_service.hpp) wraps planner::MotionPlanner; tests use fakes.
 
 #include "cyber/daemon/setpoint_source.hpp"
 #include "cyber/planner/result.hpp"

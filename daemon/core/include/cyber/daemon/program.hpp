@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cyber/daemon/hold_model.hpp"
@@ -20,6 +21,14 @@ struct Segment {
   SharedSetpointSource source;
   std::int64_t request_id = -1;
   MonoNs start_ns = 0;
+};
+
+// What a splice adds to its base program.
+struct SpliceRequest {
+  MonoNs now = 0;         // segments that can no longer be sampled at or after now are pruned
+  Segment added;          // for a floating splice added.start_ns is ignored (set on adoption)
+  bool floating = false;  // start when adopted, after the running segments end
+  std::uint64_t new_id = 0;
 };
 
 struct ProgramSample {
@@ -63,17 +72,20 @@ class Program {
   // Drops every segment (the streamer's own hold programs reuse one object without allocating).
   void resetToHold(std::uint64_t epoch_value, const JointVector& q);
 
-  // Builds the successor of `base`: the same motion up to the new segment's start, then `added`.
-  // Segments that can no longer be sampled at or after `now` are pruned; segments that would start
-  // at or after the new one are dropped and their request ids appended to `dropped_requests`.
-  // For a floating splice `added.start_ns` is ignored (set on adoption). Returns false when the
-  // chain is full (the caller waits for segments to age out).
-  static bool splice(const Program& base, MonoNs now, Segment added, bool floating, std::uint64_t new_id,
-                     Program& out, std::vector<std::int64_t>& dropped_requests);
+  struct Spliced;
+  // Builds the successor of `base`: the same motion up to the new segment's start, then
+  // `request.added`. Segments that would start at or after the new one are dropped (their request
+  // ids are in the result). Nothing when the chain is full (the caller waits for segments to age out).
+  static std::optional<Spliced> splice(const Program& base, SpliceRequest request);
 
  private:
   std::array<Segment, kMaxSegments> segments_{};
   int count_ = 0;
+};
+
+struct Program::Spliced {
+  Program program;
+  std::vector<std::int64_t> dropped_requests;  // requests of the segments the splice replaced
 };
 
 }  // namespace cyber::daemon

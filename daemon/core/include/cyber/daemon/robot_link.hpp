@@ -1,9 +1,9 @@
 #pragma once
-// The streamer's own reading of the frames that gate motion (roboRIO heartbeat, broadcast disable)
-// from a receive-only CAN socket of its own, drained at every tick on its real-time thread. The
-// event loop reads the same frames on its socket for counters and logs, but at normal priority:
-// in a busy system it can fall behind by more than the 100 ms heartbeat timeout and the gate would
-// stop motion on heartbeats that are on the bus (docs/testing.md, "What these tests found").
+// The daemon's only reading of the frames that gate motion (roboRIO heartbeat, broadcast disable):
+// the streamer drains a receive-only CAN socket of its own at every tick on its real-time thread,
+// and publishes what it read (StreamSnapshot) for goal admission, ARM_DAEMON_STATUS and the log.
+// A reader at normal priority can fall behind by more than the 100 ms heartbeat timeout on a busy
+// machine (docs/design.md, "The motion gate").
 
 #include <cstdint>
 
@@ -38,19 +38,17 @@ struct RobotLink {
   bool heartbeat_watchdog = false;  // its system-watchdog bit
   MonoNs broadcast_disable_ns = kNever;
   std::uint32_t broadcast_disable_count = 0;
+  std::int64_t bad_heartbeats = 0;  // heartbeat-id frames with a bad payload (ARM_DAEMON_STATUS.decode_errors)
 };
 
 // Reads at most max_frames frames (a flood cannot hold the tick) and records them at `now`, which
-// is at most one period after their arrival. Heartbeats of the wrong length are skipped here (the
-// event loop counts them). Returns the frames read; stops at the first error (nothing to read, or
-// the interface down: the gate then sees the heartbeat age). Never allocates.
+// is at most one period after their arrival. Heartbeats with a bad payload are counted and
+// otherwise ignored. Returns the frames read; stops at the first error (nothing to read, or the
+// interface down: the gate then sees the heartbeat age). Never allocates.
 int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int max_frames = 32);
 
-// The gate's inputs with the robot fields replaced by the streamer's own reading. Not the newer of
-// the two: both stamp a frame with the time it was read, so a late reader makes a heartbeat look
-// fresher than it is, and the event loop is the one that can be late (hil.daemon_faults once saw
-// motion stop 130 ms after the last heartbeat with the newer-wins rule). The streamer reads at
-// every tick, so its stamp is at most one period after the arrival.
+// The gate's inputs with the robot fields set from the streamer's reading: a frame is stamped
+// with the tick that read it, at most one period after its arrival.
 void applyRobotLink(const RobotLink& link, RobotInputs& inputs);
 
 }  // namespace cyber::daemon

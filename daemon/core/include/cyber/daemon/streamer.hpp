@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 
+#include "cyber/can/setpoint_codec.hpp"
+#include "cyber/can/status_codec.hpp"
 #include "cyber/daemon/hold_model.hpp"
 #include "cyber/daemon/mono_time.hpp"
 #include "cyber/daemon/motion_gate.hpp"
@@ -15,16 +17,14 @@
 
 namespace cyber::daemon {
 
-// Status-frame modes (docs/can-protocol.md; same numbers as cyber::can::Mode).
-enum class StreamMode : std::uint8_t { kNoState = 0, kHolding = 1, kMoving = 2, kFault = 3, kRobotDisabled = 4 };
+// The status frame's modes (docs/can-protocol.md): the codec's own enum (and can::toString).
+using StreamMode = can::Mode;
 
-std::string_view toString(StreamMode mode);
-
-// What one setpoint frame can carry (wire ranges of the setpoint frame); anything else is a fault.
+// What one setpoint frame can carry (the codec's ranges); anything else is a fault.
 struct SetpointLimits {
-  double position = 83.0;   // signed 24-bit at 1e-5
-  double velocity = 32.0;   // int16 at 1e-3
-  double volts = 32.0;      // int16 mV
+  double position = can::kMaxPositionMagnitude;
+  double velocity = can::kMaxVelocityMagnitude;
+  double volts = can::kMaxVoltageMagnitude;
 };
 
 struct StreamerSettings {
@@ -51,6 +51,7 @@ struct TickOutput {
   int retired_count = 0;
 
   void reset();
+  // Both abort past their capacity (a defect of the streamer: see streamer.cpp).
   void push(const StreamEvent& event);
   void retire(Program* program);
 };
@@ -71,7 +72,6 @@ class Streamer {
   Program* releaseProgram();
 
   [[nodiscard]] std::uint64_t epoch() const { return epoch_; }
-  [[nodiscard]] bool running() const { return running_; }
 
  private:
   void stop(MonoNs now, GateReason reason, TickOutput& out);

@@ -18,19 +18,16 @@
 
 namespace cyber::daemon::io {
 
-// RobotInputs as plain data for the seqlock (Eigen vectors are not trivially copyable). With a CAN
-// bus, the streamer replaces the heartbeat and disable fields with its own reading (robot_link.hpp);
-// the event loop's are for ARM_DAEMON_STATUS and the log.
-struct RobotInputsData {
+// The measured state as plain data for the seqlock (Eigen vectors are not trivially copyable),
+// stored by the event loop. The robot fields of RobotInputs are the streamer's (robot_link.hpp).
+struct MeasuredStateData {
   MonoNs state_ns = kNever;
   double measured_q[2] = {0.0, 0.0};
   double measured_qdot[2] = {0.0, 0.0};
-  MonoNs heartbeat_ns = kNever;
-  bool heartbeat_watchdog = false;
-  MonoNs broadcast_disable_ns = kNever;
-
-  [[nodiscard]] RobotInputs toInputs() const;
 };
+
+// The gate's inputs: the event loop's measured state and the streamer's reading of the robot link.
+RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link);
 
 // The latest tick, for ARM_SETPOINT and ARM_DAEMON_STATUS.
 struct StreamSnapshot {
@@ -41,7 +38,7 @@ struct StreamSnapshot {
   std::int64_t request_id = -1;
   double segment_time_s = 0.0;
   double remaining_s = 0.0;
-  MonoNs heartbeat_ns = kNever;  // the latest heartbeat as the gate saw it at this tick
+  RobotLink robot_link;  // the robot frames as the gate saw them at this tick
   bool setpoints_written = false;
   can::Setpoint elevator;
   can::Setpoint arm;
@@ -58,7 +55,7 @@ struct WriteNotice {
 
 // Everything the event loop and the streamer thread share.
 struct StreamerChannels {
-  LatestValue<RobotInputsData> inputs;
+  LatestValue<MeasuredStateData> state;
   std::atomic<Program*> offered{nullptr};
   std::atomic<bool> stop_requested{false};
   std::atomic<std::uint8_t> fault_bits{0};  // plan failed, bus error, overrun (set by the loop)
@@ -73,10 +70,10 @@ struct StreamerChannels {
   std::atomic<std::int64_t> frames_sent{0};
   std::atomic<std::int64_t> write_failures{0};
   std::atomic<std::int64_t> overruns{0};
-  std::atomic<std::int64_t> lost_messages{0};  // ring full (never expected)
+  std::atomic<std::int64_t> lost_messages{0};  // ring full (never expected; logged as an error)
   std::atomic<MonoNs> last_overrun_ns{kNever};
   LatencyHistogram jitter;
-  std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused
+  std::atomic<int> realtime_priority{0};  // SCHED_FIFO priority obtained, 0 if refused (ARM_DAEMON_STATUS)
 
   // Service-manager watchdog: the streamer sends WATCHDOG=1 every watchdog_period_ns (0 = off),
   // but only while the event loop has shown life within loop_alive_limit_ns, so a stuck loop
@@ -86,9 +83,6 @@ struct StreamerChannels {
   std::atomic<MonoNs> loop_alive_limit_ns{0};
 };
 
-// Bench/test hook, called on the streamer thread after each tick's frames are written.
-using TickObserver = void (*)(void* context, MonoNs now, const TickOutput& tick, const WriteReport& report);
-
 class StreamerThread {
  public:
   StreamerThread(StreamerChannels& channels, Streamer& streamer, FrameWriter& writer, MonoNs period_ns);
@@ -96,13 +90,9 @@ class StreamerThread {
   StreamerThread(const StreamerThread&) = delete;
   StreamerThread& operator=(const StreamerThread&) = delete;
 
-  // The streamer's own source of heartbeats and disables (null: only what the event loop stores
-  // in channels.inputs). Set before start().
+  // The streamer's source of heartbeats and disables (null: none, as without a CAN bus). Set
+  // before start().
   void setRobotFrameSource(RobotFrameSource* source) { robot_source_ = source; }
-  void setObserver(TickObserver observer, void* context) {
-    observer_ = observer;
-    observer_context_ = context;
-  }
   void start();
   // Ends after the current period and joins.
   void stop();
@@ -118,8 +108,6 @@ class StreamerThread {
   std::atomic<bool> quit_{false};
   RobotFrameSource* robot_source_ = nullptr;
   RobotLink robot_link_;
-  TickObserver observer_ = nullptr;
-  void* observer_context_ = nullptr;
   std::thread thread_;
 };
 

@@ -1,0 +1,39 @@
+#include "cyber/daemon/io/lcm_input.hpp"
+
+#include "cyber/daemon/io/lcm_messages.hpp"
+
+namespace cyber::daemon::io {
+
+LcmInput::LcmInput(const planner::RobotModel& robot, StreamerChannels& channels, GoalHandler on_goal)
+    : robot_(robot), channels_(channels), on_goal_(std::move(on_goal)) {}
+
+LcmBridge::Callbacks LcmInput::callbacks() {
+  return LcmBridge::Callbacks{[this](const cyberplanner::arm_goal_t& m) { on_goal_(goalFromMessage(m)); },
+                              [this](const cyberplanner::arm_state_t& m) { onState(m); },
+                              [this](const std::string& channel, int size) { onUndecodable(channel, size); }};
+}
+
+void LcmInput::onState(const cyberplanner::arm_state_t& message) {
+  const MonoNs now = monotonicNow();
+  const auto state = stateFromMessage(message, robot_);
+  if (!state) {
+    ++bad_states_;
+    state_warning_.warn(now, "ignoring ARM_STATE with non-finite or out-of-range values (elevator {} m, arm {} rad)",
+                        message.elevator_m, message.arm_rad);
+    return;
+  }
+  state_.state_ns = now;
+  state_.measured_q[0] = state->q[0];
+  state_.measured_q[1] = state->q[1];
+  state_.measured_qdot[0] = state->qdot[0];
+  state_.measured_qdot[1] = state->qdot[1];
+  channels_.state.store(state_);
+}
+
+void LcmInput::onUndecodable(const std::string& channel, int size) {
+  ++undecodable_;
+  undecodable_warning_.warn(monotonicNow(), "undecodable message on {} ({} bytes: wrong type, fingerprint or corrupt)",
+                            channel, size);
+}
+
+}  // namespace cyber::daemon::io
