@@ -6,10 +6,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
 system_setup "$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-ln -s "$build_abs" "$work/build"
-ln -s "$src/config" "$work/config"
+docs_scratch
 mapfile -t commands < <(sed -n '/^## Previewing a description$/,/^## /s/^    \(build\/.*\)$/\1/p' "$src/docs/configuration.md")
 [[ ${#commands[@]} -ge 3 ]] || fail "docs/configuration.md's preview section shows ${#commands[@]} commands, expected 3"
 cd "$work"

@@ -6,10 +6,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
 system_setup "$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-ln -s "$build_abs" "$work/build"
-ln -s "$src/config" "$work/config"
+docs_scratch
 mapfile -t commands < <(sed -n 's/^    \(build\/.*\)$/\1/p' "$src/README.md")
 [[ ${#commands[@]} -gt 0 ]] || fail "README.md shows no build/ commands"
 grep -qx '    tools/test' "$src/README.md" && grep -qx '    tools/demo' "$src/README.md" || fail "README.md lost its quick start"
