@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <random>
 
 #include "cyber/config/load_config.hpp"
@@ -335,18 +336,25 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
     for (size_t i = 0; i < rs.size(); ++i) EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), s_.trajectories[i].second.*field) << name;
   }
   // Sample k is commanded at start_utime + t_s[k], which is (start_utime - utime) after the
-  // message's own time, here 5 ms.
+  // message's own time (5 ms in the synthetic log), until the next trajectory starts.
   const std::pair<const char*, std::vector<double> T::*> planned[] = {
       {"Elevator/PlannedMeters", &T::elevator_m}, {"Elevator/PlannedMetersPerSecond", &T::elevator_mps},
       {"Elevator/PlannedVolts", &T::elevator_volts}, {"Arm/PlannedRadians", &T::arm_rad},
       {"Arm/PlannedRadiansPerSecond", &T::arm_radps}, {"Arm/PlannedVolts", &T::arm_volts}};
   for (const auto& [name, field] : planned) {
     const auto rs = records(name, "double");
-    size_t r = 0;
-    for (const auto& [t, m] : s_.trajectories) {
+    size_t r = 0, replaced = 0;
+    auto startOf = [&](size_t i) {
+      const auto& [t, m] = s_.trajectories[i];
+      return t - s_.t0 + (m.start_utime - m.utime);
+    };
+    for (size_t i = 0; i < s_.trajectories.size(); ++i) {
+      const auto& m = s_.trajectories[i].second;
+      const int64_t next = i + 1 < s_.trajectories.size() ? startOf(i + 1) : std::numeric_limits<int64_t>::max();
       for (size_t k = 0; k < m.t_s.size(); ++k) {
-        const int64_t at = t - s_.t0 + (m.start_utime - m.utime) + std::llround(m.t_s[k] * 1e6);
-        if (at < 0) continue;  // before the log's first event: not logged
+        const int64_t at = startOf(i) + std::llround(m.t_s[k] * 1e6);
+        replaced += at >= next ? 1 : 0;
+        if (at < 0 || at >= next) continue;  // before the log's first event, or replaced
         ASSERT_LT(r, rs.size()) << name;
         EXPECT_EQ(rs[r]->timestamp_us, static_cast<uint64_t>(at)) << name;
         EXPECT_EQ(asDouble(log_.payload(*rs[r])), (m.*field)[k]) << name;
@@ -354,6 +362,8 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
       }
     }
     EXPECT_EQ(r, rs.size()) << name;
+    if (synthetic_) EXPECT_GT(replaced, 0u) << "the synthetic trajectories should overlap";
+    for (size_t k = 1; k < rs.size(); ++k) EXPECT_LT(rs[k - 1]->timestamp_us, rs[k]->timestamp_us) << name;
   }
   const auto start = records("Trajectory/StartSeconds", "double");
   ASSERT_EQ(start.size(), s_.trajectories.size());

@@ -131,17 +131,31 @@ class Converter {
     e_.putDoubles("Trajectory/ArmRadians", t, m.arm_rad);
     e_.putDoubles("Trajectory/ArmRadiansPerSecond", t, m.arm_radps);
     e_.putDoubles("Trajectory/ArmVolts", t, m.arm_volts);
+    // A new trajectory replaces the rest of the one before from its start on (docs/lcm.md: a goal
+    // during motion is spliced in), so each planned entry stays in time order.
+    while (!planned_.empty() && planned_.back().t_us >= start_us) planned_.pop_back();
     const size_t n = std::min({m.t_s.size(), m.elevator_m.size(), m.arm_rad.size(), m.elevator_mps.size(),
                                m.arm_radps.size(), m.elevator_volts.size(), m.arm_volts.size()});
     for (size_t k = 0; k < n; ++k) {
       const int64_t at = start_us + std::llround(m.t_s[k] * 1e6);
       if (at < 0) continue;
-      const auto ts = static_cast<uint64_t>(at);
-      planned(kElevator, ts, m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]);
-      planned(kArm, ts, m.arm_rad[k], m.arm_radps[k], m.arm_volts[k]);
-      e_.putInt64("Planned/RequestId", ts, m.request_id);
+      planned_.push_back(PlannedSample{at, m.request_id, {m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]},
+                                       {m.arm_rad[k], m.arm_radps[k], m.arm_volts[k]}});
     }
   }
+
+  // Writes the planned series, once every trajectory of the log is known.
+  void finish() {
+    for (const PlannedSample& p : planned_) {
+      const auto ts = static_cast<uint64_t>(p.t_us);
+      e_.setChannel(channel_of_trajectories_);
+      planned(kElevator, ts, p.elevator[0], p.elevator[1], p.elevator[2]);
+      planned(kArm, ts, p.arm[0], p.arm[1], p.arm[2]);
+      e_.putInt64("Planned/RequestId", ts, p.request_id);
+    }
+    planned_.clear();
+  }
+  void setTrajectoryChannel(const std::string& channel) { channel_of_trajectories_ = channel; }
 
   void daemonStatus(uint64_t t, const cyberplanner::arm_daemon_status_t& m) {
     e_.putString("Daemon/Mode", t, lcmtypes::modeName(m.mode));
@@ -214,8 +228,16 @@ class Converter {
   static constexpr double kMechanismWidthM = 3.0;
   static constexpr double kMechanismHeightM = 2.6;
 
+  struct PlannedSample {
+    int64_t t_us;
+    int64_t request_id;
+    std::array<double, 3> elevator, arm;  // position, velocity, feedforward volts
+  };
+
   Entries& e_;
   const MechanismGeometry& g_;
+  std::vector<PlannedSample> planned_;
+  std::string channel_of_trajectories_;
 };
 
 struct Event {
@@ -277,6 +299,7 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
       {channels.trajectory, handler(&Converter::trajectory)},
       {channels.daemon_status, handler(&Converter::daemonStatus)},
   };
+  converter.setTrajectoryChannel(channels.trajectory);
   for (const Event& event : events) {
     const auto it = handlers.find(event.channel);
     if (it == handlers.end()) {
@@ -291,6 +314,7 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
       ++s.undecodable;
     }
   }
+  converter.finish();
   if (stats != nullptr) *stats = s;
   if (s.converted == 0) {
     *error = lcm_path + ": no cyber-planner message in " + std::to_string(s.events) + " events" +
