@@ -362,7 +362,9 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
       }
     }
     EXPECT_EQ(r, rs.size()) << name;
-    if (synthetic_) EXPECT_GT(replaced, 0u) << "the synthetic trajectories should overlap";
+    if (synthetic_) {
+      EXPECT_GT(replaced, 0u) << "the synthetic trajectories should overlap";
+    }
     for (size_t k = 1; k < rs.size(); ++k) EXPECT_LT(rs[k - 1]->timestamp_us, rs[k]->timestamp_us) << name;
   }
   const auto start = records("Trajectory/StartSeconds", "double");
