@@ -214,8 +214,7 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
   drawRobot(cr, c, robot, pieces, q, 1.0);
   const bool at_smallest = std::abs(t - smallest.time_s) < 1e-9;
   if (at_smallest || mark_always) {
-    drawClearance(cr, c, smallest.robot_point, smallest.obstacle_point, smallest.distance_m,
-                  long_label ? format("smallest, at %.2f s: ", smallest.time_s - move.time_s.front()) : "");
+    drawClearance(cr, c, smallest.robot_point, smallest.obstacle_point, smallest.distance_m, "");
   }
   if (!at_smallest) {
     const planner::SignedDistance d = distanceAt(world, q);
@@ -230,6 +229,12 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
   endScene(cr, c);
   cairo_set_source_rgb(cr, 0, 0, 0);
   text(cr, c.box_x + c.box_w / 2, c.box_y + 16, format("t = %.2f s", t - move.time_s.front()), 13, true);
+  if (long_label) {
+    setColor(cr, kClearance);
+    text(cr, c.box_x + c.box_w / 2, c.box_y + 34,
+         format("smallest clearance %.3f m", smallest.distance_m) + format(" at %.2f s", smallest.time_s - move.time_s.front()), 12,
+         true);
+  }
   if (at_smallest) {
     setColor(cr, kClearance);
     cairo_set_line_width(cr, 3.0);
