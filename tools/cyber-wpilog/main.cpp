@@ -26,6 +26,13 @@ int fail(const std::string& message) {
   return 2;
 }
 
+// open + middle + close, built by appending (g++ 12 -O3 warns falsely about "x" + std::string).
+std::string enclosed(const char* open, const std::string& middle, const char* close) {
+  std::string out(open);
+  out.append(middle).append(close);
+  return out;
+}
+
 std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry& entry, const cyber::wpilog::Record& r) {
   using namespace cyber::wpilog;
   const auto p = log.payload(r);
@@ -36,9 +43,9 @@ std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry&
   }
   if (entry.type == "int64" && asInt64(p)) return std::to_string(*asInt64(p));
   if (entry.type == "boolean" && asBoolean(p)) return *asBoolean(p) ? "true" : "false";
-  if (entry.type == "string" || entry.type == "json") return "\"" + asString(p) + "\"";
-  if (entry.type == "double[]" && asDoubleArray(p)) return "[" + std::to_string(asDoubleArray(p)->size()) + " doubles]";
-  return "(" + std::to_string(p.size()) + " bytes)";
+  if (entry.type == "string" || entry.type == "json") return enclosed("\"", asString(p), "\"");
+  if (entry.type == "double[]" && asDoubleArray(p)) return enclosed("[", std::to_string(asDoubleArray(p)->size()), " doubles]");
+  return enclosed("(", std::to_string(p.size()), " bytes)");
 }
 
 int list(const std::string& path) {

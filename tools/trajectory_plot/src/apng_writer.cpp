@@ -27,7 +27,9 @@ uint32_t be32(const uint8_t* p) {
 }
 
 void putBe32(std::vector<uint8_t>& out, uint32_t v) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<uint8_t>(v >> shift));
+  const uint8_t bytes[4] = {static_cast<uint8_t>(v >> 24), static_cast<uint8_t>(v >> 16), static_cast<uint8_t>(v >> 8),
+                            static_cast<uint8_t>(v)};
+  out.insert(out.end(), bytes, bytes + 4);
 }
 
 // The chunks of a PNG that cairo wrote; false when the bytes are not a PNG.
