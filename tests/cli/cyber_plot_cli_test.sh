@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# cyber-plot: a cyber-plan CSV and an LCM log with ARM_TRAJECTORY become PNGs; bad input is exit 2.
+# cyber-plot: a cyber-plan CSV and an LCM log with ARM_TRAJECTORY become PNGs, the world view (a
+# pose, a filmstrip and an APNG of a move) and the preview of a description too; bad input is
+# exit 2.
 # Usage: cyber_plot_cli_test.sh cyber-plot cyber-plan write_trajectory_log
 set -u
 plot=$1 plan=$2 writer=$3
@@ -23,6 +25,28 @@ expect "request id filter" 0 "$plot" --lcm-log "$tmp/traj.lcmlog" --request-id 4
 expect "no such request" 2 "$plot" --lcm-log "$tmp/traj.lcmlog" --request-id 7 --out "$tmp/x.png"
 grep -q "undecodable" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL garbage event not reported: $(cat "$tmp/err")"; }
 expect "wrong channel" 2 "$plot" --lcm-log "$tmp/traj.lcmlog" --channel OTHER --out "$tmp/x.png"
+expect "world at a pose" 0 "$plot" --world --at 1.22,5.69 --out "$tmp/pose.png"
+is_png "$tmp/pose.png" || { failures=$((failures + 1)); echo "FAIL pose.png is not a PNG"; }
+expect "world filmstrip and animation" 0 "$plot" --world --csv "$tmp/move.csv" --coral --frames 4 --out "$tmp/film.png" --animation "$tmp/anim.png"
+is_png "$tmp/film.png" && is_png "$tmp/anim.png" || { failures=$((failures + 1)); echo "FAIL film.png or anim.png is not a PNG"; }
+grep -q acTL "$tmp/anim.png" || { failures=$((failures + 1)); echo "FAIL anim.png is not animated (no acTL)"; }
+expect "world from the lcm log" 0 "$plot" --world --lcm-log "$tmp/traj.lcmlog" --out "$tmp/film-log.png"
+src=$(cd "$(dirname "$0")/../.." && pwd)
+expect "config preview" 0 "$plot" --config "$src/config/reefscape-2025.toml" --coral --out "$tmp/preview.png"
+is_png "$tmp/preview.png" || { failures=$((failures + 1)); echo "FAIL preview.png is not a PNG"; }
+sed '/^\[poses/,/^\[daemon\]/{/^\[daemon\]/!d}' "$src/config/reefscape-2025.toml" >"$tmp/no-poses.toml"
+expect "config preview without named poses" 0 "$plot" --config "$tmp/no-poses.toml" --out "$tmp/preview2.png"
+sed 's/^L3 = \[1.22, 5.69\]/L3 = [3.0, 5.69]/' "$src/config/reefscape-2025.toml" >"$tmp/bad-pose.toml"
+expect "config with a pose out of range" 2 "$plot" --config "$tmp/bad-pose.toml" --out "$tmp/x.png"
+grep -q "poses.none.L3" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL bad pose not named: $(cat "$tmp/err")"; }
+expect "world pose out of range" 2 "$plot" --world --at 3.0,1.0 --out "$tmp/x.png"
+expect "world pose malformed" 2 "$plot" --world --at 1.0 --out "$tmp/x.png"
+expect "world without a source" 2 "$plot" --world --out "$tmp/x.png"
+expect "world with two sources" 2 "$plot" --world --at 1,1 --csv "$tmp/move.csv" --out "$tmp/x.png"
+expect "animation of a pose" 2 "$plot" --world --at 1,1 --animation "$tmp/a.png" --out "$tmp/x.png"
+expect "animation without --world" 2 "$plot" --csv "$tmp/move.csv" --animation "$tmp/a.png" --out "$tmp/x.png"
+expect "bad frame count" 2 "$plot" --world --csv "$tmp/move.csv" --frames 1 --out "$tmp/x.png"
+expect "unknown scene" 2 "$plot" --world --at 1,1 --scene nowhere --out "$tmp/x.png"
 printf 't,x\n1,2\n' >"$tmp/bad.csv"
 expect "csv without the columns" 2 "$plot" --csv "$tmp/bad.csv" --out "$tmp/x.png"
 expect "missing file" 2 "$plot" --csv "$tmp/none.csv" --out "$tmp/x.png"

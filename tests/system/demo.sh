@@ -64,6 +64,13 @@ done
 [[ $(head -c 4 "$out/lcm.log" | od -An -tx1 | tr -d ' \n') == eda1da01 ]] || fail "$out/lcm.log is not an LCM log"
 rm -f "$out/check.decoded" "$out/check.decode.err"
 
+# demo.wpilog holds every entry of the session with the values of lcm.log's messages.
+CYBER_LCM_LOG=$out/lcm.log "$build_abs/tests/unit/wpilog/lcm_to_wpilog_test" >"$out/check.wpilog" 2>&1 ||
+  { cat "$out/check.wpilog"; fail "the WPILOG of $out/lcm.log differs from its messages"; }
+"$build_abs/tools/cyber-wpilog/cyber-wpilog" --list "$out/demo.wpilog" >"$out/check.wpilog" ||
+  fail "$out/demo.wpilog does not read back"
+rm -f "$out/check.wpilog"
+
 # The verdict can fail: doctored copies of the results make tools/demo-report exit 1 naming why.
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT

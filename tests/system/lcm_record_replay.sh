@@ -2,7 +2,9 @@
 # system.lcm_record_replay: the recording and replay commands of docs/operations.md, for real,
 # in a private network namespace. lcm_traffic publishes the six project types at 20 Hz;
 # lcm-logger records 2 s of it; lcm-logplayer replays the log (whole, then filtered and faster)
-# while lcm_traffic listens and counts what arrives and decodes.
+# while lcm_traffic listens and counts what arrives and decodes. Then the log becomes a WPILOG
+# for AdvantageScope (cyber-wpilog), which is listed and checked entry by entry against the
+# recorded messages (lcm_to_wpilog_test on this log).
 #   lcm_record_replay.sh BUILD_DIR
 #   lcm_record_replay.sh --print-doc-commands    the commands docs/operations.md must show
 set -euo pipefail
@@ -13,8 +15,10 @@ record='lcm-logger --channel='"'"'ARM_.*'"'"' --force arm-session.lcmlog'
 replay='lcm-logplayer arm-session.lcmlog'
 replay_some='lcm-logplayer --speed=4 --regexp='"'"'ARM_(SETPOINT|TRAJECTORY)'"'"' arm-session.lcmlog'
 replay_aside='lcm-logplayer --lcm-url='"'"'udpm://239.255.76.67:7668?ttl=0'"'"' arm-session.lcmlog'
+convert='build/tools/cyber-wpilog/cyber-wpilog arm-session.lcmlog arm-session.wpilog'
+list='build/tools/cyber-wpilog/cyber-wpilog --list arm-session.wpilog'
 if [[ ${1:-} == --print-doc-commands ]]; then
-  printf '%s\n' "$record" "$replay" "$replay_some" "$replay_aside"
+  printf '%s\n' "$record" "$replay" "$replay_some" "$replay_aside" "$convert" "$list"
   exit 0
 fi
 [[ $# -eq 1 ]] || { echo "usage: $0 BUILD_DIR | --print-doc-commands" >&2; exit 2; }
@@ -100,4 +104,16 @@ for channel in "${channels[@]}"; do
   n=$(received default.counts "$channel")
   ((n == 0)) || fail "$channel: $n messages reached the default URL during a replay on $aside_url"
 done
-echo "lcm_record_replay: recorded and replayed all six channels"
+
+# 5. The recording as a WPILOG: an entry from each channel, every record decodable (--list
+# fails otherwise), and every entry equal to the recorded messages.
+ln -s "$build_abs" build
+run_shown "$convert"
+run_shown "$list" >wpilog.list
+for entry in Elevator/SetpointMeters Elevator/MeasuredMeters Goal/RequestId PlanStatus/Status \
+             Trajectory/ArmRadians Daemon/Mode Mechanism3d/Measured; do
+  grep -q "^/CyberPlanner/$entry"$'\t' wpilog.list || fail "arm-session.wpilog has no /CyberPlanner/$entry"
+done
+CYBER_LCM_LOG=$work/arm-session.lcmlog "$build_abs/tests/unit/wpilog/lcm_to_wpilog_test" >wpilog.check ||
+  { cat wpilog.check; fail "arm-session.wpilog differs from the recorded messages"; }
+echo "lcm_record_replay: recorded and replayed all six channels, and converted them to WPILOG"

@@ -6,6 +6,8 @@
 #   enter_netns "$0" ARGS    re-run the script in a private network namespace whose lo is up
 #                            with the multicast route LCM needs: nothing leaves the namespace
 #   run_shown CMD            print and run (eval) one command of docs/operations.md
+#   docs_scratch             $work = a scratch folder (removed on exit) that sees the build as
+#                            "build" and the configs as "config", where docs' commands run as shown
 #   fail WHAT                print and exit 1
 
 src=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -26,6 +28,13 @@ enter_netns() {
   fi
   ip link set lo up
   ip route add 224.0.0.0/4 dev lo
+}
+
+docs_scratch() {
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  ln -s "$build_abs" "$work/build"
+  ln -s "$src/config" "$work/config"
 }
 
 run_shown() {

@@ -6,10 +6,7 @@
 set -euo pipefail
 source "$(dirname "$0")/lib.sh"
 system_setup "$1"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-ln -s "$build_abs" "$work/build"
-ln -s "$src/config" "$work/config"
+docs_scratch
 mapfile -t commands < <(sed -n 's/^    \(build\/.*\)$/\1/p' "$src/README.md")
 [[ ${#commands[@]} -gt 0 ]] || fail "README.md shows no build/ commands"
 grep -qx '    tools/test' "$src/README.md" && grep -qx '    tools/demo' "$src/README.md" || fail "README.md lost its quick start"
@@ -20,4 +17,6 @@ for c in "${commands[@]}"; do
 done
 [[ $(head -n 1 move.csv) == t,elevator_m,* ]] || fail "move.csv has no header"
 [[ $(head -c 4 move.png | od -An -c | tr -d ' ') == '211PNG' ]] || fail "move.png is not a PNG"
+[[ $(head -c 4 move-world.png | od -An -c | tr -d ' ') == '211PNG' ]] || fail "move-world.png is not a PNG"
+grep -q acTL move-world-anim.png || fail "move-world-anim.png is not an animated PNG"
 echo "1 passed, 0 failed"

@@ -212,6 +212,25 @@ DaemonSettings readDaemon(TableReader d) {
   return s;
 }
 
+std::vector<PoseSet> readPoses(TableReader t, const RobotModel& robot) {
+  std::vector<PoseSet> sets;
+  const std::pair<const char*, planner::HeldPieces> kSets[] = {{"none", {}}, {"coral", {true, false}}, {"algae", {false, true}}};
+  for (const auto& [name, pieces] : kSets) {
+    if (!t.has(name)) continue;
+    TableReader set = t.table(name);
+    PoseSet out{name, pieces, {}};
+    for (const std::string& pose : set.keys()) {
+      const Eigen::Vector2d q = set.vector2(pose);
+      if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");
+      out.poses.push_back(NamedPose{pose, q});
+    }
+    set.finish();
+    sets.push_back(std::move(out));
+  }
+  t.finish();
+  return sets;
+}
+
 Config readRoot(const toml::table& root_table) {
   Config config;
   RobotModel& robot = config.robot;
@@ -244,6 +263,7 @@ Config readRoot(const toml::table& root_table) {
   }
   readPlanner(root.table("planner"), robot.planner);
   config.daemon = readDaemon(root.table("daemon"));
+  if (root.has("poses")) config.poses = readPoses(root.table("poses"), robot);
   root.finish();
   return config;
 }

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "cyber/plot/trajectory_plot.hpp"
+#include "drawing.hpp"
 
 namespace cyber::plot {
 namespace {
@@ -14,9 +15,9 @@ namespace {
 constexpr int kWidth = 1600;
 constexpr int kHeight = 1000;
 
-struct Rgb {
-  double r, g, b;
-};
+using detail::Rgb;
+using detail::setColor;
+using detail::text;
 constexpr Rgb kElevatorColor{0.10, 0.35, 0.75};
 constexpr Rgb kArmColor{0.85, 0.35, 0.10};
 constexpr Rgb kLimitColor{0.80, 0.10, 0.10};
@@ -40,19 +41,6 @@ double niceStep(double span, int target_ticks) {
     if (raw <= m * mag) return m * mag;
   }
   return 10.0 * mag;
-}
-
-void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
-
-void text(cairo_t* cr, double x, double y, const std::string& s, double size, bool center = false, bool right = false) {
-  cairo_set_font_size(cr, size);
-  cairo_text_extents_t ext;
-  cairo_text_extents(cr, s.c_str(), &ext);
-  double dx = 0;
-  if (center) dx = -ext.width / 2 - ext.x_bearing;
-  if (right) dx = -ext.width - ext.x_bearing;
-  cairo_move_to(cr, x + dx, y);
-  cairo_show_text(cr, s.c_str());
 }
 
 std::string format(double v, double step) {
@@ -161,9 +149,9 @@ void legend(cairo_t* cr, const Box& box, const std::string& elevator, const std:
   }
 }
 
-void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
-  const CSpaceMap& m = d.cspace;
-  // arm angle on x, carriage travel on y: the reef reads like the robot's side view.
+// The map's frame and blocked cells: arm angle on x, carriage travel on y, so the reef reads like
+// the robot's side view.
+Axes drawCSpaceMap(cairo_t* cr, const CSpaceMap& m, const Box& box) {
   Axes ax{box, m.arm_rad.min, m.arm_rad.max, m.elevator_m.min, m.elevator_m.max};
   if (!(ax.x1 > ax.x0) || !(ax.y1 > ax.y0)) ax = Axes{box, 0, 1, 0, 1};
   drawFrame(cr, ax, "configuration space (grey: closer than the clearance)", "arm angle [rad]", "elevator travel [m]");
@@ -180,17 +168,24 @@ void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
     }
     cairo_fill(cr);
   }
+  return ax;
+}
+
+void marker(cairo_t* cr, const Axes& ax, double arm_rad, double elevator_m, const std::string& label) {
+  cairo_set_source_rgb(cr, 0.05, 0.4, 0.1);
+  cairo_arc(cr, ax.px(arm_rad), ax.py(elevator_m), 6, 0, 2 * M_PI);
+  cairo_fill(cr);
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  text(cr, ax.px(arm_rad) + 9, ax.py(elevator_m) - 8, label, 13);
+}
+
+void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
+  const Axes ax = drawCSpaceMap(cr, d.cspace, box);
   const auto& e = d.joints[0].position;
   const auto& a = d.joints[1].position;
   polyline(cr, ax, a, e, Rgb{0.05, 0.55, 0.15}, 3.0);
   if (!e.empty()) {
-    for (auto [idx, label] : {std::pair{size_t{0}, "start"}, std::pair{e.size() - 1, "goal"}}) {
-      cairo_set_source_rgb(cr, 0.05, 0.4, 0.1);
-      cairo_arc(cr, ax.px(a[idx]), ax.py(e[idx]), 6, 0, 2 * M_PI);
-      cairo_fill(cr);
-      cairo_set_source_rgb(cr, 0, 0, 0);
-      text(cr, ax.px(a[idx]) + 9, ax.py(e[idx]) - 8, label, 13);
-    }
+    for (auto [idx, label] : {std::pair{size_t{0}, "start"}, std::pair{e.size() - 1, "goal"}}) marker(cr, ax, a[idx], e[idx], label);
   }
 }
 
@@ -221,6 +216,12 @@ void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const 
 
 }  // namespace
 
+void detail::drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x, double y,
+                                 double w, double h) {
+  const Axes ax = drawCSpaceMap(cr, map, Box{x, y, w, h});
+  for (const NamedJointPose& p : poses) marker(cr, ax, p.q[planner::kArm], p.q[planner::kElevator], p.name);
+}
+
 bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, std::string* error) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kWidth, kHeight);
   cairo_t* cr = cairo_create(surface);
@@ -248,13 +249,9 @@ bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, s
              "arm [A]", true);
 
   cairo_destroy(cr);
-  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  const bool ok = detail::writePng(surface, path, error);
   cairo_surface_destroy(surface);
-  if (status != CAIRO_STATUS_SUCCESS) {
-    if (error != nullptr) *error = path + ": " + cairo_status_to_string(status);
-    return false;
-  }
-  return true;
+  return ok;
 }
 
 }  // namespace cyber::plot

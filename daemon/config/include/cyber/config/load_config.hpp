@@ -4,15 +4,30 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cyber/config/daemon_settings.hpp"
 #include "cyber/planner/robot_model.hpp"
 
 namespace cyber::config {
 
+struct NamedPose {
+  std::string name;
+  planner::JointVector q;  // elevator m, arm rad
+};
+
+// The optional [poses.none], [poses.coral] and [poses.algae] tables: poses a team names for one
+// set of held game pieces (docs/configuration.md), drawn by cyber-plot --config.
+struct PoseSet {
+  std::string name;  // "none", "coral" or "algae"
+  planner::HeldPieces pieces;
+  std::vector<NamedPose> poses;
+};
+
 struct Config {
   planner::RobotModel robot;
   DaemonSettings daemon;
+  std::vector<PoseSet> poses;  // in the order none, coral, algae; only the sets the file has
 };
 
 // Thrown for any invalid configuration; what() reads "<source>: <key>: <problem>".

@@ -1,0 +1,68 @@
+// The optional [poses.*] tables: the reference robot names the public poses (the same numbers as
+// tests/support/public_moves.cpp), and bad pose tables fail at load naming the key.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "cyber/config/load_config.hpp"
+#include "public_moves.hpp"
+
+namespace cyber::config {
+namespace {
+
+TEST(NamedPoses, ReferenceRobotNamesThePublicPoses) {
+  const Config config = loadEmbeddedDefaultConfig();
+  ASSERT_EQ(config.poses.size(), 3u);
+  const char* sets[] = {"none", "coral", "algae"};
+  for (size_t i = 0; i < 3; ++i) {
+    const PoseSet& set = config.poses[i];
+    EXPECT_EQ(set.name, sets[i]);
+    EXPECT_EQ(set.pieces.coral, set.name == "coral");
+    EXPECT_EQ(set.pieces.algae, set.name == "algae");
+    const auto& expected = test::publicPoses(set.name);
+    ASSERT_EQ(set.poses.size(), expected.size()) << set.name;
+    for (const auto& pose : expected) {
+      const auto it = std::find_if(set.poses.begin(), set.poses.end(), [&](const NamedPose& p) { return p.name == pose.name; });
+      ASSERT_NE(it, set.poses.end()) << set.name << ":" << pose.name;
+      EXPECT_EQ(it->q, pose.q) << set.name << ":" << pose.name;
+    }
+  }
+}
+
+std::string withPoses(const std::string& poses) {
+  std::string text(embeddedDefaultConfig());
+  const size_t at = text.find("[poses.none]");
+  const size_t end = text.find("[daemon]");
+  text.replace(at, end - at, poses + "\n");
+  return text;
+}
+
+void expectError(const std::string& text, const std::string& key, const std::string& problem) {
+  try {
+    (void)parseConfig(text, "test.toml");
+    ADD_FAILURE() << "accepted: " << key;
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), key) << e.what();
+    EXPECT_NE(std::string(e.what()).find(problem), std::string::npos) << e.what();
+  }
+}
+
+TEST(NamedPoses, AreOptional) {
+  const Config config = parseConfig(withPoses(""), "test.toml");
+  EXPECT_TRUE(config.poses.empty());
+  const Config coral_only = parseConfig(withPoses("[poses.coral]\nA = [0.5, 1.0]"), "test.toml");
+  ASSERT_EQ(coral_only.poses.size(), 1u);
+  EXPECT_EQ(coral_only.poses[0].name, "coral");
+  EXPECT_EQ(coral_only.poses[0].poses[0].q, planner::JointVector(0.5, 1.0));
+}
+
+TEST(NamedPoses, BadPoseTablesAreErrors) {
+  expectError(withPoses("[poses.none]\nUP = [2.5, 1.0]"), "poses.none.UP", "outside the joint ranges");
+  expectError(withPoses("[poses.none]\nUP = [0.5, -1.0]"), "poses.none.UP", "outside the joint ranges");
+  expectError(withPoses("[poses.none]\nUP = [0.5]"), "poses.none.UP", "");
+  expectError(withPoses("[poses.none]\nUP = \"high\""), "poses.none.UP", "");
+  expectError(withPoses("[poses.cone]\nUP = [0.5, 1.0]"), "poses.cone", "unknown key");
+}
+
+}  // namespace
+}  // namespace cyber::config

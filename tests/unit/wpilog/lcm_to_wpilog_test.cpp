@@ -1,0 +1,430 @@
+// An LCM log holding every cyberplanner message (seeded random values, as lcm-logger records
+// them) converted to WPILOG and read back: every entry is there, with the message's values at
+// the event's time on the log's clock. The entry names are the ones docs/operations.md lists.
+// With CYBER_LCM_LOG=FILE the same checks run on a recorded session instead (tools/demo's
+// lcm.log: docs/operations.md, "AdvantageScope").
+#include <gtest/gtest.h>
+#include <lcm/lcm-cpp.hpp>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <random>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/planner/pose_transform.hpp"
+#include "cyber/wpilog/lcm_to_wpilog.hpp"
+#include "cyber/wpilog/pose3d.hpp"
+#include "cyber/wpilog/wpilog_reader.hpp"
+#include "cyberplanner/arm_daemon_status_t.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+
+namespace cyber::wpilog {
+namespace {
+
+constexpr int64_t kSyntheticT0 = 1'700'000'000'000'000;  // Unix µs of the first event
+
+struct Session {
+  int64_t t0 = 0;  // Unix µs of the log's first event
+  std::vector<std::pair<int64_t, cyberplanner::arm_state_t>> states;
+  std::vector<std::pair<int64_t, cyberplanner::arm_setpoint_t>> setpoints;
+  std::vector<std::pair<int64_t, cyberplanner::arm_goal_t>> goals;
+  std::vector<std::pair<int64_t, cyberplanner::arm_plan_status_t>> statuses;
+  std::vector<std::pair<int64_t, cyberplanner::arm_trajectory_t>> trajectories;
+  std::vector<std::pair<int64_t, cyberplanner::arm_daemon_status_t>> daemon;
+};
+
+class LcmToWpilog : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const char* recorded = std::getenv("CYBER_LCM_LOG");
+    synthetic_ = recorded == nullptr;
+    if (synthetic_) {
+      path_ = std::filesystem::temp_directory_path() / ("lcm_to_wpilog_" + std::to_string(getpid()) + ".lcmlog");
+      write();
+    } else {
+      path_ = recorded;
+    }
+    read();
+    std::string error;
+    config_ = config::loadEmbeddedDefaultConfig();
+    ASSERT_TRUE(convertLcmLog(path_.string(), config_.daemon.channels, mechanismGeometry(config_.robot), &writer_, &stats_, &error))
+        << error;
+    ReadResult r = parse(writer_.bytes());
+    ASSERT_FALSE(r.error) << r.error->message;
+    log_ = std::move(*r.log);
+  }
+  void TearDown() override {
+    if (synthetic_) std::filesystem::remove(path_);
+  }
+
+  // The messages as the log holds them, decoded by the generated code.
+  void read() {
+    lcm::LogFile log(path_.string(), "r");
+    ASSERT_TRUE(log.good()) << path_;
+    bool first = true;
+    for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
+      if (first) s_.t0 = e->timestamp;
+      first = false;
+      take(*e, "ARM_STATE", s_.states);
+      take(*e, "ARM_SETPOINT", s_.setpoints);
+      take(*e, "ARM_GOAL", s_.goals);
+      take(*e, "ARM_PLAN_STATUS", s_.statuses);
+      take(*e, "ARM_TRAJECTORY", s_.trajectories);
+      take(*e, "ARM_DAEMON_STATUS", s_.daemon);
+    }
+  }
+  template <typename Message>
+  static void take(const lcm::LogEvent& e, const char* channel, std::vector<std::pair<int64_t, Message>>& into) {
+    Message m;
+    if (e.channel == channel && m.decode(e.data, 0, e.datalen) >= 0) into.emplace_back(e.timestamp, std::move(m));
+  }
+
+  template <typename Message>
+  void event(lcm::LogFile& log, const std::string& channel, int64_t t, const Message& m) {
+    std::vector<char> buffer(static_cast<size_t>(m.getEncodedSize()));
+    m.encode(buffer.data(), 0, static_cast<int>(buffer.size()));
+    raw(log, channel, t, buffer);
+  }
+  void raw(lcm::LogFile& log, const std::string& channel, int64_t t, std::vector<char>& bytes) {
+    lcm::LogEvent e{};
+    e.eventnum = events_++;
+    e.timestamp = t;
+    e.channel = channel;
+    e.datalen = static_cast<int32_t>(bytes.size());
+    e.data = bytes.data();
+    ASSERT_EQ(log.writeEvent(&e), 0);
+  }
+
+  void write() {
+    std::mt19937_64 rng(15);
+    std::uniform_real_distribution<double> u(-3, 3);
+    auto coin = [&] { return (rng() & 1) != 0; };
+    lcm::LogFile log(path_.string(), "w");
+    ASSERT_TRUE(log.good());
+    int64_t t = kSyntheticT0;
+    for (int k = 0; k < 12; ++k) {
+      if (k > 0) t += 1000 + static_cast<int64_t>(rng() % 20000);
+      const int64_t utime = t - 300;  // published 300 µs before it was logged
+      switch (k % 6) {
+        case 0: {
+          cyberplanner::arm_state_t m{utime, u(rng), u(rng), u(rng), u(rng), coin(), coin()};
+          event(log, "ARM_STATE", t, m);
+          break;
+        }
+        case 1: {
+          cyberplanner::arm_setpoint_t m{};
+          m.utime = utime;
+          m.mode = static_cast<int8_t>(rng() % 5);
+          m.request_id = static_cast<int64_t>(rng() % 100) - 1;
+          m.trajectory_t_s = u(rng);
+          m.elevator_m = u(rng), m.elevator_mps = u(rng), m.elevator_volts = u(rng);
+          m.elevator_sequence = static_cast<uint8_t>(rng());
+          m.arm_rad = u(rng), m.arm_radps = u(rng), m.arm_volts = u(rng);
+          m.arm_sequence = static_cast<uint8_t>(rng());
+          event(log, "ARM_SETPOINT", t, m);
+          break;
+        }
+        case 2: {
+          cyberplanner::arm_goal_t m{utime, k, u(rng), u(rng), coin(), coin(), coin() ? "open" : ""};
+          event(log, "ARM_GOAL", t, m);
+          break;
+        }
+        case 3: {
+          cyberplanner::arm_plan_status_t m{};
+          m.utime = utime;
+          m.request_id = k;
+          m.status = static_cast<int8_t>(rng() % 7);
+          m.reason = "reason " + std::to_string(k);
+          m.grid_ms = u(rng), m.search_ms = u(rng), m.smooth_ms = u(rng), m.topp_ms = u(rng), m.total_ms = u(rng);
+          m.duration_s = u(rng);
+          event(log, "ARM_PLAN_STATUS", t, m);
+          break;
+        }
+        case 4: {
+          cyberplanner::arm_trajectory_t m{};
+          m.utime = utime;
+          m.request_id = k;
+          m.start_utime = utime + 5000;
+          m.dt_s = 0.01;
+          m.num_samples = 5 + static_cast<int>(rng() % 20);
+          for (int i = 0; i < m.num_samples; ++i) {
+            m.t_s.push_back(i * m.dt_s);
+            for (auto* v : {&m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
+              v->push_back(u(rng));
+            }
+          }
+          m.duration_s = m.t_s.back();
+          event(log, "ARM_TRAJECTORY", t, m);
+          break;
+        }
+        case 5: {
+          cyberplanner::arm_daemon_status_t m{};
+          m.utime = utime;
+          m.mode = static_cast<int8_t>(rng() % 5);
+          m.robot_enabled = coin(), m.motion_allowed = coin();
+          m.active_request_id = k;
+          m.state_age_ms = u(rng), m.heartbeat_age_ms = u(rng);
+          for (auto* c : {&m.goals_received, &m.plans_succeeded, &m.plans_failed, &m.frames_sent, &m.can_errors,
+                          &m.decode_errors, &m.stream_overruns, &m.publish_failures}) {
+            *c = static_cast<int64_t>(rng() % 100000);
+          }
+          m.plan_time_p50_ms = u(rng), m.plan_time_p99_ms = u(rng), m.plan_time_max_ms = u(rng);
+          m.stream_jitter_p50_us = u(rng), m.stream_jitter_p99_us = u(rng), m.stream_jitter_max_us = u(rng);
+          event(log, "ARM_DAEMON_STATUS", t, m);
+          break;
+        }
+      }
+    }
+    std::vector<char> garbage{1, 2, 3};
+    raw(log, "ARM_STATE", t + 1, garbage);
+    raw(log, "SOMETHING_ELSE", t + 2, garbage);
+  }
+
+  // The records of an entry, which must exist and have `type`.
+  std::vector<const Record*> records(const std::string& name, const std::string& type) {
+    const auto index = log_.find("/CyberPlanner/" + name);
+    if (!index) {
+      ADD_FAILURE() << "no entry /CyberPlanner/" << name;
+      return {};
+    }
+    EXPECT_EQ(log_.entries[*index].type, type) << name;
+    return log_.recordsOf(*index);
+  }
+
+  // Entry `name` has one record per message, at the message's time, with value(message).
+  template <typename Message, typename Value>
+  void expectSeries(const std::vector<std::pair<int64_t, Message>>& messages, const std::string& name,
+                    const std::function<Value(const Message&)>& value) {
+    const std::string type = std::is_same_v<Value, double>    ? "double"
+                             : std::is_same_v<Value, int64_t> ? "int64"
+                             : std::is_same_v<Value, bool>    ? "boolean"
+                                                              : "string";
+    const auto rs = records(name, type);
+    ASSERT_EQ(rs.size(), messages.size()) << name;
+    for (size_t i = 0; i < rs.size(); ++i) {
+      EXPECT_EQ(rs[i]->timestamp_us, static_cast<uint64_t>(messages[i].first - s_.t0)) << name;
+      const auto p = log_.payload(*rs[i]);
+      if constexpr (std::is_same_v<Value, double>) {
+        EXPECT_EQ(asDouble(p), value(messages[i].second)) << name;
+      } else if constexpr (std::is_same_v<Value, int64_t>) {
+        EXPECT_EQ(asInt64(p), value(messages[i].second)) << name;
+      } else if constexpr (std::is_same_v<Value, bool>) {
+        EXPECT_EQ(asBoolean(p), value(messages[i].second)) << name;
+      } else {
+        EXPECT_EQ(asString(p), value(messages[i].second)) << name;
+      }
+    }
+  }
+
+  std::filesystem::path path_;
+  bool synthetic_ = true;
+  int64_t events_ = 0;
+  Session s_;
+  config::Config config_;
+  Writer writer_;
+  ConvertStats stats_;
+  Log log_;
+};
+
+using State = cyberplanner::arm_state_t;
+using Setpoint = cyberplanner::arm_setpoint_t;
+using Goal = cyberplanner::arm_goal_t;
+using PlanStatus = cyberplanner::arm_plan_status_t;
+using DaemonStatus = cyberplanner::arm_daemon_status_t;
+
+const char* kModes[] = {"NO_STATE", "HOLDING", "MOVING", "FAULT", "ROBOT_DISABLED"};
+const char* kStatuses[] = {"ACCEPTED", "PLANNING", "EXECUTING", "DONE", "REJECTED", "FAILED", "CANCELLED"};
+
+TEST_F(LcmToWpilog, CountsEveryEvent) {
+  if (!synthetic_) GTEST_SKIP() << "counts of the synthetic log";
+  EXPECT_EQ(stats_.events, 14);
+  EXPECT_EQ(stats_.converted, 12);
+  EXPECT_EQ(stats_.undecodable, 1);
+  EXPECT_EQ(stats_.other, 1);
+  EXPECT_EQ(log_.extra_header.find("Unix time " + std::to_string(kSyntheticT0)) != std::string::npos, true) << log_.extra_header;
+  for (const Entry& e : log_.entries) {
+    if (e.name.rfind("/.schema/", 0) == 0) continue;
+    EXPECT_EQ(e.name.rfind("/CyberPlanner/", 0), 0u) << e.name;
+    EXPECT_NE(e.metadata.find("lcm_channel"), std::string::npos) << e.name;
+  }
+}
+
+TEST_F(LcmToWpilog, MeasuredState) {
+  expectSeries<State, double>(s_.states, "Elevator/MeasuredMeters", [](const State& m) { return m.elevator_m; });
+  expectSeries<State, double>(s_.states, "Elevator/MeasuredMetersPerSecond", [](const State& m) { return m.elevator_mps; });
+  expectSeries<State, double>(s_.states, "Arm/MeasuredRadians", [](const State& m) { return m.arm_rad; });
+  expectSeries<State, double>(s_.states, "Arm/MeasuredRadiansPerSecond", [](const State& m) { return m.arm_radps; });
+  expectSeries<State, bool>(s_.states, "State/HeldCoral", [](const State& m) { return m.held_coral; });
+  expectSeries<State, bool>(s_.states, "State/HeldAlgae", [](const State& m) { return m.held_algae; });
+}
+
+TEST_F(LcmToWpilog, Setpoints) {
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/SetpointMeters", [](const Setpoint& m) { return m.elevator_m; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/VelocityMetersPerSecond", [](const Setpoint& m) { return m.elevator_mps; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/FeedforwardVolts", [](const Setpoint& m) { return m.elevator_volts; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence", [](const Setpoint& m) { return m.elevator_sequence; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/SetpointRadians", [](const Setpoint& m) { return m.arm_rad; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/VelocityRadiansPerSecond", [](const Setpoint& m) { return m.arm_radps; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/FeedforwardVolts", [](const Setpoint& m) { return m.arm_volts; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Arm/Sequence", [](const Setpoint& m) { return m.arm_sequence; });
+  expectSeries<Setpoint, std::string>(s_.setpoints, "Setpoint/Mode", [](const Setpoint& m) { return kModes[m.mode]; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Setpoint/RequestId", [](const Setpoint& m) { return m.request_id; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Setpoint/TrajectoryTimeSeconds", [](const Setpoint& m) { return m.trajectory_t_s; });
+}
+
+TEST_F(LcmToWpilog, GoalsAndPlanStatus) {
+  expectSeries<Goal, int64_t>(s_.goals, "Goal/RequestId", [](const Goal& m) { return m.request_id; });
+  expectSeries<Goal, double>(s_.goals, "Goal/ElevatorMeters", [](const Goal& m) { return m.elevator_m; });
+  expectSeries<Goal, double>(s_.goals, "Goal/ArmRadians", [](const Goal& m) { return m.arm_rad; });
+  expectSeries<Goal, bool>(s_.goals, "Goal/HeldCoral", [](const Goal& m) { return m.held_coral; });
+  expectSeries<Goal, bool>(s_.goals, "Goal/HeldAlgae", [](const Goal& m) { return m.held_algae; });
+  expectSeries<Goal, std::string>(s_.goals, "Goal/SceneName", [](const Goal& m) { return m.scene_name; });
+  expectSeries<PlanStatus, int64_t>(s_.statuses, "PlanStatus/RequestId", [](const PlanStatus& m) { return m.request_id; });
+  expectSeries<PlanStatus, std::string>(s_.statuses, "PlanStatus/Status", [](const PlanStatus& m) { return kStatuses[m.status]; });
+  expectSeries<PlanStatus, std::string>(s_.statuses, "PlanStatus/Reason", [](const PlanStatus& m) { return m.reason; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/GridMs", [](const PlanStatus& m) { return m.grid_ms; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/SearchMs", [](const PlanStatus& m) { return m.search_ms; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/SmoothMs", [](const PlanStatus& m) { return m.smooth_ms; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/ToppMs", [](const PlanStatus& m) { return m.topp_ms; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/TotalMs", [](const PlanStatus& m) { return m.total_ms; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/DurationSeconds", [](const PlanStatus& m) { return m.duration_s; });
+}
+
+TEST_F(LcmToWpilog, DaemonModeCountersAndTiming) {
+  using D = DaemonStatus;
+  expectSeries<D, std::string>(s_.daemon, "Daemon/Mode", [](const D& m) { return kModes[m.mode]; });
+  expectSeries<D, bool>(s_.daemon, "Daemon/RobotEnabled", [](const D& m) { return m.robot_enabled; });
+  expectSeries<D, bool>(s_.daemon, "Daemon/MotionAllowed", [](const D& m) { return m.motion_allowed; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/ActiveRequestId", [](const D& m) { return m.active_request_id; });
+  expectSeries<D, double>(s_.daemon, "Daemon/StateAgeMs", [](const D& m) { return m.state_age_ms; });
+  expectSeries<D, double>(s_.daemon, "Daemon/HeartbeatAgeMs", [](const D& m) { return m.heartbeat_age_ms; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/GoalsReceived", [](const D& m) { return m.goals_received; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/PlansSucceeded", [](const D& m) { return m.plans_succeeded; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/PlansFailed", [](const D& m) { return m.plans_failed; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/FramesSent", [](const D& m) { return m.frames_sent; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/CanErrors", [](const D& m) { return m.can_errors; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/DecodeErrors", [](const D& m) { return m.decode_errors; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/StreamOverruns", [](const D& m) { return m.stream_overruns; });
+  expectSeries<D, int64_t>(s_.daemon, "Daemon/PublishFailures", [](const D& m) { return m.publish_failures; });
+  expectSeries<D, double>(s_.daemon, "Daemon/PlanTimeP50Ms", [](const D& m) { return m.plan_time_p50_ms; });
+  expectSeries<D, double>(s_.daemon, "Daemon/PlanTimeP99Ms", [](const D& m) { return m.plan_time_p99_ms; });
+  expectSeries<D, double>(s_.daemon, "Daemon/PlanTimeMaxMs", [](const D& m) { return m.plan_time_max_ms; });
+  expectSeries<D, double>(s_.daemon, "Daemon/StreamJitterP50Us", [](const D& m) { return m.stream_jitter_p50_us; });
+  expectSeries<D, double>(s_.daemon, "Daemon/StreamJitterP99Us", [](const D& m) { return m.stream_jitter_p99_us; });
+  expectSeries<D, double>(s_.daemon, "Daemon/StreamJitterMaxUs", [](const D& m) { return m.stream_jitter_max_us; });
+}
+
+TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
+  using T = cyberplanner::arm_trajectory_t;
+  expectSeries<T, int64_t>(s_.trajectories, "Trajectory/RequestId", [](const T& m) { return m.request_id; });
+  expectSeries<T, double>(s_.trajectories, "Trajectory/DurationSeconds", [](const T& m) { return m.duration_s; });
+  expectSeries<T, double>(s_.trajectories, "Trajectory/StepSeconds", [](const T& m) { return m.dt_s; });
+  const std::pair<const char*, std::vector<double> T::*> arrays[] = {
+      {"TimesSeconds", &T::t_s},           {"ElevatorMeters", &T::elevator_m},
+      {"ElevatorMetersPerSecond", &T::elevator_mps}, {"ElevatorVolts", &T::elevator_volts},
+      {"ArmRadians", &T::arm_rad},         {"ArmRadiansPerSecond", &T::arm_radps}, {"ArmVolts", &T::arm_volts}};
+  for (const auto& [name, field] : arrays) {
+    const auto rs = records(std::string("Trajectory/") + name, "double[]");
+    ASSERT_EQ(rs.size(), s_.trajectories.size());
+    for (size_t i = 0; i < rs.size(); ++i) EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), s_.trajectories[i].second.*field) << name;
+  }
+  // Sample k is commanded at start_utime + t_s[k], which is (start_utime - utime) after the
+  // message's own time (5 ms in the synthetic log), until the next trajectory starts.
+  const std::pair<const char*, std::vector<double> T::*> planned[] = {
+      {"Elevator/PlannedMeters", &T::elevator_m}, {"Elevator/PlannedMetersPerSecond", &T::elevator_mps},
+      {"Elevator/PlannedVolts", &T::elevator_volts}, {"Arm/PlannedRadians", &T::arm_rad},
+      {"Arm/PlannedRadiansPerSecond", &T::arm_radps}, {"Arm/PlannedVolts", &T::arm_volts}};
+  for (const auto& [name, field] : planned) {
+    const auto rs = records(name, "double");
+    size_t r = 0, replaced = 0;
+    auto startOf = [&](size_t i) {
+      const auto& [t, m] = s_.trajectories[i];
+      return t - s_.t0 + (m.start_utime - m.utime);
+    };
+    for (size_t i = 0; i < s_.trajectories.size(); ++i) {
+      const auto& m = s_.trajectories[i].second;
+      const int64_t next = i + 1 < s_.trajectories.size() ? startOf(i + 1) : std::numeric_limits<int64_t>::max();
+      for (size_t k = 0; k < m.t_s.size(); ++k) {
+        const int64_t at = startOf(i) + std::llround(m.t_s[k] * 1e6);
+        replaced += at >= next ? 1 : 0;
+        if (at < 0 || at >= next) continue;  // before the log's first event, or replaced
+        ASSERT_LT(r, rs.size()) << name;
+        EXPECT_EQ(rs[r]->timestamp_us, static_cast<uint64_t>(at)) << name;
+        EXPECT_EQ(asDouble(log_.payload(*rs[r])), (m.*field)[k]) << name;
+        ++r;
+      }
+    }
+    EXPECT_EQ(r, rs.size()) << name;
+    if (synthetic_) {
+      EXPECT_GT(replaced, 0u) << "the synthetic trajectories should overlap";
+    }
+    for (size_t k = 1; k < rs.size(); ++k) EXPECT_LT(rs[k - 1]->timestamp_us, rs[k]->timestamp_us) << name;
+  }
+  const auto start = records("Trajectory/StartSeconds", "double");
+  ASSERT_EQ(start.size(), s_.trajectories.size());
+  const auto& [t, first] = s_.trajectories.front();
+  EXPECT_DOUBLE_EQ(*asDouble(log_.payload(*start[0])), static_cast<double>(t - s_.t0 + first.start_utime - first.utime) * 1e-6);
+}
+
+// The 3-D components are the carriage at the pivot and the arm turned by its angle about the
+// pivot, as planner::armPose places them; the Mechanism2d ligaments add up to the same angles.
+TEST_F(LcmToWpilog, MechanismFollowsTheMeasuredState) {
+  const auto poses = records("Mechanism3d/Measured", "struct:Pose3d[]");
+  ASSERT_EQ(poses.size(), s_.states.size());
+  ASSERT_TRUE(log_.find("/.schema/struct:Pose3d"));
+  const auto rail = records("Mechanism2d/Measured/Rail/Elevator/angle", "double");
+  const auto arm = records("Mechanism2d/Measured/Rail/Elevator/Arm/angle", "double");
+  const auto length = records("Mechanism2d/Measured/Rail/Elevator/length", "double");
+  EXPECT_EQ(asString(log_.payload(*records("Mechanism2d/Measured/.type", "string").front())), "Mechanism2d");
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const State& m = s_.states[i].second;
+    const planner::ArmPose pose = planner::armPose(config_.robot.rail, planner::JointVector(m.elevator_m, m.arm_rad));
+    std::vector<Pose3d> p;
+    ASSERT_TRUE(unpackPose3dArray(log_.payload(*poses[i]), &p));
+    ASSERT_EQ(p.size(), 2u);
+    for (const Pose3d& c : p) {
+      EXPECT_NEAR(c.x, pose.pivot.x(), 1e-12);
+      EXPECT_NEAR(c.z, pose.pivot.y(), 1e-12);
+      EXPECT_EQ(c.y, 0.0);
+    }
+    EXPECT_EQ(p[0].qw, 1.0);
+    // The arm's +x axis rotated by the quaternion: (1 - 2(qy^2 + qz^2), ..., 2(qx qz - qw qy)).
+    const Pose3d& a = p[1];
+    EXPECT_NEAR(1 - 2 * (a.qy * a.qy + a.qz * a.qz), pose.cos_theta, 1e-12);
+    EXPECT_NEAR(2 * (a.qx * a.qz - a.qw * a.qy), pose.sin_theta, 1e-12);
+    EXPECT_NEAR((*asDouble(log_.payload(*rail[i])) + *asDouble(log_.payload(*arm[i]))) * M_PI / 180, m.arm_rad, 1e-12);
+    EXPECT_EQ(asDouble(log_.payload(*length[i])), m.elevator_m);
+  }
+  EXPECT_EQ(records("Mechanism3d/Setpoint", "struct:Pose3d[]").size(), s_.setpoints.size());
+}
+
+TEST(LcmToWpilogErrors, MissingAndForeignLogsAreErrors) {
+  Writer w;
+  std::string error;
+  const config::ChannelNames channels;
+  EXPECT_FALSE(convertLcmLog("/nonexistent.lcmlog", channels, {}, &w, nullptr, &error));
+  EXPECT_NE(error.find("cannot open"), std::string::npos);
+  const auto path = std::filesystem::temp_directory_path() / ("foreign_" + std::to_string(getpid()) + ".lcmlog");
+  {
+    lcm::LogFile log(path.string(), "w");
+    std::vector<char> bytes{1, 2, 3};
+    lcm::LogEvent e{};
+    e.channel = "ARM_GOAL";
+    e.datalen = 3;
+    e.data = bytes.data();
+    ASSERT_EQ(log.writeEvent(&e), 0);
+  }
+  EXPECT_FALSE(convertLcmLog(path.string(), channels, {}, &w, nullptr, &error));
+  EXPECT_NE(error.find("1 undecodable"), std::string::npos) << error;
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace cyber::wpilog

@@ -1,0 +1,38 @@
+#pragma once
+// An lcm-logger log of a cyber-planner session as WPILOG entries under /CyberPlanner/ (the names
+// and units are listed in docs/operations.md, "AdvantageScope"). Timestamps are the logger's
+// receive times in µs from the log's first event; trajectory samples are placed on that clock
+// through the offset between the message's receive time and its utime.
+
+#include <cstdint>
+#include <string>
+
+#include "cyber/config/daemon_settings.hpp"
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/wpilog/wpilog_writer.hpp"
+
+namespace cyber::wpilog {
+
+// What the mechanism views need of the robot: the rail and the arm's reach.
+struct MechanismGeometry {
+  double rail_base_x_m = 0, rail_base_y_m = 0;
+  double rail_tilt_rad = 0;
+  double arm_length_m = 0;  // farthest arm-polygon vertex along the arm
+};
+MechanismGeometry mechanismGeometry(const planner::RobotModel& robot);
+
+struct ConvertStats {
+  int64_t events = 0;       // events in the LCM log
+  int64_t converted = 0;    // decoded messages of the six channels
+  int64_t undecodable = 0;  // events on those channels that did not decode
+  int64_t other = 0;        // events on other channels
+  uint64_t first_event_unix_us = 0;
+};
+
+// Reads the LCM log at `lcm_path` into a new log in `writer` (its extra header names the source
+// and the Unix time of the first event). False with `error` when
+// the log cannot be opened or holds no message of the channels.
+bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels, const MechanismGeometry& geometry,
+                   Writer* writer, ConvertStats* stats, std::string* error);
+
+}  // namespace cyber::wpilog

@@ -1,0 +1,327 @@
+#include "cyber/wpilog/lcm_to_wpilog.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include "cyber/lcmtypes/constant_names.hpp"
+#include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyber/wpilog/pose3d.hpp"
+#include "cyberplanner/arm_daemon_status_t.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
+#include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
+#include "cyberplanner/arm_trajectory_t.hpp"
+
+namespace cyber::wpilog {
+namespace {
+
+constexpr const char* kRoot = "/CyberPlanner/";
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// Entries are started on first use, each with the LCM channel it comes from as metadata.
+class Entries {
+ public:
+  explicit Entries(Writer& writer) : writer_(writer) {}
+  void setChannel(const std::string& channel) { metadata_ = R"({"source":"cyber-wpilog","lcm_channel":")" + channel + "\"}"; }
+
+  void putDouble(const std::string& name, uint64_t t, double v) { writer_.appendDouble(id(name, "double", t), t, v); }
+  void putInt64(const std::string& name, uint64_t t, int64_t v) { writer_.appendInt64(id(name, "int64", t), t, v); }
+  void putBoolean(const std::string& name, uint64_t t, bool v) { writer_.appendBoolean(id(name, "boolean", t), t, v); }
+  void putString(const std::string& name, uint64_t t, const std::string& v) { writer_.appendString(id(name, "string", t), t, v); }
+  void putDoubles(const std::string& name, uint64_t t, const std::vector<double>& v) {
+    writer_.appendDoubleArray(id(name, "double[]", t), t, v);
+  }
+  void putPoses(const std::string& name, uint64_t t, std::span<const Pose3d> poses) {
+    if (!pose_schemas_) {
+      addPose3dSchemas(writer_, t);
+      pose_schemas_ = true;
+    }
+    writer_.appendRaw(id(name, "struct:Pose3d[]", t), t, packPose3dArray(poses));
+  }
+  [[nodiscard]] bool started(const std::string& name) const { return ids_.contains(kRoot + name); }
+
+ private:
+  uint32_t id(const std::string& name, const char* type, uint64_t t) {
+    const std::string full = kRoot + name;
+    const auto it = ids_.find(full);
+    if (it != ids_.end()) return it->second;
+    const uint32_t id = writer_.start(full, type, metadata_, t);
+    ids_.emplace(full, id);
+    return id;
+  }
+
+  Writer& writer_;
+  std::string metadata_;
+  std::map<std::string, uint32_t> ids_;
+  bool pose_schemas_ = false;
+};
+
+struct JointNames {
+  const char* joint;     // "Elevator" / "Arm"
+  const char* position;  // "Meters" / "Radians"
+  const char* velocity;  // "MetersPerSecond" / "RadiansPerSecond"
+};
+constexpr JointNames kElevator{"Elevator", "Meters", "MetersPerSecond"};
+constexpr JointNames kArm{"Arm", "Radians", "RadiansPerSecond"};
+
+std::string key(const JointNames& j, const std::string& what) { return std::string(j.joint) + "/" + what; }
+
+class Converter {
+ public:
+  Converter(Entries& entries, const MechanismGeometry& geometry) : e_(entries), g_(geometry) {}
+
+  void state(uint64_t t, const cyberplanner::arm_state_t& m) {
+    e_.putDouble(key(kElevator, std::string("Measured") + kElevator.position), t, m.elevator_m);
+    e_.putDouble(key(kElevator, std::string("Measured") + kElevator.velocity), t, m.elevator_mps);
+    e_.putDouble(key(kArm, std::string("Measured") + kArm.position), t, m.arm_rad);
+    e_.putDouble(key(kArm, std::string("Measured") + kArm.velocity), t, m.arm_radps);
+    e_.putBoolean("State/HeldCoral", t, m.held_coral);
+    e_.putBoolean("State/HeldAlgae", t, m.held_algae);
+    mechanism("Measured", t, m.elevator_m, m.arm_rad);
+  }
+
+  void setpoint(uint64_t t, const cyberplanner::arm_setpoint_t& m) {
+    joint(kElevator, t, m.elevator_m, m.elevator_mps, m.elevator_volts, m.elevator_sequence);
+    joint(kArm, t, m.arm_rad, m.arm_radps, m.arm_volts, m.arm_sequence);
+    e_.putString("Setpoint/Mode", t, lcmtypes::modeName(m.mode));
+    e_.putInt64("Setpoint/RequestId", t, m.request_id);
+    e_.putDouble("Setpoint/TrajectoryTimeSeconds", t, m.trajectory_t_s);
+    mechanism("Setpoint", t, m.elevator_m, m.arm_rad);
+  }
+
+  void goal(uint64_t t, const cyberplanner::arm_goal_t& m) {
+    e_.putInt64("Goal/RequestId", t, m.request_id);
+    e_.putDouble("Goal/ElevatorMeters", t, m.elevator_m);
+    e_.putDouble("Goal/ArmRadians", t, m.arm_rad);
+    e_.putBoolean("Goal/HeldCoral", t, m.held_coral);
+    e_.putBoolean("Goal/HeldAlgae", t, m.held_algae);
+    e_.putString("Goal/SceneName", t, m.scene_name);
+  }
+
+  void planStatus(uint64_t t, const cyberplanner::arm_plan_status_t& m) {
+    e_.putInt64("PlanStatus/RequestId", t, m.request_id);
+    e_.putString("PlanStatus/Status", t, lcmtypes::statusName(m.status));
+    e_.putString("PlanStatus/Reason", t, m.reason);
+    e_.putDouble("PlanStatus/GridMs", t, m.grid_ms);
+    e_.putDouble("PlanStatus/SearchMs", t, m.search_ms);
+    e_.putDouble("PlanStatus/SmoothMs", t, m.smooth_ms);
+    e_.putDouble("PlanStatus/ToppMs", t, m.topp_ms);
+    e_.putDouble("PlanStatus/TotalMs", t, m.total_ms);
+    e_.putDouble("PlanStatus/DurationSeconds", t, m.duration_s);
+  }
+
+  // The whole trajectory as arrays at its arrival, and its samples as the planned series of
+  // each joint at the times they are commanded.
+  void trajectory(uint64_t t, const cyberplanner::arm_trajectory_t& m) {
+    const int64_t start_us = static_cast<int64_t>(t) + (m.start_utime - m.utime);
+    e_.putInt64("Trajectory/RequestId", t, m.request_id);
+    e_.putDouble("Trajectory/DurationSeconds", t, m.duration_s);
+    e_.putDouble("Trajectory/StepSeconds", t, m.dt_s);
+    e_.putDouble("Trajectory/StartSeconds", t, static_cast<double>(start_us) * 1e-6);
+    e_.putDoubles("Trajectory/TimesSeconds", t, m.t_s);
+    e_.putDoubles("Trajectory/ElevatorMeters", t, m.elevator_m);
+    e_.putDoubles("Trajectory/ElevatorMetersPerSecond", t, m.elevator_mps);
+    e_.putDoubles("Trajectory/ElevatorVolts", t, m.elevator_volts);
+    e_.putDoubles("Trajectory/ArmRadians", t, m.arm_rad);
+    e_.putDoubles("Trajectory/ArmRadiansPerSecond", t, m.arm_radps);
+    e_.putDoubles("Trajectory/ArmVolts", t, m.arm_volts);
+    // A new trajectory replaces the rest of the one before from its start on (docs/lcm.md: a goal
+    // during motion is spliced in), so each planned entry stays in time order.
+    while (!planned_.empty() && planned_.back().t_us >= start_us) planned_.pop_back();
+    const size_t n = std::min({m.t_s.size(), m.elevator_m.size(), m.arm_rad.size(), m.elevator_mps.size(),
+                               m.arm_radps.size(), m.elevator_volts.size(), m.arm_volts.size()});
+    for (size_t k = 0; k < n; ++k) {
+      const int64_t at = start_us + std::llround(m.t_s[k] * 1e6);
+      if (at < 0) continue;
+      planned_.push_back(PlannedSample{at, m.request_id, {m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]},
+                                       {m.arm_rad[k], m.arm_radps[k], m.arm_volts[k]}});
+    }
+  }
+
+  // Writes the planned series, once every trajectory of the log is known.
+  void finish() {
+    for (const PlannedSample& p : planned_) {
+      const auto ts = static_cast<uint64_t>(p.t_us);
+      e_.setChannel(channel_of_trajectories_);
+      planned(kElevator, ts, p.elevator[0], p.elevator[1], p.elevator[2]);
+      planned(kArm, ts, p.arm[0], p.arm[1], p.arm[2]);
+      e_.putInt64("Planned/RequestId", ts, p.request_id);
+    }
+    planned_.clear();
+  }
+  void setTrajectoryChannel(const std::string& channel) { channel_of_trajectories_ = channel; }
+
+  void daemonStatus(uint64_t t, const cyberplanner::arm_daemon_status_t& m) {
+    e_.putString("Daemon/Mode", t, lcmtypes::modeName(m.mode));
+    e_.putBoolean("Daemon/RobotEnabled", t, m.robot_enabled);
+    e_.putBoolean("Daemon/MotionAllowed", t, m.motion_allowed);
+    e_.putInt64("Daemon/ActiveRequestId", t, m.active_request_id);
+    e_.putDouble("Daemon/StateAgeMs", t, m.state_age_ms);
+    e_.putDouble("Daemon/HeartbeatAgeMs", t, m.heartbeat_age_ms);
+    const std::pair<const char*, int64_t> counters[] = {
+        {"GoalsReceived", m.goals_received}, {"PlansSucceeded", m.plans_succeeded}, {"PlansFailed", m.plans_failed},
+        {"FramesSent", m.frames_sent},       {"CanErrors", m.can_errors},           {"DecodeErrors", m.decode_errors},
+        {"StreamOverruns", m.stream_overruns}, {"PublishFailures", m.publish_failures}};
+    for (const auto& [name, value] : counters) e_.putInt64(std::string("Daemon/") + name, t, value);
+    const std::pair<const char*, double> timings[] = {
+        {"PlanTimeP50Ms", m.plan_time_p50_ms},         {"PlanTimeP99Ms", m.plan_time_p99_ms},
+        {"PlanTimeMaxMs", m.plan_time_max_ms},         {"StreamJitterP50Us", m.stream_jitter_p50_us},
+        {"StreamJitterP99Us", m.stream_jitter_p99_us}, {"StreamJitterMaxUs", m.stream_jitter_max_us}};
+    for (const auto& [name, value] : timings) e_.putDouble(std::string("Daemon/") + name, t, value);
+  }
+
+ private:
+  void joint(const JointNames& j, uint64_t t, double q, double v, double volts, uint8_t sequence) {
+    e_.putDouble(key(j, std::string("Setpoint") + j.position), t, q);
+    e_.putDouble(key(j, std::string("Velocity") + j.velocity), t, v);
+    e_.putDouble(key(j, "FeedforwardVolts"), t, volts);
+    e_.putInt64(key(j, "Sequence"), t, sequence);
+  }
+
+  void planned(const JointNames& j, uint64_t t, double q, double v, double volts) {
+    e_.putDouble(key(j, std::string("Planned") + j.position), t, q);
+    e_.putDouble(key(j, std::string("Planned") + j.velocity), t, v);
+    e_.putDouble(key(j, "PlannedVolts"), t, volts);
+  }
+
+  // The arm as AdvantageScope draws logged mechanisms: a Mechanism2d (rail and arm as ligaments,
+  // angles in degrees, each relative to its parent) and the robot-frame poses of the carriage
+  // and the arm as 3-D components (x forward, z up; the side view's y is z).
+  void mechanism(const std::string& which, uint64_t t, double elevator_m, double arm_rad) {
+    const std::string m = "Mechanism2d/" + which + "/";
+    if (!e_.started(m + ".type")) {
+      e_.putString(m + ".type", t, "Mechanism2d");
+      e_.putBoolean(m + ".controllable", t, false);
+      e_.putDoubles(m + "dims", t, {kMechanismWidthM, kMechanismHeightM});
+      e_.putString(m + "backgroundColor", t, "#000020");
+      e_.putDouble(m + "Rail/x", t, g_.rail_base_x_m + kMechanismOriginXM);
+      e_.putDouble(m + "Rail/y", t, g_.rail_base_y_m);
+      e_.putString(m + "Rail/Elevator/.type", t, "line");
+      e_.putString(m + "Rail/Elevator/color", t, "#3070FF");
+      e_.putDouble(m + "Rail/Elevator/weight", t, 8.0);
+      e_.putString(m + "Rail/Elevator/Arm/.type", t, "line");
+      e_.putString(m + "Rail/Elevator/Arm/color", t, which == "Measured" ? "#FF8020" : "#20FF80");
+      e_.putDouble(m + "Rail/Elevator/Arm/weight", t, 6.0);
+      e_.putDouble(m + "Rail/Elevator/Arm/length", t, g_.arm_length_m);
+    }
+    const double tilt_deg = g_.rail_tilt_rad * kRadToDeg;
+    e_.putDouble(m + "Rail/Elevator/angle", t, tilt_deg);
+    e_.putDouble(m + "Rail/Elevator/length", t, elevator_m);
+    e_.putDouble(m + "Rail/Elevator/Arm/angle", t, arm_rad * kRadToDeg - tilt_deg);
+
+    const double px = g_.rail_base_x_m + elevator_m * std::cos(g_.rail_tilt_rad);
+    const double pz = g_.rail_base_y_m + elevator_m * std::sin(g_.rail_tilt_rad);
+    // A rotation by -theta about +y turns +x up toward +z by theta.
+    const std::array<Pose3d, 2> poses{Pose3d{px, 0, pz, 1, 0, 0, 0},
+                                      Pose3d{px, 0, pz, std::cos(-arm_rad / 2), 0, std::sin(-arm_rad / 2), 0}};
+    e_.putPoses("Mechanism3d/" + which, t, poses);
+  }
+
+  // The Mechanism2d canvas: the reef side view from 1.5 m behind the trough to 1.5 m past it.
+  static constexpr double kMechanismOriginXM = 1.5;
+  static constexpr double kMechanismWidthM = 3.0;
+  static constexpr double kMechanismHeightM = 2.6;
+
+  struct PlannedSample {
+    int64_t t_us;
+    int64_t request_id;
+    std::array<double, 3> elevator, arm;  // position, velocity, feedforward volts
+  };
+
+  Entries& e_;
+  const MechanismGeometry& g_;
+  std::vector<PlannedSample> planned_;
+  std::string channel_of_trajectories_;
+};
+
+struct Event {
+  std::string channel;
+  int64_t timestamp_us;
+  std::vector<uint8_t> data;
+};
+
+template <typename Message>
+bool decode(const Event& event, Message* m) {
+  return lcmtypes::safeDecode(*m, event.data.data(), static_cast<int>(event.data.size())) >= 0;
+}
+
+}  // namespace
+
+MechanismGeometry mechanismGeometry(const planner::RobotModel& robot) {
+  MechanismGeometry g;
+  g.rail_base_x_m = robot.rail.base_m.x();
+  g.rail_base_y_m = robot.rail.base_m.y();
+  g.rail_tilt_rad = robot.rail.tilt_rad;
+  for (const planner::ConvexPolygon& p : robot.geometry.arm) {
+    for (const planner::Point2& v : p.vertices()) g.arm_length_m = std::max(g.arm_length_m, v.x());
+  }
+  return g;
+}
+
+bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels, const MechanismGeometry& geometry,
+                   Writer* writer, ConvertStats* stats, std::string* error) {
+  lcm::LogFile log(lcm_path, "r");
+  if (!log.good()) {
+    *error = lcm_path + ": cannot open the LCM log";
+    return false;
+  }
+  std::vector<Event> events;
+  for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
+    const auto* bytes = static_cast<const uint8_t*>(e->data);
+    events.push_back(Event{e->channel, e->timestamp, std::vector<uint8_t>(bytes, bytes + e->datalen)});
+  }
+  ConvertStats s;
+  s.events = static_cast<int64_t>(events.size());
+  s.first_event_unix_us = events.empty() ? 0 : static_cast<uint64_t>(events.front().timestamp_us);
+  *writer = Writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
+  Entries entries(*writer);
+  Converter converter(entries, geometry);
+  using Handler = std::function<bool(const Event&, uint64_t)>;
+  auto handler = [&converter]<typename Message>(void (Converter::*method)(uint64_t, const Message&)) -> Handler {
+    return [&converter, method](const Event& event, uint64_t t) {
+      Message m;
+      if (!decode(event, &m)) return false;
+      (converter.*method)(t, m);
+      return true;
+    };
+  };
+  const std::map<std::string, Handler> handlers{
+      {channels.state, handler(&Converter::state)},
+      {channels.setpoint, handler(&Converter::setpoint)},
+      {channels.goal, handler(&Converter::goal)},
+      {channels.plan_status, handler(&Converter::planStatus)},
+      {channels.trajectory, handler(&Converter::trajectory)},
+      {channels.daemon_status, handler(&Converter::daemonStatus)},
+  };
+  converter.setTrajectoryChannel(channels.trajectory);
+  for (const Event& event : events) {
+    const auto it = handlers.find(event.channel);
+    if (it == handlers.end()) {
+      ++s.other;
+      continue;
+    }
+    entries.setChannel(event.channel);
+    const uint64_t t = static_cast<uint64_t>(std::max<int64_t>(0, event.timestamp_us - events.front().timestamp_us));
+    if (it->second(event, t)) {
+      ++s.converted;
+    } else {
+      ++s.undecodable;
+    }
+  }
+  converter.finish();
+  if (stats != nullptr) *stats = s;
+  if (s.converted == 0) {
+    *error = lcm_path + ": no cyber-planner message in " + std::to_string(s.events) + " events" +
+             (s.undecodable > 0 ? " (" + std::to_string(s.undecodable) + " undecodable)" : "");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace cyber::wpilog

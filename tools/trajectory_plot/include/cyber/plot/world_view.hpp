@@ -1,0 +1,81 @@
+#pragma once
+// The robot in the world: the side view of the scene (floor, reef, obstacles) with the robot's
+// polygons and held pieces at a pose, a filmstrip and an animation of a planned move with its
+// smallest clearance marked, and the preview of a robot description (docs/configuration.md,
+// "Previewing a description").
+
+#include <string>
+#include <vector>
+
+#include "cyber/planner/robot_model.hpp"
+#include "cyber/plot/trajectory_plot.hpp"
+
+namespace cyber::plot {
+
+struct NamedJointPose {
+  std::string name;
+  planner::JointVector q;
+};
+
+// Maps the world frame (m, y up) into a pixel box with one scale for both axes.
+struct WorldCanvas {
+  double box_x = 0, box_y = 0, box_w = 1, box_h = 1;  // px
+  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;              // world rectangle shown, m
+  double scale = 1;                                   // px per m
+  [[nodiscard]] double px(double x) const { return box_x + (x - x0) * scale; }
+  [[nodiscard]] double py(double y) const { return box_y + box_h - (y - y0) * scale; }
+};
+
+// The rectangle every robot point can reach (the rail swept by the farthest robot point, pieces
+// included, plus a margin), from just below the floor, centred in the box.
+WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_y, double box_w, double box_h);
+
+// Colours of the world view, for the pixel checks of the tests.
+struct WorldColors {
+  uint8_t sky[3] = {246, 247, 252};
+  uint8_t obstacle[3] = {110, 116, 130};
+  uint8_t arm[3] = {230, 115, 25};
+  uint8_t coral[3] = {240, 236, 215};
+  uint8_t algae[3] = {40, 170, 140};
+};
+inline constexpr WorldColors kWorldColors{};
+
+// The smallest clearance of a move: signed distance and closest points over its samples.
+struct Clearance {
+  double distance_m = 0;
+  double time_s = 0;
+  size_t sample = 0;
+  planner::Point2 robot_point = planner::Point2::Zero(), obstacle_point = planner::Point2::Zero();
+};
+
+struct Move {
+  std::vector<double> time_s;
+  std::vector<planner::JointVector> q;
+};
+Move moveOf(const TrajectoryPlotData& data);
+Clearance smallestClearance(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move);
+
+constexpr int kWorldWidth = 700;
+constexpr int kWorldHeight = 900;
+
+// Where renderWorldPng puts the world.
+WorldCanvas worldPngCanvas(const planner::RobotModel& robot);
+// One pose: the robot over its scene, kWorldWidth x kWorldHeight px. False with `error` set when
+// the file cannot be written.
+bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const planner::JointVector& q,
+                    const std::string& title, const std::string& path, std::string* error);
+// `frames` poses at even times of the move side by side, the one nearest the smallest clearance
+// moved to it and framed in red.
+bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int frames,
+                        const std::string& title, const std::string& path, std::string* error);
+// The move as an animated PNG (APNG) at `fps` (at most 200 frames), each frame with its closest
+// pair in grey and the smallest clearance of the move in red; one frame is at that smallest.
+bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int fps,
+                         const std::string& title, const std::string& path, std::string* error);
+// A robot description at a glance: the robot at `poses` over the obstacles of `scene`, and the
+// C-space map of `pieces` with the poses marked.
+bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                            const std::vector<NamedJointPose>& poses, const std::string& title, const std::string& path,
+                            std::string* error);
+
+}  // namespace cyber::plot

@@ -1,0 +1,45 @@
+#pragma once
+// Small cairo helpers shared by the trajectory plot and the world view.
+
+#include <cairo.h>
+
+#include <string>
+#include <vector>
+
+#include "cyber/plot/world_view.hpp"
+
+namespace cyber::plot::detail {
+
+struct Rgb {
+  double r, g, b;
+};
+
+inline void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
+
+// Text at (x, y) (baseline), left-aligned, centred or right-aligned on x.
+inline void text(cairo_t* cr, double x, double y, const std::string& s, double size, bool center = false, bool right = false) {
+  cairo_set_font_size(cr, size);
+  cairo_text_extents_t ext;
+  cairo_text_extents(cr, s.c_str(), &ext);
+  double dx = 0;
+  if (center) dx = -ext.width / 2 - ext.x_bearing;
+  if (right) dx = -ext.width - ext.x_bearing;
+  cairo_move_to(cr, x + dx, y);
+  cairo_show_text(cr, s.c_str());
+}
+
+// Writes a surface to a PNG file; false with `error` set when cairo cannot.
+inline bool writePng(cairo_surface_t* surface, const std::string& path, std::string* error) {
+  const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
+  if (status != CAIRO_STATUS_SUCCESS) {
+    if (error != nullptr) *error = path + ": " + cairo_status_to_string(status);
+    return false;
+  }
+  return true;
+}
+
+// The C-space map in a box with the poses marked (render_png.cpp draws it as cyber-plan --plot).
+void drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x, double y,
+                         double w, double h);
+
+}  // namespace cyber::plot::detail
