@@ -7,6 +7,7 @@
 #include "cyber/planner/astar_search.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/weighted_norm.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -15,10 +16,6 @@ using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[kElevator] * v[0] * v[0] + metric[kArm] * v[1] * v[1]);
 }
 
 std::string poseText(const JointVector& q) {
