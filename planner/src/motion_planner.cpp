@@ -35,29 +35,38 @@ bool consistent(const Trajectory& trajectory) {
   return c.position_error <= kMaxPositionError && c.velocity_error <= kMaxVelocityError;
 }
 
-// The path stage from `start` leaving along v0, then TOPP along it.
+// The path stage from `start` leaving along v0, then TOPP along its candidates in the order of
+// their estimated time, until one gives a trajectory whose columns agree.
 Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const JointVector& start,
                        const JointVector& goal, HeldPieces pieces, const JointVector& v0) {
-  Result<PlannedPath> path = paths.plan(start, goal, pieces, v0);
-  if (!path) return path.error();
+  Result<std::vector<PlannedPath>> found = paths.candidates(start, goal, pieces, v0);
+  if (!found) return found.error();
   // The spline leaves along v0 with unit speed in the metric Sigma, so sqrt(b_start) = |v0|_Sigma.
   const double speed = weightedNorm(v0, model.planner.metric);
-
-  const auto topp_start = std::chrono::steady_clock::now();
-  Plan plan;
   ToppSolver solver(model.planner.topp);
-  Result<Trajectory> trajectory =
-      solver.solve(path.value().path, model.elevator_drive, model.arm_drive, speed * speed, &plan.solver);
-  plan.times_ms.topp = msSince(topp_start);
-  if (!trajectory) return trajectory.error();
-
-  plan.trajectory = std::make_shared<const Trajectory>(std::move(trajectory).value());
-  plan.waypoints = path.value().waypoints;
-  plan.min_clearance_m = path.value().min_clearance_m;
-  plan.path_method = path.value().method;
-  plan.times_ms.search = path.value().search_ms;
-  plan.times_ms.smooth = path.value().smooth_ms;
-  return plan;
+  Result<Plan> first_failure = inconsistent();
+  double topp_ms = 0.0;
+  for (size_t i = 0; i < found.value().size(); ++i) {
+    const PlannedPath& path = found.value()[i];
+    const auto topp_start = std::chrono::steady_clock::now();
+    Plan plan;
+    Result<Trajectory> trajectory =
+        solver.solve(path.path, model.elevator_drive, model.arm_drive, speed * speed, &plan.solver);
+    topp_ms += msSince(topp_start);
+    if (!trajectory || !consistent(trajectory.value())) {
+      if (i == 0 && !trajectory) first_failure = trajectory.error();
+      continue;
+    }
+    plan.trajectory = std::make_shared<const Trajectory>(std::move(trajectory).value());
+    plan.waypoints = path.waypoints;
+    plan.min_clearance_m = path.min_clearance_m;
+    plan.path_method = path.method;
+    plan.times_ms.search = path.search_ms;
+    plan.times_ms.smooth = path.smooth_ms;
+    plan.times_ms.topp = topp_ms;
+    return plan;
+  }
+  return first_failure;
 }
 
 // The rest-to-rest plan from where `stop` ends, after it.
@@ -124,7 +133,6 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   }
   const PathPlanner& paths = path_planners_[static_cast<size_t>(request.scene)];
   Result<Plan> direct = timedPath(model_, paths, request.start, request.goal, request.pieces, request.start_velocity);
-  if (direct && !consistent(*direct.value().trajectory)) direct = inconsistent();
   const bool moving = weightedNorm(request.start_velocity, model_.planner.metric) > 0.0;
   // Errors of the request itself (bad poses, a goal in collision) are the same for both.
   const bool request_error = !direct && (direct.status() == PlanStatus::kInvalidInput ||

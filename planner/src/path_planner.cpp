@@ -7,6 +7,7 @@
 #include "cyber/planner/astar_search.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/path_timing.hpp"
 #include "cyber/planner/weighted_norm.hpp"
 
 namespace cyber::planner {
@@ -67,6 +68,40 @@ std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const Collisio
   return out;
 }
 
+// Candidate paths are timed by the reachability pass on this many grid points (path_timing.hpp).
+constexpr int kTimingGridPoints = 60;
+// Shortcut segments keep this much more than the clearance, so smoothing has room at corners.
+constexpr double kShortcutMargin_m = 0.015;
+
+// The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
+// can replace replaced by it: the search's grid and potential bend the path toward the middle of
+// the free space, while time favours moving both joints at once in straight lines. The first
+// fixed_head points are kept. From each kept point the farthest reachable node is found by
+// bisection (clear segments are nearly monotone along a search path).
+std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std::vector<JointVector>& polyline,
+                                          int fixed_head, double clearance_m) {
+  std::vector<JointVector> out(polyline.begin(), polyline.begin() + fixed_head);
+  const int last = static_cast<int>(polyline.size()) - 1;
+  int from = fixed_head - 1;
+  while (from < last) {
+    int lo = from + 1, hi = last;
+    auto clear = [&](int to) {
+      return checkSegment(world, polyline[static_cast<size_t>(from)], polyline[static_cast<size_t>(to)], clearance_m).clear;
+    };
+    if (clear(hi)) {
+      lo = hi;
+    } else {
+      while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (clear(mid) ? lo : hi) = mid;
+      }
+    }
+    out.push_back(polyline[static_cast<size_t>(lo)]);
+    from = lo;
+  }
+  return out;
+}
+
 }  // namespace
 
 PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(model), scene_(scene) {
@@ -80,9 +115,9 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(m
   }
 }
 
-Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
-                                      const JointVector& start_velocity) const {
-  using R = Result<PlannedPath>;
+Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
+                                                         HeldPieces pieces, const JointVector& start_velocity) const {
+  using R = Result<std::vector<PlannedPath>>;
   if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
   if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
   if (!start_velocity.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
@@ -122,7 +157,7 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
     out.direct = true;
     out.method = "zero-length";
     out.search_ms = millisecondsSince(t_search);
-    return out;
+    return std::vector<PlannedPath>{out};
   }
 
   // Lead-in: a straight piece along the start velocity, shortened until it is inside the limits
@@ -170,46 +205,60 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
   out.search_ms = millisecondsSince(t_search);
 
   // Smoothing: resample, optimise (eq. 8), spline, continuous check; weaker smoothing on failure.
+  // Done for the search's polyline and for its shortcut (docs/performance.md, "Choosing the path
+  // for time"); the one the reachability pass times faster is kept.
   const Clock::time_point t_smooth = Clock::now();
   const int fixed_head = out.lead_in ? 2 : 1;
-  const std::vector<JointVector> tail(polyline.begin() + fixed_head - 1, polyline.end());
-  auto prior_at = [&](double spacing) {
-    std::vector<JointVector> prior(polyline.begin(), polyline.begin() + fixed_head - 1);
-    const std::vector<JointVector> resampled = resamplePolyline(tail, metric, spacing);
-    prior.insert(prior.end(), resampled.begin(), resampled.end());
-    return prior;
-  };
   ClearanceCheck last_check;
-  auto accept = [&](const std::vector<JointVector>& waypoints, const char* method) {
-    auto spline = CubicSplinePath::through(waypoints, metric, start_velocity);
-    if (!spline.ok()) return false;
-    last_check = checkPath(spline.value(), world, model_, clearance);
-    if (!last_check.ok()) return false;
-    out.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
-    out.waypoints = waypoints;
-    out.min_clearance_m = last_check.min_distance_m;
-    out.method = method;
-    return true;
-  };
-  bool done = false;
-  if (out.direct && !out.lead_in) done = accept(polyline, "straight");
-  if (!done) {
+  auto smooth = [&](const std::vector<JointVector>& line, const char* label, PlannedPath& into) {
+    const std::vector<JointVector> tail(line.begin() + fixed_head - 1, line.end());
+    auto prior_at = [&](double spacing) {
+      std::vector<JointVector> prior(line.begin(), line.begin() + fixed_head - 1);
+      const std::vector<JointVector> resampled = resamplePolyline(tail, metric, spacing);
+      prior.insert(prior.end(), resampled.begin(), resampled.end());
+      return prior;
+    };
+    auto accept = [&](const std::vector<JointVector>& waypoints, const std::string& method) {
+      auto spline = CubicSplinePath::through(waypoints, metric, start_velocity);
+      if (!spline.ok()) return false;
+      last_check = checkPath(spline.value(), world, model_, clearance);
+      if (!last_check.ok()) return false;
+      into.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
+      into.waypoints = waypoints;
+      into.min_clearance_m = last_check.min_distance_m;
+      into.method = label + method;
+      return true;
+    };
+    if (out.direct && !out.lead_in) return accept(line, "straight");
     const std::vector<JointVector> prior = prior_at(smoothing.waypoint_spacing);
     const SmoothingResult optimised = optimizePath(world, prior, fixed_head, model_, smoothing);
-    out.optimizer_iterations = optimised.lbfgs.iterations;
-    done = accept(optimised.waypoints, "optimised");
-    if (!done) {
-      SmoothingSettings stronger = smoothing;
-      stronger.obstacle_weight *= 10.0;
-      const SmoothingResult pushed = optimizePath(world, prior, fixed_head, model_, stronger);
-      out.optimizer_iterations += pushed.lbfgs.iterations;
-      done = accept(pushed.waypoints, "optimised, obstacle weight x10");
+    into.optimizer_iterations += optimised.lbfgs.iterations;
+    if (accept(optimised.waypoints, "optimised")) return true;
+    SmoothingSettings stronger = smoothing;
+    stronger.obstacle_weight *= 10.0;
+    const SmoothingResult pushed = optimizePath(world, prior, fixed_head, model_, stronger);
+    into.optimizer_iterations += pushed.lbfgs.iterations;
+    if (accept(pushed.waypoints, "optimised, obstacle weight x10")) return true;
+    if (accept(prior, "prior")) return true;
+    return accept(prior_at(0.25 * smoothing.waypoint_spacing), "dense prior");
+  };
+  const bool done = smooth(polyline, "", out);
+  std::vector<PlannedPath> candidates;
+  if (done) candidates.push_back(out);
+  if (!out.direct) {
+    const std::vector<JointVector> shortcut = shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
+    PlannedPath alternative = out;
+    if (shortcut.size() < polyline.size() && smooth(shortcut, "shortcut, ", alternative)) {
+      const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
+      const double b_start = start_speed * start_speed;
+      const double alternative_s = estimateDuration(*alternative.path, drives, b_start, kTimingGridPoints);
+      const bool faster = !done || alternative_s < estimateDuration(*out.path, drives, b_start, kTimingGridPoints);
+      candidates.insert(faster ? candidates.begin() : candidates.end(), std::move(alternative));
     }
-    if (!done) done = accept(prior, "prior");
-    if (!done) done = accept(prior_at(0.25 * smoothing.waypoint_spacing), "dense prior");
   }
-  out.smooth_ms = millisecondsSince(t_smooth);
-  if (!done) {
+  const double smooth_ms = millisecondsSince(t_smooth);
+  for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
+  if (candidates.empty()) {
     char buffer[200];
     std::snprintf(buffer, sizeof buffer,
                   "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
@@ -217,7 +266,14 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
                   last_check.at_s);
     return R::failure(PlanStatus::kClearanceNotMet, buffer);
   }
-  return out;
+  return candidates;
+}
+
+Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
+                                      const JointVector& start_velocity) const {
+  Result<std::vector<PlannedPath>> found = candidates(start, goal, pieces, start_velocity);
+  if (!found) return found.error();
+  return std::move(found.value().front());
 }
 
 }  // namespace cyber::planner
