@@ -3,8 +3,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "cyber/planner/astar_search.hpp"
+#include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
 #include "cyber/planner/path_timing.hpp"
@@ -72,6 +74,10 @@ std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const Collisio
 constexpr int kTimingGridPoints = 60;
 // Shortcut segments keep this much more than the clearance, so smoothing has room at corners.
 constexpr double kShortcutMargin_m = 0.015;
+// The other way round is searched for when the best path takes this much longer than the straight
+// segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
+constexpr double kDetourRatio = 1.05;
+constexpr int kBandRadius = 6;
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
 // can replace replaced by it: the search's grid and potential bend the path toward the middle of
@@ -100,6 +106,30 @@ std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std
     from = lo;
   }
   return out;
+}
+
+// Every node within `radius` index steps of the path's cells, except those within `radius` of
+// its two ends (the search must still leave the start and reach the goal): blocking this band
+// makes the search find the way round the other side of an obstacle, when there is one.
+std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<int>& cells, int radius) {
+  std::vector<std::uint8_t> band(static_cast<size_t>(grid.cellCount()), 0);
+  if (cells.empty()) return band;
+  const int ni = grid.elevatorAxis().count, nj = grid.armAxis().count;
+  auto near_end = [&](int i, int j) {
+    for (int end : {cells.front(), cells.back()}) {
+      if (std::abs(i - grid.elevatorIndex(end)) <= radius && std::abs(j - grid.armIndex(end)) <= radius) return true;
+    }
+    return false;
+  };
+  for (int cell : cells) {
+    const int i0 = grid.elevatorIndex(cell), j0 = grid.armIndex(cell);
+    for (int i = std::max(0, i0 - radius); i <= std::min(ni - 1, i0 + radius); ++i) {
+      for (int j = std::max(0, j0 - radius); j <= std::min(nj - 1, j0 + radius); ++j) {
+        if (!near_end(i, j)) band[static_cast<size_t>(grid.cell(i, j))] = 1;
+      }
+    }
+  }
+  return band;
 }
 
 }  // namespace
@@ -178,6 +208,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     }
   }
 
+  std::vector<int> first_cells;
+  std::vector<SearchEndpoint> source_links, goal_links;
   if (checkSegment(world, from, goal, clearance).clear) {
     out.direct = true;
     polyline.push_back(goal);
@@ -200,6 +232,9 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     out.search_expanded = found->expanded;
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
     polyline.push_back(goal);
+    first_cells = found->cells;
+    source_links = sources;
+    goal_links = goals;
   }
   out.search_waypoints = polyline;
   out.search_ms = millisecondsSince(t_search);
@@ -246,14 +281,34 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   std::vector<PlannedPath> candidates;
   if (done) candidates.push_back(out);
   if (!out.direct) {
+    const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
+    const double b_start = start_speed * start_speed;
+    std::vector<double> estimates;
+    for (const PlannedPath& c : candidates) estimates.push_back(estimateDuration(*c.path, drives, b_start, kTimingGridPoints));
+    // Adds the polyline's shortcut (or the polyline itself) in the order of estimated time.
+    auto add = [&](const std::vector<JointVector>& line, const char* label) {
+      PlannedPath alternative = out;
+      if (!smooth(line, label, alternative)) return;
+      const double seconds = estimateDuration(*alternative.path, drives, b_start, kTimingGridPoints);
+      size_t at = 0;
+      while (at < estimates.size() && estimates[at] <= seconds) ++at;
+      estimates.insert(estimates.begin() + static_cast<long>(at), seconds);
+      candidates.insert(candidates.begin() + static_cast<long>(at), std::move(alternative));
+    };
     const std::vector<JointVector> shortcut = shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
-    PlannedPath alternative = out;
-    if (shortcut.size() < polyline.size() && smooth(shortcut, "shortcut, ", alternative)) {
-      const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
-      const double b_start = start_speed * start_speed;
-      const double alternative_s = estimateDuration(*alternative.path, drives, b_start, kTimingGridPoints);
-      const bool faster = !done || alternative_s < estimateDuration(*out.path, drives, b_start, kTimingGridPoints);
-      candidates.insert(faster ? candidates.begin() : candidates.end(), std::move(alternative));
+    if (shortcut.size() < polyline.size()) add(shortcut, "shortcut, ");
+    const double direction_norm = weightedNorm(goal - from, metric);
+    const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
+    const double straight_s = estimateDuration(straight, drives, 0.0, kTimingGridPoints);
+    if (!estimates.empty() && estimates.front() > kDetourRatio * straight_s) {
+      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
+      const auto other = astarSearch(grid, source_links, goal_links, goal, true, band);
+      if (other) {
+        std::vector<JointVector> around(polyline.begin(), polyline.begin() + fixed_head);
+        for (int cell : other->cells) around.push_back(grid.node(cell));
+        around.push_back(goal);
+        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), "other way round, ");
+      }
     }
   }
   const double smooth_ms = millisecondsSince(t_smooth);
