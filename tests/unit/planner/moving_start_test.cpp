@@ -97,14 +97,17 @@ TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
   EXPECT_LE(c.velocity_error, 0.02);
 }
 
-TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
+// The reef scene without game pieces, for fastestStop on its own.
+struct ReefWithoutPieces {
   const RobotModel& model = test::referenceModel();
-  const auto planner = MotionPlanner::create(model);
-  ASSERT_TRUE(planner.ok());
-  const CollisionWorld& world = planner.value().pathPlanner(0).world({});
-  ToppSolver solver(model.planner.topp);
+  CollisionWorld world{model, model.scenes.front(), HeldPieces{}};
+  ToppSolver solver{model.planner.topp};
+};
+
+TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
+  ReefWithoutPieces reef;
   const JointVector start(1.0, 3.0), velocity(0.8, -3.0);
-  const auto stop = fastestStop(model, world, start, velocity, solver);
+  const auto stop = fastestStop(reef.model, reef.world, start, velocity, reef.solver);
   ASSERT_TRUE(stop.ok()) << stop.error().reason;
   const Trajectory& t = stop.value();
   EXPECT_LT((t.sample(0.0).qdot - velocity).norm(), 1e-9);
@@ -118,16 +121,13 @@ TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
 }
 
 TEST(MovingStart, NoStopIsOfferedIntoAJointLimit) {
-  const RobotModel& model = test::referenceModel();
-  const auto planner = MotionPlanner::create(model);
-  ASSERT_TRUE(planner.ok());
-  const CollisionWorld& world = planner.value().pathPlanner(0).world({});
-  ToppSolver solver(model.planner.topp);
+  ReefWithoutPieces reef;
   const JointVector start(1.999, 3.0), velocity(2.5, 0.0);
-  const auto stop = fastestStop(model, world, start, velocity, solver);
+  const auto stop = fastestStop(reef.model, reef.world, start, velocity, reef.solver);
   ASSERT_FALSE(stop.ok());
   EXPECT_EQ(stop.status(), PlanStatus::kInfeasibleStart);
-  EXPECT_EQ(fastestStop(model, world, start, JointVector::Zero(), solver).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(fastestStop(reef.model, reef.world, start, JointVector::Zero(), reef.solver).status(),
+            PlanStatus::kInvalidInput);
 }
 
 }  // namespace
