@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/joined_path.hpp"
@@ -44,7 +45,8 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
   // The spline leaves along v0 with unit speed in the metric Sigma, so sqrt(b_start) = |v0|_Sigma.
   const double speed = weightedNorm(v0, model.planner.metric);
   ToppSolver solver(model.planner.topp);
-  Result<Plan> first_failure = inconsistent();
+  Result<Plan> fallback = inconsistent();  // the first trajectory, when no candidate's columns agree
+  bool have_fallback = false;
   double topp_ms = 0.0;
   for (size_t i = 0; i < found.value().size(); ++i) {
     const PlannedPath& path = found.value()[i];
@@ -53,10 +55,11 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
     Result<Trajectory> trajectory =
         solver.solve(path.path, model.elevator_drive, model.arm_drive, speed * speed, &plan.solver);
     topp_ms += msSince(topp_start);
-    if (!trajectory || !consistent(trajectory.value())) {
-      if (i == 0 && !trajectory) first_failure = trajectory.error();
+    if (!trajectory) {
+      if (i == 0) fallback = trajectory.error();
       continue;
     }
+    const bool agree = consistent(trajectory.value());
     plan.trajectory = std::make_shared<const Trajectory>(std::move(trajectory).value());
     plan.waypoints = path.waypoints;
     plan.min_clearance_m = path.min_clearance_m;
@@ -64,9 +67,16 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
     plan.times_ms.search = path.search_ms;
     plan.times_ms.smooth = path.smooth_ms;
     plan.times_ms.topp = topp_ms;
-    return plan;
+    if (agree) return plan;
+    if (!have_fallback) {
+      fallback = std::move(plan);
+      have_fallback = true;
+    }
   }
-  return first_failure;
+  // A very short move can be too brief for any path to agree at 1 ms (its bang-bang switches are
+  // a large share of its peak speed): it is still planned rather than refused.
+  if (have_fallback) fallback.value().times_ms.topp = topp_ms;
+  return fallback;
 }
 
 // The rest-to-rest plan from where `stop` ends, after it.
@@ -104,7 +114,6 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
     Result<Trajectory> gentler = stretchedStop(model, world, stop.value(), target / steps);
     plan = gentler ? planAfterStop(model, paths, request, gentler.value()) : gentler.error();
   }
-  if (plan && !consistent(*plan.value().trajectory)) plan = inconsistent();
   if (plan) plan.value().times_ms.topp += stop_ms;
   return plan;
 }
@@ -143,8 +152,11 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   Result<Plan> chosen = std::move(direct);
   if (moving && !request_error) {
     Result<Plan> stopped = stopThenPlan(model_, paths, request);
-    const bool stopped_faster =
-        stopped && (!chosen || stopped.value().trajectory->duration_s() < chosen.value().trajectory->duration_s());
+    // Columns that agree first, then the faster.
+    auto rank = [](const Result<Plan>& p) {
+      return std::pair{p && consistent(*p.value().trajectory) ? 0 : 1, p.value().trajectory->duration_s()};
+    };
+    const bool stopped_faster = stopped && (!chosen || rank(stopped) < rank(chosen));
     if (stopped_faster) chosen = std::move(stopped);
   }
   if (!chosen) return chosen;
