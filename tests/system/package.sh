@@ -48,7 +48,10 @@ provided=$(dpkg-query -W -f='${db:Status-Abbrev}|${Provides}\n' 2>/dev/null | se
   sed -E 's/^ *//; s/ .*//')
 for dependency in "${alternatives[@]}"; do
   name=$(sed -E 's/^ *//; s/[ (|].*//' <<<"$dependency")
-  status=$(dpkg-query -W -f='${Status}' "$name" 2>/dev/null || true)
+  # This machine's architecture: with a foreign one added (tools/setup --arch arm64) a plain name
+  # matches each architecture's package.
+  status=$(dpkg-query -W -f='${Status}' "$name:$(dpkg --print-architecture)" 2>/dev/null ||
+    dpkg-query -W -f='${Status}' "$name" 2>/dev/null || true)
   [[ $status == 'install ok installed' ]] || grep -qx -- "$name" <<<"$provided" ||
     fail "dependency '$name' is neither installed nor provided by an installed package"
 done
