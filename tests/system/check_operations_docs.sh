@@ -8,11 +8,11 @@ cd "$(dirname "$0")/../.."
 doc=docs/operations.md
 [[ -f $doc ]] || { echo "check_operations_docs: $doc missing" >&2; exit 1; }
 checked_sections=("## Install and package" "## Running under systemd" "## CAN interface with systemd-networkd"
-                  "## lcm-spy, recording and replay")
+                  "## lcm-spy, recording and replay" "## arm64 coprocessors")
 
 declare -A run_by_test=()
-for script in package unit_files lcm_spy lcm_record_replay; do
-  printed=$("tests/system/$script.sh" --print-doc-commands) ||
+for script in system/package system/unit_files system/lcm_spy system/lcm_record_replay arm64/package_run; do
+  printed=$("tests/$script.sh" --print-doc-commands) ||
     { echo "check_operations_docs: $script.sh --print-doc-commands failed" >&2; exit 1; }
   while IFS= read -r command; do
     run_by_test[$command]=$script
