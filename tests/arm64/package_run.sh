@@ -18,7 +18,7 @@ commands() {
   plan="tools/arm64-run $root/usr/bin/cyber-plan --config $root/etc/cyber-planner/robot.toml --from 0.20,1.57 --to 1.97,5.17 --json"
 }
 if [[ ${1:-} == --print-doc-commands ]]; then
-  build=build-arm64
+  build='build-arm64'
   commands
   printf '%s\n' "$info" "$unpack" "$daemon_help" "$plan"
   exit 0
