@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """arm64.public_moves: every public move (tests/support/public_moves.hpp) planned with the arm64
 cyber-plan under the emulator and with the native cyber-plan: the same outcome each time, and
-durations equal to 1e-3 relative (floating point differs between the two: FMA contraction on
-AArch64, another libm).
+durations equal to 1e-3 relative. Floating point is where the two can differ: with g++'s default
+FMA contraction on AArch64 one move's duration was off by 2e-3, hence -ffp-contract=off in
+cmake/toolchains/aarch64-linux-gnu.cmake; libm is another architecture's build.
 
     public_moves.py MOVES_PROGRAM ARM64_CYBER_PLAN NATIVE_CYBER_PLAN CONFIG EMULATOR...
 
