@@ -52,6 +52,12 @@ set(CPACK_DEBIAN_PACKAGE_SECTION misc)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 # Library dependencies from the binaries themselves (dpkg-shlibdeps, package dpkg-dev).
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# A cross build's toolchain file names the package architecture and where dpkg-shlibdeps finds
+# the libraries no installed package holds (cmake/toolchains/aarch64-linux-gnu.cmake).
+if(CYBER_DEB_ARCHITECTURE)
+  set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE ${CYBER_DEB_ARCHITECTURE})
+endif()
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS_PRIVATE_DIRS ${CYBER_CROSS_PRIVATE_LIB_DIRS})
 # cyber-lcm-spy needs Java and LCM's Java bindings; can-utils for candump captures.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "default-jre | java-runtime, liblcm-java, libjchart2d-java, liblcm-bin, can-utils")
 set(cyber_conffiles ${PROJECT_BINARY_DIR}/cpack/conffiles)
