@@ -1,11 +1,10 @@
-// LD_PRELOAD shim for the wall_clock_jump integration case: the wall clock (CLOCK_REALTIME, also
-// through gettimeofday and std::chrono::system_clock) of the process it is loaded into jumps
+// LD_PRELOAD shim for the wall_clock_jump integration case: the wall clock (CLOCK_REALTIME, which
+// std::chrono::system_clock and spdlog read through clock_gettime) of the process it is loaded into jumps
 // every CYBER_WALL_JUMP_PERIOD_S seconds (default 0.5) through the offsets 0, +1 h, -1 h,
 // +1 year, and again. Monotonic clocks are untouched. The daemon must not notice (it measures
 // every age and period on CLOCK_MONOTONIC; wall time only stamps messages).
 
 #include <dlfcn.h>
-#include <sys/time.h>
 #include <time.h>
 
 #include <cstdint>
@@ -50,15 +49,5 @@ void shift(timespec& ts, std::int64_t offset_ns) {
 extern "C" int clock_gettime(clockid_t clock, timespec* ts) {
   const int rc = realClockGettime()(clock, ts);
   if (rc == 0 && (clock == CLOCK_REALTIME || clock == CLOCK_REALTIME_COARSE)) shift(*ts, wallOffsetNs());
-  return rc;
-}
-
-extern "C" int gettimeofday(timeval* tv, void*) {
-  timespec ts{};
-  const int rc = clock_gettime(CLOCK_REALTIME, &ts);
-  if (rc == 0 && tv != nullptr) {
-    tv->tv_sec = ts.tv_sec;
-    tv->tv_usec = ts.tv_nsec / 1000;
-  }
   return rc;
 }
