@@ -76,7 +76,20 @@ expect_goal() {
   grep -q -- "$pattern" "$tmp/goal.out" || fail "cyber-goal $* printed no line matching '$pattern'"
 }
 
-# SIGTERM, and the daemon exits 0 within a second.
+# start_long_goal ID: cyber-goal in the background (goal_pid, output in $tmp/goal.out) for a long
+# move, returning once the move executes.
+start_long_goal() {
+  ip netns exec "$ns" "$goal" --to 1.97,5.17 --id "$1" --timeout 30 >"$tmp/goal.out" 2>&1 &
+  goal_pid=$!
+  pids+=("$goal_pid")
+  for _ in $(seq 1 300); do
+    grep -q "request $1 executing" "$tmp/goal.out" && return 0
+    sleep 0.01
+  done
+  fail "the goal never started executing"
+}
+
+# SIGTERM, and the daemon exits 0.
 stop_daemon_cleanly() {
   kill -TERM "$daemon_pid"
   local rc=0
@@ -165,14 +178,7 @@ case "$case_name" in
 
   sigterm)
     start_daemon
-    ip netns exec "$ns" "$goal" --to 1.97,5.17 --id 41 --timeout 30 >"$tmp/goal.out" 2>&1 &
-    goal_pid=$!
-    pids+=("$goal_pid")
-    for _ in $(seq 1 300); do
-      grep -q "request 41 executing" "$tmp/goal.out" && break
-      sleep 0.01
-    done
-    grep -q "request 41 executing" "$tmp/goal.out" || fail "the goal never started executing"
+    start_long_goal 41
     start_ns=$(date +%s%N)
     kill -TERM "$daemon_pid"
     rc=0
@@ -192,14 +198,7 @@ case "$case_name" in
   sighup)
     # SIGHUP is ignored (docs/operations.md, "Signals"): a motion in progress finishes.
     start_daemon
-    ip netns exec "$ns" "$goal" --to 1.97,5.17 --id 61 --timeout 30 >"$tmp/goal.out" 2>&1 &
-    goal_pid=$!
-    pids+=("$goal_pid")
-    for _ in $(seq 1 300); do
-      grep -q "request 61 executing" "$tmp/goal.out" && break
-      sleep 0.01
-    done
-    grep -q "request 61 executing" "$tmp/goal.out" || fail "the goal never started executing"
+    start_long_goal 61
     kill -HUP "$daemon_pid"
     goal_rc=0
     wait "$goal_pid" || goal_rc=$?
