@@ -376,8 +376,11 @@ int main(int argc, char** argv) {
   if (g_stop) failures.push_back("interrupted");
 
   // ---- checks ----
-  long long duplicates = 0;
-  for (const auto& [id, n] : peer.finals) duplicates += n > 1 ? 1 : 0;
+  long long duplicates = 0, answered = 0;
+  for (const auto& [id, n] : peer.finals) {
+    duplicates += n > 1 ? 1 : 0;
+    answered += n > 0 ? 1 : 0;
+  }
   lost += static_cast<long long>(peer.open_goals.size());
   if (lost > 0) failures.push_back(std::to_string(lost) + " goals without a final status");
   if (duplicates > 0) failures.push_back(std::to_string(duplicates) + " goals with more than one final status");
@@ -419,8 +422,7 @@ int main(int argc, char** argv) {
   const auto s = peer.status.value_or(cyberplanner::arm_daemon_status_t{});
   std::printf("soak_seconds=%.0f\nwarmup_seconds=%.0f\nsamples=%zu\n", args.seconds, warmup_s, rows.size());
   std::printf("goals_sent=%lld\nmalformed_sent=%lld\nbursts=%lld\nanswered=%lld\nlost=%lld\nduplicates=%lld\n",
-              sender.sent, sender.malformed_sent, sender.bursts,
-              static_cast<long long>(peer.finals.size()) - static_cast<long long>(peer.open_goals.size()), lost, duplicates);
+              sender.sent, sender.malformed_sent, sender.bursts, answered, lost, duplicates);
   std::printf("done=%lld\nrejected=%lld\nfailed=%lld\ncancelled=%lld\n", peer.by_status[3], peer.by_status[4],
               peer.by_status[5], peer.by_status[6]);
   std::printf("rss_kib_early_median=%ld\nrss_kib_late_median=%ld\nrss_kib_max=%ld\nfds_warm=%ld\nfds_max=%ld\n"
