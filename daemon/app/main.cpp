@@ -1,5 +1,5 @@
 // cyber-plannerd: the motion-planning daemon (docs/operations.md).
-//   cyber-plannerd --config FILE [--can IFACE|none] [--lcm-url URL]
+//   cyber-plannerd [--config FILE] [--can IFACE|none] [--lcm-url URL]
 // Exit codes: 0 stopped by SIGTERM/SIGINT, 2 bad command line or configuration, 1 any other
 // start-up failure (LCM, CAN interface, planner set-up). Each failure is one line on stderr.
 
@@ -47,7 +47,9 @@ int main(int argc, char** argv) {
 
   config::Config config;
   try {
-    config = config::loadConfigFile(command.config_path);
+    // Without --config, the embedded reference robot, as cyber-plan does.
+    config = command.config_path.empty() ? config::loadEmbeddedDefaultConfig()
+                                         : config::loadConfigFile(command.config_path);
   } catch (const config::ConfigError& error) {
     return fail(2, error.what());
   }

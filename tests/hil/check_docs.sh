@@ -7,7 +7,7 @@ doc=docs/testing.md
 [[ -f $doc ]] || { echo "check_docs: $doc missing" >&2; exit 1; }
 
 declare -A run_by_test=()
-for case in prepare smoke failure_propagates script_timeout host_mode plant_sim daemon_motion daemon_faults daemon_link_down; do
+for case in prepare smoke failure_propagates script_timeout host_mode plant_sim daemon_motion daemon_faults daemon_link_down daemon_hang; do
   run_by_test[$(tests/hil/run_hil.sh --print "$case" build)]=$case
 done
 
@@ -22,7 +22,7 @@ while IFS= read -r line; do
   fi
 done < <(grep -E '^[[:space:]]*tools/vcan-vm ' "$doc")
 
-for case in prepare smoke failure_propagates script_timeout plant_sim daemon_motion daemon_faults daemon_link_down; do
+for case in prepare smoke failure_propagates script_timeout plant_sim daemon_motion daemon_faults daemon_link_down daemon_hang; do
   cmd=$(tests/hil/run_hil.sh --print "$case" build)
   grep -qxF "$cmd" < <(sed 's/^[[:space:]]*//' "$doc") || { echo "check_docs: $doc does not show: $cmd" >&2; status=1; }
 done

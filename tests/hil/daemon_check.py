@@ -92,6 +92,9 @@ class Run:
                 self.trajectories[t["request_id"]] = t
         self.daemon_status = [hil.decode_daemon_status(d) for _, ch, d in self.events if ch == "ARM_DAEMON_STATUS"]
         self.states = [hil.decode_arm_state(d) for _, ch, d in self.events if ch == "ARM_STATE"]
+        # When lcm-logger took each ARM_STATE in (s): the daemon, another ordinary process of the
+        # same guest, takes it in about as late.
+        self.state_logged = [t * 1e-6 for t, ch, _ in self.events if ch == "ARM_STATE"]
         self.setpoints = {}  # joint index -> [(t, position, velocity, volts, sequence)]
         for j, device in enumerate((DEVICES["elevator"], DEVICES["arm"])):
             self.setpoints[j] = [(f.t,) + hil.decode_setpoint(f) for f in self.frames
@@ -100,6 +103,8 @@ class Run:
         self.row_utime = [r["utime"] for r in self.rows]
         self.plant_events = hil.plant_events(os.path.join(out, "plant_sim.err"))
         self.scenario = hil.read_scenario(os.path.join(out, "scenario.txt"))
+        # Run in the emulated guest (tools/vcan-vm --vm) rather than on a host kernel with vcan.
+        self.emulated = self.scenario.get("emulated", ["1"])[-1] == "1"
 
     def fault_time(self, kind):
         """Wall time at which the simulator applied fault `kind` (first time), or None."""
@@ -321,7 +326,8 @@ def ticks_between(run, t0, t1):
 def check_on_trajectories(c, run, request_ids, t0, t1):
     """Each streamer tick between t0 and t1 lies on one of the given planned trajectories: both
     joints' positions and velocities at a common best-matching time within [-15, +5] ms of the
-    tick's capture time (the capture comes a little after the sampling), and the feedforward
+    tick's capture time (the capture comes a little after the sampling; in the emulated guest
+    also later by a stall of the guest just before it), and the feedforward
     between the trajectory's neighbouring samples; within interpolation and quantisation
     tolerances. Reported: the worst errors and how the capture lagged the sampling."""
     trajs = [(r, Trajectory(run.trajectories[r])) for r in request_ids if r in run.trajectories]
@@ -334,9 +340,11 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
     lags = []
     counts = {r: 0 for r in request_ids}
     ticks = ticks_between(run, t0, t1)
-    for t, joints in ticks:
-        # Per trajectory, the time that fits both joints best; then the trajectory whose errors are
-        # smallest against their tolerances (right at a splice both fit, within a period).
+
+    def best_fit(t, joints, max_lag_s):
+        """Per trajectory, the time within [-max_lag_s, +5 ms] of t that fits both joints best;
+        then the trajectory whose errors are smallest against their tolerances (right at a splice
+        both fit, within a period)."""
         best = None
         for n, (r, traj) in enumerate(trajs):
             # Only where the samples reach (to duration_s: checked below), and only until the next
@@ -345,10 +353,10 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
             if n + 1 < len(trajs):
                 end = min(end, trajs[n + 1][1].start - traj.start)
             tau0 = t - traj.start
-            if tau0 < -0.02 or tau0 > end + 0.0005:
+            if tau0 < -max_lag_s - 0.005 or tau0 > end + 0.0005:
                 continue
             fit = None
-            for k in range(-150, 51):
+            for k in range(-round(max_lag_s * 1e4), 51):
                 tau = tau0 + k * 1e-4
                 if tau < 0.0 or tau > end:
                     continue
@@ -370,6 +378,16 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
                 score = max(score, (abs(tq - q)) / q_tol, abs(tv - v) / v_tol, 1.0 + max(ulo - u, u - uhi, 0.0))
             if best is None or score < best[0]:
                 best = (score, r, errors, fit[2])
+        return best
+
+    for t, joints in ticks:
+        best = best_fit(t, joints, 0.015)
+        if best is not None and max(best[2][:3]) > 0.0 and run.emulated:
+            # The emulated guest may have stood still between sampling the tick and writing its
+            # frames: the capture then comes later by as much, which the simulator's rows show.
+            stall = guest_stall_s(run, t - 0.1, t)
+            if stall > 0.0:
+                best = best_fit(t, joints, 0.015 + stall + 0.005) or best
         if best is None:
             uncovered += 1
             continue
@@ -416,8 +434,8 @@ def check_stream_timing(c, run, t0, t1):
     periods = [b - a for a, b in zip(sp, sp[1:])]
     beats = [f.t for f in run.heartbeats if t0 <= f.t <= t1]
     ref = [b - a for a, b in zip(beats, beats[1:])]
-    daemon_ok = fraction_within(periods, PERIOD_S, 0.001) >= 0.99
-    reference_ok = fraction_within(ref, 0.020, 0.001) >= 0.99
+    daemon_within = fraction_within(periods, PERIOD_S, 0.001)
+    reference_within = fraction_within(ref, 0.020, 0.001)
     c.note(f"setpoint stream (elevator): {describe(periods, PERIOD_S)}")
     c.note(f"reference (simulator heartbeat): {describe(ref, 0.020)}")
     last = run.daemon_status[-1] if run.daemon_status else None
@@ -425,13 +443,17 @@ def check_stream_timing(c, run, t0, t1):
         c.note(f"daemon's own streamer: wake-up lateness p50 {last['stream_jitter_p50_us']:.0f} us, "
                f"p99 {last['stream_jitter_p99_us']:.0f} us, max {last['stream_jitter_max_us']:.0f} us; "
                f"{last['stream_overruns']} missed periods")
-    if daemon_ok:
-        c.check(True, "setpoint periods: >= 99 % within +-1 ms")
-    elif reference_ok:
-        c.check(False, "setpoint periods: fewer than 99 % within +-1 ms while the guest kept the reference's time")
-    else:
-        c.note("TIMING NOT ASSESSED: the emulated guest missed the reference's period too "
-               "(host load; see the figures above)")
+    if not run.emulated:
+        c.check(daemon_within >= 0.99, "setpoint periods: >= 99 % within +-1 ms")
+        return
+    # In the emulated guest a hard figure measures the emulator, not the daemon (a bare timer
+    # there misses +-1 ms too): the stream is judged against the reference of the same run. Its
+    # share of late periods may be at most four times the reference's (it has four times as many
+    # periods for each stall of the guest) plus one point; a stream that keeps no period fails.
+    allowed_late = min(4 * (1 - reference_within) + 0.01, 0.5)
+    c.check(1 - daemon_within <= allowed_late,
+            f"setpoint periods (emulated guest, judged against the reference): {100 * (1 - daemon_within):.1f} % "
+            f"off by more than 1 ms, allowed {100 * allowed_late:.1f} % (the reference: {100 * (1 - reference_within):.1f} %)")
 
 
 def check_no_motion_between(c, run, t0, t1, what):
@@ -448,8 +470,10 @@ def check_holds_measured(c, run, t_from, what, must_differ_from=None):
     t = firsts[0][0]
     # The daemon holds the latest ARM_STATE it has taken in; the plant may have moved since
     # (sliding in neutral), and the daemon may not have read the newest message yet: any state
-    # published in the 60 ms before the hold is accepted, and the one that fits is reported.
-    recent = [m for m in run.states if t - 0.06 <= m["utime"] * 1e-6 <= t]
+    # published in the 60 ms before the hold is accepted (150 ms in the emulated guest, whose
+    # ordinary processes take messages in late), and the one that fits is reported.
+    window_s = 0.15 if run.emulated else 0.06
+    recent = [m for m in run.states if t - window_s <= m["utime"] * 1e-6 <= t]
     fits = [(max(abs(firsts[0][1] - m["elevator_m"]) / 0.002, abs(firsts[1][1] - m["arm_rad"]) / 0.004), m)
             for m in recent]
     score, m = min(fits, key=lambda x: x[0]) if fits else (float("inf"), None)
@@ -524,7 +548,7 @@ def moving_frames(run, t0, t1):
     return sorted((s for j in (0, 1) for s in frames_between(run, j, t0, t1) if abs(s[2]) >= 0.001), key=lambda s: s[0])
 
 
-def check_stop(c, run, what, t_cause, limit_s):
+def check_stop(c, run, what, t_cause, limit_s, taken_in_s=0.0):
     """Motion setpoints stop within limit_s of t_cause (the last heartbeat or ARM_STATE before the
     fault, or the disable frame): the last moving setpoint is no later than that. A stall of the
     emulated guest right then (measured on the simulator's 100 Hz loop) is added and reported."""
@@ -539,8 +563,9 @@ def check_stop(c, run, what, t_cause, limit_s):
         t_stop = b[0]
     stall = guest_stall_s(run, t_cause - 0.05, t_cause + limit_s + 0.05)
     late = t_stop - t_cause
-    c.check(late <= limit_s + stall, f"{what}: last moving setpoint {late * 1e3:.1f} ms after it "
-                                      f"(limit {limit_s * 1e3:.0f} ms + guest stall {stall * 1e3:.0f} ms)")
+    c.check(late <= limit_s + stall + taken_in_s,
+            f"{what}: last moving setpoint {late * 1e3:.1f} ms after it (limit {limit_s * 1e3:.0f} ms + guest stall "
+            f"{stall * 1e3:.0f} ms" + (f" + taken in {taken_in_s * 1e3:.1f} ms later" if taken_in_s else "") + ")")
     return t_stop
 
 
@@ -603,7 +628,8 @@ def check_faults(out):
         if t_stop is not None:
             quiet = [s for j in (0, 1) for s in frames_between(run, j, t_stop + 0.001, t_back)]
             c.check(not quiet, f"no setpoints at all while the heartbeat is stale ({len(quiet)} seen)")
-            last_cmd = [frames_between(run, j, t_stop - 0.001, t_stop + 0.001)[-1][1] for j in (0, 1)]
+            # Each joint's last command at the stop (the two frames of one tick may be apart).
+            last_cmd = [frames_between(run, j, t_stop - PERIOD_S, t_stop + 0.002)[-1][1] for j in (0, 1)]
             check_holds_measured(c, run, t_back, "heartbeat back", must_differ_from=last_cmd)
         final = run.final_status(ids["heartbeat"]) if ids["heartbeat"] else None
         c.note(f"request {ids['heartbeat']} ended with: {final['reason'] if final else '?'}")
@@ -644,7 +670,11 @@ def check_faults(out):
         t_last_state = max(t for t in state_t if t <= t_fault + 0.001)
         t_state_back = min(t for t in state_t if t >= t_resume - 0.001)
         c.check(not [t for t in state_t if t_last_state < t < t_state_back], "no ARM_STATE while silent")
-        t_stop = check_stop(c, run, "ARM_STATE silent", t_last_state, STATE_TIMEOUT_S + PERIOD_S)
+        # The daemon's state clock starts when it takes the message in, which the logger in the same
+        # guest did this much after it was published.
+        last_index = max(i for i, t in enumerate(state_t) if t <= t_fault + 0.001)
+        taken_in = max(run.state_logged[last_index] - t_last_state, 0.0)
+        t_stop = check_stop(c, run, "ARM_STATE silent", t_last_state, STATE_TIMEOUT_S + PERIOD_S, taken_in)
         statuses = status_frames(run, t_last_state + STATE_TIMEOUT_S + 0.05, t_state_back - 0.01)
         c.check(statuses and all(f.data[0] == 0 and f.data[5] & 0x01 for f in statuses),
                 f"status frames while the state is stale: mode 0 (no state) with fault bit 0x01 "

@@ -8,11 +8,7 @@ set -eu
 script_name=daemon_faults
 . "$FILES_DIR/hil_guest.sh"
 
-start_bus_capture
-start_lcm_log
-start_plant --initial 0.2,1.57
-start_daemon
-pids="$daemon $plant $logger $dump"
+start_system --initial 0.2,1.57
 
 during_motion heartbeat 1 1.97,5.17 0.3 "fault_if_moving heartbeat-stop" 0.2,1.57
 sleep 0.5

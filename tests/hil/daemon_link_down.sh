@@ -10,11 +10,7 @@ script_name=daemon_link_down
 # The link goes down only while the setpoints are moving.
 link_down() { moving_now && ip link set "$CAN_IFACE" down; }
 
-start_bus_capture
-start_lcm_log
-start_plant --initial 0.2,1.57
-start_daemon
-pids="$daemon $plant $logger $dump"
+start_system --initial 0.2,1.57
 
 during_motion link 1 1.97,5.17 0.3 link_down 0.2,1.57
 sleep 2

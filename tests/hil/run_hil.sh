@@ -3,7 +3,7 @@
 # root, the same command docs/testing.md shows, and checks its exit status and what came out.
 # Usage: tests/hil/run_hil.sh [--print] CASE BUILD_DIR
 #   CASE: prepare | smoke | failure_propagates | script_timeout | host_mode | plant_sim |
-#         daemon_motion | daemon_faults | daemon_link_down
+#         daemon_motion | daemon_faults | daemon_link_down | daemon_hang
 #   --print: only print the tools/vcan-vm command of the case (for the docs check)
 set -uo pipefail
 
@@ -23,7 +23,27 @@ daemon_bins=(--bin "$build/daemon/app/cyber-plannerd" --bin "$build/tools/cyber_
 out=$build/hil/$1
 log=$build/hil/$1.log
 
+# One VM run of a daemon case, boot included: its scripts take 15-70 s in the emulated guest; the
+# limit allows for a guest several times slower than that (docs/testing.md).
+daemon_timeout_s=300
+
 fail() { echo "run_hil: FAIL ($1): ${*:2}" >&2; exit 1; }
+
+# What a daemon case left in DIR, printed when it failed or timed out, so the ctest output has it.
+show_evidence() {
+  local dir=$1 f
+  echo "run_hil: evidence from $dir"
+  [[ -s $dir/failure.txt ]] && echo "  failed: $(cat "$dir/failure.txt")"
+  for f in script.log daemon.log plant_sim.err goal*.out cpu.txt; do
+    [[ -s $dir/$f ]] || continue
+    echo "  --- $f (last 40 lines)"
+    tail -n 40 "$dir/$f" | sed 's/^/  | /'
+  done
+  if [[ -s $dir/bus.log ]]; then
+    echo "  --- bus.log: $(wc -l <"$dir/bus.log") frames, the last 10"
+    tail -n 10 "$dir/bus.log" | sed 's/^/  | /'
+  fi
+}
 
 # The tools/vcan-vm arguments of each case, in the array args.
 args_for() {
@@ -43,12 +63,16 @@ args_for() {
         --out "$out" --run tests/hil/plant_sim.sh)
       ;;
     daemon_motion)
-      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml" --out "$out"
-        --run tests/hil/daemon_motion.sh)
+      args=(--auto --timeout "$daemon_timeout_s" "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml"
+        --out "$out" --run tests/hil/daemon_motion.sh)
       ;;
     daemon_faults | daemon_link_down)
-      args=(--auto "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml" --out "$out"
-        --run "tests/hil/$1.sh")
+      args=(--auto --timeout "$daemon_timeout_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+        --out "$out" --run "tests/hil/$1.sh")
+      ;;
+    daemon_hang)
+      args=(--auto --timeout 150 --script-timeout 40 "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+        --out "$out" --run tests/hil/daemon_hang.sh)
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
   esac
@@ -130,7 +154,9 @@ case $1 in
     for attempt in 1 2 3; do
       vcan_vm
       verdict=0
-      if [[ $status -ne 0 ]]; then
+      if [[ $status -eq 124 ]]; then
+        verdict="the guest script timed out"
+      elif [[ $status -ne 0 ]]; then
         verdict="the guest script failed"
       elif ! tests/hil/daemon_check.py "${1#daemon_}" "$out" | tee "$out/check.txt"; then
         verdict="the results do not hold (see the checks above)"
@@ -140,8 +166,21 @@ case $1 in
         echo "run_hil: attempt $attempt void, the guest stalled: $verdict; running it again"
         continue
       fi
+      show_evidence "$out"
       fail "$1" "$verdict"
     done
+    ;;
+  daemon_hang)
+    # The runner's own test: a guest script that hangs with the daemon running must end as timed
+    # out, and its evidence (the daemon's log, the step it hung in) must reach this output.
+    mkdir -p "$build/hil"
+    tests/hil/daemon_check.py hil-config config/reefscape-2025.toml "$build/hil/robot-slow.toml" ||
+      fail "$1" "cannot write the test config"
+    vcan_vm
+    show_evidence "$out"
+    [[ $status -eq 124 ]] || fail daemon_hang "expected status 124 from a hung script, got $status"
+    grep -q "FAIL at step 'hanging on purpose" "$out/failure.txt" || fail daemon_hang "the failing step is not named"
+    grep -q "cyber-plannerd: robot" "$out/daemon.log" || fail daemon_hang "the daemon's log did not reach the host"
     ;;
 esac
 echo "run_hil: $1 passed"

@@ -1,7 +1,7 @@
 // cyber-test-peer: the other side of cyber-plannerd for the integration tests (python3 here has
 // no lcm module). One subcommand per job:
 //   state   --at E,A [--rate HZ] [--seconds S]   publish ARM_STATE, following the ARM_SETPOINT echo
-//   flood   --to E,A --to E,A [--rate HZ] [--seconds S] [--first-id N]   publish goals
+//   flood   --to E,A --to E,A --count N [--rate HZ] [--first-id N]   publish exactly N goals, paced
 //   garbage [--count N]                           undecodable bytes on ARM_GOAL and ARM_STATE
 //   watch   --first-id N --count K [--timeout S]  wait until each id has one final status; print tallies
 //   status  [--timeout S]                         print one ARM_DAEMON_STATUS as key=value lines
@@ -86,14 +86,14 @@ std::int64_t nowMicros() {
       .count();
 }
 
-// Paces a loop at rate_hz for `seconds` (or until SIGTERM); calls step(k) each period and lets
-// LCM handle incoming messages in between.
+// Paces a loop at rate_hz for `seconds` or `max_steps` steps, whichever ends first (or until
+// SIGTERM); calls step(k) each period and lets LCM handle incoming messages in between.
 template <class Step>
-void paced(lcm::LCM& lcm, double rate_hz, double seconds, Step step) {
+void paced(lcm::LCM& lcm, double rate_hz, double seconds, Step step, long long max_steps = -1) {
   const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / rate_hz));
   const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
   auto next = Clock::now();
-  for (long long k = 0; !g_stop && Clock::now() < end; ++k) {
+  for (long long k = 0; !g_stop && Clock::now() < end && (max_steps < 0 || k < max_steps); ++k) {
     step(k);
     next += period;
     while (lcm.handleTimeout(0) > 0) {
@@ -137,7 +137,7 @@ int runFlood(lcm::LCM& lcm, const Args& args) {
     goal.arm_rad = target.second;
     lcm.publish("ARM_GOAL", &goal);
     ++sent;
-  });
+  }, args.count);
   std::printf("sent %lld goals, ids %lld..%lld\n", sent, args.first_id, args.first_id + sent - 1);
   return 0;
 }

@@ -73,7 +73,12 @@ done
 # Unpacked into a scratch root: the programs run from there.
 run_shown "$unpack"
 root=$build/package/root
-cmp -s "$root/etc/cyber-planner/robot.toml" config/reefscape-2025.toml || fail "robot.toml differs from the default"
+# The installed robot.toml is the default with the robot-LAN URL (ttl=1), and nothing else changed.
+sed 's|^lcm_url = "udpm://239.255.76.67:7667?ttl=0"$|lcm_url = "udpm://239.255.76.67:7667?ttl=1"|' \
+  config/reefscape-2025.toml >"$build/package/robot-lan.toml"
+grep -q 'ttl=1"$' "$build/package/robot-lan.toml" || fail "config/reefscape-2025.toml has no ttl=0 lcm_url line"
+cmp -s "$root/etc/cyber-planner/robot.toml" "$build/package/robot-lan.toml" ||
+  fail "robot.toml is not the default with lcm_url ttl=1"
 for program in "${programs[@]}"; do
   echo "+ $root/usr/bin/$program --help"
   out=$("$root/usr/bin/$program" --help 2>&1) || fail "$program --help exited with status $?: $out"

@@ -181,6 +181,7 @@ DaemonSettings readDaemon(TableReader d) {
   s.planning_budget_s = d.number("planning_budget_s", Bounds{0.0, 1.0});
   s.status_rate_hz = d.number("status_rate_hz", Bounds{0.1, 100.0});
   s.setpoint_echo_rate_hz = d.number("setpoint_echo_rate_hz", Bounds{0.1, 1000.0});
+  if (d.has("setpoint_echo_full_rate")) s.setpoint_echo_full_rate = d.boolean("setpoint_echo_full_rate");
   s.trajectory_step_s = d.number("trajectory_step_s", Bounds{0.001, 1.0});
   s.log_level = d.string("log_level");
   static const char* kLevels[] = {"trace", "debug", "info", "warn", "error", "critical", "off"};

@@ -3,8 +3,9 @@
 namespace cyber::daemon::io {
 
 std::string usage() {
-  return "usage: cyber-plannerd --config FILE [--can IFACE|none] [--lcm-url URL]\n"
-         "  --config FILE    robot and daemon configuration (TOML, see docs/configuration.md)\n"
+  return "usage: cyber-plannerd [--config FILE] [--can IFACE|none] [--lcm-url URL]\n"
+         "  --config FILE    robot and daemon configuration (TOML, see docs/configuration.md);\n"
+         "                   default: the embedded reference robot (config/reefscape-2025.toml)\n"
          "  --can IFACE      SocketCAN interface for setpoints (default: [daemon] can_interface);\n"
          "                   'none' = simulation: no CAN writes, robot-enabled gate open\n"
          "  --lcm-url URL    LCM URL (default: [daemon] lcm_url)\n"
@@ -33,7 +34,6 @@ std::variant<CommandLine, CommandLineError> parseCommandLine(const std::vector<s
     }
     return CommandLineError{"unknown argument '" + arg + "'"};
   }
-  if (out.config_path.empty()) return CommandLineError{"--config FILE is required"};
   return out;
 }
 

@@ -130,7 +130,12 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
   if (can_) loop_.add(can_->fd(), [this] { onCanReadable(); });
   if (signals_ != nullptr) loop_.add(signals_->fd(), [this] { onSignal(); });
   loop_.add(worker_.wakeFd(), [this] { onPlanDone(); });
-  loop_.add(channels_.wake.fd(), [this] { onStreamerWake(); });
+  // setpoint_echo_full_rate: the streamer wakes the loop after every tick, which echoes it.
+  channels_.wake_on_setpoints.store(options_.settings.setpoint_echo_full_rate);
+  loop_.add(channels_.wake.fd(), [this] {
+    onStreamerWake();
+    if (options_.settings.setpoint_echo_full_rate) publishSetpointEcho();
+  });
   loop_.add(status_timer_.fd(), [this] { onStatusTimer(); });
   loop_.add(echo_timer_.fd(), [this] { onEchoTimer(); });
   loop_.add(exit_timer_.fd(), [this] {
@@ -484,6 +489,10 @@ void Daemon::publishDaemonStatus(MonoNs now) {
 
 void Daemon::onEchoTimer() {
   echo_timer_.consume();
+  publishSetpointEcho();
+}
+
+void Daemon::publishSetpointEcho() {
   const StreamSnapshot snapshot = channels_.snapshot.load();
   if (snapshot.ticks == last_echo_tick_ || !snapshot.setpoints_written) return;
   last_echo_tick_ = snapshot.ticks;

@@ -114,6 +114,7 @@ void StreamerThread::run() {
       last_watchdog_ns = now;
     }
     if (observer_ != nullptr) observer_(observer_context_, now, out, report);
+    if (report.wire.written && channels_.wake_on_setpoints.load(std::memory_order_relaxed)) wake = true;
     if (wake) channels_.wake.signal();
   }
   if (Program* left = streamer_.releaseProgram()) channels_.retired.push(left);

@@ -79,6 +79,16 @@ TEST(LoadConfig, LoadsTheSameFromAFile) {
   std::remove(path.c_str());
 }
 
+// Optional, so configurations written before it still load; off unless set.
+TEST(LoadConfig, SetpointEchoFullRateIsOptionalAndOffByDefault) {
+  EXPECT_FALSE(loadEmbeddedDefaultConfig().daemon.setpoint_echo_full_rate);
+  const std::string without = mutated("setpoint_echo_full_rate = false", "");
+  EXPECT_EQ(without.find("setpoint_echo_full_rate"), std::string::npos);
+  EXPECT_FALSE(parseConfig(without, "robot.toml").daemon.setpoint_echo_full_rate);
+  EXPECT_TRUE(parseConfig(mutated("setpoint_echo_full_rate = false", "setpoint_echo_full_rate = true"), "robot.toml")
+                  .daemon.setpoint_echo_full_rate);
+}
+
 TEST(LoadConfig, MissingFileIsAnError) {
   try {
     (void)loadConfigFile("/nonexistent/robot.toml");
@@ -126,6 +136,8 @@ const BadCase kBadCases[] = {
     {"InvertedRange", "max_m = 2.0", "max_m = -1.0", "joints.elevator.max_m", "out of range"},
     {"ZeroGearing", "gearing = 200.0", "gearing = 0.0", "drives.elevator.gearing", "out of range"},
     {"StreamRate", "stream_rate_hz = 200.0", "stream_rate_hz = 0.0", "daemon.stream_rate_hz", "out of range"},
+    {"FullRateEchoType", "setpoint_echo_full_rate = false", "setpoint_echo_full_rate = 1",
+     "daemon.setpoint_echo_full_rate", "expected true or false"},
     {"DeviceNumber", "elevator = 1\n", "elevator = 64\n", "daemon.devices.elevator", "out of range"},
     {"NonConvex", "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.248, 0.514], [0.0, 0.454]]",
      "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.1, 0.1], [0.248, 0.514], [0.0, 0.454]]", "obstacles.l1_trough",

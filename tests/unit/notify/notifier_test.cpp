@@ -138,13 +138,21 @@ TEST(Notifier, BadSocketNamesGiveADisabledNotifier) {
   EXPECT_EQ(default_constructed.stopping(), SendResult::disabled);
 }
 
+// `first` followed by `length` 'a's. (Built in place: g++ 12 at -O3 reports a false
+// -Wrestrict inside "x" + std::string(...).)
+std::string nameOfLength(char first, std::size_t length) {
+  std::string name(length + 1, 'a');
+  name[0] = first;
+  return name;
+}
+
 TEST(Notifier, LongestPathThatFitsIsAccepted) {
   // sun_path is 108 bytes: a path of 107 characters plus its NUL fits, 108 does not.
   const std::size_t capacity = sizeof(sockaddr_un{}.sun_path);
-  EXPECT_TRUE(Notifier("/" + std::string(capacity - 2, 'a')).enabled());
-  EXPECT_FALSE(Notifier("/" + std::string(capacity - 1, 'a')).enabled());
+  EXPECT_TRUE(Notifier(nameOfLength('/', capacity - 2)).enabled());
+  EXPECT_FALSE(Notifier(nameOfLength('/', capacity - 1)).enabled());
   // An abstract name needs no NUL: '@' plus 107 characters fills sun_path exactly.
-  EXPECT_TRUE(Notifier("@" + std::string(capacity - 1, 'a')).enabled());
+  EXPECT_TRUE(Notifier(nameOfLength('@', capacity - 1)).enabled());
 }
 
 TEST(Notifier, NobodyListeningIsAFailureNotAnException) {

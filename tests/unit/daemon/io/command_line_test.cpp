@@ -15,10 +15,11 @@ TEST(CommandLine, ParsesEveryOption) {
   EXPECT_FALSE(line.help);
 }
 
-TEST(CommandLine, ConfigIsRequiredAndUnknownArgumentsAreNamed) {
-  auto missing = parseCommandLine({"--can", "vcan0"});
-  ASSERT_TRUE(std::holds_alternative<CommandLineError>(missing));
-  EXPECT_EQ(std::get<CommandLineError>(missing).message, "--config FILE is required");
+TEST(CommandLine, ConfigIsOptionalAndUnknownArgumentsAreNamed) {
+  // No --config: an empty path, which main() reads as the embedded default configuration.
+  auto defaulted = parseCommandLine({"--can", "vcan0"});
+  ASSERT_TRUE(std::holds_alternative<CommandLine>(defaulted));
+  EXPECT_EQ(std::get<CommandLine>(defaulted).config_path, "");
   auto unknown = parseCommandLine({"--config", "a.toml", "--fast"});
   ASSERT_TRUE(std::holds_alternative<CommandLineError>(unknown));
   EXPECT_EQ(std::get<CommandLineError>(unknown).message, "unknown argument '--fast'");

@@ -95,10 +95,13 @@ struct Listener {
 
 class DaemonMemq : public ::testing::Test {
  protected:
-  DaemonMemq() : planning(cyber::test::referenceModel()) {
+  // full_rate_echo: setpoint_echo_full_rate with an echo timer too slow to publish in a test.
+  explicit DaemonMemq(bool full_rate_echo = false) : planning(cyber::test::referenceModel()) {
     DaemonOptions options;
     options.settings.lcm_url = "memq://";
     options.simulate_can = true;
+    options.settings.setpoint_echo_full_rate = full_rate_echo;
+    if (full_rate_echo) options.settings.setpoint_echo_rate_hz = 0.1;
     daemon = std::make_unique<Daemon>(cyber::test::referenceModel(), options, planning, nullptr);
     runner = std::async(std::launch::async, [this] { return daemon->run(); });
     onLoop([this] {
@@ -198,6 +201,27 @@ TEST_F(DaemonMemq, AGoalIsAnsweredAcceptedPlanningExecutingDoneWithATrajectoryAn
   EXPECT_TRUE(moving_echo);
   EXPECT_NEAR(listener.setpoints.back().arm_rad, 2.0, 1e-5);
   EXPECT_EQ(listener.setpoints.back().arm_radps, 0.0);
+}
+
+class DaemonMemqFullRateEcho : public DaemonMemq {
+ protected:
+  DaemonMemqFullRateEcho() : DaemonMemq(true) {}
+};
+
+// Desktop simulation (docs/roborio.md): ARM_SETPOINT after every stream tick. The 0.1 Hz echo timer
+// alone would publish the first one after 10 s, beyond waitFor's 5 s.
+TEST_F(DaemonMemqFullRateEcho, ArmSetpointIsPublishedForEveryStreamTick) {
+  ASSERT_TRUE(listener.waitFor([&] { return listener.setpoints.size() >= 50; }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  std::size_t consecutive = 0;
+  for (std::size_t i = 1; i < listener.setpoints.size(); ++i) {
+    const int step = (listener.setpoints[i].elevator_sequence - listener.setpoints[i - 1].elevator_sequence) & 0xFF;
+    EXPECT_NE(step, 0) << "tick echoed twice at message " << i;
+    consecutive += step == 1 ? 1 : 0;
+  }
+  // Each message is a new tick; most follow the previous tick directly (a busy machine may
+  // make the loop skip one now and then).
+  EXPECT_GT(consecutive, listener.setpoints.size() / 2);
 }
 
 TEST_F(DaemonMemq, BadGoalsAreRejectedWithReasons) {

@@ -30,6 +30,9 @@ struct DaemonSettings {
   double planning_budget_s = 0.03;     // how far ahead a mid-motion replan starts
   double status_rate_hz = 10.0;
   double setpoint_echo_rate_hz = 50.0; // ARM_SETPOINT copies for lcm-spy
+  // ARM_SETPOINT after every stream tick instead (desktop simulation with --can none, where the
+  // robot program takes its setpoints from LCM: docs/roborio.md). Optional key, default off.
+  bool setpoint_echo_full_rate = false;
   double trajectory_step_s = 0.01;     // ARM_TRAJECTORY sample step
   std::string log_level = "info";
   DeviceNumbers devices;

@@ -1,5 +1,5 @@
 #pragma once
-// cyber-plannerd --config FILE [--can IFACE|none] [--lcm-url URL] [--help]
+// cyber-plannerd [--config FILE] [--can IFACE|none] [--lcm-url URL] [--help]
 
 #include <optional>
 #include <variant>
@@ -9,7 +9,7 @@
 namespace cyber::daemon::io {
 
 struct CommandLine {
-  std::string config_path;
+  std::string config_path;  // empty: the embedded default configuration
   std::optional<std::string> can_interface;  // "none" = simulation
   std::optional<std::string> lcm_url;
   bool help = false;

@@ -89,6 +89,7 @@ class Daemon final : private CoordinatorSink {
   void onStreamerWake();
   void onStatusTimer();
   void onEchoTimer();
+  void publishSetpointEcho();  // the latest tick on ARM_SETPOINT, once per tick
   void onSignal();
   void beginShutdown(const char* why);
   void publishDaemonStatus(MonoNs now);

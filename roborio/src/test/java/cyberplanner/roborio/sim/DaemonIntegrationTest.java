@@ -1,0 +1,163 @@
+package cyberplanner.roborio.sim;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import cyberplanner.arm_setpoint_t;
+import cyberplanner.roborio.ArmState;
+import cyberplanner.roborio.Channels;
+import cyberplanner.roborio.CyberPlannerClient;
+import cyberplanner.roborio.Joint;
+import cyberplanner.roborio.LcmSetpointSource;
+import cyberplanner.roborio.MoveHandle;
+import cyberplanner.roborio.MoveState;
+import cyberplanner.roborio.Pose;
+import cyberplanner.roborio.SetpointGuard;
+import cyberplanner.roborio.can.DaemonMode;
+import cyberplanner.roborio.wpilib.CyberArmSubsystem;
+import cyberplanner.roborio.wpilib.HoldFallback;
+import cyberplanner.roborio.wpilib.MoveToPoseCommand;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import lcm.lcm.LCM;
+import org.junit.jupiter.api.MethodOrderer;
+import org.junit.jupiter.api.Order;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.TestMethodOrder;
+
+/**
+ * The Java side against the real cyber-plannerd (--can none, setpoint_echo_full_rate = true), in
+ * the network namespace tests/integration/roborio_integration_test.sh sets up. Tagged "daemon":
+ * the unit run excludes it. Poses: tests/support/public_moves.cpp (the reference robot's), none of
+ * the "no path" ones (coral L4, algae HOLD_HIGH; docs/performance.md).
+ */
+@Tag("daemon")
+@TestMethodOrder(MethodOrderer.OrderAnnotation.class)
+class DaemonIntegrationTest {
+  static final String URL = System.getProperty("cyber.lcm.url", "udpm://239.255.76.67:7667?ttl=0");
+  static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
+  static final double POSITION_TOLERANCE_M = 0.002;
+  static final double ANGLE_TOLERANCE_RAD = 0.005;
+
+  static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
+    for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
+    assertTrue(client.isDaemonAlive(0.5), "no ARM_DAEMON_STATUS within 60 s");
+  }
+
+  @Test
+  @Order(1)
+  void aJavaClientGetsAMoveDoneWithSetpointsOnArmSetpoint() throws Exception {
+    try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 5000)) {
+      List<arm_setpoint_t> setpoints = new CopyOnWriteArrayList<>();
+      client.setSetpointListener(setpoints::add);
+      awaitDaemon(client);
+      Thread publisher = new Thread(() -> {
+        while (!Thread.currentThread().isInterrupted()) {
+          client.publishState(0.58, 0.0, 2.97, 0.0, false, false);  // at rest at INTAKE
+          try {
+            Thread.sleep(10);
+          } catch (InterruptedException e) {
+            return;
+          }
+        }
+      });
+      publisher.start();
+      try {
+        for (int i = 0; i < 100 && client.daemonMode() != DaemonMode.HOLDING; ++i) Thread.sleep(50);
+        assertEquals(DaemonMode.HOLDING, client.daemonMode());
+        MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
+        MoveState end = move.await(30);
+        System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
+        assertEquals(MoveState.DONE, end, move.toString());
+        assertTrue(move.durationS() > 0);
+        long moving = setpoints.stream()
+            .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
+        arm_setpoint_t last = setpoints.get(setpoints.size() - 1);
+        System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
+        // Full-rate echo: about one per 5 ms stream period over the trajectory.
+        assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
+        assertEquals(1.22, last.elevator_m, 1e-5);
+        assertEquals(5.69, last.arm_rad, 1e-5);
+      } finally {
+        publisher.interrupt();
+        publisher.join();
+      }
+    }
+  }
+
+  @Test
+  @Order(2)
+  void aSimulatedRobotFollowsASequenceOfMovesWithAndWithoutGamePieces() throws Exception {
+    // From L3, where the client's move left the daemon holding.
+    List<Pose> sequence = List.of(
+        Pose.of(0.20, 1.57),                 // none: L3 -> STOW
+        Pose.of(0.58, 2.97),                 // none: STOW -> INTAKE
+        Pose.of(0.78, 6.09).withCoral(),     // coral: INTAKE -> L2
+        Pose.of(1.27, 5.79).withCoral(),     // coral: L2 -> L3
+        Pose.of(0.20, 1.57).withCoral(),     // coral: L3 -> STOW
+        Pose.of(1.93, 1.71).withAlgae(),     // algae: STOW -> NET
+        Pose.of(0.20, 1.57).withAlgae(),     // algae: NET -> STOW
+        Pose.of(1.97, 5.17));                // none: STOW -> L4
+    SimulatedMechanism mechanism = new SimulatedMechanism(1.22, 5.69);
+    try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
+      awaitDaemon(client);
+      SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+      CyberArmSubsystem subsystem = new CyberArmSubsystem(client, new LcmSetpointSource(client), mechanism.elevator,
+          mechanism.arm, mechanism::state, guard, new HoldFallback(mechanism.elevator, mechanism.arm),
+          () -> System.nanoTime() / 1000);
+      RobotLoop loop = new RobotLoop(subsystem, mechanism);
+      loop.runFor(1.0);  // the daemon takes the state and holds it
+      assertEquals(SetpointGuard.Verdict.USE, subsystem.verdict());
+      for (Pose goal : sequence) {
+        mechanism.setPieces(goal.heldCoral(), goal.heldAlgae());
+        MoveToPoseCommand command = subsystem.moveToCommand(goal);
+        command.initialize();
+        double waited = 0;
+        while (!command.isFinished() && waited < 30) {
+          loop.runFor(LOOP_S);
+          waited += LOOP_S;
+        }
+        assertTrue(command.succeeded(), goal + ": " + command.move());
+        assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
+        loop.runFor(0.3);  // settle on the hold setpoints
+        ArmState at = mechanism.state();
+        double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
+        double armError = Math.abs(at.armRad() - goal.armRad());
+        System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s%n", goal,
+            command.move().durationS(), elevatorError, armError, subsystem.verdict());
+        assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
+        assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+      }
+      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d%n",
+          sequence.size(), guard.lostFrames(Joint.ELEVATOR), guard.lostFrames(Joint.ARM), loop.fallbackLoops,
+          loop.loops);
+    }
+  }
+
+  /** The robot's main loop at 200 Hz in real time: subsystem.periodic(), then the model. */
+  static final class RobotLoop {
+    final CyberArmSubsystem subsystem;
+    final SimulatedMechanism mechanism;
+    long next = System.nanoTime();
+    long loops;
+    long fallbackLoops;
+
+    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism) {
+      this.subsystem = subsystem;
+      this.mechanism = mechanism;
+    }
+
+    void runFor(double seconds) throws InterruptedException {
+      for (int i = 0; i < Math.round(seconds / LOOP_S); ++i) {
+        subsystem.periodic();
+        if (subsystem.verdict() != SetpointGuard.Verdict.USE) fallbackLoops++;
+        loops++;
+        mechanism.step(LOOP_S);
+        next += (long) (LOOP_S * 1e9);
+        long sleep = next - System.nanoTime();
+        if (sleep > 0) Thread.sleep(sleep / 1_000_000, (int) (sleep % 1_000_000));
+      }
+    }
+  }
+}
