@@ -1,7 +1,7 @@
 // Fuzz target: the command-line parsers of cyber-plannerd, cyber-plan, cyber-goal and
 // cyber-plant-sim, each on the same argument list (the input cut at NUL bytes and newlines).
-// Properties: no crash, hang or UB; every rejection carries a message; what cyber-plan and the
-// daemon accept is usable (finite poses, a config path).
+// Properties: no crash, hang or UB; every rejection carries a message; what cyber-plan,
+// cyber-goal and cyber-plant-sim accept is usable (finite poses, a positive timeout, rates in range).
 
 #include <string_view>
 #include <variant>
@@ -18,12 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<std::string> args =
       cyber::fuzz::splitArguments(std::string_view(reinterpret_cast<const char*>(data), size));
 
+  // (Without --config the daemon uses its embedded robot, so any accepted line is usable.)
   const auto daemon = cyber::daemon::io::parseCommandLine(args);
   if (const auto* error = std::get_if<cyber::daemon::io::CommandLineError>(&daemon)) {
     CYBER_FUZZ_CHECK(!error->message.empty());
-  } else {
-    const auto& command = std::get<cyber::daemon::io::CommandLine>(daemon);
-    CYBER_FUZZ_CHECK(command.help || !command.config_path.empty());
   }
 
   std::string error;
