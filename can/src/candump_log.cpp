@@ -170,6 +170,11 @@ Result<LogRecord, LogParseError> parseLogLine(std::string_view line) {
   const std::string_view frame_token = nextToken(rest);
   if (frame_token.empty()) return fail("expected: (time) interface id#data");
   if (iface.size() > kMaxIfaceLength) return fail("interface name longer than 15 characters");
+  // Blanks end the token; any other control character (a line break inside the line, found by
+  // tests/fuzz/candump_line) would make a record that formats as something else.
+  for (const char c : iface) {
+    if (c <= ' ' || c > '~') return fail("interface name with a character that is not printable ASCII");
+  }
   const std::string_view direction = nextToken(rest);
   if (!direction.empty() && direction != "T" && direction != "R") {
     return fail("unexpected text after the frame");

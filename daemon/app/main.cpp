@@ -15,6 +15,7 @@
 #include "cyber/daemon/io/daemon.hpp"
 #include "cyber/daemon/io/fd.hpp"
 #include "cyber/daemon/io/logging.hpp"
+#include "cyber/daemon/io/process_signals.hpp"
 #include "cyber/daemon/motion_planner_service.hpp"
 
 namespace {
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   // Before any thread exists, so every thread inherits the blocked mask and the signals arrive
   // only through this descriptor.
   daemon::io::SignalFd signals({SIGTERM, SIGINT});
+  daemon::io::ignoreHangupAndPipe();
 
   config::Config config;
   try {

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The real cyber-plannerd (--can none) and real LCM peers in a network namespace of their own.
-#   daemon_integration_test.sh CASE DAEMON GOAL_TOOL PEER CONFIG
-# CASE: goal_done | bad_goals | flood | burst | garbage | sigterm | startup_errors
+#   daemon_integration_test.sh CASE DAEMON GOAL_TOOL PEER CONFIG [WALL_CLOCK_JUMP_SHIM]
+# CASE: goal_done | bad_goals | flood | burst | garbage | sigterm | startup_errors | sighup |
+#       lcm_lost | logs_full | wall_clock_jump   (the last four: docs/operations.md, "Faults")
 # Needs root (ip netns). The namespace and every process started here are removed on exit, also
 # on failure.
 set -euo pipefail
 
-case_name=$1 daemon=$2 goal=$3 peer=$4 config=$5
+case_name=$1 daemon=$2 goal=$3 peer=$4 config=$5 jump_shim=${6:-}
 ns=cyber-test-$$
 tmp=$(mktemp -d)
 pids=()
@@ -38,9 +39,12 @@ setup_namespace() {
 
 # Starts the daemon and a state publisher that follows the setpoint echo from STOW, then waits
 # until the daemon holds (ARM_DAEMON_STATUS mode 1).
+# DAEMON_LOG (default $tmp/daemon.log) is where its stdout and stderr go; DAEMON_ENV (VAR=VALUE
+# words) is its extra environment.
 start_daemon() {
   setup_namespace
-  ip netns exec "$ns" "$daemon" --config "$config" --can none >"$tmp/daemon.log" 2>&1 &
+  # shellcheck disable=SC2086
+  ip netns exec "$ns" env ${DAEMON_ENV:-} "$daemon" --config "$config" --can none >"${DAEMON_LOG:-$tmp/daemon.log}" 2>&1 &
   daemon_pid=$!
   pids+=("$daemon_pid")
   ip netns exec "$ns" "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
@@ -70,6 +74,27 @@ expect_goal() {
   cat "$tmp/goal.out"
   [ "$rc" -eq "$want" ] || fail "cyber-goal $* exited $rc, expected $want"
   grep -q -- "$pattern" "$tmp/goal.out" || fail "cyber-goal $* printed no line matching '$pattern'"
+}
+
+# start_long_goal ID: cyber-goal in the background (goal_pid, output in $tmp/goal.out) for a long
+# move, returning once the move executes.
+start_long_goal() {
+  ip netns exec "$ns" "$goal" --to 1.97,5.17 --id "$1" --timeout 30 >"$tmp/goal.out" 2>&1 &
+  goal_pid=$!
+  pids+=("$goal_pid")
+  for _ in $(seq 1 300); do
+    grep -q "request $1 executing" "$tmp/goal.out" && return 0
+    sleep 0.01
+  done
+  fail "the goal never started executing"
+}
+
+# SIGTERM, and the daemon exits 0.
+stop_daemon_cleanly() {
+  kill -TERM "$daemon_pid"
+  local rc=0
+  wait "$daemon_pid" || rc=$?
+  [ "$rc" -eq 0 ] || fail "exit code $rc after SIGTERM"
 }
 
 case "$case_name" in
@@ -154,14 +179,7 @@ case "$case_name" in
 
   sigterm)
     start_daemon
-    ip netns exec "$ns" "$goal" --to 1.97,5.17 --id 41 --timeout 30 >"$tmp/goal.out" 2>&1 &
-    goal_pid=$!
-    pids+=("$goal_pid")
-    for _ in $(seq 1 300); do
-      grep -q "request 41 executing" "$tmp/goal.out" && break
-      sleep 0.01
-    done
-    grep -q "request 41 executing" "$tmp/goal.out" || fail "the goal never started executing"
+    start_long_goal 41
     start_ns=$(date +%s%N)
     kill -TERM "$daemon_pid"
     rc=0
@@ -176,6 +194,76 @@ case "$case_name" in
     [ "$goal_rc" -eq 5 ] || fail "cyber-goal exited $goal_rc, expected 5 (cancelled)"
     grep -q "cancelled: daemon shutting down" "$tmp/goal.out" || fail "no cancellation with a reason"
     grep -q "SIGTERM: holding the commanded position" "$tmp/daemon.log" || fail "no shutdown line in the log"
+    ;;
+
+  sighup)
+    # SIGHUP is ignored (docs/operations.md, "Signals"): a motion in progress finishes.
+    start_daemon
+    start_long_goal 61
+    kill -HUP "$daemon_pid"
+    goal_rc=0
+    wait "$goal_pid" || goal_rc=$?
+    cat "$tmp/goal.out"
+    [ "$goal_rc" -eq 0 ] || fail "cyber-goal exited $goal_rc after SIGHUP, expected 0 (done)"
+    kill -0 "$daemon_pid" || fail "SIGHUP killed the daemon"
+    stop_daemon_cleanly
+    ;;
+
+  lcm_lost)
+    # The network goes away under a running daemon (the multicast route is deleted): publishing
+    # fails and is counted, nothing stops; when the route is back, it serves again.
+    start_daemon
+    ip -n "$ns" route del 224.0.0.0/4 dev lo
+    sleep 1
+    kill -0 "$daemon_pid" || fail "the daemon died without a route"
+    ip -n "$ns" route add 224.0.0.0/4 dev lo
+    failures=$(status_value publish_failures)
+    echo "publish_failures=$failures while the route was gone"
+    [ "$failures" -ge 5 ] || fail "publish failures not counted ($failures)"
+    expect_goal 0 "request 71 done" --to 0.58,2.97 --id 71
+    stop_daemon_cleanly
+    ;;
+
+  logs_full)
+    # Logs that cannot be written: stderr on a full disk (/dev/full), then on a pipe whose reader
+    # has gone (SIGPIPE is ignored). The daemon serves and stops cleanly either way.
+    DAEMON_LOG=/dev/full start_daemon
+    expect_goal 0 "request 81 done" --to 1.97,5.17 --id 81
+    expect_goal 3 "rejected" --to 5,1.0 --id 82
+    stop_daemon_cleanly
+    ip netns del "$ns"
+    mkfifo "$tmp/log.fifo"
+    cat "$tmp/log.fifo" >/dev/null &
+    reader_pid=$!
+    DAEMON_LOG=$tmp/log.fifo start_daemon
+    kill "$reader_pid"
+    wait "$reader_pid" 2>/dev/null || true
+    expect_goal 3 "rejected" --to nan,1.0 --id 83
+    expect_goal 0 "request 84 done" --to 0.20,1.57 --id 84
+    stop_daemon_cleanly
+    ;;
+
+  wall_clock_jump)
+    # The daemon's wall clock jumps by +1 h, -1 h and +1 year every 0.3 s (an LD_PRELOAD shim;
+    # the peers' clocks do not): motions, state ages and the stream do not notice, since they run
+    # on CLOCK_MONOTONIC; only the utime stamps jump.
+    # A sanitized daemon needs its ASan runtime first in the preload list.
+    preload=$(ldd "$daemon" | awk '/libasan/ { printf "%s:", $3 }')$jump_shim
+    DAEMON_ENV="LD_PRELOAD=$preload CYBER_WALL_JUMP_PERIOD_S=0.3" start_daemon
+    expect_goal 0 "request 91 done" --to 1.97,5.17 --id 91
+    expect_goal 0 "request 92 done" --to 0.20,1.57 --id 92
+    jumped=0
+    for _ in $(seq 1 8); do
+      skew_s=$(( ($(status_value utime) - $(date +%s%6N)) / 1000000 ))
+      [ "${skew_s#-}" -ge 3000 ] && jumped=1
+      sleep 0.15
+    done
+    [ "$jumped" -eq 1 ] || fail "the daemon's wall clock never jumped (is the shim loaded?)"
+    [ "$(status_value mode)" -eq 1 ] || fail "not holding after the jumps"
+    age=$(status_value state_age_ms)
+    echo "state_age_ms=$age with the wall clock jumping"
+    awk -v a="$age" 'BEGIN { exit !(a >= 0 && a < 250) }' || fail "state age $age ms: the wall clock leaked in"
+    stop_daemon_cleanly
     ;;
 
   startup_errors)
@@ -198,6 +286,26 @@ case "$case_name" in
     one_line 2 "cyber-plannerd: .*bad.toml" --config "$tmp/bad.toml" --can none
     one_line 1 "cyber-plannerd: cannot open LCM at 'bogus://nowhere'" --config "$config" --can none --lcm-url bogus://nowhere
     one_line 1 "cyber-plannerd: .*nosuchcan0" --config "$config" --can nosuchcan0 --lcm-url memq://
+    # The configuration cannot be read: missing, a directory, or not readable by the daemon's user.
+    one_line 2 "cannot open the configuration file (No such file or directory)" --config "$tmp/missing.toml"
+    one_line 2 "is a directory, not a configuration file" --config "$tmp"
+    cp "$config" "$tmp/secret.toml"
+    chmod 600 "$tmp/secret.toml"
+    chmod 755 "$tmp"
+    rc=0
+    setpriv --reuid=65534 --regid=65534 --clear-groups "$daemon" --config "$tmp/secret.toml" --can none \
+      2>"$tmp/err" || rc=$?
+    cat "$tmp/err"
+    [ "$rc" -eq 2 ] && grep -q "cannot open the configuration file (Permission denied)" "$tmp/err" ||
+      fail "an unreadable configuration: exit $rc"
+    # LCM unreachable: a namespace without the multicast route (the default URL is udpm).
+    ip netns add "$ns"
+    ip -n "$ns" link set lo up
+    rc=0
+    in_ns "$daemon" --config "$config" --can none 2>"$tmp/err" || rc=$?
+    cat "$tmp/err"
+    [ "$rc" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q "cannot open LCM at 'udpm://" "$tmp/err" ||
+      fail "LCM without a multicast route: exit $rc"
     ;;
 
   *)

@@ -225,6 +225,7 @@ int runStatus(lcm::LCM& lcm, const Args& args) {
   while (!catcher.got && Clock::now() < end) lcm.handleTimeout(50);
   if (!catcher.got) return 1;
   const auto& s = catcher.status;
+  std::printf("utime=%lld\n", static_cast<long long>(s.utime));
   std::printf("mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
               "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"
               "decode_errors=%lld\nstream_overruns=%lld\npublish_failures=%lld\nplan_time_p50_ms=%.2f\nplan_time_p99_ms=%.2f\n"

@@ -1,6 +1,9 @@
 #include "cyber/config/load_config.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -287,8 +290,11 @@ Config parseConfig(std::string_view toml_text, std::string_view source_name) {
 }
 
 Config loadConfigFile(const std::string& path) {
+  errno = 0;
   std::ifstream in(path);
-  if (!in) throw ConfigError("", path + ": cannot open the configuration file");
+  if (!in) throw ConfigError("", path + ": cannot open the configuration file (" + std::strerror(errno) + ")");
+  // A directory opens but reads as empty, which would be reported as a missing key.
+  if (std::filesystem::is_directory(path)) throw ConfigError("", path + ": is a directory, not a configuration file");
   std::ostringstream text;
   text << in.rdbuf();
   return parseConfig(text.str(), path);

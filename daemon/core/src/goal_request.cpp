@@ -22,10 +22,30 @@ std::optional<std::string> checkJoint(const char* name, double value, const plan
   return out.str();
 }
 
+// Scene names are short words from the config; anything else is refused without being echoed.
+// A NUL byte matters most: LCM sizes a string by its length but encodes it only up to the first
+// NUL, so echoing one in ARM_PLAN_STATUS would send the uninitialised rest of the send buffer
+// (found by tests/fuzz/lcm_decode; docs/operations.md, "Threat model").
+constexpr std::size_t kMaxSceneNameLength = 64;
+
+bool isSceneName(const std::string& name) {
+  if (name.size() > kMaxSceneNameLength) return false;
+  for (const char c : name) {
+    if (c < 0x20 || c > 0x7e) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
   using planner::PlanStatus;
+  if (!isSceneName(goal.scene_name)) {
+    return planner::Result<ValidGoal>::failure(
+        PlanStatus::kInvalidInput, "scene_name is not a name (" + std::to_string(goal.scene_name.size()) +
+                                       " bytes; at most " + std::to_string(kMaxSceneNameLength) +
+                                       " printable ASCII characters)");
+  }
   if (!std::isfinite(goal.elevator_m)) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
                                                "elevator_m is not finite (" + describe(goal.elevator_m) + ")");

@@ -46,7 +46,9 @@ cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::i
   message.utime = utime;
   message.request_id = update.request_id;
   message.status = static_cast<std::int8_t>(update.status);
-  message.reason = update.reason;
+  // LCM encodes a string only up to its first NUL but sizes the message by the whole string: cut
+  // there, so the message is exactly what is sent (goal_request.cpp keeps NULs out of reasons).
+  message.reason = update.reason.substr(0, update.reason.find('\0'));
   message.grid_ms = update.times_ms.grid;
   message.search_ms = update.times_ms.search;
   message.smooth_ms = update.times_ms.smooth;

@@ -5,10 +5,6 @@
 //  2. streamer wake-up jitter at 200 Hz, idle and under a flood of 1000 goals/s. Target p99 <= 200 us.
 // The real daemon (event loop, worker and streamer threads, real planner) on memq://, no CAN socket.
 
-#include <pthread.h>
-#include <sched.h>
-#include <sys/prctl.h>
-
 #include <algorithm>
 #include <cmath>
 #include <atomic>
@@ -28,6 +24,7 @@
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
 #include "cyberplanner/arm_state_t.hpp"
+#include "bare_timer.hpp"
 #include "public_moves.hpp"
 
 namespace {
@@ -159,30 +156,13 @@ class Rig {
 
 // The machine's own timer latency: a bare SCHED_FIFO thread on a 200 Hz timerfd, no daemon.
 void printTimerBaseline(double seconds) {
-  cyber::daemon::io::StreamerChannels channels;
-  std::thread thread([&] {
-    sched_param param{};
-    param.sched_priority = 50;
-    if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) channels.realtime_priority.store(50);
-    prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
-    constexpr cyber::daemon::MonoNs kPeriod = 5'000'000;
-    cyber::daemon::io::TimerFd timer(true);
-    cyber::daemon::MonoNs scheduled = (cyber::daemon::monotonicNow() / kPeriod + 1) * kPeriod;
-    timer.startPeriodic(scheduled, kPeriod);
-    const auto ticks = static_cast<int>(seconds * 200);
-    for (int i = 0; i < ticks; ++i) {
-      const std::uint64_t expirations = timer.wait();
-      const cyber::daemon::MonoNs now = cyber::daemon::monotonicNow();
-      scheduled += static_cast<cyber::daemon::MonoNs>(expirations - 1) * kPeriod;
-      channels.jitter.record(cyber::daemon::nsToSeconds(now - scheduled) * 1e6);
-      if (expirations > 1) channels.overruns.fetch_add(static_cast<std::int64_t>(expirations - 1));
-      scheduled += kPeriod;
-    }
-  });
-  thread.join();
-  printJitter("timer baseline, no daemon (3 s):", channels);
+  cyber::test::BareTimerResult result;
+  cyber::test::measureBareTimer(seconds, 5'000'000, 50, result);
+  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n",
+              "timer baseline, no daemon (3 s):", static_cast<long long>(result.jitter.count()),
+              result.jitter.percentileUs(0.5), result.jitter.percentileUs(0.99), result.jitter.maxUs(),
+              static_cast<long long>(result.overruns.load()), result.realtime.load() ? "on" : "refused");
 }
-
 
 }  // namespace
 

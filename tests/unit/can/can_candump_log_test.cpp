@@ -142,6 +142,9 @@ TEST(CandumpLog, RejectsMalformedLines) {
       "(1700000000.123456) vcan0 123#00 X",           // junk after the frame
       "(1700000000.123456) vcan0 123#00 T extra",     // junk after the direction
       "(1700000000.123456) averyveryverylongname 123#00",  // 21-character interface
+      "(1700000000.040000) c0#\n 09000000#\n",              // line break in the interface (fuzz reproducer)
+      "(1700000000.123456) vcan\r0 123#00",                 // control character in the interface
+      "(1700000000.123456) vcan\x7f 123#00",                // DEL in the interface
   };
   for (const char* line : bad) {
     const auto parsed = parseLogLine(line);

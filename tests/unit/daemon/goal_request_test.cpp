@@ -70,5 +70,24 @@ TEST(ValidateGoal, ResolvesSceneNamesAndRejectsUnknownOnes) {
       << unknown.error().reason;
 }
 
+// The reproducer of tests/fuzz/regressions/lcm_decode: a scene name with a NUL byte was echoed in
+// the rejection reason, which LCM sends with the uninitialised rest of its buffer.
+TEST(ValidateGoal, RefusesSceneNamesThatAreNotShortPrintableWordsWithoutEchoingThem) {
+  const auto& robot = cyber::test::referenceModel();
+  for (const std::string& name : {std::string("reef\0oon", 8), std::string("reef\n"), std::string(65, 'a'),
+                                  std::string("r\xc3\xa9" "ef")}) {
+    auto refused = validateGoal(goalAt(0.5, 1.0, name), robot);
+    ASSERT_FALSE(refused) << name;
+    EXPECT_EQ(refused.error().status, PlanStatus::kInvalidInput);
+    EXPECT_NE(refused.error().reason.find("scene_name is not a name"), std::string::npos) << refused.error().reason;
+    EXPECT_EQ(refused.error().reason.find(name), std::string::npos) << "echoed: " << refused.error().reason;
+    EXPECT_EQ(refused.error().reason.find('\0'), std::string::npos);
+  }
+  // 64 printable characters are a name (an unknown one).
+  const auto long_name = validateGoal(goalAt(0.5, 1.0, std::string(64, 'a')), robot);
+  ASSERT_FALSE(long_name);
+  EXPECT_NE(long_name.error().reason.find("unknown scene"), std::string::npos) << long_name.error().reason;
+}
+
 }  // namespace
 }  // namespace cyber::daemon

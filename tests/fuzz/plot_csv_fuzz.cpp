@@ -1,0 +1,19 @@
+// Fuzz target: cyber-plot's reader of cyber-plan CSVs (readPlanCsv) on a file with the input.
+// Properties: no crash, hang, leak or UB; a failure has a message; a success gives equally long
+// series with at least one sample.
+
+#include <string>
+
+#include "fuzz_file.hpp"
+#include "plot_series_check.hpp"
+#include "trajectory_sources.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > (1u << 20)) return 0;
+  static cyber::fuzz::FuzzFile file;
+  cyber::plot::TrajectoryPlotData plot;
+  std::string error;
+  const bool ok = cyber::tools::readPlanCsv(file.write(data, size), plot, &error);
+  cyber::fuzz::checkPlotResult(ok, plot, error);
+  return 0;
+}
