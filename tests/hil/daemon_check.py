@@ -200,18 +200,10 @@ def describe(periods, nominal):
             f"{100 * fraction_within(periods, nominal, 0.001):.1f} % within +-1 ms of {nominal * 1e3:.0f} ms")
 
 
-def longest_gap(times, t0, t1):
-    """The longest interval between consecutive times that overlaps [t0, t1] (sorted times)."""
-    i = max(bisect.bisect_left(times, t0) - 1, 0)
-    j = min(bisect.bisect_right(times, t1) + 1, len(times))
-    near = times[i:j]
-    return max((b - a for a, b in zip(near, near[1:]) if b >= t0 and a <= t1), default=float("nan"))
-
-
 def guest_stall_s(run, t0, t1):
     """How long the emulated guest stood still around [t0, t1]: the longest gap overlapping it
     between the simulator's 100 Hz CSV rows (a timerfd loop in the same guest), beyond 10 ms."""
-    gap = longest_gap([u * 1e-6 for u in run.row_utime], t0, t1)
+    gap = hil.longest_gap([u * 1e-6 for u in run.row_utime], t0, t1)
     return max(gap - 0.010, 0.0) if gap == gap else 0.0
 
 
@@ -603,7 +595,7 @@ def note_retries(c, run):
             c.note(f"request {request_id} was sent again (no final status recorded)")
             continue
         stall = guest_stall_s(run, when - 0.6, when)
-        gap = longest_gap([f.t for f in run.heartbeats], when - 0.6, when)
+        gap = hil.longest_gap([f.t for f in run.heartbeats], when - 0.6, when)
         c.note(f"request {request_id} ended {STATUS_NAME.get(final['status'], final['status'])} before the script's "
                f"fault ({final['reason'] or 'no reason given'}); in the 0.6 s before, "
                f"the guest stood still for up to {stall * 1e3:.0f} ms and heartbeats on the bus were at most "

@@ -5,6 +5,7 @@ only), so the checks do not reuse the C++ code under test."""
 import csv
 import os
 import re
+import bisect
 import struct
 
 CANDUMP_LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3}|[0-9A-F]{8})#(R|[0-9A-F]*)$")
@@ -231,3 +232,11 @@ def read_scenario(path):
             key, _, value = line.strip().partition("=")
             notes.setdefault(key, []).append(value)
     return notes
+
+
+def longest_gap(times, t0, t1):
+    """The longest interval between consecutive times that overlaps [t0, t1] (sorted times)."""
+    i = max(bisect.bisect_left(times, t0) - 1, 0)
+    j = min(bisect.bisect_right(times, t1) + 1, len(times))
+    near = times[i:j]
+    return max((b - a for a, b in zip(near, near[1:]) if b >= t0 and a <= t1), default=float("nan"))

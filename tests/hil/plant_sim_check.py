@@ -192,11 +192,20 @@ def check(out):
     # about the plant.
     on_time = [f for i, f in enumerate(elevator_sp) if i > 0 and regular_before(elevator_sp, i, 0.06)
                and rows[0]["utime"] <= f.t * 1e6 <= rows[-1]["utime"]]
+    # A short stall of the guest (under the 20 ms the simulator leaves out) shifts the plant's CSV
+    # time against the capture's: the bound allows the setpoint's speed times that stall.
+    row_t = [r["utime"] * 1e-6 for r in rows]
+
+    def allowance(f):
+        gap = hil.longest_gap(row_t, f.t - 0.05, f.t + 0.01)
+        return abs(hil.decode_setpoint(f)[1]) * (max(gap - 0.010, 0.0) if gap == gap else 0.0)
+
     errors = [abs(interpolate(rows, "elevator_m", f.t * 1e6) - hil.decode_setpoint(f)[0]) for f in on_time]
+    excess = [e - 0.003 - allowance(f) for e, f in zip(errors, on_time)]
     c.note(f"{len(on_time)} of {len(elevator_sp)} elevator setpoints were replayed on time")
     if len(on_time) >= 10:
-        c.check(max(errors) < 0.003, f"elevator tracks the on-time setpoints: max error {max(errors) * 1e3:.2f} mm, "
-                                     f"p50 {hil.percentile(errors, 50) * 1e3:.2f} mm (< 3 mm)")
+        c.check(max(excess) < 0.0, f"elevator tracks the on-time setpoints: max error {max(errors) * 1e3:.2f} mm, "
+                                   f"p50 {hil.percentile(errors, 50) * 1e3:.2f} mm (< 3 mm + speed x guest stall)")
     else:
         c.note("too few setpoints replayed on time to judge tracking against the capture")
     # The simulator's own view, whatever the replay's timing: the plant against the command its
