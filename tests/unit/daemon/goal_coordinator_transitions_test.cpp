@@ -40,19 +40,20 @@ class Transitions : public ::testing::Test {
     e.epoch = epoch;
     return e;
   }
-  void hold(const JointVector& q, HoldCause cause = HoldCause::kEnabled) {
-    ++epoch;
-    StreamEvent e = event(StreamEventKind::kHolding);
-    e.epoch = epoch;
+  // kHolding and kStopped start a new epoch at q.
+  StreamEvent newEpoch(StreamEventKind kind, const JointVector& q) {
+    StreamEvent e = event(kind);
+    e.epoch = ++epoch;
     e.position = q;
+    return e;
+  }
+  void hold(const JointVector& q, HoldCause cause = HoldCause::kEnabled) {
+    StreamEvent e = newEpoch(StreamEventKind::kHolding, q);
     e.hold_cause = cause;
     coordinator.onStreamEvent(e, now);
   }
   void stopped(GateReason reason) {
-    ++epoch;
-    StreamEvent e = event(StreamEventKind::kStopped);
-    e.epoch = epoch;
-    e.position = kStow;
+    StreamEvent e = newEpoch(StreamEventKind::kStopped, kStow);
     e.gate_reason = reason;
     coordinator.onStreamEvent(e, now);
   }
