@@ -83,7 +83,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
-    const Cone3 arg = shiftedCone(m.speedCone(k), inv_rho, speedCone(v, x, k));
+    const Cone3 arg = shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c));
     const int index[2] = {v.b(k), v.c(k)};
     const double a[3][2] = {{1.0, 0.0}, {1.0, 0.0}, {0.0, 2.0}};
     addConeTerm<2>(h, rho, arg, index, a);
@@ -107,20 +107,21 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
 
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const std::array<int, 5> index = v.row(row.interval);
+    const VariableLayout::Row at = v.row(row.interval);
+    const int index[5] = {at.a, at.b0, at.b1, at.c0, at.c1};
     const double coef[5] = {row.alpha, row.beta * (1.0 - row.at), row.beta * row.at, row.gamma * (1.0 - row.at),
                             row.gamma * row.at};
-    const double r = rowValue(row, index, x);
+    const double r = rowValue(row, at, x);
     // Rows at or near their bound count as active: the minimiser is about to push past them,
     // and a row that just stepped inside still bounds how far the next step may go.
     const double near = 1e-9 * (1.0 + std::abs(r));
     const bool active = r - row.hi + m.row_upper[static_cast<Eigen::Index>(i)] * inv_rho > -near ||
                         row.lo - r + m.row_lower[static_cast<Eigen::Index>(i)] * inv_rho > -near;
     for (int p = 0; p < 5; ++p) {
-      floor[index[static_cast<size_t>(p)]] += coef[p] * coef[p];
+      floor[index[p]] += coef[p] * coef[p];
       if (!active || coef[p] == 0.0) continue;
       for (int q = 0; q <= p; ++q) {
-        if (coef[q] != 0.0) h.add(index[static_cast<size_t>(p)], index[static_cast<size_t>(q)], rho * coef[p] * coef[q]);
+        if (coef[q] != 0.0) h.add(index[p], index[q], rho * coef[p] * coef[q]);
       }
     }
   }

@@ -25,27 +25,24 @@ inline constexpr int kFirstFree = 1;
 // and zero at every other variable.
 inline double costGradient(const Problem& problem, int k) { return problem.cost_scale * 2.0 * problem.ds(k); }
 
-// The affine arguments A x + b of the time cone of interval k (eq. 16) and the speed cone of
-// node k (eq. 17).
+// The affine arguments A x + b of the time cone of interval k (eq. 16) and of the speed cone of
+// a node, from its b and c (eq. 17).
 inline Cone3 timeCone(const VariableLayout& v, const double* x, int k) {
   const double sigma = x[v.c(k)] + x[v.c(k + 1)];
   const double d = x[v.d(k)];
   return {sigma + d, sigma - d, 2.0};
 }
-inline Cone3 speedCone(const VariableLayout& v, const double* x, int k) {
-  const double b = x[v.b(k)];
-  return {b + 1.0, b - 1.0, 2.0 * x[v.c(k)]};
-}
+inline Cone3 speedCone(double b, double c) { return {b + 1.0, b - 1.0, 2.0 * c}; }
 
 // mu / rho - (A x + b): what L_rho projects (eq. 19); mu points at the cone's three multipliers.
 inline Cone3 shiftedCone(const double* mu, double inv_rho, const Cone3& u) {
   return {mu[0] * inv_rho - u.t, mu[1] * inv_rho - u.x1, mu[2] * inv_rho - u.x2};
 }
 
-// b_{k+1} - b_k - 2 ds_k a_k, weighted (the linear equality of interval k).
-inline double baRelation(const Problem& problem, const VariableLayout& v, const double* x, int k) {
-  const double ds = problem.ds(k);
-  return (x[v.b(k + 1)] - x[v.b(k)] - 2.0 * ds * x[v.a(k)]) * equalityWeight(ds);
+// b_{k+1} - b_k - 2 ds a_k: the linear equality of interval k (ds = Problem::ds(k)), imposed
+// times equalityWeight(ds).
+inline double baRelation(const VariableLayout& v, const double* x, int k, double ds) {
+  return x[v.b(k + 1)] - x[v.b(k)] - 2.0 * ds * x[v.a(k)];
 }
 
 // The targets of the boundary equalities, in the order of VariableLayout::boundary().
@@ -53,9 +50,9 @@ inline std::array<double, 4> boundaryTargets(const Problem& problem) {
   return {problem.b_start, problem.b_end, std::sqrt(problem.b_start), std::sqrt(problem.b_end)};
 }
 
-// alpha a + beta b + gamma c of a limit row at x; `index` = VariableLayout::row(row.interval).
-inline double rowValue(const LinearRow& row, const std::array<int, 5>& index, const double* x) {
-  return row.value(x[index[0]], x[index[1]], x[index[2]], x[index[3]], x[index[4]]);
+// alpha a + beta b + gamma c of a limit row at x; `at` = VariableLayout::row(row.interval).
+inline double rowValue(const LinearRow& row, const VariableLayout::Row& at, const double* x) {
+  return row.value(x[at.a], x[at.b0], x[at.b1], x[at.c0], x[at.c1]);
 }
 
 }  // namespace cyber::planner::topp

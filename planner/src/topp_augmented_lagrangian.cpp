@@ -30,9 +30,9 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
   };
   for (int k = 0; k + 1 < kk; ++k) updateCone(m.timeCone(k), timeCone(v, x, k));
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
-    updateCone(m.speedCone(k), speedCone(v, x, k));
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
+    updateCone(m.speedCone(k), speedCone(b, c));
     const double h = c * c - b;
     track(rho * h);
     m.speed_square[k] += rho * h;
@@ -41,7 +41,8 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
     m.b_nonnegative[k] = eta;
   }
   for (int k = 0; k + 1 < kk; ++k) {
-    const double e = baRelation(problem, v, x, k);
+    const double ds = problem.ds(k);
+    const double e = baRelation(v, x, k, ds) * equalityWeight(ds);
     track(rho * e);
     m.equality[k] += rho * e;
   }
@@ -123,10 +124,10 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
 
   // Cost and time cones (eq. 21 with the projection P_K).
   for (int k = 0; k + 1 < kk; ++k) {
+    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.timeCone(k), inv_rho, timeCone(v, xs, k)));
     const double cost = costGradient(problem, k);
     value += cost * xs[v.d(k)];
     g[v.d(k)] += cost;
-    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.timeCone(k), inv_rho, timeCone(v, xs, k)));
     value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
     const double sum = rho * (p.t + p.x1);
     g[v.c(k)] -= sum;
@@ -137,7 +138,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = xs[v.b(k)];
     const double c = xs[v.c(k)];
-    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.speedCone(k), inv_rho, speedCone(v, xs, k)));
+    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c)));
     value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
     g[v.b(k)] -= rho * (p.t + p.x1);
     g[v.c(k)] -= 2.0 * rho * p.x2;
@@ -157,7 +158,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   for (int k = 0; k + 1 < kk; ++k) {
     const double ds = problem.ds(k);
     const double w = equalityWeight(ds);
-    const double e = baRelation(problem, v, xs, k) + m.equality[k] * inv_rho;
+    const double e = baRelation(v, xs, k, ds) * w + m.equality[k] * inv_rho;
     value += 0.5 * rho * e * e;
     const double ge = rho * e * w;
     g[v.b(k + 1)] += ge;
@@ -182,8 +183,8 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   const size_t rows = problem.rows.size();
   for (size_t i = 0; i < rows; ++i) {
     const LinearRow& row = problem.rows[i];
-    const std::array<int, 5> index = v.row(row.interval);
-    const double r = rowValue(row, index, xs);
+    const VariableLayout::Row at = v.row(row.interval);
+    const double r = rowValue(row, at, xs);
     double t = r - row.hi + up[i] * inv_rho;
     if (t <= 0.0) t = 0.0;
     double l = row.lo - r + low[i] * inv_rho;  // -inf for one-sided rows
@@ -193,11 +194,11 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
       const double coef = rho * (t - l);
       const double w1 = row.at;
       const double w0 = 1.0 - w1;
-      g[index[0]] += coef * row.alpha;
-      g[index[1]] += coef * row.beta * w0;
-      g[index[2]] += coef * row.beta * w1;
-      g[index[3]] += coef * row.gamma * w0;
-      g[index[4]] += coef * row.gamma * w1;
+      g[at.a] += coef * row.alpha;
+      g[at.b0] += coef * row.beta * w0;
+      g[at.b1] += coef * row.beta * w1;
+      g[at.c0] += coef * row.gamma * w0;
+      g[at.c1] += coef * row.gamma * w1;
     }
   }
   return value;

@@ -220,14 +220,14 @@ TEST(ToppVariableLayout, NumbersEveryVariableOnceAndKeepsEachConstraintInTheBand
     // Every term of L_rho couples the variables of one interval: a limit row, its time cone, its
     // b-a relation. Their spread is what the Hessian's band must hold.
     for (int k = 0; k < v.intervals(); ++k) {
-      const std::array<int, 5> row = v.row(k);
-      EXPECT_EQ(row[0], v.a(k));
-      EXPECT_EQ(row[1], v.b(k));
-      EXPECT_EQ(row[2], v.b(k + 1));
-      EXPECT_EQ(row[3], v.c(k));
-      EXPECT_EQ(row[4], v.c(k + 1));
-      const int lowest = std::min({row[0], row[1], row[3], v.d(k)});
-      const int highest = std::max({row[2], row[4], v.d(k)});
+      const topp::VariableLayout::Row row = v.row(k);
+      EXPECT_EQ(row.a, v.a(k));
+      EXPECT_EQ(row.b0, v.b(k));
+      EXPECT_EQ(row.b1, v.b(k + 1));
+      EXPECT_EQ(row.c0, v.c(k));
+      EXPECT_EQ(row.c1, v.c(k + 1));
+      const int lowest = std::min({row.a, row.b0, row.c0, v.d(k)});
+      const int highest = std::max({row.b1, row.c1, v.d(k)});
       EXPECT_LE(highest - lowest, topp::VariableLayout::kBandwidth) << "interval " << k << ", K " << grid_points;
     }
     const std::array<int, 4> boundary = v.boundary();

@@ -33,8 +33,16 @@ struct VariableLayout {
   [[nodiscard]] int c(int k) const { return k < intervals() ? 4 * k + 2 : 4 * k + 1; }
   [[nodiscard]] int d(int k) const { return 4 * k + 3; }
   [[nodiscard]] int size() const { return 4 * grid_points - 2; }
-  // What a limit row of interval k reads, in the order of LinearRow::value's arguments.
-  [[nodiscard]] std::array<int, 5> row(int k) const { return {a(k), b(k), b(k + 1), c(k), c(k + 1)}; }
+  // What a limit row of interval k reads (LinearRow::value's arguments).
+  struct Row {
+    int a, b0, b1, c0, c1;
+  };
+  // {a(k), b(k), b(k + 1), c(k), c(k + 1)} for k < intervals(), without a branch per entry: only
+  // node k + 1 can be the last.
+  [[nodiscard]] Row row(int k) const {
+    const int next = 4 * (k + 1) + static_cast<int>(k + 1 < intervals());
+    return {4 * k, 4 * k + 1, next, 4 * k + 2, next + 1};
+  }
   // The values the boundary equalities pin, in the order of their multipliers (Multipliers::equality).
   [[nodiscard]] std::array<int, 4> boundary() const {
     return {b(0), b(grid_points - 1), c(0), c(grid_points - 1)};
