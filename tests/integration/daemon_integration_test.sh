@@ -47,7 +47,10 @@ start_daemon() {
   ip netns exec "$ns" env ${DAEMON_ENV:-} "$daemon" --config "$config" --can none >"${DAEMON_LOG:-$tmp/daemon.log}" 2>&1 &
   daemon_pid=$!
   pids+=("$daemon_pid")
-  ip netns exec "$ns" "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
+  # At a real-time priority below the streamer's (50), as the robot's own sender would be: at
+  # normal priority a loaded machine starved it past state_timeout_s (0.25 s) now and then, and
+  # the daemon rightly stopped the motion ("ARM_STATE is stale").
+  ip netns exec "$ns" chrt -f 20 "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
   pids+=("$!")
   # The planner builds its grids at start-up: allow for a loaded machine.
   for _ in $(seq 1 600); do

@@ -258,6 +258,50 @@ TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenTheNextOneStarts) {
   EXPECT_EQ(h.sink.last(3)->status, S::kExecuting);
 }
 
+// The worker's result delivered at `at`, between stream ticks, as the event loop may see it.
+void deliverPlan(Harness& h, MonoNs at) {
+  ASSERT_TRUE(h.sink.job.has_value());
+  const PlanJob job = *h.sink.job;
+  h.sink.job.reset();
+  h.coordinator().onPlanResult(job.job_id, h.plan(job.request), 0.001, at);
+}
+
+TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenASpliceAfterItsSuccessorsStartDropsIt) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  ASSERT_EQ(h.lastRecord().mode, StreamMode::kMoving);
+  h.setPlanTime(1e9);  // from here plans are delivered by hand, at times between ticks
+  const MonoNs tick = h.now - Harness::kPeriod;  // the last tick
+  const MonoNs ms = 1'000'000;
+  // Goal 2 at tick + 1 ms starts at tick + 31 ms; goal 3, waiting until 2 is adopted at tick + 5 ms,
+  // starts at tick + 35 ms: no tick falls between them, so no tick ever streams 2.
+  h.now = tick + 1 * ms;
+  h.goal(2, kLow);
+  deliverPlan(h, tick + 2 * ms);
+  h.now = tick + 3 * ms;
+  h.goal(3, kStow);
+  h.now = tick + Harness::kPeriod;
+  h.step();  // adopts 2, starts planning 3
+  deliverPlan(h, tick + 7 * ms);
+  h.step();  // adopts 3
+  ASSERT_EQ(h.coordinator().mirror().segmentCount(), 3);
+  h.now = tick + 12 * ms;
+  h.goal(4, kHigh);  // starts at tick + 42 ms
+  h.now = tick + 3 * Harness::kPeriod;
+  while (h.now < tick + 35 * ms) h.step();
+  // Plan 4 is back just as 3 starts, before the tick that streams 3: its splice leaves out 2 (over,
+  // since 3 has started), and the streamer adopts it before it samples 3.
+  deliverPlan(h, h.now);
+  h.step();
+  ASSERT_EQ(h.sink.last(3)->status, S::kExecuting);
+  ASSERT_NE(h.sink.last(2), nullptr);
+  EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+}
+
 TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {
   Harness h(false, 0.002);
   h.start(kStow);
