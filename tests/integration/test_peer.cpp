@@ -196,7 +196,9 @@ std::string statusNames(unsigned bits) {
   static const char* const kNames[] = {"accepted", "planning", "executing", "done", "rejected", "failed", "cancelled"};
   std::string out;
   for (unsigned s = 0; s < sizeof(kNames) / sizeof(kNames[0]); ++s) {
-    if ((bits & (1u << s)) != 0) out += (out.empty() ? "" : " ") + std::string(kNames[s]);
+    if ((bits & (1u << s)) == 0) continue;
+    if (!out.empty()) out += ' ';
+    out += kNames[s];
   }
   return out.empty() ? "none" : out;
 }
