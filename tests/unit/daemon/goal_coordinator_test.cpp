@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <random>
 
 #include "daemon_harness.hpp"
 
@@ -300,6 +301,55 @@ TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenASpliceAfterItsSuccess
   EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
   EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
   EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+}
+
+// Seeded random floods with the event loop's timing free: goals and plan results land at any
+// millisecond between ticks, plans take 1-60 ms (so the budget, and the splice points, move).
+// Every goal gets exactly one final status.
+TEST(GoalCoordinator, RandomFloodsBetweenTicksGiveEveryGoalExactlyOneFinalStatus) {
+  const MonoNs ms = 1'000'000;
+  for (unsigned seed = 1; seed <= 100; ++seed) {
+    std::mt19937 random(seed);
+    // Mostly quick plans with a slow one now and then: the budget jumps up, and down again when the
+    // slow plan leaves its window.
+    std::uniform_int_distribution<int> quick_ms(1, 4), slow_ms(20, 60), sub_ms(0, Harness::kPeriod / ms - 1);
+    const auto plan_ms = [&](std::mt19937& r) { return r() % 8 == 0 ? slow_ms(r) : quick_ms(r); };
+    Harness h;
+    h.start(kStow);
+    h.run(0.01);
+    h.setPlanTime(1e9);  // plans are delivered below
+    MonoNs plan_due = kNever;
+    std::int64_t id = 0;
+    const std::int64_t goals = 300;
+    for (int period = 0; period < 4000 && (id < goals || !h.coordinator().idle()); ++period) {
+      const MonoNs tick = h.now;
+      const MonoNs goal_at = tick - Harness::kPeriod + (sub_ms(random) + 1) * ms;
+      for (MonoNs t = tick - Harness::kPeriod + ms; t <= tick; t += ms) {
+        h.now = t;
+        if (h.sink.job && plan_due == kNever) plan_due = h.sink.job_started_ns + plan_ms(random) * ms;
+        if (h.sink.job && t >= plan_due) {
+          const PlanJob job = *h.sink.job;
+          h.sink.job.reset();
+          plan_due = kNever;
+          h.coordinator().onPlanResult(job.job_id, h.plan(job.request), nsToSeconds(t - h.sink.job_started_ns), t);
+        }
+        if (t == goal_at && id < goals) {
+          const double u = static_cast<double>(random() % 17) / 16.0;
+          h.goal(id++, JointVector(0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)));
+        }
+      }
+      h.now = tick;
+      h.step();
+    }
+    ASSERT_EQ(id, goals) << "seed " << seed;
+    ASSERT_TRUE(h.coordinator().idle()) << "seed " << seed;
+    h.run(5.0);  // the last motion ends
+    for (std::int64_t i = 0; i < goals; ++i) {
+      const auto statuses = h.sink.of(i);
+      ASSERT_EQ(std::count_if(statuses.begin(), statuses.end(), isFinal), 1)
+          << "seed " << seed << ", request " << i << ", statuses " << ::testing::PrintToString(statuses);
+    }
+  }
 }
 
 TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {
