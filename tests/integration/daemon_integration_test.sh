@@ -67,6 +67,15 @@ udp_counter() {  # udp_counter NAME SNMP_FILE -> the Udp: counter NAME in a copy
   awk -v name="$1" '$1 == "Udp:" { if (!n) { for (i = 2; i <= NF; i++) col[$i] = i; n = 1 } else print $col[name] }' "$2"
 }
 
+udp_drops() {  # udp_drops PID -> the kernel's drop count summed over PID's UDP sockets in the namespace
+  local inodes
+  inodes=$(find "/proc/$1/fd" -lname 'socket:*' -printf '%l\n' 2>/dev/null | tr -dc '0-9\n')
+  in_ns cat /proc/net/udp | awk -v list="$inodes" '
+    BEGIN { n = split(list, a, "\n"); for (i = 1; i <= n; i++) want[a[i]] = 1 }
+    NR > 1 && ($10 in want) { sum += $13 }
+    END { print sum + 0 }'
+}
+
 status_value() {  # status_value KEY -> value from a fresh ARM_DAEMON_STATUS
   in_ns "$peer" status --timeout 2 >"$tmp/status" || fail "no ARM_DAEMON_STATUS"
   sed -n "s/^$1=//p" "$tmp/status"
@@ -147,13 +156,25 @@ case "$case_name" in
         --rcvbuf-bytes 4194304 >"$tmp/watch.out" 2>&1 &
       watch_pid=$!
       pids+=("$watch_pid")
-      sleep 0.5
+      # Not before it has subscribed: a loaded machine took longer than 0.5 s to start it.
+      for _ in $(seq 1 600); do
+        grep -q '^watching' "$tmp/watch.out" && break
+        kill -0 "$watch_pid" 2>/dev/null || break
+        sleep 0.05
+      done
+      grep -q '^watching' "$tmp/watch.out" || { cat "$tmp/watch.out"; fail "the watcher did not start"; }
+      local received_before daemon_drops_before
+      received_before=$(status_value goals_received)
+      daemon_drops_before=$(udp_drops "$daemon_pid")
       # Exactly as many goals as the watcher waits for, however long a busy machine takes to send them.
       in_ns "$peer" flood --to 1.97,5.17 --to 0.58,2.97 --to 1.22,5.69 --rate 1000 --count 1000 --first-id "$first"
       rc=0
       wait "$watch_pid" || rc=$?
       in_ns cat /proc/net/snmp >"$tmp/snmp.after"
       cat "$tmp/watch.out"
+      received=$(( $(status_value goals_received) - received_before ))
+      daemon_drops=$(( $(udp_drops "$daemon_pid") - daemon_drops_before ))
+      echo "daemon: received $received of the 1000 goals; kernel drops on its UDP sockets during the round $daemon_drops"
       # The namespace's UDP error counters (every socket in it: the daemon's and the peers').
       for counter in InErrors RcvbufErrors; do
         echo "namespace Udp $counter: $(udp_counter "$counter" "$tmp/snmp.before") -> $(udp_counter "$counter" "$tmp/snmp.after")"
@@ -169,6 +190,11 @@ case "$case_name" in
       # The kernel dropped datagrams on the watcher's own socket: the run says nothing about the
       # daemon. Once more; a missing status without a kernel drop fails.
       echo "VOID: the kernel dropped datagrams on the watcher's socket; flooding once more"
+      flood_round 5000
+    elif [ "$rc" -ne 0 ] && [ "$received" -lt 1000 ] && [ "$daemon_drops" -gt 0 ]; then
+      # Goals the kernel dropped on the daemon's socket (its LCM thread starved on a loaded
+      # machine) were never received, so never answered: once more, as above.
+      echo "VOID: the kernel dropped goals on the daemon's socket; flooding once more"
       flood_round 5000
     fi
     echo "daemon: goals_received=$(status_value goals_received) decode_errors=$(status_value decode_errors)" \

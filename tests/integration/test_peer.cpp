@@ -225,6 +225,9 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
     }
   }
   const std::int64_t drops_before = cyber::test::kernelDrops(sockets);
+  // Subscribed: a sender may start now (statuses sent before this socket joined are not seen).
+  std::printf("watching ids %lld..%lld\n", args.first_id, args.first_id + args.count - 1);
+  std::fflush(stdout);
   const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   while (Clock::now() < end && static_cast<long long>(tally.finals.size()) < args.count) lcm.handleTimeout(50);
   // A little longer, to catch a second final status for any id.
