@@ -67,6 +67,18 @@ udp_counter() {  # udp_counter NAME SNMP_FILE -> the Udp: counter NAME in a copy
   awk -v name="$1" '$1 == "Udp:" { if (!n) { for (i = 2; i <= NF; i++) col[$i] = i; n = 1 } else print $col[name] }' "$2"
 }
 
+# Returns once the watcher (watch_pid, output in $tmp/watch.out) has subscribed: statuses sent
+# before that are never seen, and a loaded machine took longer than 0.5 s to start it.
+wait_watching() {
+  for _ in $(seq 1 600); do
+    grep -q '^watching' "$tmp/watch.out" && return 0
+    kill -0 "$watch_pid" 2>/dev/null || break
+    sleep 0.05
+  done
+  cat "$tmp/watch.out"
+  fail "the watcher did not start"
+}
+
 udp_drops() {  # udp_drops PID -> the kernel's drop count summed over PID's UDP sockets in the namespace
   local inodes
   inodes=$(find "/proc/$1/fd" -lname 'socket:*' -printf '%l\n' 2>/dev/null | tr -dc '0-9\n')
@@ -156,13 +168,7 @@ case "$case_name" in
         --rcvbuf-bytes 4194304 >"$tmp/watch.out" 2>&1 &
       watch_pid=$!
       pids+=("$watch_pid")
-      # Not before it has subscribed: a loaded machine took longer than 0.5 s to start it.
-      for _ in $(seq 1 600); do
-        grep -q '^watching' "$tmp/watch.out" && break
-        kill -0 "$watch_pid" 2>/dev/null || break
-        sleep 0.05
-      done
-      grep -q '^watching' "$tmp/watch.out" || { cat "$tmp/watch.out"; fail "the watcher did not start"; }
+      wait_watching
       local received_before daemon_drops_before
       received_before=$(status_value goals_received)
       daemon_drops_before=$(udp_drops "$daemon_pid")
@@ -214,7 +220,7 @@ case "$case_name" in
     ip netns exec "$ns" chrt -f 20 "$peer" watch --first-id 3000 --count 100 --timeout 60 >"$tmp/watch.out" 2>&1 &
     watch_pid=$!
     pids+=("$watch_pid")
-    sleep 0.5
+    wait_watching
     kill -STOP "$daemon_pid"
     in_ns "$peer" flood --to 1.97,5.17 --to 0.58,2.97 --rate 2000 --count 100 --first-id 3000
     sleep 0.3
