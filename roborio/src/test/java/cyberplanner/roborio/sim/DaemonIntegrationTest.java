@@ -52,9 +52,11 @@ class DaemonIntegrationTest {
       List<arm_setpoint_t> setpoints = new CopyOnWriteArrayList<>();
       client.setSetpointListener(setpoints::add);
       awaitDaemon(client);
+      StarvationWatch watch = StarvationWatch.fromDaemonConfig();
       Thread publisher = new Thread(() -> {
         while (!Thread.currentThread().isInterrupted()) {
           client.publishState(0.58, 0.0, 2.97, 0.0, false, false);  // at rest at INTAKE
+          watch.tick();
           try {
             Thread.sleep(10);
           } catch (InterruptedException e) {
@@ -66,19 +68,26 @@ class DaemonIntegrationTest {
       try {
         for (int i = 0; i < 100 && client.daemonMode() != DaemonMode.HOLDING; ++i) Thread.sleep(50);
         assertEquals(DaemonMode.HOLDING, client.daemonMode());
-        MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
-        MoveState end = move.await(30);
-        System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
-        assertEquals(MoveState.DONE, end, move.toString());
-        assertTrue(move.durationS() > 0);
-        long moving = setpoints.stream()
-            .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
-        arm_setpoint_t last = setpoints.get(setpoints.size() - 1);
-        System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
-        // Full-rate echo: about one per 5 ms stream period over the trajectory.
-        assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
-        assertEquals(1.22, last.elevator_m, 1e-5);
-        assertEquals(5.69, last.arm_rad, 1e-5);
+        // A stale ARM_STATE cancels the move or makes the daemon hold INTAKE again (the state says so).
+        watch.checkUnlessStarved("client: INTAKE -> L3", attempt -> {
+          MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
+          MoveState end = move.await(30);
+          System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
+          long moving = setpoints.stream()
+              .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
+          arm_setpoint_t last = setpoints.get(setpoints.size() - 1);
+          System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
+          return () -> {
+            assertEquals(MoveState.DONE, end, move.toString());
+            assertTrue(move.durationS() > 0);
+            // Full-rate echo: about one per 5 ms stream period over the trajectory.
+            assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
+            assertEquals(1.22, last.elevator_m, 1e-5);
+            assertEquals(5.69, last.arm_rad, 1e-5);
+          };
+        });
+        System.out.printf("client: void attempts %d, largest ARM_STATE gap %.3f s%n", watch.voided(),
+            watch.largestGapS());
       } finally {
         publisher.interrupt();
         publisher.join();
@@ -106,32 +115,42 @@ class DaemonIntegrationTest {
       CyberArmSubsystem subsystem = new CyberArmSubsystem(client, new LcmSetpointSource(client), mechanism.elevator,
           mechanism.arm, mechanism::state, guard, new HoldFallback(mechanism.elevator, mechanism.arm),
           () -> System.nanoTime() / 1000);
-      RobotLoop loop = new RobotLoop(subsystem, mechanism);
-      loop.runFor(1.0);  // the daemon takes the state and holds it
-      assertEquals(SetpointGuard.Verdict.USE, subsystem.verdict());
+      StarvationWatch watch = StarvationWatch.fromDaemonConfig();
+      RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
+      watch.checkUnlessStarved("sim: start", attempt -> {
+        loop.runFor(1.0);  // the daemon takes the state and holds it
+        SetpointGuard.Verdict verdict = subsystem.verdict();
+        return () -> assertEquals(SetpointGuard.Verdict.USE, verdict);
+      });
       for (Pose goal : sequence) {
         mechanism.setPieces(goal.heldCoral(), goal.heldAlgae());
-        MoveToPoseCommand command = subsystem.moveToCommand(goal);
-        command.initialize();
-        double waited = 0;
-        while (!command.isFinished() && waited < 30) {
-          loop.runFor(LOOP_S);
-          waited += LOOP_S;
-        }
-        assertTrue(command.succeeded(), goal + ": " + command.move());
-        assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
-        loop.runFor(0.3);  // settle on the hold setpoints
-        ArmState at = mechanism.state();
-        double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
-        double armError = Math.abs(at.armRad() - goal.armRad());
-        System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s%n", goal,
-            command.move().durationS(), elevatorError, armError, subsystem.verdict());
-        assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
-        assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+        // A stale ARM_STATE stops the move, or the hold at its end, where the state lagged behind.
+        watch.checkUnlessStarved("sim: " + goal, attempt -> {
+          MoveToPoseCommand command = subsystem.moveToCommand(goal);
+          command.initialize();
+          double waited = 0;
+          while (!command.isFinished() && waited < 30) {
+            loop.runFor(LOOP_S);
+            waited += LOOP_S;
+          }
+          loop.runFor(0.3);  // settle on the hold setpoints
+          ArmState at = mechanism.state();
+          double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
+          double armError = Math.abs(at.armRad() - goal.armRad());
+          System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s%n", goal,
+              command.move().durationS(), elevatorError, armError, subsystem.verdict());
+          return () -> {
+            assertTrue(command.succeeded(), goal + ": " + command.move());
+            // A second attempt starts wherever the void one left the mechanism, maybe at the goal.
+            if (attempt == 1) assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
+            assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
+            assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+          };
+        });
       }
-      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d%n",
-          sequence.size(), guard.lostFrames(Joint.ELEVATOR), guard.lostFrames(Joint.ARM), loop.fallbackLoops,
-          loop.loops);
+      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d, "
+          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.ELEVATOR),
+          guard.lostFrames(Joint.ARM), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
     }
   }
 
@@ -139,18 +158,21 @@ class DaemonIntegrationTest {
   static final class RobotLoop {
     final CyberArmSubsystem subsystem;
     final SimulatedMechanism mechanism;
+    final StarvationWatch watch;
     long next = System.nanoTime();
     long loops;
     long fallbackLoops;
 
-    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism) {
+    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism, StarvationWatch watch) {
       this.subsystem = subsystem;
       this.mechanism = mechanism;
+      this.watch = watch;
     }
 
     void runFor(double seconds) throws InterruptedException {
       for (int i = 0; i < Math.round(seconds / LOOP_S); ++i) {
-        subsystem.periodic();
+        subsystem.periodic();  // publishes ARM_STATE first
+        watch.tick();
         if (subsystem.verdict() != SetpointGuard.Verdict.USE) fallbackLoops++;
         loops++;
         mechanism.step(LOOP_S);
