@@ -39,6 +39,10 @@ class DaemonIntegrationTest {
   static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
   static final double POSITION_TOLERANCE_M = 0.002;
   static final double ANGLE_TOLERANCE_RAD = 0.005;
+  // On the hold setpoints, in a row: SimulatedMechanism's critically damped joints (30 rad/s) leave
+  // (1 + 9) e^-9 = 0.12 % of the error they started the settling with.
+  static final double SETTLE_S = 0.3;
+  static final double SETTLE_WITHIN_S = 10.0;
 
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
     for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
@@ -133,14 +137,18 @@ class DaemonIntegrationTest {
             loop.runFor(LOOP_S);
             waited += LOOP_S;
           }
-          loop.runFor(0.3);  // settle on the hold setpoints
+          long fallbackBefore = loop.fallbackLoops;
+          boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
           ArmState at = mechanism.state();
           double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
           double armError = Math.abs(at.armRad() - goal.armRad());
-          System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s%n", goal,
-              command.move().durationS(), elevatorError, armError, subsystem.verdict());
+          System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s, loops outside USE %d%n",
+              goal, command.move().durationS(), elevatorError, armError, subsystem.verdict(),
+              loop.fallbackLoops - fallbackBefore);
           return () -> {
             assertTrue(command.succeeded(), goal + ": " + command.move());
+            assertTrue(settled, goal + ": not " + SETTLE_S + " s in a row on the setpoints in " + SETTLE_WITHIN_S
+                + " s");
             // A second attempt starts wherever the void one left the mechanism, maybe at the goal.
             if (attempt == 1) assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
             assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
@@ -167,6 +175,21 @@ class DaemonIntegrationTest {
       this.subsystem = subsystem;
       this.mechanism = mechanism;
       this.watch = watch;
+    }
+
+    /**
+     * Runs until the mechanism followed the setpoints (verdict USE) for seconds in a row, at most
+     * withinS; true if it did. After a stall the loop catches up faster than the setpoints arrive,
+     * and the guard holds the mechanism where it was meanwhile (HoldFallback): that is no settling.
+     */
+    boolean settle(double seconds, double withinS) throws InterruptedException {
+      long needed = Math.round(seconds / LOOP_S);
+      long inRow = 0;
+      for (long i = 0; inRow < needed && i < Math.round(withinS / LOOP_S); ++i) {
+        runFor(LOOP_S);
+        inRow = subsystem.verdict() == SetpointGuard.Verdict.USE ? inRow + 1 : 0;
+      }
+      return inRow >= needed;
     }
 
     void runFor(double seconds) throws InterruptedException {
