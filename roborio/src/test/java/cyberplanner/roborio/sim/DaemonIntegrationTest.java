@@ -56,7 +56,7 @@ class DaemonIntegrationTest {
       List<arm_setpoint_t> setpoints = new CopyOnWriteArrayList<>();
       client.setSetpointListener(setpoints::add);
       awaitDaemon(client);
-      StarvationWatch watch = StarvationWatch.fromDaemonConfig();
+      StarvationWatch watch = StarvationWatch.fromDaemon();
       Thread publisher = new Thread(() -> {
         while (!Thread.currentThread().isInterrupted()) {
           client.publishState(0.58, 0.0, 2.97, 0.0, false, false);  // at rest at INTAKE
@@ -72,24 +72,34 @@ class DaemonIntegrationTest {
       try {
         for (int i = 0; i < 100 && client.daemonMode() != DaemonMode.HOLDING; ++i) Thread.sleep(50);
         assertEquals(DaemonMode.HOLDING, client.daemonMode());
-        // A stale ARM_STATE cancels the move or makes the daemon hold INTAKE again (the state says so).
+        // A stale ARM_STATE cancels the move or makes the daemon hold INTAKE again (the state says so):
+        // nothing to restore.
         watch.checkUnlessStarved("client: INTAKE -> L3", attempt -> {
           MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
           MoveState end = move.await(30);
           System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
           long moving = setpoints.stream()
               .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
-          arm_setpoint_t last = setpoints.get(setpoints.size() - 1);
+          // The echo of the last tick may come after DONE (one loop in the daemon sends both): the hold.
+          arm_setpoint_t hold = null;
+          for (int i = 0; i < 200 && hold == null && end == MoveState.DONE; ++i) {
+            hold = setpoints.stream()
+                .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_HOLDING)
+                .findFirst().orElse(null);
+            if (hold == null) Thread.sleep(10);
+          }
+          arm_setpoint_t last = hold;
           System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
           return () -> {
             assertEquals(MoveState.DONE, end, move.toString());
             assertTrue(move.durationS() > 0);
             // Full-rate echo: about one per 5 ms stream period over the trajectory.
             assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
+            assertTrue(last != null, "no ARM_SETPOINT holding request " + move.requestId() + " within 2 s of DONE");
             assertEquals(1.22, last.elevator_m, 1e-5);
             assertEquals(5.69, last.arm_rad, 1e-5);
           };
-        });
+        }, () -> {});
         System.out.printf("client: void attempts %d, largest ARM_STATE gap %.3f s%n", watch.voided(),
             watch.largestGapS());
       } finally {
@@ -119,16 +129,17 @@ class DaemonIntegrationTest {
       CyberArmSubsystem subsystem = new CyberArmSubsystem(client, new LcmSetpointSource(client), mechanism.elevator,
           mechanism.arm, mechanism::state, guard, new HoldFallback(mechanism.elevator, mechanism.arm),
           () -> System.nanoTime() / 1000);
-      StarvationWatch watch = StarvationWatch.fromDaemonConfig();
+      StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
       watch.checkUnlessStarved("sim: start", attempt -> {
         loop.runFor(1.0);  // the daemon takes the state and holds it
         SetpointGuard.Verdict verdict = subsystem.verdict();
         return () -> assertEquals(SetpointGuard.Verdict.USE, verdict);
-      });
+      }, () -> {});
       for (Pose goal : sequence) {
         mechanism.setPieces(goal.heldCoral(), goal.heldAlgae());
         // A stale ARM_STATE stops the move, or the hold at its end, where the state lagged behind.
+        ArmState from = mechanism.state();
         watch.checkUnlessStarved("sim: " + goal, attempt -> {
           MoveToPoseCommand command = subsystem.moveToCommand(goal);
           command.initialize();
@@ -154,12 +165,28 @@ class DaemonIntegrationTest {
             assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
             assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
           };
-        });
+        }, () -> restart(loop, mechanism, from, watch));
       }
       System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d, "
           + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.ELEVATOR),
           guard.lostFrames(Joint.ARM), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
     }
+  }
+
+  /**
+   * Puts the mechanism back where a void attempt started (it may have coasted anywhere on the last
+   * setpoint, even past a joint limit, and the daemon holds there) and makes the daemon take that
+   * state as it takes any after a stop: silence past state_timeout_s, until it logs the stop, then
+   * the loop again, as at the start.
+   */
+  static void restart(RobotLoop loop, SimulatedMechanism mechanism, ArmState from, StarvationWatch watch)
+      throws InterruptedException {
+    long stops = watch.daemonStaleStops();
+    Thread.sleep(Math.round(watch.stateTimeoutS() * 1e3));
+    for (int i = 0; i < 100 && watch.daemonStaleStops() == stops; ++i) Thread.sleep(50);
+    mechanism.placeAt(from.elevatorM(), from.armRad());
+    loop.resume();
+    loop.runFor(1.0);
   }
 
   /** The robot's main loop at 200 Hz in real time: subsystem.periodic(), then the model. */
@@ -190,6 +217,11 @@ class DaemonIntegrationTest {
         inRow = subsystem.verdict() == SetpointGuard.Verdict.USE ? inRow + 1 : 0;
       }
       return inRow >= needed;
+    }
+
+    /** Goes on after a pause without catching up on the periods missed. */
+    void resume() {
+      next = System.nanoTime();
     }
 
     void runFor(double seconds) throws InterruptedException {

@@ -1,36 +1,78 @@
 package cyberplanner.roborio.sim;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.function.LongSupplier;
 
 /**
- * The largest gap between two ARM_STATE publications of a loop, in real time. A gap longer than
- * the daemon's state_timeout_s makes the daemon stop and hold where the latest state said the
- * mechanism was (docs/roborio.md): on a busy machine that is the JVM starved, not an error of the
- * daemon or the library, and the move it happened in proves nothing either way. Thread-safe: the
- * publishing loop ticks, the test reads.
+ * Whether the daemon stopped for a stale ARM_STATE during an attempt. It then rightly stops and
+ * holds where the latest state said the mechanism was (docs/roborio.md), and the move proves
+ * nothing either way: on a busy machine either this JVM's loop was starved (a gap between two
+ * publications longer than state_timeout_s, measured here) or the daemon's own loop, which
+ * stamps ARM_STATE at receipt, was (the daemon logs the stop; this reads its log). Thread-safe:
+ * the publishing loop ticks, the test reads.
  */
 final class StarvationWatch {
+  /**
+   * Attempts of one action at the most. On the 2-core machine at load 12-18 with a core kept busy
+   * the daemon stopped for a stale state in about 1 of 10 attempts, often two in a row (its loop
+   * at normal priority): a third is what keeps the suite green there, and a real error still fails
+   * in every attempt that was not starved.
+   */
+  static final int MAX_ATTEMPTS = 3;
+
   private final double stateTimeoutS;
   private final LongSupplier clockNanos;
+  private final LongSupplier daemonStaleStops;
   private long lastTickNanos;
   private long largestGapNanos;
   private long largestGapEverNanos;
   private int voided;
 
-  /** stateTimeoutS: the daemon's state_timeout_s, from the config the daemon runs with. */
-  StarvationWatch(double stateTimeoutS, LongSupplier clockNanos) {
+  /**
+   * @param stateTimeoutS the daemon's state_timeout_s, from the config the daemon runs with
+   * @param daemonStaleStops how many times the daemon said so far that it stopped for a stale ARM_STATE
+   */
+  StarvationWatch(double stateTimeoutS, LongSupplier clockNanos, LongSupplier daemonStaleStops) {
     this.stateTimeoutS = stateTimeoutS;
     this.clockNanos = clockNanos;
+    this.daemonStaleStops = daemonStaleStops;
   }
 
-  /** The state_timeout_s the script passes in (system property cyber.state_timeout_s). */
-  static StarvationWatch fromDaemonConfig() {
-    String value = System.getProperty("cyber.state_timeout_s");
-    if (value == null) {
-      throw new IllegalStateException("no -Dcyber.state_timeout_s (tests/integration/roborio_integration_test.sh "
-          + "reads it from the daemon's config)");
+  /**
+   * From what tests/integration/roborio_integration_test.sh passes in: the config's
+   * state_timeout_s (cyber.state_timeout_s) and the daemon's log (cyber.daemon_log).
+   */
+  static StarvationWatch fromDaemon() {
+    String timeout = System.getProperty("cyber.state_timeout_s");
+    String log = System.getProperty("cyber.daemon_log");
+    if (timeout == null || log == null) {
+      throw new IllegalStateException("no -Dcyber.state_timeout_s or -Dcyber.daemon_log "
+          + "(tests/integration/roborio_integration_test.sh passes them)");
     }
-    return new StarvationWatch(Double.parseDouble(value), System::nanoTime);
+    return new StarvationWatch(Double.parseDouble(timeout), System::nanoTime, () -> staleStopsIn(Path.of(log)));
+  }
+
+  /** The daemon's log line of such a stop: daemon/core/src/motion_gate.cpp, at warning level. */
+  static long staleStopsIn(Path log) {
+    try {
+      return Files.readAllLines(log, StandardCharsets.UTF_8).stream()
+          .filter(line -> line.contains("motion stopped") && line.contains("ARM_STATE is stale"))
+          .count();
+    } catch (IOException e) {
+      throw new UncheckedIOException(e);
+    }
+  }
+
+  double stateTimeoutS() {
+    return stateTimeoutS;
+  }
+
+  long daemonStaleStops() {
+    return daemonStaleStops.getAsLong();
   }
 
   /** Called by the loop right after it published ARM_STATE. */
@@ -43,40 +85,50 @@ final class StarvationWatch {
     lastTickNanos = now;
   }
 
-  /** An action whose checks mean something only if the loop kept the daemon's state fresh. */
+  /** An action whose checks mean something only if the daemon's state stayed fresh. */
   interface Attempt {
-    /** Does the action (attempt 1 or 2) and returns its checks, run only if it was not starved. */
+    /** Does the action (attempt 1, 2, ...) and returns its checks, run only if it was not starved. */
     Runnable run(int attempt) throws Exception;
   }
 
+  /** What puts the world back where the void attempt started, before the next. */
+  interface Restore {
+    void run() throws Exception;
+  }
+
   /**
-   * Runs the attempt; when the loop went silent longer than state_timeout_s meanwhile, says so
-   * and runs it once more instead of checking it. Starved twice in a row fails: the checks of a
-   * move are never skipped altogether.
+   * Runs the attempt; when the daemon's state went stale meanwhile, says why, restores and runs it
+   * again instead of checking it. Starved MAX_ATTEMPTS times in a row fails: the checks of a move
+   * are never skipped altogether.
    */
-  void checkUnlessStarved(String what, Attempt attempt) throws Exception {
+  void checkUnlessStarved(String what, Attempt attempt, Restore restore) throws Exception {
     for (int i = 1; ; ++i) {
       long gapNanos;
       synchronized (this) {
         largestGapNanos = 0;
       }
+      long stopsBefore = daemonStaleStops.getAsLong();
       Runnable checks = attempt.run(i);
       synchronized (this) {  // a silence still going on counts too
         long silenceNanos = lastTickNanos == 0 ? Long.MAX_VALUE : clockNanos.getAsLong() - lastTickNanos;
         gapNanos = Math.max(largestGapNanos, silenceNanos);
       }
+      long stops = daemonStaleStops.getAsLong() - stopsBefore;
       // As the daemon judges it (daemon/core/src/motion_gate.cpp): stale when older than the timeout, not at it.
-      if (gapNanos <= Math.round(stateTimeoutS * 1e9)) {
+      boolean jvmStarved = gapNanos > Math.round(stateTimeoutS * 1e9);
+      if (!jvmStarved && stops == 0) {
         checks.run();
         return;
       }
-      String why = String.format("%s: void: the loop publishing ARM_STATE was silent for %.3f s, longer than the "
-          + "daemon's state_timeout_s %.3f s (the daemon rightly stopped)", what, gapNanos * 1e-9, stateTimeoutS);
+      String why = String.format("%s: void: the daemon stopped %d times for a stale ARM_STATE, the loop publishing "
+          + "it was silent for %.3f s at most (state_timeout_s %.3f s)%s", what, stops, gapNanos * 1e-9,
+          stateTimeoutS, jvmStarved ? ": this JVM was starved" : ": the daemon's loop was starved");
       synchronized (this) {
         ++voided;
       }
-      if (i == 2) throw new AssertionError(why + ", in the second attempt too");
+      if (i == MAX_ATTEMPTS) throw new AssertionError(why + ", in all " + MAX_ATTEMPTS + " attempts");
       System.out.println("starved: " + why + "; once more");
+      restore.run();
     }
   }
 
