@@ -120,9 +120,9 @@ final class StarvationWatch {
         checks.run();
         return;
       }
-      String why = String.format("%s: void: the daemon stopped %d times for a stale ARM_STATE, the loop publishing "
-          + "it was silent for %.3f s at most (state_timeout_s %.3f s)%s", what, stops, gapNanos * 1e-9,
-          stateTimeoutS, jvmStarved ? ": this JVM was starved" : ": the daemon's loop was starved");
+      String why = String.format("%s: void: the daemon logged %d stops for a stale ARM_STATE, this JVM's loop "
+          + "published it with gaps up to %.3f s (state_timeout_s %.3f s)%s", what, stops, gapNanos * 1e-9,
+          stateTimeoutS, jvmStarved ? ": this JVM was starved" : "");
       synchronized (this) {
         ++voided;
       }
