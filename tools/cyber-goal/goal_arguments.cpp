@@ -1,22 +1,9 @@
 #include "goal_arguments.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include "cyber/cli/argument_parser.hpp"
+#include "cyber/cli/number_text.hpp"
 
 namespace cyber::tools {
-
-namespace {
-
-bool parseDouble(const std::string& text, double& out) {
-  if (text.empty()) return false;
-  char* end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return end == text.c_str() + text.size() && errno == 0;
-}
-
-}  // namespace
 
 std::string goalUsage() {
   return "usage: cyber-goal --to ELEVATOR_M,ARM_RAD [--coral] [--algae] [--scene NAME] [--id N]\n"
@@ -26,57 +13,48 @@ std::string goalUsage() {
          "Exit: 0 done, 3 rejected, 4 failed, 5 cancelled, 6 timed out, 2 bad arguments, 1 LCM error.\n";
 }
 
-std::variant<GoalArguments, GoalArgumentError> parseGoalArguments(const std::vector<std::string>& args) {
+cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& args) {
   GoalArguments out;
   bool have_target = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      out.help = true;
-      return out;
-    }
-    if (arg == "--coral") {
-      out.coral = true;
-      continue;
-    }
-    if (arg == "--algae") {
-      out.algae = true;
-      continue;
-    }
-    if (arg == "--no-wait-daemon") {
-      out.wait_for_daemon = false;
-      continue;
-    }
-    const bool takes_value = arg == "--to" || arg == "--scene" || arg == "--id" || arg == "--lcm-url" || arg == "--timeout";
-    if (!takes_value) return GoalArgumentError{"unknown argument '" + arg + "'"};
-    if (i + 1 >= args.size()) return GoalArgumentError{arg + " needs a value"};
-    const std::string& value = args[++i];
-    if (arg == "--to") {
-      const auto comma = value.find(',');
-      if (comma == std::string::npos || !parseDouble(value.substr(0, comma), out.elevator_m) ||
-          !parseDouble(value.substr(comma + 1), out.arm_rad)) {
-        return GoalArgumentError{"--to expects ELEVATOR_M,ARM_RAD, got '" + value + "'"};
-      }
-      have_target = true;
-    } else if (arg == "--scene") {
-      out.scene = value;
-    } else if (arg == "--id") {
-      char* end = nullptr;
-      errno = 0;
-      const long long id = std::strtoll(value.c_str(), &end, 10);
-      if (value.empty() || end != value.c_str() + value.size() || errno != 0) {
-        return GoalArgumentError{"--id expects an integer, got '" + value + "'"};
-      }
-      out.request_id = id;
-    } else if (arg == "--lcm-url") {
-      out.lcm_url = value;
-    } else {
-      if (!parseDouble(value, out.timeout_s) || !(out.timeout_s > 0.0) || !std::isfinite(out.timeout_s)) {
-        return GoalArgumentError{"--timeout expects seconds > 0, got '" + value + "'"};
-      }
-    }
+  cli::ArgumentParser parser;
+  parser.flag("--coral", [&] { out.coral = true; });
+  parser.flag("--algae", [&] { out.algae = true; });
+  parser.flag("--no-wait-daemon", [&] { out.wait_for_daemon = false; });
+  parser.option("--to", [&](const std::string& value) -> std::string {
+    const auto target = cli::parseNumberPair(value, cli::NonFinite::kAccept);
+    if (!target) return "expects ELEVATOR_M,ARM_RAD, got '" + value + "'";
+    out.elevator_m = (*target)[0];
+    out.arm_rad = (*target)[1];
+    have_target = true;
+    return "";
+  });
+  parser.option("--scene", [&](const std::string& value) {
+    out.scene = value;
+    return std::string();
+  });
+  parser.option("--id", [&](const std::string& value) -> std::string {
+    const auto id = cli::parseInteger(value);
+    if (!id) return "expects an integer, got '" + value + "'";
+    out.request_id = *id;
+    return "";
+  });
+  parser.option("--lcm-url", [&](const std::string& value) {
+    out.lcm_url = value;
+    return std::string();
+  });
+  parser.option("--timeout", [&](const std::string& value) -> std::string {
+    const auto seconds = cli::parseNumber(value);
+    if (!seconds || !(*seconds > 0.0)) return "expects seconds > 0, got '" + value + "'";
+    out.timeout_s = *seconds;
+    return "";
+  });
+  const auto scan = parser.parse(args);
+  if (!scan) return scan.error();
+  if (scan.value() == cli::Scan::kHelp) {
+    out.help = true;
+    return out;
   }
-  if (!have_target) return GoalArgumentError{"--to ELEVATOR_M,ARM_RAD is required"};
+  if (!have_target) return cli::ArgumentError{"--to ELEVATOR_M,ARM_RAD is required"};
   return out;
 }
 

@@ -1,8 +1,7 @@
 #include "plan_arguments.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include "cyber/cli/argument_parser.hpp"
+#include "cyber/cli/number_text.hpp"
 
 namespace cyber::tools {
 
@@ -21,81 +20,55 @@ const char* planUsage() {
          "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";
 }
 
-std::optional<planner::JointVector> parsePair(const std::string& text) {
-  const size_t comma = text.find(',');
-  if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos) return std::nullopt;
-  planner::JointVector out;
-  const std::string parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
-  for (int i = 0; i < 2; ++i) {
-    if (parts[i].empty()) return std::nullopt;
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(parts[i].c_str(), &end);
-    if (end != parts[i].c_str() + parts[i].size() || errno == ERANGE || !std::isfinite(x)) return std::nullopt;
-    out[i] = x;
-  }
-  return out;
+namespace {
+
+// Stores "A,B" into `into`, or says what was expected.
+cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
+  return [into, what](const std::string& text) -> std::string {
+    const auto pair = cli::parseNumberPair(text);
+    if (!pair) return std::string("expects ") + what + " as two finite numbers separated by a comma, got '" + text + "'";
+    *into = planner::JointVector((*pair)[0], (*pair)[1]);
+    return "";
+  };
 }
 
-std::optional<PlanArguments> parsePlanArguments(const std::vector<std::string>& args, std::string* error) {
+cli::ValueHandler text(std::string* into) {
+  return [into](const std::string& value) {
+    *into = value;
+    return std::string();
+  };
+}
+
+}  // namespace
+
+cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args) {
   PlanArguments out;
   bool have_from = false;
   bool have_to = false;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) {
-        *error = a + " needs a value";
-        return false;
-      }
-      *into = args[++i];
-      return true;
-    };
-    auto pair = [&](planner::JointVector* into, const char* what) {
-      std::string text;
-      if (!value(&text)) return false;
-      const auto p = parsePair(text);
-      if (!p) {
-        *error = a + " expects " + what + " as two finite numbers separated by a comma, got \"" + text + "\"";
-        return false;
-      }
-      *into = *p;
-      return true;
-    };
-    if (a == "--help" || a == "-h") {
-      out.help = true;
-    } else if (a == "--config") {
-      if (!value(&out.config_path)) return std::nullopt;
-    } else if (a == "--from") {
-      if (!pair(&out.from, "T,THETA")) return std::nullopt;
-      have_from = true;
-    } else if (a == "--to") {
-      if (!pair(&out.to, "T,THETA")) return std::nullopt;
-      have_to = true;
-    } else if (a == "--from-velocity") {
-      if (!pair(&out.from_velocity, "VT,VTHETA")) return std::nullopt;
-    } else if (a == "--coral") {
-      out.pieces.coral = true;
-    } else if (a == "--algae") {
-      out.pieces.algae = true;
-    } else if (a == "--scene") {
-      if (!value(&out.scene)) return std::nullopt;
-    } else if (a == "--csv") {
-      if (!value(&out.csv_path)) return std::nullopt;
-    } else if (a == "--plot") {
-      if (!value(&out.plot_path)) return std::nullopt;
-    } else if (a == "--json") {
-      out.json = true;
-    } else {
-      *error = "unknown argument \"" + a + "\" (see --help)";
-      return std::nullopt;
-    }
+  cli::ArgumentParser parser;
+  parser.option("--config", text(&out.config_path));
+  parser.option("--from", [&, pair = jointPair(&out.from, "T,THETA")](const std::string& v) {
+    have_from = true;
+    return pair(v);
+  });
+  parser.option("--to", [&, pair = jointPair(&out.to, "T,THETA")](const std::string& v) {
+    have_to = true;
+    return pair(v);
+  });
+  parser.option("--from-velocity", jointPair(&out.from_velocity, "VT,VTHETA"));
+  parser.flag("--coral", [&] { out.pieces.coral = true; });
+  parser.flag("--algae", [&] { out.pieces.algae = true; });
+  parser.option("--scene", text(&out.scene));
+  parser.option("--csv", text(&out.csv_path));
+  parser.option("--plot", text(&out.plot_path));
+  parser.flag("--json", [&] { out.json = true; });
+  const auto scan = parser.parse(args);
+  if (!scan) return scan.error();
+  if (scan.value() == cli::Scan::kHelp) {
+    out.help = true;
+    return out;
   }
-  if (out.help) return out;
-  if (!have_from || !have_to) {
-    *error = std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)";
-    return std::nullopt;
-  }
+  if (!have_from || !have_to) return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
   return out;
 }
 

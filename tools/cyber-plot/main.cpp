@@ -3,35 +3,16 @@
 // move as a filmstrip and an APNG animation); with only --config a preview of the description
 // (docs/configuration.md). Exit: 0 written, 2 bad input.
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "cyber/config/load_config.hpp"
 #include "cyber/plot/world_view.hpp"
+#include "plot_arguments.hpp"
 #include "trajectory_sources.hpp"
 
 namespace {
-
-const char* kUsage =
-    "usage: cyber-plot [--config FILE] (--csv FILE | --lcm-log FILE [--channel NAME] [--request-id N])\n"
-    "                  [--coral] [--algae] [--scene NAME] --out FILE.png\n"
-    "       cyber-plot --world [--config FILE] (--at ELEVATOR_M,ARM_RAD | --csv FILE | --lcm-log FILE ...)\n"
-    "                  [--frames N] [--animation FILE.png] [--coral] [--algae] [--scene NAME] --out FILE.png\n"
-    "       cyber-plot --config FILE [--coral] [--algae] [--scene NAME] --out FILE.png\n"
-    "Draws the C-space (obstacle region of the held pieces) with the path, and position, velocity,\n"
-    "voltage and current against time with the limits, like cyber-plan --plot.\n"
-    "  --csv FILE        a trajectory written by cyber-plan --csv\n"
-    "  --lcm-log FILE    an lcm-logger log; plots its last ARM_TRAJECTORY (or the one of --request-id)\n"
-    "  --config FILE     robot description (default: the embedded config/reefscape-2025.toml); alone,\n"
-    "                    previews it: the robot at its named poses ([poses.*] of the held pieces) over\n"
-    "                    the obstacles, and the C-space map with those poses\n"
-    "  --world           the side view of the scene with the robot: at --at, or for a trajectory a\n"
-    "                    filmstrip of --frames poses (default 6) plus the pose of smallest clearance\n"
-    "  --animation FILE  with --world and a trajectory: also an animated PNG (APNG, 25 frames/s)\n";
 
 int fail(const std::string& message) {
   std::fprintf(stderr, "cyber-plot: %s\n", message.c_str());
@@ -73,93 +54,52 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
 
 int main(int argc, char** argv) {
   using namespace cyber;
-  std::string config_path, csv, log, channel, scene_name, out, animation, at_text;
-  std::optional<int64_t> request_id;
-  bool world = false;
-  int frames = 6;
-  planner::HeldPieces pieces;
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](std::string* into) {
-      if (i + 1 >= args.size()) return false;
-      *into = args[++i];
-      return true;
-    };
-    std::string text;
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (a == "--world") {
-      world = true;
-    } else if (a == "--frames" && value(&text)) {
-      char* end = nullptr;
-      frames = static_cast<int>(std::strtol(text.c_str(), &end, 10));
-      if (end == text.c_str() || *end != '\0' || frames < 2 || frames > 20) return fail("--frames expects 2 to 20, got \"" + text + "\"");
-    } else if (a == "--coral") {
-      pieces.coral = true;
-    } else if (a == "--algae") {
-      pieces.algae = true;
-    } else if ((a == "--config" && value(&config_path)) || (a == "--csv" && value(&csv)) ||
-               (a == "--lcm-log" && value(&log)) || (a == "--channel" && value(&channel)) ||
-               (a == "--scene" && value(&scene_name)) || (a == "--out" && value(&out)) ||
-               (a == "--animation" && value(&animation)) || (a == "--at" && value(&at_text))) {
-    } else if (a == "--request-id" && value(&text)) {
-      char* end = nullptr;
-      request_id = std::strtoll(text.c_str(), &end, 10);
-      if (end == text.c_str() || *end != '\0') return fail("--request-id expects an integer, got \"" + text + "\"");
-    } else {
-      return fail("unknown or incomplete argument \"" + a + "\" (see --help)");
-    }
+  const auto parsed = tools::parsePlotArguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed) return fail(parsed.error().message);
+  const tools::PlotArguments& args = parsed.value();
+  if (args.help) {
+    std::fputs(tools::plotUsage(), stdout);
+    return 0;
   }
-  if (out.empty()) return fail("missing --out FILE.png");
-  const bool preview = !world && csv.empty() && log.empty() && !config_path.empty();
-  if (!world && (!animation.empty() || !at_text.empty())) return fail("--animation and --at need --world");
-  const int sources = (csv.empty() ? 0 : 1) + (log.empty() ? 0 : 1) + (at_text.empty() ? 0 : 1);
-  if (!preview && (world ? sources != 1 : sources != 1 || !at_text.empty())) {
-    return fail(world ? "give exactly one of --at, --csv and --lcm-log" : "give exactly one of --csv and --lcm-log");
-  }
-  if (!at_text.empty() && !animation.empty()) return fail("--animation needs a trajectory (--csv or --lcm-log), not --at");
+  const std::string& csv = args.csv_path;
+  const std::string& out = args.out_path;
+  const planner::HeldPieces pieces = args.pieces;
 
   config::Config config;
   try {
-    config = config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(config_path);
+    config = args.config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args.config_path);
   } catch (const config::ConfigError& e) {
     return fail(e.what());
   }
   const planner::RobotModel& robot = config.robot;
-  const int scene = scene_name.empty() ? 0 : robot.sceneIndex(scene_name);
-  if (scene < 0) return fail("unknown scene \"" + scene_name + "\"");
-  if (channel.empty()) channel = config.daemon.channels.trajectory;
+  const int scene = args.scene.empty() ? 0 : robot.sceneIndex(args.scene);
+  if (scene < 0) return fail("unknown scene \"" + args.scene + "\"");
+  const std::string channel = args.channel.empty() ? config.daemon.channels.trajectory : args.channel;
   const std::string pieces_label = std::string(pieces.coral ? " +coral" : "") + (pieces.algae ? " +algae" : "");
   const std::string scene_label = " (scene " + robot.scenes[static_cast<size_t>(scene)].name + ")";
   std::string error;
 
-  if (preview) return previewConfig(config, scene, pieces, config_path, out);
-  if (!at_text.empty()) {
-    double e = 0, a = 0;
-    char tail = 0;
-    if (std::sscanf(at_text.c_str(), "%lf,%lf%c", &e, &a, &tail) != 2 || !std::isfinite(e) || !std::isfinite(a)) {
-      return fail("--at expects ELEVATOR_M,ARM_RAD, got \"" + at_text + "\"");
-    }
-    const planner::JointVector q(e, a);
-    if (!robot.withinLimits(q)) return fail("--at " + at_text + " is outside the joint ranges");
+  if (args.preview()) return previewConfig(config, scene, pieces, args.config_path, out);
+  if (args.at) {
+    const planner::JointVector q = *args.at;
+    if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
     char title[96];
-    std::snprintf(title, sizeof title, "%s at %.3f m, %.3f rad", robot.name.c_str(), e, a);
+    std::snprintf(title, sizeof title, "%s at %.3f m, %.3f rad", robot.name.c_str(), q[0], q[1]);
     if (!plot::renderWorldPng(robot, scene, pieces, q, title + pieces_label + scene_label, out, &error)) return fail(error);
     return 0;
   }
 
   plot::TrajectoryPlotData data;
-  const bool ok = csv.empty() ? tools::readTrajectoryFromLog(log, channel, request_id, robot, data, &error)
+  const bool ok = csv.empty() ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
                               : tools::readPlanCsv(csv, data, &error);
   if (!ok) return fail(error);
   if (data.title.empty()) data.title = "trajectory " + csv;
   data.title += pieces_label;
-  if (world) {
+  if (args.world) {
     const plot::Move move = plot::moveOf(data);
-    if (!plot::renderFilmstripPng(robot, scene, pieces, move, frames, data.title + scene_label, out, &error)) return fail(error);
-    if (!animation.empty() && !plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, animation, &error)) {
+    if (!plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out, &error)) return fail(error);
+    if (!args.animation_path.empty() &&
+        !plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path, &error)) {
       return fail(error);
     }
     return 0;
