@@ -4,6 +4,20 @@
 
 namespace cyber::cli {
 
+ValueHandler store(std::string* into) {
+  return [into](const std::string& value) {
+    *into = value;
+    return std::string();
+  };
+}
+
+ValueHandler store(std::optional<std::string>* into) {
+  return [into](const std::string& value) {
+    *into = value;
+    return std::string();
+  };
+}
+
 void ArgumentParser::flag(std::string name, std::function<void()> set) {
   entries_.push_back(Entry{std::move(name), false, std::move(set), {}});
 }

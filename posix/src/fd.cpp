@@ -17,7 +17,7 @@ namespace {
 [[noreturn]] void fail(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
 
 // An absolute time of 0 would disarm the timer: 1 ns is as much in the past.
-timespec toExpiry(MonoNs ns) {
+timespec toExpiry(std::int64_t ns) {
   timespec ts{};
   if (ns <= 0) {
     ts.tv_nsec = 1;
@@ -28,7 +28,7 @@ timespec toExpiry(MonoNs ns) {
   return ts;
 }
 
-timespec toTimespec(MonoNs ns) {
+timespec toTimespec(std::int64_t ns) {
   timespec ts{};
   ts.tv_sec = static_cast<time_t>(ns / 1'000'000'000);
   ts.tv_nsec = static_cast<long>(ns % 1'000'000'000);
@@ -68,14 +68,14 @@ TimerFd::TimerFd(bool blocking) : fd_(::timerfd_create(CLOCK_MONOTONIC, TFD_CLOE
   if (fd_.get() < 0) fail("timerfd_create");
 }
 
-void TimerFd::startPeriodic(MonoNs first_ns, MonoNs period_ns) const {
+void TimerFd::startPeriodic(std::int64_t first_ns, std::int64_t period_ns) const {
   itimerspec spec{};
   spec.it_value = toExpiry(first_ns);
   spec.it_interval = toTimespec(period_ns);
   if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");
 }
 
-void TimerFd::startOnce(MonoNs at_ns) const {
+void TimerFd::startOnce(std::int64_t at_ns) const {
   itimerspec spec{};
   spec.it_value = toExpiry(at_ns);
   if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");

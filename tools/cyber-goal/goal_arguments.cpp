@@ -28,20 +28,14 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
     have_target = true;
     return "";
   });
-  parser.option("--scene", [&](const std::string& value) {
-    out.scene = value;
-    return std::string();
-  });
+  parser.option("--scene", cli::store(&out.scene));
   parser.option("--id", [&](const std::string& value) -> std::string {
     const auto id = cli::parseInteger(value);
     if (!id) return "expects an integer, got '" + value + "'";
     out.request_id = *id;
     return "";
   });
-  parser.option("--lcm-url", [&](const std::string& value) {
-    out.lcm_url = value;
-    return std::string();
-  });
+  parser.option("--lcm-url", cli::store(&out.lcm_url));
   parser.option("--timeout", [&](const std::string& value) -> std::string {
     const auto seconds = cli::parseNumber(value);
     if (!seconds || !(*seconds > 0.0)) return "expects seconds > 0, got '" + value + "'";

@@ -32,13 +32,6 @@ cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
   };
 }
 
-cli::ValueHandler text(std::string* into) {
-  return [into](const std::string& value) {
-    *into = value;
-    return std::string();
-  };
-}
-
 }  // namespace
 
 cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args) {
@@ -46,7 +39,7 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
   bool have_from = false;
   bool have_to = false;
   cli::ArgumentParser parser;
-  parser.option("--config", text(&out.config_path));
+  parser.option("--config", cli::store(&out.config_path));
   parser.option("--from", [&, pair = jointPair(&out.from, "T,THETA")](const std::string& v) {
     have_from = true;
     return pair(v);
@@ -58,9 +51,9 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
   parser.option("--from-velocity", jointPair(&out.from_velocity, "VT,VTHETA"));
   parser.flag("--coral", [&] { out.pieces.coral = true; });
   parser.flag("--algae", [&] { out.pieces.algae = true; });
-  parser.option("--scene", text(&out.scene));
-  parser.option("--csv", text(&out.csv_path));
-  parser.option("--plot", text(&out.plot_path));
+  parser.option("--scene", cli::store(&out.scene));
+  parser.option("--csv", cli::store(&out.csv_path));
+  parser.option("--plot", cli::store(&out.plot_path));
   parser.flag("--json", [&] { out.json = true; });
   const auto scan = parser.parse(args);
   if (!scan) return scan.error();

@@ -43,7 +43,7 @@ std::int64_t realtimeMicros() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
 }
 
-posix::MonoNs toNs(double seconds) { return static_cast<posix::MonoNs>(std::llround(seconds * 1e9)); }
+std::int64_t toNs(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
 
 enum Tag : std::uint64_t { kCanTag, kHeartbeatTag, kStateTag, kFaultTag, kSignalTag, kControlTag };
 

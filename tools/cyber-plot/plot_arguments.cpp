@@ -5,17 +5,6 @@
 
 namespace cyber::tools {
 
-namespace {
-
-cli::ValueHandler text(std::string* into) {
-  return [into](const std::string& value) {
-    *into = value;
-    return std::string();
-  };
-}
-
-}  // namespace
-
 const char* plotUsage() {
   return "usage: cyber-plot [--config FILE] (--csv FILE | --lcm-log FILE [--channel NAME] [--request-id N])\n"
          "                  [--coral] [--algae] [--scene NAME] --out FILE.png\n"
@@ -40,13 +29,13 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
   parser.flag("--world", [&] { out.world = true; });
   parser.flag("--coral", [&] { out.pieces.coral = true; });
   parser.flag("--algae", [&] { out.pieces.algae = true; });
-  parser.option("--config", text(&out.config_path));
-  parser.option("--csv", text(&out.csv_path));
-  parser.option("--lcm-log", text(&out.log_path));
-  parser.option("--channel", text(&out.channel));
-  parser.option("--scene", text(&out.scene));
-  parser.option("--out", text(&out.out_path));
-  parser.option("--animation", text(&out.animation_path));
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--csv", cli::store(&out.csv_path));
+  parser.option("--lcm-log", cli::store(&out.log_path));
+  parser.option("--channel", cli::store(&out.channel));
+  parser.option("--scene", cli::store(&out.scene));
+  parser.option("--out", cli::store(&out.out_path));
+  parser.option("--animation", cli::store(&out.animation_path));
   parser.option("--frames", [&](const std::string& value) -> std::string {
     const auto frames = cli::parseInteger(value);
     if (!frames || *frames < 2 || *frames > 20) return "expects 2 to 20, got '" + value + "'";

@@ -19,14 +19,8 @@ cli::Parsed<WpilogArguments> parseWpilogArguments(const std::vector<std::string>
   WpilogArguments out;
   std::vector<std::string> files;
   cli::ArgumentParser parser;
-  parser.option("--config", [&](const std::string& value) {
-    out.config_path = value;
-    return std::string();
-  });
-  parser.option("--list", [&](const std::string& value) {
-    out.list_path = value;
-    return std::string();
-  });
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--list", cli::store(&out.list_path));
   parser.positional([&](const std::string& file) {
     files.push_back(file);
     return std::string();

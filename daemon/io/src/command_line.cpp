@@ -17,18 +17,9 @@ std::string usage() {
 cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args) {
   CommandLine out;
   cli::ArgumentParser parser;
-  parser.option("--config", [&](const std::string& value) {
-    out.config_path = value;
-    return std::string();
-  });
-  parser.option("--can", [&](const std::string& value) {
-    out.can_interface = value;
-    return std::string();
-  });
-  parser.option("--lcm-url", [&](const std::string& value) {
-    out.lcm_url = value;
-    return std::string();
-  });
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--can", cli::store(&out.can_interface));
+  parser.option("--lcm-url", cli::store(&out.lcm_url));
   const auto scan = parser.parse(args);
   if (!scan) return scan.error();
   out.help = scan.value() == cli::Scan::kHelp;

@@ -13,10 +13,10 @@
 namespace cyber::posix {
 namespace {
 
-MonoNs now() {
+std::int64_t now() {
   timespec ts{};
   clock_gettime(CLOCK_MONOTONIC, &ts);
-  return static_cast<MonoNs>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
+  return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
 TEST(PosixFd, UniqueFdClosesOnceAndMovesOwnership) {
@@ -54,7 +54,7 @@ TEST(PosixFd, EpollReportsTheTagOfWhatIsReadable) {
 TEST(PosixFd, PeriodicTimerCountsExpirationsAndStopDisarms) {
   const TimerFd timer;  // non-blocking: consume() returns 0 at once when nothing fired
   const TimerFd probe(true);
-  const MonoNs period = 1'000'000;
+  const std::int64_t period = 1'000'000;
   timer.startPeriodic(now(), period);
   probe.startOnce(now() + 5 * period);
   probe.wait();

@@ -42,13 +42,6 @@ std::optional<PdGains> parseGains(std::string_view text) {
   return PdGains{(*values)[0], (*values)[1]};
 }
 
-cli::ValueHandler path(std::optional<std::string>* into) {
-  return [into](const std::string& value) {
-    *into = value;
-    return std::string();
-  };
-}
-
 // Seconds: > 0, or >= 0 when zero is allowed.
 cli::ValueHandler seconds(double* into, bool zero_allowed) {
   return [into, zero_allowed](const std::string& value) -> std::string {
@@ -81,11 +74,11 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
   parser.flag("--coral", [&] { o.held_coral = true; });
   parser.flag("--algae", [&] { o.held_algae = true; });
   parser.flag("--no-heartbeat", [&] { o.heartbeat = false; });
-  parser.option("--config", path(&o.config_path));
-  parser.option("--can", path(&o.can_interface));
-  parser.option("--lcm-url", path(&o.lcm_url));
-  parser.option("--log", path(&o.log_path));
-  parser.option("--control", path(&o.control_path));
+  parser.option("--config", cli::store(&o.config_path));
+  parser.option("--can", cli::store(&o.can_interface));
+  parser.option("--lcm-url", cli::store(&o.lcm_url));
+  parser.option("--log", cli::store(&o.log_path));
+  parser.option("--control", cli::store(&o.control_path));
   parser.option("--initial", [&](const std::string& v) -> std::string {
     const auto q = cli::parseNumberPair(v);
     if (!q) return "must be T,THETA (elevator m, arm rad), got '" + v + "'";

@@ -4,6 +4,7 @@
 // errors), `--help`/`-h` stops the scan. Handlers check and store each value as it comes.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,10 @@ namespace cyber::cli {
 // What a value handler says: "" when the value is taken, else the reason it is refused (the
 // parser prefixes the option's name).
 using ValueHandler = std::function<std::string(const std::string& value)>;
+
+// A handler that keeps the value as it is.
+ValueHandler store(std::string* into);
+ValueHandler store(std::optional<std::string>* into);
 
 enum class Scan { kComplete, kHelp };
 

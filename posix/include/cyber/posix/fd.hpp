@@ -9,8 +9,6 @@
 
 namespace cyber::posix {
 
-using MonoNs = std::int64_t;
-
 class UniqueFd {
  public:
   UniqueFd() = default;
@@ -50,8 +48,8 @@ class TimerFd {
  public:
   explicit TimerFd(bool blocking = false);
   // Periodic, first expiry at first_ns (absolute).
-  void startPeriodic(MonoNs first_ns, MonoNs period_ns) const;
-  void startOnce(MonoNs at_ns) const;
+  void startPeriodic(std::int64_t first_ns, std::int64_t period_ns) const;
+  void startOnce(std::int64_t at_ns) const;
   void stop() const;
   std::uint64_t wait() const;
   std::uint64_t consume() const;
