@@ -33,3 +33,13 @@ function(cyber_test_dir dir label)
     gtest_discover_tests(${name} PROPERTIES LABELS ${label} DISCOVERY_TIMEOUT 60)
   endforeach()
 endfunction()
+
+# A tool's command line (its *_arguments.cpp, parsed with cli/) as a library of its own, so that
+# the tool's unit tests link it without the tool's main().
+function(cyber_tool_arguments target)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LINK" ${ARGN})
+  add_library(${target} STATIC ${ARG_SOURCES})
+  target_include_directories(${target} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR})
+  target_link_libraries(${target} PUBLIC cyber_cli ${ARG_LINK})
+  cyber_warnings(${target})
+endfunction()

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <iostream>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "cyber/config/load_config.hpp"
@@ -30,11 +29,11 @@ int fail(int code, const std::string& message) {
 int main(int argc, char** argv) {
   using namespace cyber;
   const auto parsed = daemon::io::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
-  if (const auto* error = std::get_if<daemon::io::CommandLineError>(&parsed)) {
-    std::cerr << "cyber-plannerd: " << error->message << "\n" << daemon::io::usage();
-    return 2;
+  if (!parsed) {
+    std::cerr << "cyber-plannerd: " << parsed.error().message << "\n" << daemon::io::usage();
+    return cli::kExitBadUsage;
   }
-  const auto& command = std::get<daemon::io::CommandLine>(parsed);
+  const auto& command = parsed.value();
   if (command.help) {
     std::cout << daemon::io::usage();
     return 0;

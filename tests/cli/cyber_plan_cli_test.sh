@@ -59,6 +59,7 @@ if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a"
 fi
 check "embedded default config" 0 --from 0.58,2.97 --to 1.93,1.71 --algae
 check "moving start" 0 --config "$config" --from 0.8,1.57 --to 1.5,1.57 --from-velocity 0.5,0.0
+check "joined values" 0 --config="$config" --from=0.8,1.57 --to=1.5,1.57 --from-velocity=-0.2,1
 check "zero-length move" 0 --config "$config" --from 0.2,1.57 --to 0.2,1.57
 check "help" 0 --help
 
@@ -67,6 +68,8 @@ check "inf goal" 2 --config "$config" --from 0.2,1.57 --to 1.97,inf
 check "malformed pair" 2 --config "$config" --from 0.2 --to 1.97,5.17
 check "missing --to" 2 --config "$config" --from 0.2,1.57
 check "unknown argument" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --fast
+check "empty joined value" 2 --config= --from 0.2,1.57 --to 1.97,5.17
+expect_in "empty value named" "$tmp/err" "--config needs a value"
 check "missing config" 2 --config "$tmp/none.toml" --from 0.2,1.57 --to 1.97,5.17
 printf 'name = "x"\n' >"$tmp/bad.toml"
 check "invalid config" 2 --config "$tmp/bad.toml" --from 0.2,1.57 --to 1.97,5.17

@@ -3,8 +3,10 @@
 // Properties: no crash, hang or UB; every rejection carries a message; what cyber-plan,
 // cyber-goal and cyber-plant-sim accept is usable (finite poses, a positive timeout, rates in range).
 
+#include <cmath>
 #include <string_view>
-#include <variant>
+
+#include "cyber/cli/number_text.hpp"
 
 #include "cyber/daemon/io/command_line.hpp"
 #include "cyber/plant/sim_options.hpp"
@@ -20,34 +22,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // (Without --config the daemon uses its embedded robot, so any accepted line is usable.)
   const auto daemon = cyber::daemon::io::parseCommandLine(args);
-  if (const auto* error = std::get_if<cyber::daemon::io::CommandLineError>(&daemon)) {
-    CYBER_FUZZ_CHECK(!error->message.empty());
-  }
+  if (!daemon) CYBER_FUZZ_CHECK(!daemon.error().message.empty());
 
-  std::string error;
-  const auto plan = cyber::tools::parsePlanArguments(args, &error);
+  const auto plan = cyber::tools::parsePlanArguments(args);
   if (!plan) {
-    CYBER_FUZZ_CHECK(!error.empty());
+    CYBER_FUZZ_CHECK(!plan.error().message.empty());
   } else {
     CYBER_FUZZ_CHECK(plan->help || (plan->from.allFinite() && plan->to.allFinite() && plan->from_velocity.allFinite()));
   }
   for (const auto& arg : args) {
-    if (const auto pair = cyber::tools::parsePair(arg)) CYBER_FUZZ_CHECK(pair->allFinite());
+    if (const auto pair = cyber::cli::parseNumberPair(arg)) CYBER_FUZZ_CHECK(std::isfinite((*pair)[0]) && std::isfinite((*pair)[1]));
   }
 
   const auto goal = cyber::tools::parseGoalArguments(args);
-  if (const auto* goal_error = std::get_if<cyber::tools::GoalArgumentError>(&goal)) {
-    CYBER_FUZZ_CHECK(!goal_error->message.empty());
+  if (!goal) {
+    CYBER_FUZZ_CHECK(!goal.error().message.empty());
   } else {
-    const auto& parsed = std::get<cyber::tools::GoalArguments>(goal);
-    CYBER_FUZZ_CHECK(parsed.help || (parsed.timeout_s > 0.0 && std::isfinite(parsed.timeout_s)));
+    CYBER_FUZZ_CHECK(goal->help || (goal->timeout_s > 0.0 && std::isfinite(goal->timeout_s)));
   }
 
-  const std::vector<std::string_view> views(args.begin(), args.end());
-  const auto sim = cyber::plant::parseSimArguments(views);
-  if (sim.error.empty() && !sim.help) {
-    CYBER_FUZZ_CHECK(sim.options.state_rate_hz >= 1.0 && sim.options.state_rate_hz <= 1000.0);
-    CYBER_FUZZ_CHECK(sim.options.initial_q.allFinite());
+  const auto sim = cyber::plant::parseSimArguments(args);
+  if (sim && !sim->help) {
+    CYBER_FUZZ_CHECK(sim->options.state_rate_hz >= 1.0 && sim->options.state_rate_hz <= 1000.0);
+    CYBER_FUZZ_CHECK(sim->options.initial_q.allFinite());
   }
   return 0;
 }

@@ -1,6 +1,10 @@
 """Host-side readers for the HIL results: candump -L captures, LCM event logs, the plant
-simulator's CSV. An independent reading of docs/can-protocol.md and docs/lcm.md (Python stdlib
-only), so the checks do not reuse the C++ code under test."""
+simulator's CSV (Python stdlib only). The wire formats are derived from their one definition each
+rather than copied: the CAN ids and scales are read from the C++ codec's headers (can/include,
+the source of truth for docs/can-protocol.md and tests/vectors/can_frames.txt), the LCM layouts
+and fingerprints from lcmtypes/*.lcm, hashed the way lcm-gen hashes them. The decoding itself is
+this file's own, so the checks do not reuse the C++ code under test; tests/hil/hil_lib_test.py
+holds it to the shared CAN vectors and to the generated fingerprints."""
 
 import csv
 import os
@@ -8,18 +12,42 @@ import re
 import bisect
 import struct
 
+SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
 CANDUMP_LINE = re.compile(r"^\((\d+)\.(\d{6})\) (\S+) ([0-9A-F]{3}|[0-9A-F]{8})#(R|[0-9A-F]*)$")
 
-HEARTBEAT_ID = 0x01011840
-TEAM_PREFIX = (10 << 24) | (8 << 16)  # device type Miscellaneous, manufacturer Team Use
+
+def cpp_constants(*headers):
+    """{kName: value} of every `inline constexpr TYPE kName = LITERAL;` in the headers (paths
+    relative to the source tree); only plain integer and floating literals."""
+    found = {}
+    for header in headers:
+        with open(os.path.join(SOURCE_DIR, header)) as f:
+            text = f.read()
+        for name, literal in re.findall(r"inline constexpr [\w:]+ (k\w+) = ([0-9][0-9a-fA-FxX.eE+-]*)u?;", text):
+            found[name] = int(literal, 0) if re.fullmatch(r"0[xX][0-9a-fA-F]+|\d+", literal) else float(literal)
+    return found
+
+
+CAN = cpp_constants("can/include/cyber/can/frc_id.hpp", "can/include/cyber/can/setpoint_codec.hpp")
+HEARTBEAT_ID = CAN["kHeartbeatId"]
+# FRC CAN id: device type << 24 | manufacturer << 16 | (api class << 4 | api index) << 6 | device.
+TEAM_PREFIX = (CAN["kDeviceTypeMiscellaneous"] << 24) | (CAN["kManufacturerTeamUse"] << 16)
+POSITION_COUNTS = CAN["kPositionCountsPerUnit"]
+VELOCITY_COUNTS = CAN["kVelocityCountsPerUnit"]
+VOLTAGE_COUNTS = CAN["kVoltageCountsPerVolt"]
+
+
+def team_frame_id(api_class, api_index, device):
+    return TEAM_PREFIX | (((api_class << 4) | api_index) << 6) | device
 
 
 def setpoint_id(device):
-    return TEAM_PREFIX | (((1 << 4) | 0) << 6) | device
+    return team_frame_id(CAN["kSetpointApiClass"], CAN["kSetpointApiIndex"], device)
 
 
 def status_id(device):
-    return TEAM_PREFIX | (((2 << 4) | 0) << 6) | device
+    return team_frame_id(CAN["kStatusApiClass"], CAN["kStatusApiIndex"], device)
 
 
 class Frame:
@@ -53,9 +81,9 @@ def signed(value, bits):
 def decode_setpoint(frame):
     """(position, velocity, volts, sequence) of an 8-byte setpoint payload."""
     d = frame.data
-    position = signed(d[0] | d[1] << 8 | d[2] << 16, 24) * 1e-5
-    velocity = signed(d[3] | d[4] << 8, 16) * 1e-3
-    volts = signed(d[5] | d[6] << 8, 16) * 1e-3
+    position = signed(d[0] | d[1] << 8 | d[2] << 16, 24) / POSITION_COUNTS
+    velocity = signed(d[3] | d[4] << 8, 16) / VELOCITY_COUNTS
+    volts = signed(d[5] | d[6] << 8, 16) / VOLTAGE_COUNTS
     return position, velocity, volts, d[7]
 
 
@@ -65,7 +93,8 @@ def encode_setpoint(position, velocity, volts, sequence):
         c = int(abs(value) * scale + 0.5) * (1 if value >= 0 else -1)
         assert -(1 << (bits - 1)) <= c < (1 << (bits - 1)), (value, bits)
         return c & ((1 << bits) - 1)
-    p, v, u = count(position, 1e5, 24), count(velocity, 1e3, 16), count(volts, 1e3, 16)
+    p = count(position, POSITION_COUNTS, 24)
+    v, u = count(velocity, VELOCITY_COUNTS, 16), count(volts, VOLTAGE_COUNTS, 16)
     return bytes([p & 0xFF, p >> 8 & 0xFF, p >> 16, v & 0xFF, v >> 8, u & 0xFF, u >> 8, sequence & 0xFF])
 
 
@@ -99,63 +128,112 @@ def read_lcm_log(path):
     return events
 
 
-class Reader:
-    """Big-endian LCM field reader; skips the 8-byte fingerprint."""
+LCM_PRIMITIVES = {"int8_t": "b", "int16_t": "h", "int32_t": "i", "int64_t": "q", "float": "f", "double": "d",
+                  "boolean": "b", "byte": "B", "string": None}
 
-    def __init__(self, data):
-        self.data, self.at = data, 8
 
-    def take(self, fmt):
-        value = struct.unpack_from(">" + fmt, self.data, self.at)
-        self.at += struct.calcsize(">" + fmt)
-        return value if len(value) > 1 else value[0]
+def lcm_members(type_name):
+    """[(name, type, [dimension sizes])] of lcmtypes/TYPE_NAME.lcm, constants left out."""
+    with open(os.path.join(SOURCE_DIR, "lcmtypes", type_name + ".lcm")) as f:
+        text = re.sub(r"//[^\n]*", "", f.read())
+    members = []
+    for decl in text[text.index("{") + 1:text.rindex("}")].split(";"):
+        decl = decl.strip()
+        if not decl or decl.startswith("const "):
+            continue
+        m = re.fullmatch(r"(\w+)\s+(\w+)((?:\s*\[\s*\w+\s*\])*)", decl)
+        if not m or m.group(1) not in LCM_PRIMITIVES:
+            raise ValueError(f"lcmtypes/{type_name}.lcm: cannot read '{decl}'")
+        members.append((m.group(2), m.group(1), re.findall(r"\[\s*(\w+)\s*\]", m.group(3))))
+    return members
 
-    def string(self):
-        n = self.take("i")
-        text = self.data[self.at:self.at + n - 1].decode()
-        self.at += n
-        return text
+
+def lcm_fingerprint(members):
+    """The 8-byte fingerprint lcm-gen gives a struct of primitive members: a hash of each member's
+    name, type and dimensions (a dimension is constant, 0, or sized by a member, 1), rotated left
+    by one bit as the generated _computeHash does for a struct with no nested types."""
+    mask = (1 << 64) - 1
+
+    def update(v, c):
+        c = c - 256 if c > 127 else c  # lcm-gen adds a (signed) char
+        v = (((v << 8) ^ (v >> 55)) + c) & mask
+        return v - (1 << 64) if v >> 63 else v
+
+    def update_text(v, text):
+        v = update(v, len(text))
+        for c in text.encode():
+            v = update(v, c)
+        return v
+
+    v = 0x12345678
+    for name, type_name, dims in members:
+        v = update_text(update_text(v, name), type_name)
+        v = update(v, len(dims))
+        for size in dims:
+            v = update_text(update(v, 0 if size.isdigit() else 1), size)
+    v &= mask
+    return ((v << 1) & mask) | (v >> 63)
+
+
+class LcmType:
+    """One message type of lcmtypes/: decode() checks the fingerprint, then reads the members in
+    order (big-endian) into a dict."""
+
+    def __init__(self, type_name):
+        self.name, self.members = type_name, lcm_members(type_name)
+        self.fingerprint = lcm_fingerprint(self.members)
+
+    def decode(self, data):
+        try:
+            return self._decode(data)
+        except struct.error as e:
+            raise ValueError(f"{self.name}: truncated message ({len(data)} bytes): {e}") from None
+
+    def _decode(self, data):
+        (fingerprint,) = struct.unpack_from(">Q", data, 0)
+        if fingerprint != self.fingerprint:
+            raise ValueError(f"{self.name}: fingerprint {fingerprint:#018x}, expected {self.fingerprint:#018x}")
+        at, out = 8, {}
+        for name, type_name, dims in self.members:
+            count = 1
+            for size in dims:
+                count *= int(size) if size.isdigit() else out[size]
+            values = []
+            for _ in range(count):
+                if type_name == "string":
+                    (n,) = struct.unpack_from(">i", data, at)
+                    values.append(data[at + 4:at + 4 + n - 1].decode())
+                    at += 4 + n
+                else:
+                    (value,) = struct.unpack_from(">" + LCM_PRIMITIVES[type_name], data, at)
+                    values.append(bool(value) if type_name == "boolean" else value)
+                    at += struct.calcsize(">" + LCM_PRIMITIVES[type_name])
+            out[name] = values if dims else values[0]
+        if at != len(data):
+            raise ValueError(f"{self.name}: {len(data) - at} bytes after the last member")
+        return out
+
+
+ARM_STATE = LcmType("arm_state_t")
+ARM_PLAN_STATUS = LcmType("arm_plan_status_t")
+ARM_TRAJECTORY = LcmType("arm_trajectory_t")
+ARM_DAEMON_STATUS = LcmType("arm_daemon_status_t")
 
 
 def decode_arm_state(data):
-    r = Reader(data)
-    utime, e, ev, a, av, coral, algae = r.take("qddddbb")
-    return dict(utime=utime, elevator_m=e, elevator_mps=ev, arm_rad=a, arm_radps=av,
-                held_coral=bool(coral), held_algae=bool(algae))
+    return ARM_STATE.decode(data)
 
 
 def decode_plan_status(data):
-    r = Reader(data)
-    utime, request_id, status = r.take("qqb")
-    reason = r.string()
-    grid, search, smooth, topp, total, duration = r.take("dddddd")
-    return dict(utime=utime, request_id=request_id, status=status, reason=reason, grid_ms=grid,
-                search_ms=search, smooth_ms=smooth, topp_ms=topp, total_ms=total, duration_s=duration)
+    return ARM_PLAN_STATUS.decode(data)
 
 
 def decode_trajectory(data):
-    r = Reader(data)
-    utime, request_id, start_utime, duration, dt, n = r.take("qqqddi")
-    columns = {}
-    for name in ("t_s", "elevator_m", "arm_rad", "elevator_mps", "arm_radps", "elevator_volts", "arm_volts"):
-        columns[name] = list(r.take(f"{n}d")) if n > 1 else ([r.take("d")] if n == 1 else [])
-    return dict(utime=utime, request_id=request_id, start_utime=start_utime, duration_s=duration,
-                dt_s=dt, num_samples=n, **columns)
-
-
-DAEMON_STATUS_FIELDS = (
-    ("utime", "q"), ("mode", "b"), ("robot_enabled", "b"), ("motion_allowed", "b"),
-    ("active_request_id", "q"), ("state_age_ms", "d"), ("heartbeat_age_ms", "d"),
-    ("goals_received", "q"), ("plans_succeeded", "q"), ("plans_failed", "q"), ("frames_sent", "q"),
-    ("can_errors", "q"), ("decode_errors", "q"), ("stream_overruns", "q"), ("publish_failures", "q"),
-    ("plan_time_p50_ms", "d"), ("plan_time_p99_ms", "d"), ("plan_time_max_ms", "d"),
-    ("stream_jitter_p50_us", "d"), ("stream_jitter_p99_us", "d"), ("stream_jitter_max_us", "d"),
-    ("realtime_priority", "i"))
+    return ARM_TRAJECTORY.decode(data)
 
 
 def decode_daemon_status(data):
-    r = Reader(data)
-    return {name: r.take(fmt) for name, fmt in DAEMON_STATUS_FIELDS}
+    return ARM_DAEMON_STATUS.decode(data)
 
 
 # --- plant simulator ---------------------------------------------------------------------------
@@ -234,9 +312,10 @@ def read_scenario(path):
     return notes
 
 
-def longest_gap(times, t0, t1):
-    """The longest interval between consecutive times that overlaps [t0, t1] (sorted times)."""
+def longest_gap(times, t0, t1, default=float("nan")):
+    """The longest interval between consecutive times that overlaps [t0, t1] (sorted times), or
+    `default` when fewer than two times are near."""
     i = max(bisect.bisect_left(times, t0) - 1, 0)
     j = min(bisect.bisect_right(times, t1) + 1, len(times))
     near = times[i:j]
-    return max((b - a for a, b in zip(near, near[1:]) if b >= t0 and a <= t1), default=float("nan"))
+    return max((b - a for a, b in zip(near, near[1:]) if b >= t0 and a <= t1), default=default)

@@ -68,8 +68,7 @@ def write_setpoints(path):
 def stall_near(reference, t):
     """The longest gap in the reference times (the simulator's CSV rows, every 10 ms whatever it
     publishes) within 0.3 s of t: how long the emulated guest stood still around then."""
-    near = [x for x in reference if t - 0.3 <= x <= t + 0.3]
-    return max((b - a for a, b in zip(near, near[1:])), default=0.0)
+    return hil.longest_gap(reference, t - 0.3, t + 0.3, default=0.0)
 
 
 def silent_window(c, what, times, window, reference):

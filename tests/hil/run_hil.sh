@@ -18,7 +18,7 @@ build=$(realpath -m --relative-base="$src" "$build_abs")
 export CYBER_VCAN_CACHE=$build/vcan-vm
 probe=$build/tests/hil/vcan_probe
 plant_sim=$build/tools/cyber-plant-sim/cyber-plant-sim
-daemon_bins=(--bin "$build/daemon/app/cyber-plannerd" --bin "$build/tools/cyber_goal/cyber-goal" --bin "$plant_sim"
+daemon_bins=(--bin "$build/daemon/app/cyber-plannerd" --bin "$build/tools/cyber-goal/cyber-goal" --bin "$plant_sim"
   --bin "$build/tools/cyber-can-decode/cyber-can-decode" --bin /usr/bin/lcm-logger --file tests/hil/hil_guest.sh)
 out=$build/hil/$1
 log=$build/hil/$1.log

@@ -19,9 +19,12 @@
 #include <map>
 #include <random>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
+#include "cyber/cli/argument_parser.hpp"
+#include "cyber/cli/number_text.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -46,46 +49,44 @@ struct Args {
   int rcvbuf_bytes = 0;  // watch: forced receive buffer (0: LCM's choice)
 };
 
-bool parsePair(const std::string& text, std::pair<double, double>& out) {
-  const auto comma = text.find(',');
-  if (comma == std::string::npos) return false;
-  char* end = nullptr;
-  out.first = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + comma) return false;
-  out.second = std::strtod(text.c_str() + comma + 1, &end);
-  return *end == '\0';
+// A number option's handler: stores it when `parse` accepts it.
+template <class T, class Parse>
+cyber::cli::ValueHandler number(T* into, Parse parse) {
+  return [into, parse](const std::string& text) -> std::string {
+    const auto value = parse(text);
+    if (!value) return "expects a number, got '" + text + "'";
+    *into = static_cast<T>(*value);
+    return "";
+  };
 }
 
 bool parse(int argc, char** argv, Args& args) {
   if (argc < 2) return false;
   args.command = argv[1];
-  for (int i = 2; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (i + 1 >= argc) return false;
-    const std::string value = argv[++i];
-    if (arg == "--lcm-url") {
-      args.lcm_url = value;
-    } else if (arg == "--to" || arg == "--at") {
-      std::pair<double, double> p;
-      if (!parsePair(value, p)) return false;
-      args.targets.push_back(p);
-    } else if (arg == "--rate") {
-      args.rate_hz = std::atof(value.c_str());
-    } else if (arg == "--seconds") {
-      args.seconds = std::atof(value.c_str());
-    } else if (arg == "--first-id") {
-      args.first_id = std::atoll(value.c_str());
-    } else if (arg == "--count") {
-      args.count = std::atoll(value.c_str());
-    } else if (arg == "--timeout") {
-      args.timeout_s = std::atof(value.c_str());
-    } else if (arg == "--rcvbuf-bytes") {
-      args.rcvbuf_bytes = std::atoi(value.c_str());
-    } else {
-      return false;
-    }
-  }
-  return args.rate_hz > 0.0;
+  const auto real = [](std::string_view t) { return cyber::cli::parseNumber(t); };
+  const auto integer = [](std::string_view t) { return cyber::cli::parseInteger(t); };
+  cyber::cli::ArgumentParser parser;
+  parser.option("--lcm-url", [&](const std::string& value) {
+    args.lcm_url = value;
+    return std::string();
+  });
+  const cyber::cli::ValueHandler target = [&](const std::string& value) -> std::string {
+    const auto pair = cyber::cli::parseNumberPair(value);
+    if (!pair) return "expects E,A, got '" + value + "'";
+    args.targets.emplace_back((*pair)[0], (*pair)[1]);
+    return "";
+  };
+  parser.option("--to", target);
+  parser.option("--at", target);
+  parser.option("--rate", number(&args.rate_hz, real));
+  parser.option("--seconds", number(&args.seconds, real));
+  parser.option("--timeout", number(&args.timeout_s, real));
+  parser.option("--first-id", number(&args.first_id, integer));
+  parser.option("--count", number(&args.count, integer));
+  parser.option("--rcvbuf-bytes", number(&args.rcvbuf_bytes, integer));
+  const auto scan = parser.parse(std::vector<std::string>(argv + 2, argv + argc));
+  if (!scan) std::fprintf(stderr, "cyber-test-peer: %s\n", scan.error().message.c_str());
+  return scan && scan.value() == cyber::cli::Scan::kComplete && args.rate_hz > 0.0;
 }
 
 std::int64_t nowMicros() {

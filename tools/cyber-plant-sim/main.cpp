@@ -30,7 +30,7 @@ using cyber::plant::SimOptions;
 
 int usageError(const std::string& message) {
   std::cerr << "cyber-plant-sim: " << message << "\n" << cyber::plant::simUsage();
-  return 2;
+  return cyber::cli::kExitBadUsage;
 }
 
 bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxDeviceNumber; }
@@ -46,14 +46,13 @@ int main(int argc, char** argv) {
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  std::vector<std::string_view> args(argv + 1, argv + argc);
-  const auto parsed = cyber::plant::parseSimArguments(args);
-  if (parsed.help) {
+  const auto parsed = cyber::plant::parseSimArguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed) return usageError(parsed.error().message);
+  if (parsed->help) {
     std::cout << cyber::plant::simUsage();
     return 0;
   }
-  if (!parsed.error.empty()) return usageError(parsed.error);
-  const SimOptions& options = parsed.options;
+  const SimOptions& options = parsed->options;
 
   cyber::config::Config config;
   try {

@@ -2,13 +2,16 @@
 
 #include <array>
 #include <cerrno>
+#include <csignal>
 #include <cstdarg>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
 #include <string_view>
+#include <system_error>
 
+#include <time.h>
 #include <unistd.h>
 
 #include "cyber/can/frc_id.hpp"
@@ -17,8 +20,8 @@
 #include "cyber/plant/control_lines.hpp"
 #include "cyber/plant/freeze_clock.hpp"
 #include "cyber/plant/state_log.hpp"
+#include "cyber/posix/fd.hpp"
 #include "cyberplanner/arm_state_t.hpp"
-#include "event_fds.hpp"
 
 namespace cyber::plant {
 
@@ -26,6 +29,21 @@ namespace {
 
 constexpr double kHeartbeatPeriod_s = 0.020;
 constexpr double kFreezeTolerance_s = 0.020;
+
+// Seconds on CLOCK_MONOTONIC (the timers' clock) and microseconds on CLOCK_REALTIME (LCM's utime).
+double monotonicSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+std::int64_t realtimeMicros() {
+  timespec ts{};
+  clock_gettime(CLOCK_REALTIME, &ts);
+  return static_cast<std::int64_t>(ts.tv_sec) * 1000000 + ts.tv_nsec / 1000;
+}
+
+std::int64_t toNs(double seconds) { return static_cast<std::int64_t>(std::llround(seconds * 1e9)); }
 
 enum Tag : std::uint64_t { kCanTag, kHeartbeatTag, kStateTag, kFaultTag, kSignalTag, kControlTag };
 
@@ -88,9 +106,9 @@ class Runner {
   OutputSwitches switches_;
   RunCounters counters_;
   double start_mono_s_ = 0.0;
-  MonotonicTimer heartbeat_timer_;
-  MonotonicTimer state_timer_;
-  MonotonicTimer fault_timer_;
+  posix::TimerFd heartbeat_timer_;
+  posix::TimerFd state_timer_;
+  posix::TimerFd fault_timer_;
   std::array<std::optional<std::uint8_t>, kJointCount> last_sequence_{};
   std::array<bool, kJointCount> joint_moving_{};  // the joint's latest setpoint has a velocity
   bool moving_ = false;
@@ -124,27 +142,18 @@ void Runner::vsay(double event_s, const char* format, va_list args) const {
 }
 
 int Runner::run() {
-  std::string error;
-  EventPoll poll = EventPoll::create(error);
-  heartbeat_timer_ = MonotonicTimer::create(error);
-  state_timer_ = MonotonicTimer::create(error);
-  fault_timer_ = MonotonicTimer::create(error);
-  OwnedFd signals = makeStopSignalFd(error);
-  if (!error.empty()) {
-    std::fprintf(stderr, "cyber-plant-sim: %s\n", error.c_str());
-    return 1;
-  }
+  const posix::Epoll poll;
+  const posix::SignalFd signals({SIGINT, SIGTERM});
   start_mono_s_ = monotonicSeconds();
-  const bool added = poll.add(socket_.fd(), kCanTag) && poll.add(heartbeat_timer_.fd(), kHeartbeatTag) &&
-                     poll.add(state_timer_.fd(), kStateTag) && poll.add(fault_timer_.fd(), kFaultTag) &&
-                     poll.add(signals.get(), kSignalTag) && (control_fd_ < 0 || poll.add(control_fd_, kControlTag));
+  poll.add(socket_.fd(), kCanTag);
+  poll.add(heartbeat_timer_.fd(), kHeartbeatTag);
+  poll.add(state_timer_.fd(), kStateTag);
+  poll.add(fault_timer_.fd(), kFaultTag);
+  poll.add(signals.fd(), kSignalTag);
+  if (control_fd_ >= 0) poll.add(control_fd_, kControlTag);
   // The first heartbeat and state go out at once, then on the period grid.
-  const bool armed = heartbeat_timer_.arm(start_mono_s_, kHeartbeatPeriod_s) &&
-                     state_timer_.arm(start_mono_s_, 1.0 / setup_.options.state_rate_hz);
-  if (!added || !armed) {
-    std::fprintf(stderr, "cyber-plant-sim: cannot set up the event loop\n");
-    return 1;
-  }
+  heartbeat_timer_.startPeriodic(toNs(start_mono_s_), toNs(kHeartbeatPeriod_s));
+  state_timer_.startPeriodic(toNs(start_mono_s_), toNs(1.0 / setup_.options.state_rate_hz));
   armFaultTimer();
   say("running on %s: elevator device %u, arm device %u, ARM_STATE on %s at %g Hz, heartbeat %s",
       setup_.can_interface.c_str(), setup_.elevator_device, setup_.arm_device,
@@ -154,7 +163,6 @@ int Runner::run() {
     std::uint64_t tags[8];
     const int n = poll.wait(tags, 8);
     if (n < 0) {
-      if (errno == EINTR) continue;
       std::perror("cyber-plant-sim: epoll_wait");
       return 1;
     }
@@ -324,9 +332,9 @@ void Runner::onControlReadable() {
 void Runner::armFaultTimer() {
   const auto due = schedule_.nextDue_s();
   if (due) {
-    fault_timer_.arm(start_mono_s_ + *due, 0.0);
+    fault_timer_.startOnce(toNs(start_mono_s_ + *due));
   } else {
-    fault_timer_.disarm();
+    fault_timer_.stop();
   }
 }
 
@@ -364,8 +372,14 @@ void Runner::printSummary() const {
 
 int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log,
                  int control_fd) {
-  Runner runner(setup, std::move(socket), lcm, log, control_fd);
-  return runner.run();
+  // The descriptors are made at start-up and throw only then (cyber/posix/fd.hpp).
+  try {
+    Runner runner(setup, std::move(socket), lcm, log, control_fd);
+    return runner.run();
+  } catch (const std::system_error& error) {
+    std::fprintf(stderr, "cyber-plant-sim: cannot set up the event loop: %s\n", error.what());
+    return 1;
+  }
 }
 
 }  // namespace cyber::plant

@@ -8,22 +8,13 @@
 #include "cyber/config/load_config.hpp"
 #include "cyber/wpilog/lcm_to_wpilog.hpp"
 #include "cyber/wpilog/wpilog_reader.hpp"
+#include "wpilog_arguments.hpp"
 
 namespace {
 
-const char* kUsage =
-    "usage: cyber-wpilog [--config FILE] IN.lcmlog OUT.wpilog\n"
-    "       cyber-wpilog --list FILE.wpilog\n"
-    "Converts a session recorded by lcm-logger into a WPILOG that AdvantageScope opens: entries\n"
-    "under /CyberPlanner/ for setpoints, measured state, goals, plan status, trajectories, the\n"
-    "daemon's mode and counters, and the arm as a Mechanism2d and as 3-D component poses.\n"
-    "  --config FILE  robot description for the mechanism (default: the embedded\n"
-    "                 config/reefscape-2025.toml); its [daemon.channels] name the channels\n"
-    "  --list FILE    print every entry of a .wpilog: name, type, records, last value\n";
-
 int fail(const std::string& message) {
   std::fprintf(stderr, "cyber-wpilog: %s\n", message.c_str());
-  return 2;
+  return cyber::cli::kExitBadUsage;
 }
 
 // open + middle + close, built by appending (g++ 12 -O3 warns falsely about "x" + std::string).
@@ -76,42 +67,30 @@ int list(const std::string& path) {
 
 int main(int argc, char** argv) {
   using namespace cyber;
-  std::string config_path, list_path;
-  std::vector<std::string> files;
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    } else if (a == "--config" && i + 1 < args.size()) {
-      config_path = args[++i];
-    } else if (a == "--list" && i + 1 < args.size()) {
-      list_path = args[++i];
-    } else if (!a.empty() && a[0] == '-') {
-      return fail("unknown or incomplete argument \"" + a + "\" (see --help)");
-    } else {
-      files.push_back(a);
-    }
+  const auto parsed = tools::parseWpilogArguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed) return fail(parsed.error().message);
+  const tools::WpilogArguments& args = parsed.value();
+  if (args.help) {
+    std::fputs(tools::wpilogUsage(), stdout);
+    return 0;
   }
-  if (!list_path.empty()) return files.empty() ? list(list_path) : fail("--list takes no other files");
-  if (files.size() != 2) return fail("expected IN.lcmlog OUT.wpilog (see --help)");
+  if (!args.list_path.empty()) return list(args.list_path);
 
   config::Config config;
   try {
-    config = config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(config_path);
+    config = args.config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args.config_path);
   } catch (const config::ConfigError& e) {
     return fail(e.what());
   }
   wpilog::Writer writer;
   wpilog::ConvertStats stats;
   std::string error;
-  if (!wpilog::convertLcmLog(files[0], config.daemon.channels, wpilog::mechanismGeometry(config.robot), &writer, &stats, &error) ||
-      !writer.writeFile(files[1], &error)) {
+  if (!wpilog::convertLcmLog(args.lcm_log_path, config.daemon.channels, wpilog::mechanismGeometry(config.robot), &writer, &stats, &error) ||
+      !writer.writeFile(args.wpilog_path, &error)) {
     return fail(error);
   }
   std::printf("cyber-wpilog: %lld of %lld events converted (%lld undecodable, %lld on other channels) -> %s\n",
               static_cast<long long>(stats.converted), static_cast<long long>(stats.events),
-              static_cast<long long>(stats.undecodable), static_cast<long long>(stats.other), files[1].c_str());
+              static_cast<long long>(stats.undecodable), static_cast<long long>(stats.other), args.wpilog_path.c_str());
   return 0;
 }

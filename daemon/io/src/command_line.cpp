@@ -1,5 +1,7 @@
 #include "cyber/daemon/io/command_line.hpp"
 
+#include "cyber/cli/argument_parser.hpp"
+
 namespace cyber::daemon::io {
 
 std::string usage() {
@@ -12,28 +14,15 @@ std::string usage() {
          "  --help           this text\n";
 }
 
-std::variant<CommandLine, CommandLineError> parseCommandLine(const std::vector<std::string>& args) {
+cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args) {
   CommandLine out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& arg = args[i];
-    if (arg == "--help" || arg == "-h") {
-      out.help = true;
-      return out;
-    }
-    if (arg == "--config" || arg == "--can" || arg == "--lcm-url") {
-      if (i + 1 >= args.size() || args[i + 1].empty()) return CommandLineError{arg + " needs a value"};
-      const std::string& value = args[++i];
-      if (arg == "--config") {
-        out.config_path = value;
-      } else if (arg == "--can") {
-        out.can_interface = value;
-      } else {
-        out.lcm_url = value;
-      }
-      continue;
-    }
-    return CommandLineError{"unknown argument '" + arg + "'"};
-  }
+  cli::ArgumentParser parser;
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--can", cli::store(&out.can_interface));
+  parser.option("--lcm-url", cli::store(&out.lcm_url));
+  const auto scan = parser.parse(args);
+  if (!scan) return scan.error();
+  out.help = scan.value() == cli::Scan::kHelp;
   return out;
 }
 

@@ -7,11 +7,20 @@
 namespace cyber::plant {
 namespace {
 
-SimArguments parse(std::vector<std::string_view> args) { return parseSimArguments(args); }
+SimArguments parse(const std::vector<std::string>& args) {
+  const auto parsed = parseSimArguments(args);
+  EXPECT_TRUE(parsed.ok()) << parsed.error().message;
+  return parsed.ok() ? parsed.value() : SimArguments{};
+}
+
+std::string error(const std::vector<std::string>& args) {
+  const auto parsed = parseSimArguments(args);
+  EXPECT_FALSE(parsed.ok());
+  return parsed.ok() ? "" : parsed.error().message;
+}
 
 TEST(SimOptions, DefaultsWithoutArguments) {
   const auto parsed = parse({});
-  ASSERT_TRUE(parsed.error.empty());
   EXPECT_FALSE(parsed.help);
   const SimOptions& o = parsed.options;
   EXPECT_FALSE(o.config_path);
@@ -39,7 +48,6 @@ TEST(SimOptions, EveryOption) {
                              "disable@motion+0.2", "--log", "out.csv", "--duration", "7.5",
                              "--setpoint-timeout", "0.25", "--elevator-gains", "200,2",
                              "--arm-gains", "40,0", "--realtime", "40", "--control", "ctl.fifo"});
-  ASSERT_TRUE(parsed.error.empty()) << parsed.error;
   const SimOptions& o = parsed.options;
   EXPECT_EQ(o.config_path, "robot.toml");
   EXPECT_EQ(o.can_interface, "vcan0");
@@ -70,7 +78,7 @@ TEST(SimOptions, Help) {
 }
 
 TEST(SimOptions, BadUsageNamesTheProblem) {
-  const std::vector<std::vector<std::string_view>> bad = {
+  const std::vector<std::vector<std::string>> bad = {
       {"--bogus"},
       {"vcan0"},
       {"--can"},
@@ -93,11 +101,25 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--realtime", "0"},
       {"--realtime", "100"},
       {"--realtime", "1.5"},
+      {"--initial="},
+      {"--initial=1.0,2.0x"},
+      {"--coral=1"},
   };
   for (const auto& args : bad) {
-    const auto parsed = parse(args);
-    EXPECT_FALSE(parsed.error.empty()) << args.front();
-    EXPECT_NE(parsed.error.find(args.front()), std::string::npos) << parsed.error;
+    const std::string message = error(args);
+    const std::string name = args.front().substr(0, args.front().find('='));
+    EXPECT_NE(message.find(name), std::string::npos) << message;
+  }
+}
+
+TEST(SimOptions, BothSpellingsOfAValueMeanTheSame) {
+  for (const auto& args : {std::vector<std::string>{"--initial", "-0.2,1", "--can", "vcan1", "--fault", "exit@2"},
+                           std::vector<std::string>{"--initial=-0.2,1", "--can=vcan1", "--fault=exit@2"}}) {
+    const SimOptions o = parse(args).options;
+    EXPECT_EQ(o.initial_q, planner::JointVector(-0.2, 1.0));
+    EXPECT_EQ(o.can_interface, "vcan1");
+    ASSERT_EQ(o.faults.size(), 1u);
+    EXPECT_EQ(o.faults[0].kind, FaultKind::kExit);
   }
 }
 

@@ -4,7 +4,7 @@
 #include <array>
 #include <utility>
 
-#include "number_text.hpp"
+#include "cyber/cli/number_text.hpp"
 
 namespace cyber::plant {
 
@@ -71,7 +71,7 @@ FaultParse parseFault(std::string_view text) {
     }
     when.remove_prefix(plus + 1);
   }
-  const auto seconds = parseNumber(when);
+  const auto seconds = cli::parseNumber(when);
   if (!seconds || *seconds < 0.0) return {std::nullopt, bad_time};
   return {FaultEvent{*kind, motion, *seconds}, {}};
 }

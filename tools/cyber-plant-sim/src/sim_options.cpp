@@ -1,6 +1,7 @@
 #include "cyber/plant/sim_options.hpp"
 
-#include "number_text.hpp"
+#include "cyber/cli/argument_parser.hpp"
+#include "cyber/cli/number_text.hpp"
 
 namespace cyber::plant {
 
@@ -35,97 +36,80 @@ constexpr std::string_view kUsage =
     "Exit status: 0 after a clean stop, 1 on a run-time failure (CAN or LCM could not be opened),\n"
     "2 on bad usage or an invalid config.\n";
 
-SimArguments failure(std::string message) {
-  SimArguments result;
-  result.error = std::move(message);
-  return result;
-}
-
 std::optional<PdGains> parseGains(std::string_view text) {
-  const auto values = parseNumberList(text, 2);
+  const auto values = cli::parseNumberPair(text);
   if (!values || (*values)[0] < 0.0 || (*values)[1] < 0.0) return std::nullopt;
   return PdGains{(*values)[0], (*values)[1]};
+}
+
+// Seconds: > 0, or >= 0 when zero is allowed.
+cli::ValueHandler seconds(double* into, bool zero_allowed) {
+  return [into, zero_allowed](const std::string& value) -> std::string {
+    const auto s = cli::parseNumber(value);
+    if (!s || *s < 0.0 || (!zero_allowed && *s == 0.0)) {
+      return std::string("must be a number of seconds") + (zero_allowed ? " >= 0" : " > 0") + ", got '" + value + "'";
+    }
+    *into = *s;
+    return "";
+  };
+}
+
+cli::ValueHandler gains(PdGains* into) {
+  return [into](const std::string& value) -> std::string {
+    const auto g = parseGains(value);
+    if (!g) return "must be KP,KD with both >= 0, got '" + value + "'";
+    *into = *g;
+    return "";
+  };
 }
 
 }  // namespace
 
 std::string_view simUsage() { return kUsage; }
 
-SimArguments parseSimArguments(const std::vector<std::string_view>& args) {
+cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args) {
   SimArguments result;
   SimOptions& o = result.options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string_view arg = args[i];
-    const auto value = [&]() -> std::optional<std::string_view> {
-      if (i + 1 >= args.size()) return std::nullopt;
-      return args[++i];
-    };
-    const auto missing = [&] { return failure(std::string(arg) + " needs a value"); };
-    if (arg == "--help" || arg == "-h") {
-      result.help = true;
-      return result;
-    } else if (arg == "--coral") {
-      o.held_coral = true;
-    } else if (arg == "--algae") {
-      o.held_algae = true;
-    } else if (arg == "--no-heartbeat") {
-      o.heartbeat = false;
-    } else if (arg == "--config" || arg == "--can" || arg == "--lcm-url" || arg == "--log" ||
-               arg == "--control") {
-      const auto v = value();
-      if (!v) return missing();
-      if (v->empty()) return failure(std::string(arg) + " must not be empty");
-      auto& slot = arg == "--config"    ? o.config_path
-                   : arg == "--can"     ? o.can_interface
-                   : arg == "--log"     ? o.log_path
-                   : arg == "--control" ? o.control_path
-                                        : o.lcm_url;
-      slot = std::string(*v);
-    } else if (arg == "--initial") {
-      const auto v = value();
-      if (!v) return missing();
-      const auto q = parseNumberList(*v, 2);
-      if (!q) return failure("--initial must be T,THETA (elevator m, arm rad), got '" + std::string(*v) + "'");
-      o.initial_q = planner::JointVector((*q)[0], (*q)[1]);
-    } else if (arg == "--state-rate") {
-      const auto v = value();
-      if (!v) return missing();
-      const auto hz = parseNumber(*v);
-      if (!hz || *hz < 1.0 || *hz > 1000.0) return failure("--state-rate must be 1..1000 Hz, got '" + std::string(*v) + "'");
-      o.state_rate_hz = *hz;
-    } else if (arg == "--fault") {
-      const auto v = value();
-      if (!v) return missing();
-      auto parsed = parseFault(*v);
-      if (!parsed.event) return failure("--fault: " + parsed.error);
-      o.faults.push_back(*parsed.event);
-    } else if (arg == "--duration" || arg == "--setpoint-timeout") {
-      const auto v = value();
-      if (!v) return missing();
-      const auto s = parseNumber(*v);
-      if (!s || *s < 0.0 || (arg == "--setpoint-timeout" && *s <= 0.0)) {
-        return failure(std::string(arg) + " must be a number of seconds" +
-                       (arg == "--duration" ? " >= 0" : " > 0") + ", got '" + std::string(*v) + "'");
-      }
-      (arg == "--duration" ? o.duration_s : o.setpoint_timeout_s) = *s;
-    } else if (arg == "--elevator-gains" || arg == "--arm-gains") {
-      const auto v = value();
-      if (!v) return missing();
-      const auto gains = parseGains(*v);
-      if (!gains) return failure(std::string(arg) + " must be KP,KD with both >= 0, got '" + std::string(*v) + "'");
-      (arg == "--arm-gains" ? o.arm_gains : o.elevator_gains) = *gains;
-    } else if (arg == "--realtime") {
-      const auto v = value();
-      if (!v) return missing();
-      const auto prio = parseNumber(*v);
-      if (!prio || *prio < 1.0 || *prio > 99.0 || *prio != static_cast<int>(*prio)) {
-        return failure("--realtime must be a priority 1..99, got '" + std::string(*v) + "'");
-      }
-      o.realtime_priority = static_cast<int>(*prio);
-    } else {
-      return failure("unknown argument '" + std::string(arg) + "'");
-    }
-  }
+  cli::ArgumentParser parser;
+  parser.flag("--coral", [&] { o.held_coral = true; });
+  parser.flag("--algae", [&] { o.held_algae = true; });
+  parser.flag("--no-heartbeat", [&] { o.heartbeat = false; });
+  parser.option("--config", cli::store(&o.config_path));
+  parser.option("--can", cli::store(&o.can_interface));
+  parser.option("--lcm-url", cli::store(&o.lcm_url));
+  parser.option("--log", cli::store(&o.log_path));
+  parser.option("--control", cli::store(&o.control_path));
+  parser.option("--initial", [&](const std::string& v) -> std::string {
+    const auto q = cli::parseNumberPair(v);
+    if (!q) return "must be T,THETA (elevator m, arm rad), got '" + v + "'";
+    o.initial_q = planner::JointVector((*q)[0], (*q)[1]);
+    return "";
+  });
+  parser.option("--state-rate", [&](const std::string& v) -> std::string {
+    const auto hz = cli::parseNumber(v);
+    if (!hz || *hz < 1.0 || *hz > 1000.0) return "must be 1..1000 Hz, got '" + v + "'";
+    o.state_rate_hz = *hz;
+    return "";
+  });
+  parser.option("--fault", [&](const std::string& v) -> std::string {
+    auto parsed = parseFault(v);
+    if (!parsed.event) return parsed.error;
+    o.faults.push_back(*parsed.event);
+    return "";
+  });
+  parser.option("--duration", seconds(&o.duration_s, true));
+  parser.option("--setpoint-timeout", seconds(&o.setpoint_timeout_s, false));
+  parser.option("--elevator-gains", gains(&o.elevator_gains));
+  parser.option("--arm-gains", gains(&o.arm_gains));
+  parser.option("--realtime", [&](const std::string& v) -> std::string {
+    const auto prio = cli::parseInteger(v);
+    if (!prio || *prio < 1 || *prio > 99) return "must be a priority 1..99, got '" + v + "'";
+    o.realtime_priority = static_cast<int>(*prio);
+    return "";
+  });
+  const auto scan = parser.parse(args);
+  if (!scan) return scan.error();
+  result.help = scan.value() == cli::Scan::kHelp;
   return result;
 }
 

@@ -9,14 +9,14 @@ namespace {
 
 GoalArguments ok(const std::vector<std::string>& args) {
   auto parsed = parseGoalArguments(args);
-  EXPECT_TRUE(std::holds_alternative<GoalArguments>(parsed));
-  return std::holds_alternative<GoalArguments>(parsed) ? std::get<GoalArguments>(parsed) : GoalArguments{};
+  EXPECT_TRUE(parsed.ok()) << parsed.error().message;
+  return parsed.ok() ? parsed.value() : GoalArguments{};
 }
 
 std::string error(const std::vector<std::string>& args) {
   auto parsed = parseGoalArguments(args);
-  EXPECT_TRUE(std::holds_alternative<GoalArgumentError>(parsed));
-  return std::holds_alternative<GoalArgumentError>(parsed) ? std::get<GoalArgumentError>(parsed).message : "";
+  EXPECT_FALSE(parsed.ok());
+  return parsed.ok() ? "" : parsed.error().message;
 }
 
 TEST(GoalArguments, ParsesEveryOption) {
@@ -48,8 +48,27 @@ TEST(GoalArguments, BadInputIsNamed) {
   EXPECT_EQ(error({"--to", "1,2", "--id", "4x"}), "--id expects an integer, got '4x'");
   EXPECT_EQ(error({"--to", "1,2", "--timeout", "0"}), "--timeout expects seconds > 0, got '0'");
   EXPECT_EQ(error({"--to", "1,2", "--timeout", "nan"}), "--timeout expects seconds > 0, got 'nan'");
-  EXPECT_EQ(error({"--to", "1,2", "--bogus"}), "unknown argument '--bogus'");
+  EXPECT_EQ(error({"--to", "1,2", "--bogus"}), "unknown argument '--bogus' (see --help)");
   EXPECT_EQ(error({"--to"}), "--to needs a value");
+  EXPECT_EQ(error({"--to="}), "--to needs a value");
+  EXPECT_EQ(error({"--to", "1,2", "--scene", ""}), "--scene needs a value");
+  EXPECT_EQ(error({"--to=1,2", "--coral=yes"}), "--coral takes no value, got '--coral=yes'");
+  EXPECT_EQ(error({"--to", "1,2,3"}), "--to expects ELEVATOR_M,ARM_RAD, got '1,2,3'");
+}
+
+TEST(GoalArguments, BothSpellingsOfAValueMeanTheSame) {
+  const std::vector<std::vector<std::string>> spellings = {
+      {"--to", "-0.2,1", "--scene", "open", "--id", "7", "--timeout", "3", "--lcm-url", "memq://"},
+      {"--to=-0.2,1", "--scene=open", "--id=7", "--timeout=3", "--lcm-url=memq://"}};
+  for (const auto& args : spellings) {
+    const GoalArguments a = ok(args);
+    EXPECT_EQ(a.elevator_m, -0.2);
+    EXPECT_EQ(a.arm_rad, 1.0);
+    EXPECT_EQ(a.scene, "open");
+    EXPECT_EQ(a.request_id, 7);
+    EXPECT_EQ(a.timeout_s, 3.0);
+    EXPECT_EQ(a.lcm_url, "memq://");
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "cyber/cli/parsed.hpp"
 #include "cyber/plant/fault_schedule.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 #include "cyber/planner/types.hpp"
@@ -32,12 +33,11 @@ struct SimOptions {
 };
 
 struct SimArguments {
-  bool help = false;         // --help: print usage and exit 0
+  bool help = false;  // --help: print usage and exit 0
   SimOptions options;
-  std::string error;         // non-empty: bad usage (exit 2)
 };
 
-SimArguments parseSimArguments(const std::vector<std::string_view>& args);
+cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args);
 
 std::string_view simUsage();
 

@@ -2,9 +2,10 @@
 // cyber-plannerd [--config FILE] [--can IFACE|none] [--lcm-url URL] [--help]
 
 #include <optional>
-#include <variant>
 #include <string>
 #include <vector>
+
+#include "cyber/cli/parsed.hpp"
 
 namespace cyber::daemon::io {
 
@@ -15,12 +16,8 @@ struct CommandLine {
   bool help = false;
 };
 
-struct CommandLineError {
-  std::string message;
-};
-
 // Parses argv[1..]; an error message names the offending argument.
-std::variant<CommandLine, CommandLineError> parseCommandLine(const std::vector<std::string>& args);
+cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args);
 
 std::string usage();
 

@@ -1,75 +1,13 @@
 #pragma once
-// Owned file descriptors for the event loop: eventfd, timerfd and signalfd, closed on
-// destruction. Creation failures throw std::system_error (start-up only).
+// The event loop's descriptors are the project's one set, cyber/posix/fd.hpp.
 
-#include <csignal>
-#include <cstdint>
-#include <initializer_list>
-
-#include "cyber/daemon/mono_time.hpp"
+#include "cyber/posix/fd.hpp"
 
 namespace cyber::daemon::io {
 
-class UniqueFd {
- public:
-  UniqueFd() = default;
-  explicit UniqueFd(int fd) : fd_(fd) {}
-  UniqueFd(UniqueFd&& other) noexcept : fd_(other.release()) {}
-  UniqueFd& operator=(UniqueFd&& other) noexcept;
-  UniqueFd(const UniqueFd&) = delete;
-  UniqueFd& operator=(const UniqueFd&) = delete;
-  ~UniqueFd();
-
-  [[nodiscard]] int get() const { return fd_; }
-  int release() {
-    const int fd = fd_;
-    fd_ = -1;
-    return fd;
-  }
-
- private:
-  int fd_ = -1;
-};
-
-// A counter another thread bumps to wake the loop. signal() never blocks and is async-safe.
-class EventFd {
- public:
-  EventFd();
-  void signal() const;
-  void drain() const;
-  [[nodiscard]] int fd() const { return fd_.get(); }
-
- private:
-  UniqueFd fd_;
-};
-
-// CLOCK_MONOTONIC timer. wait() blocks until it fires and returns the expirations since the last
-// read; consume() reads without blocking (0 when it has not fired).
-class TimerFd {
- public:
-  explicit TimerFd(bool blocking = false);
-  // Periodic, first expiry at first_ns (absolute).
-  void startPeriodic(MonoNs first_ns, MonoNs period_ns) const;
-  void startOnce(MonoNs at_ns) const;
-  std::uint64_t wait() const;
-  std::uint64_t consume() const;
-  [[nodiscard]] int fd() const { return fd_.get(); }
-
- private:
-  UniqueFd fd_;
-};
-
-// Blocks the signals in the calling thread (and threads it creates later) and reads them from an
-// fd. Create it in main before any other thread starts.
-class SignalFd {
- public:
-  explicit SignalFd(std::initializer_list<int> signals);
-  // The next pending signal number, or 0.
-  int take() const;
-  [[nodiscard]] int fd() const { return fd_.get(); }
-
- private:
-  UniqueFd fd_;
-};
+using posix::EventFd;
+using posix::SignalFd;
+using posix::TimerFd;
+using posix::UniqueFd;
 
 }  // namespace cyber::daemon::io

@@ -1,10 +1,10 @@
 #pragma once
 // The command line of cyber-plan, parsed strictly: anything malformed is an error message.
 
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "cyber/cli/parsed.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::tools {
@@ -22,11 +22,7 @@ struct PlanArguments {
   bool help = false;
 };
 
-// Returns the arguments, or sets `error` to a one-line reason.
-std::optional<PlanArguments> parsePlanArguments(const std::vector<std::string>& args, std::string* error);
-
-// Parses "A,B" into two finite numbers.
-std::optional<planner::JointVector> parsePair(const std::string& text);
+cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args);
 
 const char* planUsage();
 

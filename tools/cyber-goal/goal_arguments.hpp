@@ -3,8 +3,9 @@
 
 #include <cstdint>
 #include <string>
-#include <variant>
 #include <vector>
+
+#include "cyber/cli/parsed.hpp"
 
 namespace cyber::tools {
 
@@ -21,19 +22,15 @@ struct GoalArguments {
   bool help = false;
 };
 
-struct GoalArgumentError {
-  std::string message;
-};
-
 // NaN and infinite targets are accepted on purpose (to exercise the daemon's rejection).
-std::variant<GoalArguments, GoalArgumentError> parseGoalArguments(const std::vector<std::string>& args);
+cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& args);
 
 std::string goalUsage();
 
 // Exit codes.
 inline constexpr int kExitDone = 0;
 inline constexpr int kExitLcm = 1;
-inline constexpr int kExitUsage = 2;
+inline constexpr int kExitUsage = cli::kExitBadUsage;
 inline constexpr int kExitRejected = 3;
 inline constexpr int kExitFailed = 4;
 inline constexpr int kExitCancelled = 5;

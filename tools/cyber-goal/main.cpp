@@ -74,11 +74,11 @@ bool handleUntil(lcm::LCM& lcm, Clock::time_point deadline, Done done) {
 int main(int argc, char** argv) {
   using namespace cyber::tools;
   const auto parsed = parseGoalArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (const auto* error = std::get_if<GoalArgumentError>(&parsed)) {
-    std::cerr << "cyber-goal: " << error->message << "\n" << goalUsage();
+  if (!parsed) {
+    std::cerr << "cyber-goal: " << parsed.error().message << "\n" << goalUsage();
     return kExitUsage;
   }
-  const GoalArguments& args = std::get<GoalArguments>(parsed);
+  const GoalArguments& args = parsed.value();
   if (args.help) {
     std::cout << goalUsage();
     return 0;

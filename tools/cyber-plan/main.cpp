@@ -27,14 +27,14 @@ std::string poseText(const cyber::planner::JointVector& q) {
 
 int main(int argc, char** argv) {
   using namespace cyber;
-  std::string error;
-  const auto args = tools::parsePlanArguments(std::vector<std::string>(argv + 1, argv + argc), &error);
-  if (!args) return fail(2, error);
+  const auto args = tools::parsePlanArguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (!args) return fail(cli::kExitBadUsage, args.error().message);
   if (args->help) {
     std::fputs(tools::planUsage(), stdout);
     return 0;
   }
 
+  std::string error;
   config::Config config;
   try {
     config = args->config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args->config_path);

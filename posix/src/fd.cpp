@@ -1,5 +1,6 @@
-#include "cyber/daemon/io/fd.hpp"
+#include "cyber/posix/fd.hpp"
 
+#include <sys/epoll.h>
 #include <sys/eventfd.h>
 #include <sys/signalfd.h>
 #include <sys/timerfd.h>
@@ -9,13 +10,25 @@
 #include <pthread.h>
 #include <system_error>
 
-namespace cyber::daemon::io {
+namespace cyber::posix {
 
 namespace {
 
 [[noreturn]] void fail(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
 
-timespec toTimespec(MonoNs ns) {
+// An absolute time of 0 would disarm the timer: 1 ns is as much in the past.
+timespec toExpiry(std::int64_t ns) {
+  timespec ts{};
+  if (ns <= 0) {
+    ts.tv_nsec = 1;
+    return ts;
+  }
+  ts.tv_sec = static_cast<time_t>(ns / 1'000'000'000);
+  ts.tv_nsec = static_cast<long>(ns % 1'000'000'000);
+  return ts;
+}
+
+timespec toTimespec(std::int64_t ns) {
   timespec ts{};
   ts.tv_sec = static_cast<time_t>(ns / 1'000'000'000);
   ts.tv_nsec = static_cast<long>(ns % 1'000'000'000);
@@ -55,17 +68,22 @@ TimerFd::TimerFd(bool blocking) : fd_(::timerfd_create(CLOCK_MONOTONIC, TFD_CLOE
   if (fd_.get() < 0) fail("timerfd_create");
 }
 
-void TimerFd::startPeriodic(MonoNs first_ns, MonoNs period_ns) const {
+void TimerFd::startPeriodic(std::int64_t first_ns, std::int64_t period_ns) const {
   itimerspec spec{};
-  spec.it_value = toTimespec(first_ns);
+  spec.it_value = toExpiry(first_ns);
   spec.it_interval = toTimespec(period_ns);
   if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");
 }
 
-void TimerFd::startOnce(MonoNs at_ns) const {
+void TimerFd::startOnce(std::int64_t at_ns) const {
   itimerspec spec{};
-  spec.it_value = toTimespec(at_ns);
+  spec.it_value = toExpiry(at_ns);
   if (::timerfd_settime(fd_.get(), TFD_TIMER_ABSTIME, &spec, nullptr) != 0) fail("timerfd_settime");
+}
+
+void TimerFd::stop() const {
+  itimerspec spec{};
+  if (::timerfd_settime(fd_.get(), 0, &spec, nullptr) != 0) fail("timerfd_settime");
 }
 
 std::uint64_t TimerFd::wait() const {
@@ -97,4 +115,24 @@ int SignalFd::take() const {
   return ::read(fd_.get(), &info, sizeof info) == sizeof info ? static_cast<int>(info.ssi_signo) : 0;
 }
 
-}  // namespace cyber::daemon::io
+Epoll::Epoll() : fd_(::epoll_create1(EPOLL_CLOEXEC)) {
+  if (fd_.get() < 0) fail("epoll_create1");
+}
+
+void Epoll::add(int fd, std::uint64_t tag) const {
+  epoll_event event{};
+  event.events = EPOLLIN;
+  event.data.u64 = tag;
+  if (::epoll_ctl(fd_.get(), EPOLL_CTL_ADD, fd, &event) != 0) fail("epoll_ctl");
+}
+
+int Epoll::wait(std::uint64_t* tags, int capacity) const {
+  constexpr int kBatch = 8;
+  epoll_event events[kBatch];
+  const int n = ::epoll_wait(fd_.get(), events, capacity < kBatch ? capacity : kBatch, -1);
+  if (n < 0) return errno == EINTR ? 0 : -1;
+  for (int i = 0; i < n; ++i) tags[i] = events[i].data.u64;
+  return n;
+}
+
+}  // namespace cyber::posix

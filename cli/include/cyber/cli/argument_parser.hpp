@@ -1,0 +1,48 @@
+#pragma once
+// One option syntax for every program: `--name VALUE` and `--name=VALUE` mean the same, a flag
+// takes no value (`--flag=x` is an error), a value is never empty (`--name=` and `--name ""` are
+// errors), `--help`/`-h` stops the scan. Handlers check and store each value as it comes.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cyber/cli/parsed.hpp"
+
+namespace cyber::cli {
+
+// What a value handler says: "" when the value is taken, else the reason it is refused (the
+// parser prefixes the option's name).
+using ValueHandler = std::function<std::string(const std::string& value)>;
+
+// A handler that keeps the value as it is.
+ValueHandler store(std::string* into);
+ValueHandler store(std::optional<std::string>* into);
+
+enum class Scan { kComplete, kHelp };
+
+class ArgumentParser {
+ public:
+  void flag(std::string name, std::function<void()> set);
+  void option(std::string name, ValueHandler take);
+  // Arguments that are not options (including "-"); without a handler they are errors.
+  void positional(ValueHandler take);
+
+  [[nodiscard]] Parsed<Scan> parse(const std::vector<std::string>& args) const;
+
+ private:
+  struct Entry {
+    std::string name;
+    bool takes_value = false;
+    std::function<void()> set;
+    ValueHandler take;
+  };
+  [[nodiscard]] const Entry* find(std::string_view name) const;
+
+  std::vector<Entry> entries_;
+  ValueHandler positional_;
+};
+
+}  // namespace cyber::cli

@@ -1,0 +1,52 @@
+// cyber-plan's command line (tools/cyber-plan/plan_arguments.cpp).
+
+#include "plan_arguments.hpp"
+
+#include "tool_arguments_test.hpp"
+
+namespace cyber::tools {
+namespace {
+
+auto parse = [](const std::vector<std::string>& args) { return parsePlanArguments(args); };
+
+TEST(PlanArguments, BothSpellingsOfAValueMeanTheSame) {
+  for (const auto& args :
+       {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity", "-0.2,1", "--scene",
+                                 "open", "--csv", "m.csv", "--coral", "--json"},
+        std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1", "--scene=open",
+                                 "--csv=m.csv", "--coral", "--json"}}) {
+    const PlanArguments a = parsedOk(parse, args);
+    EXPECT_EQ(a.from, planner::JointVector(0.2, 1.57));
+    EXPECT_EQ(a.to, planner::JointVector(1.97, 5.17));
+    EXPECT_EQ(a.from_velocity, planner::JointVector(-0.2, 1.0));
+    EXPECT_EQ(a.scene, "open");
+    EXPECT_EQ(a.csv_path, "m.csv");
+    EXPECT_TRUE(a.pieces.coral);
+    EXPECT_FALSE(a.pieces.algae);
+    EXPECT_TRUE(a.json);
+  }
+}
+
+TEST(PlanArguments, BadInputIsNamed) {
+  const std::vector<std::string> move = {"--from", "0,0", "--to", "1,1"};
+  auto with = [&](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), move.begin(), move.end());
+    return extra;
+  };
+  EXPECT_EQ(parseError(parse, with({"--fast"})), "unknown argument '--fast' (see --help)");
+  EXPECT_EQ(parseError(parse, with({"--csv"})), "--csv needs a value");
+  EXPECT_EQ(parseError(parse, with({"--csv="})), "--csv needs a value");
+  EXPECT_EQ(parseError(parse, with({"--json=1"})), "--json takes no value, got '--json=1'");
+  EXPECT_EQ(parseError(parse, {"--from", "0,0"}), "missing --to (see --help)");
+  EXPECT_EQ(parseError(parse, {"--to", "0,0"}), "missing --from (see --help)");
+  for (const char* bad : {"1", "1,2,3", "1,nan", "1,2x"}) {
+    EXPECT_EQ(parseError(parse, with({"--from-velocity", bad})),
+              std::string("--from-velocity expects VT,VTHETA as two finite numbers separated by a comma, got '") + bad +
+                  "'");
+  }
+}
+
+TEST(PlanArguments, HelpNeedsNoMove) { EXPECT_TRUE(parsedOk(parse, {"--help"}).help); }
+
+}  // namespace
+}  // namespace cyber::tools

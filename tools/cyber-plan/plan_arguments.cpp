@@ -1,0 +1,68 @@
+#include "plan_arguments.hpp"
+
+#include "cyber/cli/argument_parser.hpp"
+#include "cyber/cli/number_text.hpp"
+
+namespace cyber::tools {
+
+const char* planUsage() {
+  return "usage: cyber-plan [--config FILE] --from T,THETA --to T,THETA [--coral] [--algae]\n"
+         "                  [--from-velocity VT,VTHETA] [--scene NAME] [--csv FILE] [--json] [--plot FILE.png]\n"
+         "Plans one move of the elevator (T, m) and arm (THETA, rad) and prints a summary.\n"
+         "  --config FILE       robot description (default: the embedded config/reefscape-2025.toml)\n"
+         "  --coral, --algae    game pieces held during the move\n"
+         "  --from-velocity     start velocity (m/s, rad/s); default at rest\n"
+         "  --scene NAME        obstacle scene of the configuration (default: its first scene)\n"
+         "  --csv FILE          the trajectory at 1 ms: t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,\n"
+         "                      arm_radps2,elevator_volts,arm_volts,elevator_amps,arm_amps\n"
+         "  --json              print one JSON object: duration, stage times, solver residuals, clearance\n"
+         "  --plot FILE.png     draw the C-space with the path and the joint signals with their limits\n"
+         "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";
+}
+
+namespace {
+
+// Stores "A,B" into `into`, or says what was expected.
+cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
+  return [into, what](const std::string& text) -> std::string {
+    const auto pair = cli::parseNumberPair(text);
+    if (!pair) return std::string("expects ") + what + " as two finite numbers separated by a comma, got '" + text + "'";
+    *into = planner::JointVector((*pair)[0], (*pair)[1]);
+    return "";
+  };
+}
+
+}  // namespace
+
+cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args) {
+  PlanArguments out;
+  bool have_from = false;
+  bool have_to = false;
+  cli::ArgumentParser parser;
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--from", [&, pair = jointPair(&out.from, "T,THETA")](const std::string& v) {
+    have_from = true;
+    return pair(v);
+  });
+  parser.option("--to", [&, pair = jointPair(&out.to, "T,THETA")](const std::string& v) {
+    have_to = true;
+    return pair(v);
+  });
+  parser.option("--from-velocity", jointPair(&out.from_velocity, "VT,VTHETA"));
+  parser.flag("--coral", [&] { out.pieces.coral = true; });
+  parser.flag("--algae", [&] { out.pieces.algae = true; });
+  parser.option("--scene", cli::store(&out.scene));
+  parser.option("--csv", cli::store(&out.csv_path));
+  parser.option("--plot", cli::store(&out.plot_path));
+  parser.flag("--json", [&] { out.json = true; });
+  const auto scan = parser.parse(args);
+  if (!scan) return scan.error();
+  if (scan.value() == cli::Scan::kHelp) {
+    out.help = true;
+    return out;
+  }
+  if (!have_from || !have_to) return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
+  return out;
+}
+
+}  // namespace cyber::tools

@@ -1,0 +1,114 @@
+// cyber-plot: draws a planned trajectory from a cyber-plan CSV or an LCM log (ARM_TRAJECTORY) as
+// the same picture cyber-plan --plot makes; with --world the robot in its scene (a pose, or a
+// move as a filmstrip and an APNG animation); with only --config a preview of the description
+// (docs/configuration.md). Exit: 0 written, 2 bad input.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/plot/world_view.hpp"
+#include "plot_arguments.hpp"
+#include "trajectory_sources.hpp"
+
+namespace {
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "cyber-plot: %s\n", message.c_str());
+  return 2;
+}
+
+// The robot at the named poses of its held-piece set, or at a few poses spread over the joint
+// ranges when the description names none.
+int previewConfig(const cyber::config::Config& config, int scene, cyber::planner::HeldPieces pieces, const std::string& source,
+                  const std::string& out) {
+  using namespace cyber;
+  const planner::RobotModel& robot = config.robot;
+  std::vector<plot::NamedJointPose> poses;
+  std::string set_name = "none";
+  for (const config::PoseSet& set : config.poses) {
+    if (set.pieces.coral == pieces.coral && set.pieces.algae == pieces.algae) {
+      set_name = set.name;
+      for (const config::NamedPose& p : set.poses) poses.push_back({p.name, p.q});
+    }
+  }
+  const bool named = !poses.empty();
+  if (!named) {
+    const planner::JointRange e = robot.elevator_range_m, a = robot.arm_range_rad;
+    for (double f : {0.1, 0.5, 0.9}) {
+      const planner::JointVector q(e.min + f * (e.max - e.min), a.min + f * (a.max - a.min));
+      char name[48];
+      std::snprintf(name, sizeof name, "%.2f m, %.2f rad", q[0], q[1]);
+      poses.push_back({name, q});
+    }
+  }
+  const std::string which = named ? "poses of [poses." + set_name + "]" : "no [poses] for these pieces: poses across the ranges";
+  const std::string title = robot.name + " (" + source + "): " + which + ", scene " + robot.scenes[static_cast<size_t>(scene)].name;
+  std::string error;
+  if (!plot::renderConfigPreviewPng(robot, scene, pieces, poses, title, out, &error)) return fail(error);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace cyber;
+  const auto parsed = tools::parsePlotArguments(std::vector<std::string>(argv + 1, argv + argc));
+  if (!parsed) return fail(parsed.error().message);
+  const tools::PlotArguments& args = parsed.value();
+  if (args.help) {
+    std::fputs(tools::plotUsage(), stdout);
+    return 0;
+  }
+  const std::string& csv = args.csv_path;
+  const std::string& out = args.out_path;
+  const planner::HeldPieces pieces = args.pieces;
+
+  config::Config config;
+  try {
+    config = args.config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args.config_path);
+  } catch (const config::ConfigError& e) {
+    return fail(e.what());
+  }
+  const planner::RobotModel& robot = config.robot;
+  const int scene = args.scene.empty() ? 0 : robot.sceneIndex(args.scene);
+  if (scene < 0) return fail("unknown scene \"" + args.scene + "\"");
+  const std::string channel = args.channel.empty() ? config.daemon.channels.trajectory : args.channel;
+  const std::string pieces_label = std::string(pieces.coral ? " +coral" : "") + (pieces.algae ? " +algae" : "");
+  const std::string scene_label = " (scene " + robot.scenes[static_cast<size_t>(scene)].name + ")";
+  std::string error;
+
+  if (args.preview()) return previewConfig(config, scene, pieces, args.config_path, out);
+  if (args.at) {
+    const planner::JointVector q = *args.at;
+    if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
+    char title[96];
+    std::snprintf(title, sizeof title, "%s at %.3f m, %.3f rad", robot.name.c_str(), q[0], q[1]);
+    if (!plot::renderWorldPng(robot, scene, pieces, q, title + pieces_label + scene_label, out, &error)) return fail(error);
+    return 0;
+  }
+
+  plot::TrajectoryPlotData data;
+  const bool ok = csv.empty() ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
+                              : tools::readPlanCsv(csv, data, &error);
+  if (!ok) return fail(error);
+  if (data.title.empty()) data.title = "trajectory " + csv;
+  data.title += pieces_label;
+  if (args.world) {
+    const plot::Move move = plot::moveOf(data);
+    if (!plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out, &error)) return fail(error);
+    if (!args.animation_path.empty() &&
+        !plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path, &error)) {
+      return fail(error);
+    }
+    return 0;
+  }
+  data.cspace = plot::sampleCSpace(robot, scene, pieces);
+  for (int j = 0; j < 2; ++j) {
+    data.voltage_limit_volts[j] = robot.drive(j).voltage_limit_volts;
+    data.current_limit_amps[j] = robot.drive(j).current_limit_amps;
+  }
+  if (!plot::renderTrajectoryPng(data, out, &error)) return fail(error);
+  return 0;
+}

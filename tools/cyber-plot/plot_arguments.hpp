@@ -1,0 +1,39 @@
+#pragma once
+// The command line of cyber-plot (usage in plotUsage()).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cyber/cli/parsed.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::tools {
+
+struct PlotArguments {
+  std::string config_path;  // empty: the embedded reference robot
+  std::string csv_path;
+  std::string log_path;
+  std::string channel;  // empty: the config's trajectory channel
+  std::optional<std::int64_t> request_id;
+  std::string scene;
+  std::string out_path;
+  std::string animation_path;
+  std::optional<planner::JointVector> at;  // --at, finite
+  std::string at_text;                     // --at as given, for messages
+  bool world = false;
+  int frames = 6;
+  planner::HeldPieces pieces;
+  bool help = false;
+
+  // Only --config (no --world, --csv or --lcm-log): a preview of the description.
+  [[nodiscard]] bool preview() const { return !world && csv_path.empty() && log_path.empty() && !config_path.empty(); }
+};
+
+// Also checks the combinations (exactly one source, --animation only with --world, ...).
+cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& args);
+
+const char* plotUsage();
+
+}  // namespace cyber::tools
