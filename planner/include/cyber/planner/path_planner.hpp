@@ -43,6 +43,11 @@ class PathPlanner {
   // with unit Sigma-speed, after a straight lead-in. Typed errors, never an exception.
   [[nodiscard]] Result<PlannedPath> plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
                                          const JointVector& start_velocity = JointVector::Zero()) const;
+  // Every path that passed the clearance check, the one a reachability pass times fastest first
+  // (the search's smoothed polyline and its shortcut; docs/performance.md). plan() is the first.
+  [[nodiscard]] Result<std::vector<PlannedPath>> candidates(const JointVector& start, const JointVector& goal,
+                                                            HeldPieces pieces,
+                                                            const JointVector& start_velocity = JointVector::Zero()) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
   [[nodiscard]] const Scene& scene() const { return scene_; }
