@@ -79,28 +79,54 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   // time-optimal profile brakes from the first instant (a longer one would first speed up).
   const int points = std::max(3, solver.settings().grid_points);
   std::vector<double> profile, controllable;
-  auto stoppable = [&](double length) {
-    if (length <= 0.0) return false;
+  // How much more than b_start the line of `length` can still stop from, relative (negative: it
+  // cannot stop b_start; -1 when no profile exists). Increasing in length.
+  auto margin = [&](double length) {
+    if (length <= 0.0) return -1.0;
     topp::sampleGrid(StraightPath(start, direction, length), points, problem);
     margins.reset(problem.intervals());
     std::string error;
-    if (!topp::buildRows(drives, margins, problem, &error)) return false;
+    if (!topp::buildRows(drives, margins, problem, &error)) return -1.0;
     problem.b_start = 0.0;
     problem.b_end = 0.0;
     problem.speed_bound = 1e3 / length;
     const topp::ReachabilityResult r = topp::forwardBackward(problem, profile, controllable);
-    return r.status == topp::ReachabilityStatus::kOk && r.controllable_start_b * length * length >= b_start;
+    if (r.status != topp::ReachabilityStatus::kOk) return -1.0;
+    return r.controllable_start_b * length * length / b_start - 1.0;
   };
   double hi = std::min(reach, estimate);
-  for (int i = 0; i < kBracketSteps && !stoppable(hi); ++i) {
+  double m_hi = margin(hi);
+  for (int i = 0; i < kBracketSteps && m_hi < 0.0; ++i) {
     if (hi >= reach) return cannot_stop();
     hi = std::min(reach, kBracketGrowth * hi);
+    m_hi = margin(hi);
   }
+  if (m_hi < 0.0) return cannot_stop();
   double lo = hi / kBracketGrowth;
-  for (int i = 0; i < kBracketSteps && stoppable(lo); ++i) lo /= kBracketGrowth;
-  while (hi - lo > kLengthTolerance * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (stoppable(mid) ? hi : lo) = mid;
+  double m_lo = margin(lo);
+  for (int i = 0; i < kBracketSteps && m_lo >= 0.0; ++i) {
+    hi = lo, m_hi = m_lo;
+    lo /= kBracketGrowth;
+    m_lo = margin(lo);
+  }
+  // The stoppable b grows about in proportion to the length (b = 2 a d), so the margin is nearly
+  // linear in it: false position with the Illinois halving converges in a few passes where
+  // bisection takes a dozen; bisection where the lower end has no profile.
+  double f_lo = m_lo, f_hi = m_hi;  // the interpolated values, halved on the side that stays
+  int kept_side = 0;
+  while (hi - lo > kLengthTolerance * hi && m_hi > kLengthTolerance) {
+    double mid = 0.5 * (lo + hi);
+    if (m_lo > -1.0) mid = std::clamp(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));
+    const double m_mid = margin(mid);
+    if (m_mid >= 0.0) {
+      hi = mid, m_hi = f_hi = m_mid;
+      if (kept_side == -1) f_lo *= 0.5;
+      kept_side = -1;
+    } else {
+      lo = mid, m_lo = f_lo = m_mid;
+      if (kept_side == 1) f_hi *= 0.5;
+      kept_side = 1;
+    }
   }
 
   double length = hi;

@@ -1,5 +1,7 @@
 #include "cyber/planner/motion_planner.hpp"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -18,9 +20,11 @@ namespace {
 constexpr double kConsistencyStepS = 0.001;
 constexpr double kMaxPositionError = 0.0095;
 constexpr double kMaxVelocityError = 0.019;
-// After the fastest stop, the junction is moved later by this fraction of a step at a time.
+// After the fastest stop, the junction may be moved later by a multiple of this fraction of a
+// step, up to kGentlerSteps of them, trying at most kGentlerTries (each redoes the onward plan).
 constexpr double kGentlerStep = 0.125;
-constexpr int kGentlerStops = 12;
+constexpr int kGentlerSteps = 12;
+constexpr int kGentlerTries = 6;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -39,8 +43,9 @@ bool consistent(const Trajectory& trajectory) {
 // The path stage from `start` leaving along v0, then TOPP along its candidates in the order of
 // their estimated time, until one gives a trajectory whose columns agree.
 Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const JointVector& start,
-                       const JointVector& goal, HeldPieces pieces, const JointVector& v0) {
-  Result<std::vector<PlannedPath>> found = paths.candidates(start, goal, pieces, v0);
+                       const JointVector& goal, HeldPieces pieces, const JointVector& v0,
+                       PathAlternatives alternatives = PathAlternatives::kSearch) {
+  Result<std::vector<PlannedPath>> found = paths.candidates(start, goal, pieces, v0, alternatives);
   if (!found) return found.error();
   // The spline leaves along v0 with unit speed in the metric Sigma, so sqrt(b_start) = |v0|_Sigma.
   const double speed = weightedNorm(v0, model.planner.metric);
@@ -109,8 +114,16 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
   if (!stop) return stop.error();
   Result<Plan> plan = planAfterStop(model, paths, request, stop.value());
   const double steps = stop.value().duration_s() / kConsistencyStepS;
-  for (int i = 0; i < kGentlerStops && plan && !consistent(*plan.value().trajectory); ++i) {
-    const double target = steps + kGentlerStep * (i + 1);
+  // The later instants of rest in the middle half between two samples (where the trapezoid across
+  // the jump errs by at most a quarter of it), earliest first.
+  std::array<double, kGentlerSteps> later{};
+  int tries = 0;
+  for (int i = 1; i <= kGentlerSteps && tries < kGentlerTries; ++i) {
+    const double target = steps + kGentlerStep * i;
+    if (std::abs(target - std::floor(target) - 0.5) <= 0.25) later[static_cast<size_t>(tries++)] = target;
+  }
+  for (int i = 0; i < tries && plan && !consistent(*plan.value().trajectory); ++i) {
+    const double target = later[static_cast<size_t>(i)];
     Result<Trajectory> gentler = stretchedStop(model, world, stop.value(), target / steps);
     plan = gentler ? planAfterStop(model, paths, request, gentler.value()) : gentler.error();
   }
@@ -141,8 +154,11 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
     return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
   }
   const PathPlanner& paths = path_planners_[static_cast<size_t>(request.scene)];
-  Result<Plan> direct = timedPath(model_, paths, request.start, request.goal, request.pieces, request.start_velocity);
   const bool moving = weightedNorm(request.start_velocity, model_.planner.metric) > 0.0;
+  // A moving start leaving along its velocity is timed on the search's path alone: its candidate
+  // that stops first searches the alternatives (docs/moving-starts.md, "Planning time").
+  Result<Plan> direct = timedPath(model_, paths, request.start, request.goal, request.pieces, request.start_velocity,
+                                  moving ? PathAlternatives::kNone : PathAlternatives::kSearch);
   // Errors of the request itself (bad poses, a goal in collision) are the same for both.
   const bool request_error = !direct && (direct.status() == PlanStatus::kInvalidInput ||
                                           direct.status() == PlanStatus::kStartOutOfRange ||

@@ -146,7 +146,8 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(m
 }
 
 Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
-                                                         HeldPieces pieces, const JointVector& start_velocity) const {
+                                                         HeldPieces pieces, const JointVector& start_velocity,
+                                                         PathAlternatives alternatives) const {
   using R = Result<std::vector<PlannedPath>>;
   if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
   if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
@@ -280,7 +281,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const bool done = smooth(polyline, "", out);
   std::vector<PlannedPath> candidates;
   if (done) candidates.push_back(out);
-  if (!out.direct) {
+  if (!out.direct && alternatives == PathAlternatives::kSearch) {
     const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
     const double b_start = start_speed * start_speed;
     std::vector<double> estimates;
