@@ -5,11 +5,6 @@
 
 namespace cyber::can {
 
-std::vector<IdFilter> daemonReceiveFilters() {
-  return {IdFilter::exact(kHeartbeatId, true), IdFilter::exact(kBroadcastDisableId, true),
-          IdFilter::exact(kBroadcastDisableId, false)};
-}
-
 can_filter toKernelFilter(const IdFilter& filter) {
   can_filter out{};
   if (filter.extended) {

@@ -7,13 +7,13 @@
 #include <atomic>
 #include <cstdint>
 
-#include "cyber/daemon/latency_histogram.hpp"
+#include "cyber/daemon/io/latency_histogram.hpp"
 #include "cyber/daemon/mono_time.hpp"
 
 namespace cyber::test {
 
 struct BareTimerResult {
-  daemon::LatencyHistogram jitter;
+  daemon::io::LatencyHistogram jitter;
   std::atomic<std::int64_t> overruns{0};
   std::atomic<bool> realtime{false};  // SCHED_FIFO granted
 };

@@ -37,6 +37,11 @@ void GoalCoordinator::publish(std::int64_t request_id, GoalStatus status, std::s
   sink_.publishStatus(update);
 }
 
+const std::string* GoalCoordinator::stopReason() const {
+  const auto* stopped = std::get_if<Stopped>(&stream_);
+  return stopped != nullptr ? &stopped->reason : nullptr;
+}
+
 // Publishes a final status once: a goal that already has one is left alone.
 void GoalCoordinator::finish(std::int64_t request_id, GoalStatus status, std::string reason) {
   auto it = open_.find(request_id);
@@ -69,7 +74,7 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
     reject(goal.request_id, std::string(planner::toString(valid.error().status)) + ": " + valid.error().reason);
     return;
   }
-  if (shut_down_) {
+  if (shutDown()) {
     reject(goal.request_id, "daemon shutting down");
     return;
   }
@@ -85,30 +90,30 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
   // Latest wins among the goals waiting for the worker. The plan being computed is not thrown
   // away: it runs when ready and the newest goal is spliced into it, so a steady stream of goals
   // faster than the planner still moves the mechanism instead of starving it.
-  if (pending_) finish(pending_->goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
-  pending_ = Pending{valid.value(), 0, false};
-  tryStart(now);
+  if (waiting_) finish(waiting_->goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
+  waiting_ = Attempt{valid.value(), 0, false};
+  startPlanning(now);
 }
 
-void GoalCoordinator::tryStart(MonoNs now) {
-  if (!pending_ || in_flight_ || posted_ || stopped_) return;
+void GoalCoordinator::startPlanning(MonoNs now) {
+  if (!waiting_ || !std::holds_alternative<Idle>(stage_) || !std::holds_alternative<Streaming>(stream_)) return;
   // A chain without room for one more segment ages out within a budget; onTimer retries.
   if (!Program::splice(mirror_, SpliceRequest{now, Segment{nullptr, -1, kNever}, true, 0})) return;
 
-  InFlight job;
+  Planning job;
   job.job_id = next_job_id_++;
-  job.pending = *pending_;
+  job.attempt = *waiting_;
   job.base_id = mirror_.id;
   job.base_epoch = mirror_.epoch;
-  pending_.reset();
+  waiting_.reset();
 
   MotionRequest request;
-  request.goal = job.pending.goal.q;
-  request.pieces = job.pending.goal.pieces;
-  request.scene = job.pending.goal.scene;
+  request.goal = job.attempt.goal.q;
+  request.pieces = job.attempt.goal.pieces;
+  request.scene = job.attempt.goal.scene;
   const MonoNs branch = now + secondsToNs(budget_.budgetS());
   const ProgramSample at_branch = mirror_.sample(branch, HoldModel(robot_));
-  if (job.pending.from_rest || !at_branch.moving) {
+  if (job.attempt.from_rest || !at_branch.moving) {
     // From rest: no deadline, the plan starts when it is ready (or when the motion ends).
     job.floating = true;
     request.start = mirror_.restPosition();
@@ -118,163 +123,176 @@ void GoalCoordinator::tryStart(MonoNs now) {
     request.start = at_branch.setpoints.position;
     request.start_velocity = at_branch.setpoints.velocity;
   }
-  if (job.pending.attempt == 0) publish(job.pending.goal.request_id, GoalStatus::kPlanning);
-  PlanJob plan_job{job.job_id, job.pending.goal.request_id, request};
-  in_flight_ = job;
+  if (job.attempt.attempt == 0) publish(job.attempt.goal.request_id, GoalStatus::kPlanning);
+  const PlanJob plan_job{job.job_id, job.attempt.goal.request_id, request};
+  stage_ = std::move(job);
   sink_.startPlanning(plan_job);
 }
 
-void GoalCoordinator::replan(const Pending& pending, bool late, MonoNs now, const std::string& why) {
-  if (pending_) {
+void GoalCoordinator::replan(const Attempt& attempt, bool late, MonoNs now, const std::string& why) {
+  if (waiting_) {
     // A newer goal is already waiting: this one is superseded rather than re-planned.
-    finish(pending.goal.request_id, GoalStatus::kCancelled, superseded(pending_->goal.request_id));
+    finish(attempt.goal.request_id, GoalStatus::kCancelled, superseded(waiting_->goal.request_id));
     return;
   }
-  Pending next = pending;
+  Attempt next = attempt;
   ++next.attempt;
   if (late && next.attempt >= settings_.max_late_attempts && !next.from_rest) {
     next.from_rest = true;
-    sink_.note(NoteLevel::kWarn, "request " + std::to_string(pending.goal.request_id) + ": " + why +
+    sink_.note(NoteLevel::kWarn, "request " + std::to_string(attempt.goal.request_id) + ": " + why +
                                      "; finishing the running motion and planning from where it ends");
   } else {
     sink_.note(late ? NoteLevel::kWarn : NoteLevel::kInfo,
-               "request " + std::to_string(pending.goal.request_id) + ": " + why + "; re-planning from a later point");
+               "request " + std::to_string(attempt.goal.request_id) + ": " + why + "; re-planning from a later point");
   }
-  pending_ = next;
-  tryStart(now);
+  waiting_ = next;
+  startPlanning(now);
 }
 
 void GoalCoordinator::onPlanResult(std::uint64_t job_id, planner::Result<PlannedMotion> result, double plan_time_s,
                                    MonoNs now) {
-  if (!in_flight_ || in_flight_->job_id != job_id) return;
-  InFlight job = std::move(*in_flight_);
-  in_flight_.reset();
+  auto* planning = std::get_if<Planning>(&stage_);
+  if (planning == nullptr || planning->job_id != job_id) return;  // not the job at the worker
+  Planning job = std::move(*planning);
+  stage_ = Idle{};
   budget_.record(plan_time_s);
-  const std::int64_t id = job.pending.goal.request_id;
+  // After shutdown the goal has its final status and nothing more is posted.
+  if (!shutDown()) onPlanned(std::move(job), std::move(result), plan_time_s, now);
+}
 
-  if (stopped_) {
-    finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + stop_reason_);
+void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> result, double plan_time_s, MonoNs now) {
+  const std::int64_t id = job.attempt.goal.request_id;
+  if (const std::string* reason = stopReason()) {
+    finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + *reason);
     return;
   }
   if (mirror_.id != job.base_id || mirror_.epoch != job.base_epoch) {
-    replan(job.pending, false, now, "the running motion changed while planning");
+    replan(job.attempt, false, now, "the running motion changed while planning");
     return;
   }
   if (!result) {
     const planner::PlanError& error = result.error();
     finish(id, statusOfPlanError(error.status), std::string(planner::toString(error.status)) + ": " + error.reason);
-    tryStart(now);
+    startPlanning(now);
     return;
   }
   PlannedMotion motion = std::move(result).value();
   if (!motion.trajectory) {
     finish(id, GoalStatus::kFailed, "internal error: the planner returned no trajectory");
-    tryStart(now);
+    startPlanning(now);
     return;
   }
   if (!job.floating && now + secondsToNs(budget_.marginS()) > job.branch_ns) {
     ++counters_.plans_late;
-    replan(job.pending, true, now,
+    replan(job.attempt, true, now,
            "plan took " + ms(plan_time_s) + ", missing its splice point (budget now " + ms(budget_.budgetS()) + ")");
     return;
   }
 
-  Posted posted;
-  posted.program_id = next_program_id_++;
-  posted.pending = job.pending;
+  const std::uint64_t program_id = next_program_id_++;
   Segment segment{motion.trajectory, id, job.branch_ns};
-  auto spliced = Program::splice(mirror_, SpliceRequest{now, std::move(segment), job.floating, posted.program_id});
+  auto spliced = Program::splice(mirror_, SpliceRequest{now, std::move(segment), job.floating, program_id});
   if (!spliced) {
-    pending_ = job.pending;  // no room in the chain: wait for it to age out (onTimer)
+    waiting_ = job.attempt;  // no room in the chain: wait for it to age out (onTimer)
     return;
   }
-  posted.program = std::move(spliced->program);
-  posted.dropped = std::move(spliced->dropped_requests);
   if (auto it = open_.find(id); it != open_.end()) {
     it->second.times_ms = motion.times_ms;
     it->second.duration_s = motion.trajectory->durationS();
   }
   ++counters_.plans_succeeded;
-  sink_.postProgram(std::make_unique<Program>(posted.program));
-  posted_ = std::move(posted);
+  sink_.postProgram(std::make_unique<Program>(spliced->program));
+  stage_ = Posted{program_id, std::move(spliced->program), std::move(job.attempt), std::move(spliced->dropped_requests)};
+}
+
+void GoalCoordinator::onAdopted(Posted posted, const StreamEvent& event, MonoNs now) {
+  mirror_ = std::move(posted.program);
+  // The streamer decided where a floating plan starts; the mirror takes its start time.
+  mirror_.resolveFloatingStart(event.start_ns);
+  const std::int64_t id = posted.attempt.goal.request_id;
+  for (std::int64_t dropped : posted.dropped) finish(dropped, GoalStatus::kCancelled, superseded(id));
+  const Segment& added = mirror_.segment(mirror_.segmentCount() - 1);
+  sink_.publishTrajectory(id, added.source, added.start_ns);
+  startPlanning(now);
+}
+
+void GoalCoordinator::onRejected(Posted posted, const StreamEvent& event, MonoNs now) {
+  if (shutDown()) return;  // the goal has its final status; nothing is re-planned
+  if (const std::string* reason = stopReason()) {
+    finish(posted.attempt.goal.request_id, GoalStatus::kCancelled, "motion stopped: " + *reason);
+    return;
+  }
+  const bool late = event.reject_reason == RejectReason::kLate;
+  if (late) ++counters_.plans_late;
+  replan(posted.attempt, late, now,
+         "the streamer did not take the plan (" + std::string(toString(event.reject_reason)) + ")");
 }
 
 void GoalCoordinator::cancelScheduled(const std::string& reason) {
   std::vector<std::int64_t> ids;
   for (int i = 0; i < mirror_.segmentCount(); ++i) ids.push_back(mirror_.segment(i).request_id);
-  if (posted_) ids.push_back(posted_->pending.goal.request_id);
+  if (const auto* posted = std::get_if<Posted>(&stage_)) ids.push_back(posted->attempt.goal.request_id);
   if (executing_) ids.push_back(*executing_);
   for (std::int64_t id : ids) finish(id, GoalStatus::kCancelled, reason);
 }
 
+void GoalCoordinator::onStopped(const StreamEvent& event) {
+  const std::string reason(toString(event.gate_reason));
+  cancelScheduled("motion stopped: " + reason);
+  if (waiting_) {
+    finish(waiting_->goal.request_id, GoalStatus::kCancelled, "motion stopped: " + reason);
+    waiting_.reset();
+  }
+  mirror_ = Program::holdAt(event.epoch, event.position);
+  if (!shutDown()) stream_ = Stopped{reason};
+}
+
+void GoalCoordinator::onHolding(const StreamEvent& event, MonoNs now) {
+  // The shutdown hold replaces every program: what was scheduled will not run.
+  if (event.hold_cause == HoldCause::kShutdown) cancelScheduled("daemon shutting down");
+  mirror_ = Program::holdAt(event.epoch, event.position);
+  if (shutDown()) return;
+  stream_ = Streaming{};
+  startPlanning(now);
+}
+
+void GoalCoordinator::onExecuting(const StreamEvent& event, MonoNs now) {
+  if (executing_ && *executing_ != event.request_id) {
+    finish(*executing_, GoalStatus::kCancelled, superseded(event.request_id));
+  }
+  // Segments before this one that no tick sampled (spliced less than a period apart) are over.
+  for (int i = 0; i < mirror_.segmentCount() && mirror_.segment(i).request_id != event.request_id; ++i) {
+    finish(mirror_.segment(i).request_id, GoalStatus::kCancelled, superseded(event.request_id));
+  }
+  if (open_.count(event.request_id) != 0 && executing_ != event.request_id) {
+    executing_ = event.request_id;
+    publish(event.request_id, GoalStatus::kExecuting);
+  }
+  startPlanning(now);
+}
+
 void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
   switch (event.kind) {
-    case StreamEventKind::kAdopted: {
-      if (!posted_ || posted_->program_id != event.program_id) return;
-      Posted posted = std::move(*posted_);
-      posted_.reset();
-      mirror_ = std::move(posted.program);
-      mirror_.resolveFloatingStart(event.time_ns);  // the streamer resolved it the same way
-      const std::int64_t id = posted.pending.goal.request_id;
-      for (std::int64_t dropped : posted.dropped) finish(dropped, GoalStatus::kCancelled, superseded(id));
-      const Segment& added = mirror_.segment(mirror_.segmentCount() - 1);
-      sink_.publishTrajectory(id, added.source, added.start_ns);
-      tryStart(now);
-      return;
-    }
+    case StreamEventKind::kAdopted:
     case StreamEventKind::kRejected: {
-      if (!posted_ || posted_->program_id != event.program_id) return;
-      Pending pending = posted_->pending;
-      posted_.reset();
-      if (stopped_) {
-        finish(pending.goal.request_id, GoalStatus::kCancelled, "motion stopped: " + stop_reason_);
-        tryStart(now);
-        return;
+      auto* posted = std::get_if<Posted>(&stage_);
+      if (posted == nullptr || posted->program_id != event.program_id) return;  // not the program posted
+      Posted taken = std::move(*posted);
+      stage_ = Idle{};
+      if (event.kind == StreamEventKind::kAdopted) {
+        onAdopted(std::move(taken), event, now);
+      } else {
+        onRejected(std::move(taken), event, now);
       }
-      const bool late = event.reject_reason == RejectReason::kLate;
-      if (late) ++counters_.plans_late;
-      replan(pending, late, now, "the streamer did not take the plan (" + std::string(toString(event.reject_reason)) + ")");
       return;
     }
-    case StreamEventKind::kExecuting: {
-      if (executing_ && *executing_ != event.request_id) {
-        finish(*executing_, GoalStatus::kCancelled, superseded(event.request_id));
-      }
-      // Segments before this one that no tick sampled (spliced less than a period apart) are over.
-      for (int i = 0; i < mirror_.segmentCount() && mirror_.segment(i).request_id != event.request_id; ++i) {
-        finish(mirror_.segment(i).request_id, GoalStatus::kCancelled, superseded(event.request_id));
-      }
-      if (auto it = open_.find(event.request_id); it != open_.end() && !it->second.executing) {
-        it->second.executing = true;
-        executing_ = event.request_id;
-        publish(event.request_id, GoalStatus::kExecuting);
-      }
-      tryStart(now);
-      return;
-    }
+    case StreamEventKind::kExecuting: onExecuting(event, now); return;
     case StreamEventKind::kDone:
       finish(event.request_id, GoalStatus::kDone, {});
-      tryStart(now);
+      startPlanning(now);
       return;
-    case StreamEventKind::kStopped:
-      stopped_ = true;
-      stop_reason_ = std::string(toString(event.gate_reason));
-      cancelScheduled("motion stopped: " + stop_reason_);
-      if (pending_) {
-        finish(pending_->goal.request_id, GoalStatus::kCancelled, "motion stopped: " + stop_reason_);
-        pending_.reset();
-      }
-      mirror_ = Program::holdAt(event.epoch, event.position);
-      return;
-    case StreamEventKind::kHolding: {
-      if (event.hold_cause == HoldCause::kShutdown) {
-        cancelScheduled("daemon shutting down");
-      }
-      stopped_ = false;
-      mirror_ = Program::holdAt(event.epoch, event.position);
-      tryStart(now);
-      return;
-    }
+    case StreamEventKind::kStopped: onStopped(event); return;
+    case StreamEventKind::kHolding: onHolding(event, now); return;
     case StreamEventKind::kFault:
       sink_.note(NoteLevel::kWarn, "fault: setpoint of request " + std::to_string(event.request_id) +
                                        " is not finite or does not fit the setpoint frame; motion stopped");
@@ -282,11 +300,11 @@ void GoalCoordinator::onStreamEvent(const StreamEvent& event, MonoNs now) {
   }
 }
 
-void GoalCoordinator::onTimer(MonoNs now) { tryStart(now); }
+void GoalCoordinator::onTimer(MonoNs now) { startPlanning(now); }
 
 void GoalCoordinator::onShutdown(MonoNs /*now*/) {
-  shut_down_ = true;
-  pending_.reset();
+  stream_ = ShutDown{};
+  waiting_.reset();
   std::vector<std::int64_t> ids;
   for (const auto& [id, goal] : open_) ids.push_back(id);
   for (std::int64_t id : ids) finish(id, GoalStatus::kCancelled, "daemon shutting down");

@@ -1,17 +1,9 @@
 #include "cyber/daemon/robot_link.hpp"
 
 #include "cyber/can/frame_kind.hpp"
-#include "cyber/can/id_filter.hpp"
 #include "cyber/can/robot_frames.hpp"
 
 namespace cyber::daemon {
-
-can::SocketOptions robotLinkSocketOptions() {
-  can::SocketOptions options;
-  options.filters = can::daemonReceiveFilters();
-  options.receive_bus_errors = false;
-  return options;
-}
 
 int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int max_frames) {
   int count = 0;

@@ -1,6 +1,7 @@
 #include "cyber/daemon/io/can_input.hpp"
 
 #include "cyber/can/frame_kind.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 
 namespace cyber::daemon::io {
 

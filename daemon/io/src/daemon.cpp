@@ -9,7 +9,9 @@
 
 #include <unistd.h>
 
+#include "cyber/daemon/io/can_socket_ports.hpp"
 #include "cyber/daemon/io/logging.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 #include "cyber/notify/notifier.hpp"
 
 namespace cyber::daemon::io {
@@ -85,15 +87,6 @@ std::unique_ptr<lcm::LCM> openLcm(const std::string& url) {
   }
   if (!text.empty()) spdlog::warn("LCM: {}", text);
   return lcm;
-}
-
-// The event loop's socket writes the frames and reads only the controller's error frames: the
-// streamer is the one reader of the robot frames (robot_link.hpp).
-can::SocketOptions eventLoopSocketOptions() {
-  can::SocketOptions options;
-  options.filters = std::vector<can::IdFilter>{};
-  options.receive_bus_errors = true;
-  return options;
 }
 
 std::optional<can::CanSocket> openCan(const DaemonOptions& options, const can::SocketOptions& socket_options) {

@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include "cyber/daemon/io/lcm_messages.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 
 namespace cyber::daemon::io {
 

@@ -1,6 +1,7 @@
 #include "cyber/daemon/io/lcm_input.hpp"
 
 #include "cyber/daemon/io/lcm_messages.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 
 namespace cyber::daemon::io {
 

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "cyber/daemon/io/monotonic_clock.hpp"
+
 namespace cyber::daemon::io {
 
 PlanningWorker::PlanningWorker(const PlanningService& service) : service_(service) {}

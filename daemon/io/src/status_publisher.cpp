@@ -4,6 +4,7 @@
 
 #include "cyber/can/status_codec.hpp"
 #include "cyber/daemon/io/lcm_messages.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 #include "cyber/notify/notifier.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 

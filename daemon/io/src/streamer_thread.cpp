@@ -4,6 +4,7 @@
 #include <sched.h>
 #include <sys/prctl.h>
 
+#include "cyber/daemon/io/monotonic_clock.hpp"
 #include "cyber/notify/notifier.hpp"
 
 namespace cyber::daemon::io {

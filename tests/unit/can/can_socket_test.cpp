@@ -152,30 +152,6 @@ TEST(IoResult, ErrnoMapping) {
   EXPECT_EQ(IoResult{}.message(), "ok");
 }
 
-TEST(IdFilter, DaemonFiltersPassOnlyHeartbeatAndDisable) {
-  const auto filters = daemonReceiveFilters();
-  auto passes = [&](const Frame& frame) {
-    for (const IdFilter& filter : filters) {
-      if (kernelFilterMatches(toKernelFilter(filter), frame)) return true;
-    }
-    return false;
-  };
-  EXPECT_TRUE(passes(encodeHeartbeat(Heartbeat{})));
-  EXPECT_TRUE(passes(makeBroadcastDisable()));
-  Frame standard_zero;
-  EXPECT_TRUE(passes(standard_zero));
-  EXPECT_FALSE(passes(encodeSetpoint(1, Setpoint{}).value()));
-  Frame near_heartbeat = encodeHeartbeat(Heartbeat{});
-  near_heartbeat.id ^= 1;
-  EXPECT_FALSE(passes(near_heartbeat));
-  Frame standard_heartbeat_bits;
-  standard_heartbeat_bits.id = kHeartbeatId & kStandardIdMask;
-  EXPECT_FALSE(passes(standard_heartbeat_bits));
-  Frame remote_disable = makeBroadcastDisable();
-  remote_disable.remote = true;
-  EXPECT_FALSE(passes(remote_disable));
-}
-
 TEST(IdFilter, MaskSelectsAllDevicesOfOneApi) {
   // Setpoints from any device: everything but the 6 device bits must match.
   const IdFilter all_setpoints{teamFrameId(kSetpointApiClass, kSetpointApiIndex, 0),

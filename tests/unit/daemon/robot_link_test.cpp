@@ -5,7 +5,6 @@
 #include <cerrno>
 #include <vector>
 
-#include "cyber/can/id_filter.hpp"
 #include "cyber/can/robot_frames.hpp"
 
 namespace cyber::daemon {
@@ -150,13 +149,6 @@ TEST(RobotLink, TheGateUsesTheStreamersReadingWhenTheEventLoopIsLate) {
   applyRobotLink(link, inputs);
   EXPECT_TRUE(evaluateGate(inputs, 500 * kMs, settings).open());
   EXPECT_EQ(evaluateGate(inputs, 595 * kMs, settings).reason, GateReason::kNoHeartbeat);
-}
-
-TEST(RobotLink, ItsSocketPassesOnlyTheFramesThatGateMotion) {
-  const can::SocketOptions options = robotLinkSocketOptions();
-  EXPECT_FALSE(options.receive_bus_errors);
-  ASSERT_TRUE(options.filters.has_value());
-  EXPECT_EQ(options.filters->size(), can::daemonReceiveFilters().size());
 }
 
 }  // namespace

@@ -10,13 +10,14 @@
 
 #include "cyber/can/frame.hpp"
 #include "cyber/can/id_filter.hpp"
+#include "cyber/can/io_result.hpp"
 #include "cyber/can/result.hpp"
 
 namespace cyber::can {
 
 struct SocketOptions {
-  // nullopt: receive every data frame; an empty list: receive none.
-  std::optional<std::vector<IdFilter>> filters = daemonReceiveFilters();
+  // nullopt: receive every data frame; an empty list: receive none. Each user passes its own.
+  std::optional<std::vector<IdFilter>> filters;
   // Deliver error frames for bus-off, controller problems, tx timeouts and restarts.
   bool receive_bus_errors = true;
 };
@@ -33,25 +34,6 @@ struct SocketError {
   int error_number = 0;  // errno, 0 when not from a system call
   std::string message;   // names the interface and the cause
 };
-
-enum class IoStatus {
-  kOk,
-  kWouldBlock,     // EAGAIN: nothing to read / transmit queue full for now
-  kNoBufferSpace,  // ENOBUFS: the driver's queue is full (bus down or flooded)
-  kNetworkDown,    // ENETDOWN: the interface is down
-  kError,          // anything else; error_number tells
-};
-
-struct IoResult {
-  IoStatus status = IoStatus::kOk;
-  int error_number = 0;  // errno for kNoBufferSpace/kNetworkDown/kError; EMSGSIZE for short I/O
-
-  bool ok() const { return status == IoStatus::kOk; }
-  std::string message() const;  // allocates: for logs, not for the streaming path
-};
-
-// The IoResult of a failed read()/write() with this errno.
-IoResult ioResultFromErrno(int error_number);
 
 class CanSocket {
  public:

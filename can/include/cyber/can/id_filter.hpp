@@ -4,7 +4,6 @@
 #include <linux/can.h>
 
 #include <cstdint>
-#include <vector>
 
 #include "cyber/can/frame.hpp"
 
@@ -21,9 +20,6 @@ struct IdFilter {
   }
   bool operator==(const IdFilter&) const = default;
 };
-
-// What the daemon reads: the roboRIO heartbeat and broadcast disable (id 0 in both formats).
-std::vector<IdFilter> daemonReceiveFilters();
 
 // The kernel's form: the format flag and RTR are part of the match, so a filter passes only data
 // frames of its own format.

@@ -1,6 +1,6 @@
 #pragma once
 // The robot description the planner works on: joints, polygons, scenes, drives and settings.
-// Plain values; the TOML loader (daemon/config) fills and validates them.
+// Plain values; the TOML loader (config_loader) fills and validates them.
 
 #include <optional>
 #include <string>

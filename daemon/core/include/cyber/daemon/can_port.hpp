@@ -1,9 +1,10 @@
 #pragma once
-// Where setpoint and status frames go: the SocketCAN socket, a discarding port in simulation
-// (--can none), or a recording fake in tests. write() must not block or allocate.
+// Where setpoint and status frames go: the SocketCAN socket (daemon/io, can_socket_ports.hpp), a
+// discarding port in simulation (--can none), or a recording fake in tests. write() must not
+// block or allocate.
 
-#include "cyber/can/can_socket.hpp"
 #include "cyber/can/frame.hpp"
+#include "cyber/can/io_result.hpp"
 
 namespace cyber::daemon {
 
@@ -17,15 +18,6 @@ class CanPort {
 class DiscardingCanPort final : public CanPort {
  public:
   can::IoResult write(const can::Frame& /*frame*/) override { return {}; }
-};
-
-class SocketCanPort final : public CanPort {
- public:
-  explicit SocketCanPort(can::CanSocket& socket) : socket_(socket) {}
-  can::IoResult write(const can::Frame& frame) override { return socket_.write(frame); }
-
- private:
-  can::CanSocket& socket_;
 };
 
 }  // namespace cyber::daemon

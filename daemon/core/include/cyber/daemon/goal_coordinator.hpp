@@ -4,13 +4,16 @@
 // where a plan starts (at rest, or the commanded state a measured budget ahead of a running
 // motion), splicing finished plans into the streamer's program, and answering on ARM_PLAN_STATUS.
 // Single-threaded and clock-free: the caller passes "now", the plan results and the streamer's
-// events, and receives its decisions through CoordinatorSink.
+// events, and receives its decisions through CoordinatorSink. Its state machine, two regions
+// (the stream as the streamer reports it, the goal in the planning pipeline), is drawn in
+// docs/design.md, "The life of a goal".
 
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cyber/daemon/goal_request.hpp"
@@ -79,38 +82,65 @@ class GoalCoordinator {
 
   [[nodiscard]] const CoordinatorCounters& counters() const { return counters_; }
   [[nodiscard]] double budgetS() const { return budget_.budgetS(); }
-  [[nodiscard]] bool idle() const { return !pending_ && !in_flight_ && !posted_; }
+  [[nodiscard]] bool idle() const { return !waiting_ && std::holds_alternative<Idle>(stage_); }
   // The program the streamer runs, as far as the coordinator knows (for tests and status).
   [[nodiscard]] const Program& mirror() const { return mirror_; }
 
  private:
-  struct Pending {
+  // A goal on its way to the streamer and what a re-plan carries over.
+  struct Attempt {
     ValidGoal goal;
-    int attempt = 0;
+    int attempt = 0;         // plans of this goal so far
     bool from_rest = false;  // fall-back: start where the running motion ends
   };
-  struct InFlight {
+
+  // The stream region: what the streamer does, as its events report it.
+  struct Stopped {  // streams nothing (no state, gate closed): nothing is planned
+    std::string reason;
+  };
+  struct Streaming {};  // holding or moving: plans may start
+  struct ShutDown {};   // terminal: goals are rejected, nothing is planned or posted
+  using StreamState = std::variant<Stopped, Streaming, ShutDown>;
+
+  // The pipeline region: at most one goal is at the worker or at the streamer.
+  struct Idle {};
+  struct Planning {  // a PlanJob at the worker; left on its result
     std::uint64_t job_id = 0;
-    Pending pending;
-    std::uint64_t base_id = 0;
+    Attempt attempt;
+    std::uint64_t base_id = 0;  // the program and epoch the plan splices into
     std::uint64_t base_epoch = 0;
     MonoNs branch_ns = 0;
-    bool floating = false;
+    bool floating = false;  // starts at rest, when adopted: no splice deadline
   };
-  struct Posted {
+  struct Posted {  // a program at the streamer; left on its kAdopted or kRejected
     std::uint64_t program_id = 0;
     Program program;
-    Pending pending;
-    std::vector<std::int64_t> dropped;
+    Attempt attempt;
+    std::vector<std::int64_t> dropped;  // requests whose segments the program replaced
   };
-  struct OpenGoal {
+  using Stage = std::variant<Idle, Planning, Posted>;
+
+  struct OpenGoal {  // accepted, no final status yet
     StageTimesMs times_ms;
     double duration_s = 0.0;
-    bool executing = false;
   };
 
-  void tryStart(MonoNs now);
-  void replan(const Pending& pending, bool late, MonoNs now, const std::string& why);
+  // Transitions of the pipeline (each called only from the state it names).
+  void startPlanning(MonoNs now);  // Idle -> Planning, when a goal waits and the stream runs
+  void onPlanned(Planning job, planner::Result<PlannedMotion> result, double plan_time_s, MonoNs now);  // Planning -> Posted | Idle
+  void onAdopted(Posted posted, const StreamEvent& event, MonoNs now);   // Posted -> Idle
+  void onRejected(Posted posted, const StreamEvent& event, MonoNs now);  // Posted -> Idle
+  void replan(const Attempt& attempt, bool late, MonoNs now, const std::string& why);
+
+  // Transitions of the stream region.
+  void onStopped(const StreamEvent& event);
+  void onHolding(const StreamEvent& event, MonoNs now);
+
+  // The goals streamed and finished, as the streamer reports them.
+  void onExecuting(const StreamEvent& event, MonoNs now);
+
+  [[nodiscard]] bool shutDown() const { return std::holds_alternative<ShutDown>(stream_); }
+  [[nodiscard]] const std::string* stopReason() const;  // nullptr unless Stopped
   void publish(std::int64_t request_id, GoalStatus status, std::string reason = {});
   void finish(std::int64_t request_id, GoalStatus status, std::string reason);
   void reject(std::int64_t request_id, std::string reason);
@@ -123,15 +153,11 @@ class GoalCoordinator {
   CoordinatorCounters counters_;
 
   Program mirror_;
-  bool stopped_ = true;  // the streamer streams nothing (no state, disabled)
-  bool shut_down_ = false;
-  std::string stop_reason_ = "no ARM_STATE received yet";
-
-  std::optional<Pending> pending_;
-  std::optional<InFlight> in_flight_;
-  std::optional<Posted> posted_;
-  std::map<std::int64_t, OpenGoal> open_;          // accepted, no final status yet
-  std::optional<std::int64_t> executing_;          // request being streamed
+  StreamState stream_ = Stopped{"no ARM_STATE received yet"};
+  Stage stage_ = Idle{};
+  std::optional<Attempt> waiting_;                 // latest wins: the next goal for the worker
+  std::map<std::int64_t, OpenGoal> open_;
+  std::optional<std::int64_t> executing_;          // the open request being streamed
   std::uint64_t next_job_id_ = 1;
   std::uint64_t next_program_id_ = 1;
 };

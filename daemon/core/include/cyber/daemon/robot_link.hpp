@@ -7,31 +7,20 @@
 
 #include <cstdint>
 
-#include "cyber/can/can_socket.hpp"
 #include "cyber/can/frame.hpp"
+#include "cyber/can/io_result.hpp"
 #include "cyber/daemon/mono_time.hpp"
 #include "cyber/daemon/motion_gate.hpp"
 
 namespace cyber::daemon {
 
-// Where the streamer reads robot frames from; read() must not block or allocate.
+// Where the streamer reads robot frames from: its receive-only CAN socket (daemon/io,
+// can_socket_ports.hpp) or a fake in tests; read() must not block or allocate.
 class RobotFrameSource {
  public:
   virtual ~RobotFrameSource() = default;
   virtual can::IoResult read(can::Frame& frame) = 0;
 };
-
-class SocketRobotFrameSource final : public RobotFrameSource {
- public:
-  explicit SocketRobotFrameSource(can::CanSocket& socket) : socket_(socket) {}
-  can::IoResult read(can::Frame& frame) override { return socket_.read(frame); }
-
- private:
-  can::CanSocket& socket_;
-};
-
-// The socket options of that receive-only socket: heartbeat and both id-0 forms, no error frames.
-can::SocketOptions robotLinkSocketOptions();
 
 struct RobotLink {
   MonoNs heartbeat_ns = kNever;     // when the streamer took in the latest valid heartbeat

@@ -11,12 +11,12 @@
 
 #include "cyber/daemon/goal_coordinator.hpp"
 #include "cyber/daemon/io/event_loop.hpp"
+#include "cyber/daemon/io/latency_histogram.hpp"
 #include "cyber/daemon/io/lcm_bridge.hpp"
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/planning_worker.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/io/trajectory_publisher.hpp"
-#include "cyber/daemon/latency_histogram.hpp"
 
 namespace cyber::daemon::io {
 

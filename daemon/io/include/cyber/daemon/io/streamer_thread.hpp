@@ -10,10 +10,10 @@
 
 #include "cyber/daemon/frame_writer.hpp"
 #include "cyber/daemon/io/fd.hpp"
-#include "cyber/daemon/latency_histogram.hpp"
-#include "cyber/daemon/latest_value.hpp"
+#include "cyber/daemon/io/latency_histogram.hpp"
+#include "cyber/daemon/io/latest_value.hpp"
+#include "cyber/daemon/io/spsc_ring.hpp"
 #include "cyber/daemon/robot_link.hpp"
-#include "cyber/daemon/spsc_ring.hpp"
 #include "cyber/daemon/streamer.hpp"
 
 namespace cyber::daemon::io {

@@ -1,8 +1,8 @@
-#include "cyber/daemon/mono_time.hpp"
+#include "cyber/daemon/io/monotonic_clock.hpp"
 
 #include <time.h>
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 
 MonoNs monotonicNow() {
   timespec ts{};
@@ -10,4 +10,4 @@ MonoNs monotonicNow() {
   return static_cast<MonoNs>(ts.tv_sec) * 1'000'000'000 + ts.tv_nsec;
 }
 
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io

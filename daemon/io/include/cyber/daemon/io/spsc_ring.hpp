@@ -6,7 +6,7 @@
 #include <atomic>
 #include <cstddef>
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 
 template <class T, std::size_t Capacity>
 class SpscRing {
@@ -35,4 +35,4 @@ class SpscRing {
   alignas(64) std::atomic<std::size_t> tail_{0};
 };
 
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io

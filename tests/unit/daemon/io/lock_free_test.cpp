@@ -3,11 +3,11 @@
 #include <cstdint>
 #include <thread>
 
-#include "cyber/daemon/latency_histogram.hpp"
-#include "cyber/daemon/latest_value.hpp"
-#include "cyber/daemon/spsc_ring.hpp"
+#include "cyber/daemon/io/latency_histogram.hpp"
+#include "cyber/daemon/io/latest_value.hpp"
+#include "cyber/daemon/io/spsc_ring.hpp"
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 namespace {
 
 TEST(SpscRing, IsFifoAndRefusesWhenFull) {
@@ -78,4 +78,4 @@ TEST(LatencyHistogram, PercentilesWithinTheBinWidth) {
 }
 
 }  // namespace
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io

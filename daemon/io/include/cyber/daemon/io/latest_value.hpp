@@ -9,7 +9,7 @@
 #include <cstring>
 #include <type_traits>
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 
 template <class T>
 class LatestValue {
@@ -48,4 +48,4 @@ class LatestValue {
   std::array<std::atomic<std::uint64_t>, kWords> words_{};
 };
 
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io

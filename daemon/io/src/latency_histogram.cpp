@@ -1,9 +1,9 @@
-#include "cyber/daemon/latency_histogram.hpp"
+#include "cyber/daemon/io/latency_histogram.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 
 namespace {
 
@@ -37,4 +37,4 @@ double LatencyHistogram::percentileUs(double fraction) const {
 
 double LatencyHistogram::maxUs() const { return max_us_.load(std::memory_order_relaxed); }
 
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io

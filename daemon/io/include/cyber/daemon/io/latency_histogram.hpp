@@ -6,7 +6,7 @@
 #include <atomic>
 #include <cstdint>
 
-namespace cyber::daemon {
+namespace cyber::daemon::io {
 
 class LatencyHistogram {
  public:
@@ -24,4 +24,4 @@ class LatencyHistogram {
   std::atomic<double> max_us_{0.0};
 };
 
-}  // namespace cyber::daemon
+}  // namespace cyber::daemon::io
