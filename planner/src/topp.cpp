@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "cyber/planner/topp_reachability.hpp"
 
@@ -117,27 +119,195 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
   return within;
 }
 
+Result<Trajectory> fail(PlanStatus status, std::string reason) {
+  return Result<Trajectory>::failure(status, std::move(reason));
+}
+
+// The reason the inputs cannot be parameterised, if any (the path itself is known to exist).
+std::optional<std::string> invalidInput(double length, double b_start, const DriveParams& elevator,
+                                        const DriveParams& arm) {
+  if (!std::isfinite(length) || length < 0.0) return "path length is not finite";
+  if (!std::isfinite(b_start) || b_start < 0.0) return "start path speed^2 b_start must be finite and >= 0";
+  std::string error;
+  if (!validDrive(elevator, "elevator", &error) || !validDrive(arm, "arm", &error)) return error;
+  return std::nullopt;
+}
+
+// The problem is normalised to unit length, so short paths need no special grid.
+int initialGridPoints(const ToppSettings& settings) { return std::max(kMinGridPoints, settings.grid_points); }
+int finestGridPoints(const ToppSettings& settings) {
+  return std::max(initialGridPoints(settings), kMaxGridFactor * settings.grid_points);
+}
+
+topp::AlSettings alSettingsOf(const ToppSettings& settings) {
+  topp::AlSettings al;
+  al.primal_tolerance = settings.primal_tolerance;
+  al.dual_tolerance = settings.dual_tolerance;
+  al.max_outer_iterations = settings.max_outer_iterations;
+  al.max_inner_iterations = settings.max_inner_iterations;
+  al.penalty_initial = settings.penalty_initial;
+  al.penalty_growth = settings.penalty_growth;
+  al.penalty_max = settings.penalty_max;
+  return al;
+}
+
+// Relative overshoot of the worst limit at the continuous check's samples.
+double peakOvershoot(const ToppReport& report) {
+  return std::max({report.peak_voltage_ratio, report.peak_current_ratio, report.peak_velocity_ratio,
+                   report.peak_acceleration_ratio}) -
+         1.0;
+}
+
+std::string overLimitsText(int refinements, const ToppReport& report) {
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "limits still exceeded between grid points after %d refinements (peak voltage %.4f, current "
+                "%.4f of the limit)",
+                refinements, report.peak_voltage_ratio, report.peak_current_ratio);
+  return text;
+}
+
 }  // namespace
+
+// What one call of solve() asks for: a path of non-zero length, its drives and its start.
+struct ToppSolver::Move {
+  std::shared_ptr<const GeometricPath> path;
+  std::array<DriveParams, kJointCount> drives;
+  double length = 0.0;
+  double length_squared = 0.0;
+  double b_start = 0.0;       // as asked, in path units
+  double unit_b_start = 0.0;  // on the unit-length path the problem is solved on: b_start / length^2
+};
+
+// How one solve of the current rows ended; `result` holds the trajectory or the failure.
+struct ToppSolver::Attempt {
+  enum class End {
+    kWithinLimits,  // the trajectory passed the continuous check: the answer
+    kOverLimits,    // the trajectory exceeds a limit between grid points; margins_ are raised there
+    kHard,          // the warm start or the solver failed on these rows (a finer grid may help)
+    kBroken,        // an invariant of the solver failed
+  };
+  End end;
+  Result<Trajectory> result;
+};
+
+enum class ToppSolver::GridChange { kRefined, kFinest, kInvalid };
+
+// Whether the rows carry margins from a failed continuous check.
+enum class ToppSolver::RowLimits { kAsGiven, kTightened };
+
+// Samples the path on `grid_points` points and builds the rows without margins.
+bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
+  report.grid_points = grid_points;
+  topp::sampleGrid(*move.path, grid_points, problem_);
+  for (const PathPoint& p : problem_.points) {
+    if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
+      *error = "the path returns non-finite values";
+      return false;
+    }
+  }
+  margins_.reset(problem_.intervals());
+  return topp::buildRows(move.drives, margins_, problem_, error);
+}
+
+// Halves every interval, up to finestGridPoints(): between closer grid points the trajectory
+// stays closer to the limits it meets at them. The new rows carry no margins.
+ToppSolver::GridChange ToppSolver::refineGrid(const Move& move, ToppReport& report, std::string* error) {
+  const int points = std::min(finestGridPoints(settings_), 2 * problem_.gridPoints() - 1);
+  if (points <= problem_.gridPoints()) return GridChange::kFinest;
+  return sampleRows(move, points, report, error) ? GridChange::kRefined : GridChange::kInvalid;
+}
+
+// Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
+// multipliers that make it stationary, in scaled_ and state_. Repeated for every attempt: a
+// feasible start is cheaper to polish than a stale one. Returns the time scale of scaled_.
+Result<double> ToppSolver::warmStart(const Move& move, bool first, ToppReport& report) {
+  problem_.b_start = move.unit_b_start;
+  const topp::ReachabilityResult reach =
+      topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
+  if (reach.status != topp::ReachabilityStatus::kOk) {
+    const PlanStatus status = reach.status == topp::ReachabilityStatus::kStartNotControllable
+                                  ? PlanStatus::kInfeasibleStart
+                                  : PlanStatus::kInvalidInput;
+    return Result<double>::failure(status, reach.reason);
+  }
+  if (first) report.controllable_start_b = reach.controllable_start_b * move.length_squared;
+  problem_.b_start = reach.start_b;
+  report.start_speed_ratio = move.unit_b_start > 0.0 ? std::sqrt(reach.start_b / move.unit_b_start) : 1.0;
+  // Time in units of the warm start's duration: the optimiser sees a duration of about one.
+  const double warm_duration = profileDuration(problem_, profile_);
+  if (first) report.warm_start_duration_s = warm_duration;
+  const double time_scale = warm_duration > 0.0 && std::isfinite(warm_duration) ? warm_duration : 1.0;
+  topp::scaleTime(problem_, time_scale, scaled_);
+  for (double& b : profile_) b *= time_scale * time_scale;
+  topp::initialGuess(scaled_, profile_, state_.x);
+  topp::estimateMultipliers(scaled_, state_.x, state_.multipliers);
+  state_.penalty = 0.0;
+  return time_scale;
+}
+
+// The solution in state_ back in path units: b = (ds/dt)^2 = b_scaled length^2 / T^2.
+Result<Trajectory> ToppSolver::solvedTrajectory(const Move& move, double time_scale) const {
+  const topp::VariableLayout layout{problem_.gridPoints()};
+  const double to_path_units = move.length_squared / (time_scale * time_scale);
+  std::vector<double> s_grid(problem_.s.size());
+  std::vector<double> b_grid(problem_.s.size());
+  for (int k = 0; k < problem_.gridPoints(); ++k) {
+    s_grid[static_cast<size_t>(k)] = problem_.s[static_cast<size_t>(k)] * move.length;
+    b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
+  }
+  s_grid.back() = move.length;
+  b_grid.front() = problem_.b_start == move.unit_b_start ? move.b_start : problem_.b_start * move.length_squared;
+  b_grid.back() = 0.0;
+  return Trajectory::create(move.path, move.drives[kElevator], move.drives[kArm], std::move(s_grid),
+                            std::move(b_grid));
+}
+
+// One attempt on the current rows: warm start, augmented Lagrangian, continuous check.
+ToppSolver::Attempt ToppSolver::solveRows(const Move& move, const topp::AlSettings& al, bool first,
+                                          ToppReport& report) {
+  const Result<double> time_scale = warmStart(move, first, report);
+  if (!time_scale) return {Attempt::End::kHard, time_scale.error()};
+  const topp::AlReport solved = topp::solveAugmentedLagrangian(scaled_, al, state_, workspace_);
+  accumulate(report, solved);
+  if (!solved.converged) {
+    return {Attempt::End::kHard, PlanError{PlanStatus::kSolverNotConverged,
+                                           "time-optimal parameterisation did not converge: " + residualText(solved)}};
+  }
+  Result<Trajectory> trajectory = solvedTrajectory(move, time_scale.value());
+  if (!trajectory) {
+    return {Attempt::End::kBroken, PlanError{PlanStatus::kInternalError, "the solved profile is not a valid trajectory: " +
+                                                                             trajectory.error().reason}};
+  }
+  const bool within = checkLimits(trajectory.value(), settings_, margins_, report);
+  return {within ? Attempt::End::kWithinLimits : Attempt::End::kOverLimits, std::move(trajectory)};
+}
+
+// After a continuous check over the limits (margins_ raised where it failed): a large overshoot
+// is met with a finer grid, a small one (or one on the finest grid) by lowering the limits of the
+// intervals concerned; limits that can no longer hold once lowered get a finer grid instead.
+Result<ToppSolver::RowLimits> ToppSolver::refineOrTighten(const Move& move, ToppReport& report) {
+  std::string error;
+  GridChange change = peakOvershoot(report) > kRefineAbove ? refineGrid(move, report, &error) : GridChange::kFinest;
+  if (change == GridChange::kFinest) {
+    if (topp::buildRows(move.drives, margins_, problem_, &error)) return RowLimits::kTightened;
+    change = refineGrid(move, report, &error);
+  }
+  if (change == GridChange::kRefined) return RowLimits::kAsGiven;
+  return Result<RowLimits>::failure(PlanStatus::kInvalidInput, error);
+}
 
 Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
                                      const DriveParams& arm, double b_start, ToppReport* report_out) {
   ToppReport local_report;
   ToppReport& report = report_out ? *report_out : local_report;
   report = ToppReport{};
-  auto fail = [](PlanStatus status, std::string reason) { return Result<Trajectory>::failure(status, std::move(reason)); };
 
   if (!path) return fail(PlanStatus::kInvalidInput, "no path to parameterise");
   const double length = path->length();
-  if (!std::isfinite(length) || length < 0.0) return fail(PlanStatus::kInvalidInput, "path length is not finite");
-  if (!std::isfinite(b_start) || b_start < 0.0) {
-    return fail(PlanStatus::kInvalidInput, "start path speed^2 b_start must be finite and >= 0");
+  if (std::optional<std::string> reason = invalidInput(length, b_start, elevator, arm)) {
+    return fail(PlanStatus::kInvalidInput, std::move(*reason));
   }
-  std::string error;
-  if (!validDrive(elevator, "elevator", &error) || !validDrive(arm, "arm", &error)) {
-    return fail(PlanStatus::kInvalidInput, error);
-  }
-  const std::array<DriveParams, kJointCount> drives{elevator, arm};
-
   if (length == 0.0) {
     if (b_start > 0.0) {
       return fail(PlanStatus::kInfeasibleStart, "a moving start cannot be brought to rest on a zero-length path");
@@ -146,122 +316,44 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
     return Trajectory::create(std::move(path), elevator, arm, {0.0}, {0.0});
   }
 
-  // The problem is normalised to unit length, so short paths need no special grid.
-  const int grid_points = std::max(kMinGridPoints, settings_.grid_points);
-  // The problem is solved on the unit-length path (s / length): b scales by 1 / length^2.
   const double length_squared = length * length;
-  const double requested_b_start = b_start / length_squared;
-  problem_.b_start = requested_b_start;
+  const Move move{std::move(path), {elevator, arm}, length, length_squared, b_start, b_start / length_squared};
+  problem_.b_start = move.unit_b_start;
   problem_.b_end = 0.0;
   problem_.cost_scale = 1.0;
   problem_.speed_bound = kSpeedBound / length;
-  // Samples the path on `points` grid points and builds the rows without margins.
-  auto prepare = [&](int points) {
-    report.grid_points = points;
-    topp::sampleGrid(*path, points, problem_);
-    for (const PathPoint& p : problem_.points) {
-      if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
-        error = "the path returns non-finite values";
-        return false;
-      }
-    }
-    margins_.reset(problem_.intervals());
-    return topp::buildRows(drives, margins_, problem_, &error);
-  };
-  if (!prepare(grid_points)) return fail(PlanStatus::kInvalidInput, error);
+  std::string error;
+  if (!sampleRows(move, initialGridPoints(settings_), report, &error)) return fail(PlanStatus::kInvalidInput, error);
 
-  topp::AlSettings al;
-  al.primal_tolerance = settings_.primal_tolerance;
-  al.dual_tolerance = settings_.dual_tolerance;
-  al.max_outer_iterations = settings_.max_outer_iterations;
-  al.max_inner_iterations = settings_.max_inner_iterations;
-  al.penalty_initial = settings_.penalty_initial;
-  al.penalty_growth = settings_.penalty_growth;
-  al.penalty_max = settings_.penalty_max;
-  const int max_points = std::max(grid_points, kMaxGridFactor * settings_.grid_points);
-  bool tightened = false;  // the rows carry margins from a failed continuous check
-
+  // Attempts until one passes the continuous check (algorithm.md section 3, "Stopping rules").
+  const topp::AlSettings al = alSettingsOf(settings_);
+  RowLimits rows = RowLimits::kAsGiven;
   for (int refinement = 0;; ++refinement) {
-    // A tightened problem that turned out infeasible or hard is given up for a finer grid:
-    // between closer grid points the trajectory stays closer to the limits it meets at them.
-    auto refineGrid = [&]() {
-      const int points = std::min(max_points, 2 * problem_.gridPoints() - 1);
-      tightened = false;
-      return points > problem_.gridPoints() && prepare(points);
-    };
-    // Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
-    // multipliers that make it stationary. Repeated after every refinement: a feasible start is
-    // cheaper to polish than a stale one.
-    problem_.b_start = requested_b_start;
-    const topp::ReachabilityResult reach =
-        topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
-    if (reach.status != topp::ReachabilityStatus::kOk) {
-      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+    Attempt attempt = solveRows(move, al, refinement == 0, report);
+    const bool may_refine = refinement < settings_.max_limit_refinements;
+    switch (attempt.end) {
+      case Attempt::End::kWithinLimits:
+      case Attempt::End::kBroken:
+        return std::move(attempt.result);
+      case Attempt::End::kHard: {
+        // Tightened rows that turned out infeasible or hard are given up for a finer grid.
+        if (rows != RowLimits::kTightened || !may_refine) return std::move(attempt.result);
+        const GridChange change = refineGrid(move, report, &error);
+        if (change == GridChange::kInvalid) return fail(PlanStatus::kInvalidInput, error);
+        if (change == GridChange::kFinest) return std::move(attempt.result);
+        rows = RowLimits::kAsGiven;
         ++report.refinements;
-        continue;
+        break;
       }
-      if (reach.status == topp::ReachabilityStatus::kStartNotControllable) {
-        return fail(PlanStatus::kInfeasibleStart, reach.reason);
-      }
-      return fail(PlanStatus::kInvalidInput, reach.reason);
-    }
-    if (refinement == 0) report.controllable_start_b = reach.controllable_start_b * length_squared;
-    problem_.b_start = reach.start_b;
-    report.start_speed_ratio = requested_b_start > 0.0 ? std::sqrt(reach.start_b / requested_b_start) : 1.0;
-    // Time in units of the warm start's duration: the optimiser sees a duration of about one.
-    const double warm_duration = profileDuration(problem_, profile_);
-    if (refinement == 0) report.warm_start_duration_s = warm_duration;
-    const double time_scale = warm_duration > 0.0 && std::isfinite(warm_duration) ? warm_duration : 1.0;
-    topp::scaleTime(problem_, time_scale, scaled_);
-    for (double& b : profile_) b *= time_scale * time_scale;
-    topp::initialGuess(scaled_, profile_, state_.x);
-    topp::estimateMultipliers(scaled_, state_.x, state_.multipliers);
-    state_.penalty = 0.0;
-
-    const topp::AlReport solved = topp::solveAugmentedLagrangian(scaled_, al, state_, workspace_);
-    accumulate(report, solved);
-    if (!solved.converged) {
-      if (tightened && refinement < settings_.max_limit_refinements && refineGrid()) {
+      case Attempt::End::kOverLimits: {
+        if (!may_refine) return fail(PlanStatus::kSolverNotConverged, overLimitsText(refinement, report));
         ++report.refinements;
-        continue;
+        const Result<RowLimits> next = refineOrTighten(move, report);
+        if (!next) return next.error();
+        rows = next.value();
+        break;
       }
-      return fail(PlanStatus::kSolverNotConverged, "time-optimal parameterisation did not converge: " + residualText(solved));
     }
-    const topp::VariableLayout layout{problem_.gridPoints()};
-    // Back to path units: b = (ds/dt)^2 = b_scaled length^2 / T^2.
-    const double to_path_units = length_squared / (time_scale * time_scale);
-    std::vector<double> s_grid(problem_.s.size());
-    std::vector<double> b_grid(problem_.s.size());
-    for (int k = 0; k < problem_.gridPoints(); ++k) {
-      s_grid[static_cast<size_t>(k)] = problem_.s[static_cast<size_t>(k)] * length;
-      b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
-    }
-    s_grid.back() = length;
-    b_grid.front() = problem_.b_start == requested_b_start ? b_start : problem_.b_start * length_squared;
-    b_grid.back() = 0.0;
-    Result<Trajectory> trajectory = Trajectory::create(path, elevator, arm, std::move(s_grid), std::move(b_grid));
-    if (!trajectory) {
-      return fail(PlanStatus::kInternalError, "the solved profile is not a valid trajectory: " + trajectory.error().reason);
-    }
-    if (checkLimits(trajectory.value(), settings_, margins_, report)) return trajectory;
-    if (refinement >= settings_.max_limit_refinements) {
-      char text[200];
-      std::snprintf(text, sizeof text,
-                    "limits still exceeded between grid points after %d refinements (peak voltage %.4f, current "
-                    "%.4f of the limit)",
-                    refinement, report.peak_voltage_ratio, report.peak_current_ratio);
-      return fail(PlanStatus::kSolverNotConverged, text);
-    }
-    ++report.refinements;
-    const double overshoot = std::max({report.peak_voltage_ratio, report.peak_current_ratio,
-                                       report.peak_velocity_ratio, report.peak_acceleration_ratio}) - 1.0;
-    if (overshoot > kRefineAbove && refineGrid()) continue;
-    // Small overshoots: lower the limits of the intervals concerned (checkLimits set the margins).
-    if (!topp::buildRows(drives, margins_, problem_, &error)) {
-      if (!refineGrid()) return fail(PlanStatus::kInvalidInput, error);
-      continue;
-    }
-    tightened = true;
   }
 }
 

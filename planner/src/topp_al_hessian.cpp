@@ -2,10 +2,9 @@
 // preconditioner of the inner L-BFGS.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
-#include "cyber/planner/second_order_cone.hpp"
-#include "cyber/planner/topp_augmented_lagrangian.hpp"
 #include "topp_al_terms.hpp"
 
 namespace cyber::planner::topp {
@@ -53,9 +52,10 @@ void addConeTerm(BandedCholesky& h, double rho, const Cone3& v, const int (&inde
 
 }  // namespace
 
-void assembleHessian(const Problem& problem, const Multipliers& m, double rho, const Eigen::VectorXd& x,
+void assembleHessian(const Problem& problem, const Multipliers& m, double rho, const Eigen::VectorXd& x_vector,
                      BandedCholesky& h) {
   const VariableLayout v{problem.gridPoints()};
+  const double* x = x_vector.data();
   const int kk = problem.gridPoints();
   const double inv_rho = 1.0 / rho;
   h.reset(v.size(), VariableLayout::kBandwidth);
@@ -63,10 +63,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
   Eigen::VectorXd floor = Eigen::VectorXd::Zero(v.size());
 
   for (int k = 0; k + 1 < kk; ++k) {
-    const double sigma = x[v.c(k)] + x[v.c(k + 1)];
-    const double d = x[v.d(k)];
-    const double* mu = m.time_cone.data() + 3 * k;
-    const Cone3 arg{mu[0] * inv_rho - (sigma + d), mu[1] * inv_rho - (sigma - d), mu[2] * inv_rho - 2.0};
+    const Cone3 arg = shiftedCone(m.timeCone(k), inv_rho, timeCone(v, x, k));
     const int index[3] = {v.c(k), v.c(k + 1), v.d(k)};
     const double a[3][3] = {{1.0, 1.0, 1.0}, {1.0, 1.0, -1.0}, {0.0, 0.0, 0.0}};
     addConeTerm<3>(h, rho, arg, index, a);
@@ -86,8 +83,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
-    const double* mu = m.speed_cone.data() + 3 * k;
-    const Cone3 arg{mu[0] * inv_rho - (b + 1.0), mu[1] * inv_rho - (b - 1.0), mu[2] * inv_rho - 2.0 * c};
+    const Cone3 arg = shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c));
     const int index[2] = {v.b(k), v.c(k)};
     const double a[3][2] = {{1.0, 0.0}, {1.0, 0.0}, {0.0, 2.0}};
     addConeTerm<2>(h, rho, arg, index, a);
@@ -104,18 +100,18 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
 
     if (-b + m.b_nonnegative[k] * inv_rho > 0.0) h.add(v.b(k), v.b(k), rho);
   }
-  for (const int i : {v.b(0), v.b(kk - 1), v.c(0), v.c(kk - 1)}) {
+  for (const int i : v.boundary()) {
     h.add(i, i, rho);
     floor[i] += 1.0;
   }
 
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const int k = row.interval;
-    const int index[5] = {v.a(k), v.b(k), v.b(k + 1), v.c(k), v.c(k + 1)};
+    const VariableLayout::Row at = v.row(row.interval);
+    const int index[5] = {at.a, at.b0, at.b1, at.c0, at.c1};
     const double coef[5] = {row.alpha, row.beta * (1.0 - row.at), row.beta * row.at, row.gamma * (1.0 - row.at),
                             row.gamma * row.at};
-    const double r = row.value(x[index[0]], x[index[1]], x[index[2]], x[index[3]], x[index[4]]);
+    const double r = rowValue(row, at, x);
     // Rows at or near their bound count as active: the minimiser is about to push past them,
     // and a row that just stepped inside still bounds how far the next step may go.
     const double near = 1e-9 * (1.0 + std::abs(r));

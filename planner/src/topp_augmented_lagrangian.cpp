@@ -1,45 +1,38 @@
 #include "cyber/planner/topp_augmented_lagrangian.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "cyber/planner/second_order_cone.hpp"
 #include "topp_al_terms.hpp"
 
 namespace cyber::planner::topp {
 namespace {
 
 // The multiplier-update pass of the outer loop: new multipliers and the primal residual.
-double updateMultipliers(const Problem& problem, Multipliers& m, double rho, const Eigen::VectorXd& x) {
+double updateMultipliers(const Problem& problem, Multipliers& m, double rho, const Eigen::VectorXd& x_vector) {
   const VariableLayout v{problem.gridPoints()};
   const int kk = problem.gridPoints();
+  const double* x = x_vector.data();
   double residual = 0.0;
   auto track = [&](double change) { residual = std::max(residual, std::abs(change) / rho); };
-  for (int k = 0; k + 1 < kk; ++k) {
-    const double sigma = x[v.c(k)] + x[v.c(k + 1)];
-    const double d = x[v.d(k)];
-    double* mu = m.time_cone.data() + 3 * k;
-    const Cone3 p = projectOntoSecondOrderCone({mu[0] - rho * (sigma + d), mu[1] - rho * (sigma - d), mu[2] - rho * 2.0});
+  // mu <- P_K(mu - rho (A x + b)) (eq. 30).
+  auto updateCone = [&](double* mu, const Cone3& u) {
+    const Cone3 p = projectOntoSecondOrderCone({mu[0] - rho * u.t, mu[1] - rho * u.x1, mu[2] - rho * u.x2});
     track(p.t - mu[0]);
     track(p.x1 - mu[1]);
     track(p.x2 - mu[2]);
     mu[0] = p.t;
     mu[1] = p.x1;
     mu[2] = p.x2;
-  }
+  };
+  for (int k = 0; k + 1 < kk; ++k) updateCone(m.timeCone(k), timeCone(v, x, k));
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = x[v.b(k)];
     const double c = x[v.c(k)];
-    double* mu = m.speed_cone.data() + 3 * k;
-    const Cone3 p = projectOntoSecondOrderCone({mu[0] - rho * (b + 1.0), mu[1] - rho * (b - 1.0), mu[2] - rho * 2.0 * c});
-    track(p.t - mu[0]);
-    track(p.x1 - mu[1]);
-    track(p.x2 - mu[2]);
-    mu[0] = p.t;
-    mu[1] = p.x1;
-    mu[2] = p.x2;
+    updateCone(m.speedCone(k), speedCone(b, c));
     const double h = c * c - b;
     track(rho * h);
     m.speed_square[k] += rho * h;
@@ -49,20 +42,20 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
   }
   for (int k = 0; k + 1 < kk; ++k) {
     const double ds = problem.ds(k);
-    const double e = (x[v.b(k + 1)] - x[v.b(k)] - 2.0 * ds * x[v.a(k)]) * equalityWeight(ds);
+    const double e = baRelation(v, x, k, ds) * equalityWeight(ds);
     track(rho * e);
     m.equality[k] += rho * e;
   }
-  const double boundary[4] = {x[v.b(0)] - problem.b_start, x[v.b(kk - 1)] - problem.b_end,
-                              x[v.c(0)] - std::sqrt(problem.b_start), x[v.c(kk - 1)] - std::sqrt(problem.b_end)};
+  const std::array<int, 4> boundary = v.boundary();
+  const std::array<double, 4> target = boundaryTargets(problem);
   for (int i = 0; i < 4; ++i) {
-    track(rho * boundary[i]);
-    m.equality[kk - 1 + i] += rho * boundary[i];
+    const double e = x[boundary[static_cast<size_t>(i)]] - target[static_cast<size_t>(i)];
+    track(rho * e);
+    m.boundary(i) += rho * e;
   }
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const int k = row.interval;
-    const double r = row.value(x[v.a(k)], x[v.b(k)], x[v.b(k + 1)], x[v.c(k)], x[v.c(k + 1)]);
+    const double r = rowValue(row, v.row(row.interval), x);
     const double up = std::max(m.row_upper[static_cast<Eigen::Index>(i)] + rho * (r - row.hi), 0.0);
     track(up - m.row_upper[static_cast<Eigen::Index>(i)]);
     m.row_upper[static_cast<Eigen::Index>(i)] = up;
@@ -73,6 +66,22 @@ double updateMultipliers(const Problem& problem, Multipliers& m, double rho, con
     }
   }
   return residual;
+}
+
+// Largest entry of the constraints' part of a gradient of L_rho: the gradient less the cost's.
+double constraintGradient(const Problem& problem, const Eigen::VectorXd& gradient) {
+  const VariableLayout v{problem.gridPoints()};
+  double largest = 0.0;
+  auto track = [&](double entry) { largest = std::max(largest, std::abs(entry)); };
+  for (int k = 0; k < v.grid_points; ++k) {
+    track(gradient[v.b(k)]);
+    track(gradient[v.c(k)]);
+  }
+  for (int k = 0; k < v.intervals(); ++k) {
+    track(gradient[v.a(k)]);
+    track(gradient[v.d(k)] - costGradient(problem, k));
+  }
+  return largest;
 }
 
 }  // namespace
@@ -115,14 +124,10 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
 
   // Cost and time cones (eq. 21 with the projection P_K).
   for (int k = 0; k + 1 < kk; ++k) {
-    const double ds = problem.ds(k);
-    const double sigma = xs[v.c(k)] + xs[v.c(k + 1)];
-    const double d = xs[v.d(k)];
-    value += problem.cost_scale * 2.0 * ds * d;
-    g[v.d(k)] += problem.cost_scale * 2.0 * ds;
-    const double* mu = m.time_cone.data() + 3 * k;
-    const Cone3 p = projectOntoSecondOrderCone(
-        {mu[0] * inv_rho - (sigma + d), mu[1] * inv_rho - (sigma - d), mu[2] * inv_rho - 2.0});
+    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.timeCone(k), inv_rho, timeCone(v, xs, k)));
+    const double cost = costGradient(problem, k);
+    value += cost * xs[v.d(k)];
+    g[v.d(k)] += cost;
     value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
     const double sum = rho * (p.t + p.x1);
     g[v.c(k)] -= sum;
@@ -133,9 +138,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
     const double b = xs[v.b(k)];
     const double c = xs[v.c(k)];
-    const double* mu = m.speed_cone.data() + 3 * k;
-    const Cone3 p = projectOntoSecondOrderCone(
-        {mu[0] * inv_rho - (b + 1.0), mu[1] * inv_rho - (b - 1.0), mu[2] * inv_rho - 2.0 * c});
+    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c)));
     value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
     g[v.b(k)] -= rho * (p.t + p.x1);
     g[v.c(k)] -= 2.0 * rho * p.x2;
@@ -155,7 +158,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   for (int k = 0; k + 1 < kk; ++k) {
     const double ds = problem.ds(k);
     const double w = equalityWeight(ds);
-    const double e = (xs[v.b(k + 1)] - xs[v.b(k)] - 2.0 * ds * xs[v.a(k)]) * w + m.equality[k] * inv_rho;
+    const double e = baRelation(v, xs, k, ds) * w + m.equality[k] * inv_rho;
     value += 0.5 * rho * e * e;
     const double ge = rho * e * w;
     g[v.b(k + 1)] += ge;
@@ -165,12 +168,13 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   // Boundary values. c is pinned as well as b: at rest c^2 = b alone does not hold c at 0 to first
   // order (no constraint qualification), which would leave the multipliers unbounded.
   {
-    const int index[4] = {v.b(0), v.b(kk - 1), v.c(0), v.c(kk - 1)};
-    const double target[4] = {problem.b_start, problem.b_end, std::sqrt(problem.b_start), std::sqrt(problem.b_end)};
+    const std::array<int, 4> index = v.boundary();
+    const std::array<double, 4> target = boundaryTargets(problem);
     for (int i = 0; i < 4; ++i) {
-      const double e = xs[index[i]] - target[i] + m.equality[kk - 1 + i] * inv_rho;
+      const auto n = static_cast<size_t>(i);
+      const double e = xs[index[n]] - target[n] + m.boundary(i) * inv_rho;
       value += 0.5 * rho * e * e;
-      g[index[i]] += rho * e;
+      g[index[n]] += rho * e;
     }
   }
   // Limit rows.
@@ -179,13 +183,8 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   const size_t rows = problem.rows.size();
   for (size_t i = 0; i < rows; ++i) {
     const LinearRow& row = problem.rows[i];
-    const int k = row.interval;
-    const int ia = v.a(k);
-    const int ib0 = v.b(k);
-    const int ib1 = v.b(k + 1);
-    const int ic0 = v.c(k);
-    const int ic1 = v.c(k + 1);
-    const double r = row.value(xs[ia], xs[ib0], xs[ib1], xs[ic0], xs[ic1]);
+    const VariableLayout::Row at = v.row(row.interval);
+    const double r = rowValue(row, at, xs);
     double t = r - row.hi + up[i] * inv_rho;
     if (t <= 0.0) t = 0.0;
     double l = row.lo - r + low[i] * inv_rho;  // -inf for one-sided rows
@@ -195,11 +194,11 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
       const double coef = rho * (t - l);
       const double w1 = row.at;
       const double w0 = 1.0 - w1;
-      g[ia] += coef * row.alpha;
-      g[ib0] += coef * row.beta * w0;
-      g[ib1] += coef * row.beta * w1;
-      g[ic0] += coef * row.gamma * w0;
-      g[ic1] += coef * row.gamma * w1;
+      g[at.a] += coef * row.alpha;
+      g[at.b0] += coef * row.beta * w0;
+      g[at.b1] += coef * row.beta * w1;
+      g[at.c0] += coef * row.gamma * w0;
+      g[at.c1] += coef * row.gamma * w1;
     }
   }
   return value;
@@ -212,9 +211,7 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
   const int n = v.size();
   double rho = state.penalty > 0.0 ? state.penalty : settings.penalty_initial;
   double cost_gradient = 0.0;
-  for (int k = 0; k + 1 < problem.gridPoints(); ++k) {
-    cost_gradient = std::max(cost_gradient, problem.cost_scale * 2.0 * problem.ds(k));
-  }
+  for (int k = 0; k < v.intervals(); ++k) cost_gradient = std::max(cost_gradient, costGradient(problem, k));
 
   w.z.resize(n);
   w.step.resize(n);
@@ -274,13 +271,7 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
     ++report.evaluations;
     // Relative to the larger of the two parts of the Lagrangian's gradient (cost, constraints):
     // with large multipliers (sharp bends) the gradient cannot be resolved below their roundoff.
-    double constraint_part = 0.0;
-    for (int i = 0; i < n; ++i) {
-      const int k = i / 4;
-      const double cost = (i % 4 == 3 && k + 1 < problem.gridPoints()) ? problem.cost_scale * 2.0 * problem.ds(k) : 0.0;
-      constraint_part = std::max(constraint_part, std::abs(w.gradient[i] - cost));
-    }
-    gradient_scale = std::max(cost_gradient, constraint_part);
+    gradient_scale = std::max(cost_gradient, constraintGradient(problem, w.gradient));
     report.dual_residual = w.gradient.lpNorm<Eigen::Infinity>() / gradient_scale;
     primal = updateMultipliers(problem, state.multipliers, rho, x);
     report.primal_residual = primal;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "cyber/planner/banded_cholesky.hpp"
-#include "cyber/planner/topp_augmented_lagrangian.hpp"
 #include "topp_al_terms.hpp"
 
 namespace cyber::planner::topp {
@@ -27,8 +26,7 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
   active.reserve(problem.rows.size());
   for (size_t i = 0; i < problem.rows.size(); ++i) {
     const LinearRow& row = problem.rows[i];
-    const int k = row.interval;
-    const double r = row.value(x[v.a(k)], x[v.b(k)], x[v.b(k + 1)], x[v.c(k)], x[v.c(k + 1)]);
+    const double r = rowValue(row, v.row(row.interval), x.data());
     if (r >= row.hi - kActive) {
       active.push_back({static_cast<int>(i), 1.0});
     } else if (std::isfinite(row.lo) && r <= row.lo + kActive) {
@@ -42,9 +40,10 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
     const double d = x[v.d(k)];
     if (!(sigma > 0.0)) continue;
     const double theta = problem.cost_scale * problem.ds(k) / sigma;
-    m.time_cone[3 * k] = theta * (sigma + d);
-    m.time_cone[3 * k + 1] = -theta * (sigma - d);
-    m.time_cone[3 * k + 2] = -2.0 * theta;
+    double* mu = m.timeCone(k);
+    mu[0] = theta * (sigma + d);
+    mu[1] = -theta * (sigma - d);
+    mu[2] = -2.0 * theta;
     pull[static_cast<size_t>(k)] += 2.0 * theta * d;
     pull[static_cast<size_t>(k) + 1] += 2.0 * theta * d;
   }
@@ -136,10 +135,10 @@ int estimateMultipliers(const Problem& problem, const Eigen::VectorXd& x, Multip
     c_sum[static_cast<size_t>(row.interval) + 1] += active[i].sign * eta * row.gamma * row.at;
   }
   const auto last = static_cast<size_t>(kk - 1);
-  m.equality[kk - 1] = a_sum[0] / (2.0 * problem.ds(0)) - b_sum[0];
-  m.equality[kk] = -a_sum[last - 1] / (2.0 * problem.ds(kk - 2)) - b_sum[last];
-  m.equality[kk + 1] = pull[0] - c_sum[0];
-  m.equality[kk + 2] = pull[last] - c_sum[last];
+  m.boundary(0) = a_sum[0] / (2.0 * problem.ds(0)) - b_sum[0];
+  m.boundary(1) = -a_sum[last - 1] / (2.0 * problem.ds(kk - 2)) - b_sum[last];
+  m.boundary(2) = pull[0] - c_sum[0];
+  m.boundary(3) = pull[last] - c_sum[last];
   return static_cast<int>(active.size());
 }
 

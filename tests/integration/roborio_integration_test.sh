@@ -24,13 +24,20 @@ ip -n "$ns" route add 224.0.0.0/4 dev lo
 
 sed 's/^setpoint_echo_full_rate = false/setpoint_echo_full_rate = true/' "$config" >"$tmp/sim.toml"
 grep -q '^setpoint_echo_full_rate = true' "$tmp/sim.toml" || { echo "FAIL: no setpoint_echo_full_rate key in $config"; exit 1; }
+# The daemon stops motion when ARM_STATE is older than this: the Java side voids (and repeats once)
+# a move during which its loop was starved that long, or the daemon logged such a stop
+# (roborio/src/test/java/cyberplanner/roborio/sim/StarvationWatch.java).
+state_timeout_s=$(sed -n 's/^state_timeout_s = \([0-9.]*\).*/\1/p' "$tmp/sim.toml")
+[ -n "$state_timeout_s" ] || { echo "FAIL: no state_timeout_s key in $config"; exit 1; }
 ip netns exec "$ns" "$daemon" --config "$tmp/sim.toml" --can none >"$tmp/daemon.log" 2>&1 &
 daemon_pid=$!
 
 rc=0
-ip netns exec "$ns" "$java" -Dcyber.lcm.url='udpm://239.255.76.67:7667?ttl=0' -jar "$junit" \
+ip netns exec "$ns" "$java" -Dcyber.lcm.url='udpm://239.255.76.67:7667?ttl=0' \
+  -Dcyber.state_timeout_s="$state_timeout_s" -Dcyber.daemon_log="$tmp/daemon.log" -jar "$junit" \
   --class-path "$classpath" --scan-class-path "$tests_jar" --include-tag daemon \
   --disable-banner --details=tree --disable-ansi-colors --fail-if-no-tests || rc=$?
 kill -0 "$daemon_pid" 2>/dev/null || { echo "FAIL: the daemon died"; rc=1; }
 if [ "$rc" -ne 0 ]; then echo "--- daemon log (last 40 lines)"; tail -n 40 "$tmp/daemon.log"; exit 1; fi
+echo "daemon: motion stopped for a stale ARM_STATE $(grep -c 'ARM_STATE is stale' "$tmp/daemon.log") times"
 echo PASS

@@ -3,7 +3,10 @@
 //   state   --at E,A [--rate HZ] [--seconds S]   publish ARM_STATE, following the ARM_SETPOINT echo
 //   flood   --to E,A --to E,A --count N [--rate HZ] [--first-id N]   publish exactly N goals, paced
 //   garbage [--count N]                           undecodable bytes on ARM_GOAL and ARM_STATE
-//   watch   --first-id N --count K [--timeout S]  wait until each id has one final status; print tallies
+//   watch   --first-id N --count K [--timeout S] [--rcvbuf-bytes B]   wait until each id has one final
+//           status; print tallies, what was seen of each id without one, and the kernel's drops on
+//           this process's sockets. Exit 0, 1 (an answer missing or doubled), 3 (missing, but the
+//           kernel dropped datagrams on the watcher's own socket: the run is void)
 //   status  [--timeout S]                         print one ARM_DAEMON_STATUS as key=value lines
 // Every subcommand takes --lcm-url URL. Exit 0 on success, 1 otherwise, 2 for bad arguments.
 
@@ -24,6 +27,7 @@
 #include "cyberplanner/arm_plan_status_t.hpp"
 #include "cyberplanner/arm_setpoint_t.hpp"
 #include "cyberplanner/arm_state_t.hpp"
+#include "own_udp_sockets.hpp"
 
 namespace {
 
@@ -39,6 +43,7 @@ struct Args {
   long long first_id = 1;
   long long count = 100;
   double timeout_s = 10.0;
+  int rcvbuf_bytes = 0;  // watch: forced receive buffer (0: LCM's choice)
 };
 
 bool parsePair(const std::string& text, std::pair<double, double>& out) {
@@ -74,6 +79,8 @@ bool parse(int argc, char** argv, Args& args) {
       args.count = std::atoll(value.c_str());
     } else if (arg == "--timeout") {
       args.timeout_s = std::atof(value.c_str());
+    } else if (arg == "--rcvbuf-bytes") {
+      args.rcvbuf_bytes = std::atoi(value.c_str());
     } else {
       return false;
     }
@@ -173,14 +180,28 @@ struct Tally {
   long long first = 0, count = 0;
   std::map<long long, int> finals;  // id -> number of final statuses
   std::map<int, long long> by_status;
+  std::map<long long, unsigned> seen;  // id -> bit per status value received
   void onStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_plan_status_t* m) {
     if (m->request_id < first || m->request_id >= first + count) return;
+    if (m->status >= 0 && m->status < 32) seen[m->request_id] |= 1u << m->status;
     if (m->status >= cyberplanner::arm_plan_status_t::STATUS_DONE) {
       ++finals[m->request_id];
       ++by_status[m->status];
     }
   }
 };
+
+// "accepted planning", or "none": the statuses in `bits` (a Tally::seen entry), in wire order.
+std::string statusNames(unsigned bits) {
+  static const char* const kNames[] = {"accepted", "planning", "executing", "done", "rejected", "failed", "cancelled"};
+  std::string out;
+  for (unsigned s = 0; s < sizeof(kNames) / sizeof(kNames[0]); ++s) {
+    if ((bits & (1u << s)) == 0) continue;
+    if (!out.empty()) out += ' ';
+    out += kNames[s];
+  }
+  return out.empty() ? "none" : out;
+}
 
 int runWatch(lcm::LCM& lcm, const Args& args) {
   Tally tally;
@@ -189,6 +210,24 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   // Unbounded: LCM's default of 30 queued messages per subscription drops statuses in the flood
   // whenever this process is descheduled for a few milliseconds.
   lcm.subscribe("ARM_PLAN_STATUS", &Tally::onStatus, &tally)->setQueueCapacity(0);
+  // LCM has opened its sockets by now (subscribing sets up the receive side).
+  const auto sockets = cyber::test::ownUdpSockets();
+  if (sockets.empty()) {
+    std::fprintf(stderr, "cyber-test-peer: no UDP socket of its own in /proc/self/net/udp\n");
+    return 1;
+  }
+  if (args.rcvbuf_bytes > 0) {
+    const long long got = cyber::test::forceReceiveBuffer(sockets, args.rcvbuf_bytes);
+    if (got < args.rcvbuf_bytes) {
+      std::fprintf(stderr, "cyber-test-peer: cannot force a %d-byte receive buffer (SO_RCVBUF %lld; root needed)\n",
+                   args.rcvbuf_bytes, got);
+      return 1;
+    }
+  }
+  const std::int64_t drops_before = cyber::test::kernelDrops(sockets);
+  // Subscribed: a sender may start now (statuses sent before this socket joined are not seen).
+  std::printf("watching ids %lld..%lld\n", args.first_id, args.first_id + args.count - 1);
+  std::fflush(stdout);
   const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   while (Clock::now() < end && static_cast<long long>(tally.finals.size()) < args.count) lcm.handleTimeout(50);
   // A little longer, to catch a second final status for any id.
@@ -199,14 +238,19 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   int listed = 0;
   for (long long id = tally.first; id < tally.first + tally.count && listed < 20; ++id) {
     if (tally.finals.count(id) == 0) {
-      std::printf("no final status for request %lld\n", id);
+      std::printf("no final status for request %lld (seen: %s)\n", id, statusNames(tally.seen[id]).c_str());
       ++listed;
     }
   }
   std::printf("final statuses for %zu of %lld ids; duplicates %lld; done %lld rejected %lld failed %lld cancelled %lld\n",
               tally.finals.size(), args.count, duplicates, tally.by_status[3], tally.by_status[4], tally.by_status[5],
               tally.by_status[6]);
-  return static_cast<long long>(tally.finals.size()) == args.count && duplicates == 0 ? 0 : 1;
+  const std::int64_t drops = cyber::test::kernelDrops(sockets) - drops_before;
+  std::printf("watcher: %zu UDP sockets, kernel drops on them during the watch %lld\n", sockets.size(),
+              static_cast<long long>(drops));
+  if (duplicates != 0) return 1;
+  if (static_cast<long long>(tally.finals.size()) == args.count) return 0;
+  return drops > 0 ? 3 : 1;
 }
 
 struct StatusCatcher {

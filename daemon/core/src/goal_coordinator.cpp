@@ -202,7 +202,8 @@ void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> res
   }
   ++counters_.plans_succeeded;
   sink_.postProgram(std::make_unique<Program>(spliced->program));
-  stage_ = Posted{program_id, std::move(spliced->program), std::move(job.attempt), std::move(spliced->dropped_requests)};
+  stage_ = Posted{program_id, std::move(spliced->program), std::move(job.attempt), std::move(spliced->dropped_requests),
+                  std::move(spliced->pruned_requests)};
 }
 
 void GoalCoordinator::onAdopted(Posted posted, const StreamEvent& event, MonoNs now) {
@@ -210,6 +211,8 @@ void GoalCoordinator::onAdopted(Posted posted, const StreamEvent& event, MonoNs 
   // The streamer decided where a floating plan starts; the mirror takes its start time.
   mirror_.resolveFloatingStart(event.start_ns);
   const std::int64_t id = posted.attempt.goal.request_id;
+  // A pruned segment no tick streamed has no kExecuting to end it: end it here.
+  for (const auto& [over, successor] : posted.pruned) finish(over, GoalStatus::kCancelled, superseded(successor));
   for (std::int64_t dropped : posted.dropped) finish(dropped, GoalStatus::kCancelled, superseded(id));
   const Segment& added = mirror_.segment(mirror_.segmentCount() - 1);
   sink_.publishTrajectory(id, added.source, added.start_ns);

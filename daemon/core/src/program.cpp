@@ -88,6 +88,7 @@ std::optional<Program::Spliced> Program::splice(const Program& base, SpliceReque
   // Segments whose successor has started by `now` will never be sampled again.
   while (first + 1 < base.count_ && base.segments_[static_cast<size_t>(first + 1)].start_ns <= now) {
     next.rest_q = base.segment(first).source->at(base.segment(first).source->durationS()).position;
+    spliced.pruned_requests.emplace_back(base.segment(first).request_id, base.segment(first + 1).request_id);
     ++first;
   }
   for (int i = first; i < base.count_; ++i) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <random>
 
 #include "daemon_harness.hpp"
 
@@ -256,6 +257,99 @@ TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenTheNextOneStarts) {
   EXPECT_EQ(h.sink.last(2)->status, S::kCancelled);
   EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
   EXPECT_EQ(h.sink.last(3)->status, S::kExecuting);
+}
+
+// The worker's result delivered at `at`, between stream ticks, as the event loop may see it.
+void deliverPlan(Harness& h, MonoNs at) {
+  ASSERT_TRUE(h.sink.job.has_value());
+  const PlanJob job = *h.sink.job;
+  h.sink.job.reset();
+  h.coordinator().onPlanResult(job.job_id, h.plan(job.request), 0.001, at);
+}
+
+TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenASpliceAfterItsSuccessorsStartDropsIt) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.3);
+  ASSERT_EQ(h.lastRecord().mode, StreamMode::kMoving);
+  h.setPlanTime(1e9);  // from here plans are delivered by hand, at times between ticks
+  const MonoNs tick = h.now - Harness::kPeriod;  // the last tick
+  const MonoNs ms = 1'000'000;
+  // Goal 2 at tick + 1 ms starts at tick + 31 ms; goal 3, waiting until 2 is adopted at tick + 5 ms,
+  // starts at tick + 35 ms: no tick falls between them, so no tick ever streams 2.
+  h.now = tick + 1 * ms;
+  h.goal(2, kLow);
+  deliverPlan(h, tick + 2 * ms);
+  h.now = tick + 3 * ms;
+  h.goal(3, kStow);
+  h.now = tick + Harness::kPeriod;
+  h.step();  // adopts 2, starts planning 3
+  deliverPlan(h, tick + 7 * ms);
+  h.step();  // adopts 3
+  ASSERT_EQ(h.coordinator().mirror().segmentCount(), 3);
+  h.now = tick + 12 * ms;
+  h.goal(4, kHigh);  // starts at tick + 42 ms
+  h.now = tick + 3 * Harness::kPeriod;
+  while (h.now < tick + 35 * ms) h.step();
+  // Plan 4 is back just as 3 starts, before the tick that streams 3: its splice leaves out 2 (over,
+  // since 3 has started), and the streamer adopts it before it samples 3.
+  deliverPlan(h, h.now);
+  h.step();
+  ASSERT_EQ(h.sink.last(3)->status, S::kExecuting);
+  ASSERT_NE(h.sink.last(2), nullptr);
+  EXPECT_EQ(h.sink.of(2), sequence({S::kAccepted, S::kPlanning, S::kCancelled}));
+  EXPECT_EQ(h.sink.last(2)->reason, "superseded by request 3");
+  EXPECT_EQ(h.sink.last(1)->status, S::kCancelled);
+}
+
+// Seeded random floods with the event loop's timing free: goals and plan results land at any
+// millisecond between ticks, plans take 1-60 ms (so the budget, and the splice points, move).
+// Every goal gets exactly one final status.
+TEST(GoalCoordinator, RandomFloodsBetweenTicksGiveEveryGoalExactlyOneFinalStatus) {
+  const MonoNs ms = 1'000'000;
+  for (unsigned seed = 1; seed <= 100; ++seed) {
+    std::mt19937 random(seed);
+    // Mostly quick plans with a slow one now and then: the budget jumps up, and down again when the
+    // slow plan leaves its window.
+    std::uniform_int_distribution<int> quick_ms(1, 4), slow_ms(20, 60), sub_ms(0, Harness::kPeriod / ms - 1);
+    const auto plan_ms = [&](std::mt19937& r) { return r() % 8 == 0 ? slow_ms(r) : quick_ms(r); };
+    Harness h;
+    h.start(kStow);
+    h.run(0.01);
+    h.setPlanTime(1e9);  // plans are delivered below
+    MonoNs plan_due = kNever;
+    std::int64_t id = 0;
+    const std::int64_t goals = 300;
+    for (int period = 0; period < 4000 && (id < goals || !h.coordinator().idle()); ++period) {
+      const MonoNs tick = h.now;
+      const MonoNs goal_at = tick - Harness::kPeriod + (sub_ms(random) + 1) * ms;
+      for (MonoNs t = tick - Harness::kPeriod + ms; t <= tick; t += ms) {
+        h.now = t;
+        if (h.sink.job && plan_due == kNever) plan_due = h.sink.job_started_ns + plan_ms(random) * ms;
+        if (h.sink.job && t >= plan_due) {
+          const PlanJob job = *h.sink.job;
+          h.sink.job.reset();
+          plan_due = kNever;
+          h.coordinator().onPlanResult(job.job_id, h.plan(job.request), nsToSeconds(t - h.sink.job_started_ns), t);
+        }
+        if (t == goal_at && id < goals) {
+          const double u = static_cast<double>(random() % 17) / 16.0;
+          h.goal(id++, JointVector(0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)));
+        }
+      }
+      h.now = tick;
+      h.step();
+    }
+    ASSERT_EQ(id, goals) << "seed " << seed;
+    ASSERT_TRUE(h.coordinator().idle()) << "seed " << seed;
+    h.run(5.0);  // the last motion ends
+    for (std::int64_t i = 0; i < goals; ++i) {
+      const auto statuses = h.sink.of(i);
+      ASSERT_EQ(std::count_if(statuses.begin(), statuses.end(), isFinal), 1)
+          << "seed " << seed << ", request " << i << ", statuses " << ::testing::PrintToString(statuses);
+    }
+  }
 }
 
 TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly) {

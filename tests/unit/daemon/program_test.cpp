@@ -135,6 +135,12 @@ TEST_F(ProgramTest, SpliceDropsSegmentsThatWouldStartAfterItAndPrunesFinishedOne
   EXPECT_EQ(s.segment(0).request_id, 3);
   EXPECT_EQ(s.segment(1).request_id, 4);
   EXPECT_TRUE(s.rest_q.isApprox(b));
+  // The pruned segment is reported with the one that superseded it (no streamer event may name it).
+  const auto spliced = Program::splice(r, {600 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4});
+  ASSERT_TRUE(spliced);
+  EXPECT_EQ(spliced->pruned_requests, (std::vector<std::pair<std::int64_t, std::int64_t>>{{1, 3}}));
+  EXPECT_TRUE(Program::splice(r, {20 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4})
+                  ->pruned_requests.empty());
 }
 
 TEST_F(ProgramTest, AFullChainRefusesAnotherSegmentAndReportsNothingDropped) {

@@ -1,11 +1,15 @@
 // The pieces of the time-optimal parameterisation, each against brute force: the banded
 // Cholesky against a dense factorisation, the cone projection against its defining properties,
+// the variable layout against a count of its slots,
 // the limit rows against the drive model, the reachability profile against every row, the
 // augmented Lagrangian's gradient against finite differences, its multiplier estimate against
 // stationarity, and the solver from a cold start against the warm-started one.
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -193,6 +197,45 @@ TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
   ASSERT_EQ(clamped.status, topp::ReachabilityStatus::kOk);
   EXPECT_EQ(clamped.start_b, clamped.controllable_start_b);
   EXPECT_EQ(b.front(), clamped.controllable_start_b);
+}
+
+TEST(ToppVariableLayout, NumbersEveryVariableOnceAndKeepsEachConstraintInTheBand) {
+  for (const int grid_points : {2, 3, 7, 50}) {
+    const topp::VariableLayout v{grid_points};
+    std::vector<int> owners(static_cast<size_t>(v.size()), 0);
+    auto own = [&](int i) {
+      ASSERT_GE(i, 0);
+      ASSERT_LT(i, v.size());
+      ++owners[static_cast<size_t>(i)];
+    };
+    for (int k = 0; k < grid_points; ++k) {
+      own(v.b(k));
+      own(v.c(k));
+    }
+    for (int k = 0; k < v.intervals(); ++k) {
+      own(v.a(k));
+      own(v.d(k));
+    }
+    for (size_t i = 0; i < owners.size(); ++i) EXPECT_EQ(owners[i], 1) << "variable " << i << ", K " << grid_points;
+    // Every term of L_rho couples the variables of one interval: a limit row, its time cone, its
+    // b-a relation. Their spread is what the Hessian's band must hold.
+    for (int k = 0; k < v.intervals(); ++k) {
+      const topp::VariableLayout::Row row = v.row(k);
+      EXPECT_EQ(row.a, v.a(k));
+      EXPECT_EQ(row.b0, v.b(k));
+      EXPECT_EQ(row.b1, v.b(k + 1));
+      EXPECT_EQ(row.c0, v.c(k));
+      EXPECT_EQ(row.c1, v.c(k + 1));
+      const int lowest = std::min({row.a, row.b0, row.c0, v.d(k)});
+      const int highest = std::max({row.b1, row.c1, v.d(k)});
+      EXPECT_LE(highest - lowest, topp::VariableLayout::kBandwidth) << "interval " << k << ", K " << grid_points;
+    }
+    const std::array<int, 4> boundary = v.boundary();
+    EXPECT_EQ(boundary[0], v.b(0));
+    EXPECT_EQ(boundary[1], v.b(grid_points - 1));
+    EXPECT_EQ(boundary[2], v.c(0));
+    EXPECT_EQ(boundary[3], v.c(grid_points - 1));
+  }
 }
 
 TEST(ToppAugmentedLagrangian, GradientMatchesFiniteDifferences) {

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "cyber/planner/geometric_path.hpp"
@@ -56,6 +57,18 @@ class ToppSolver {
   [[nodiscard]] const ToppSettings& settings() const { return settings_; }
 
  private:
+  // The steps of solve() (topp.cpp; algorithm.md section 3, "Stopping rules").
+  struct Move;
+  struct Attempt;
+  enum class GridChange;
+  enum class RowLimits;
+  bool sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error);
+  GridChange refineGrid(const Move& move, ToppReport& report, std::string* error);
+  Result<double> warmStart(const Move& move, bool first, ToppReport& report);
+  Result<Trajectory> solvedTrajectory(const Move& move, double time_scale) const;
+  Attempt solveRows(const Move& move, const topp::AlSettings& al, bool first, ToppReport& report);
+  Result<RowLimits> refineOrTighten(const Move& move, ToppReport& report);
+
   ToppSettings settings_;
   topp::Problem problem_;       // unit length, seconds
   topp::Problem scaled_;        // unit length, time in units of the warm start's duration

@@ -12,6 +12,8 @@
 //
 // Every evaluation of L_rho and its gradient walks each constraint once: O(K) time and memory.
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "cyber/planner/banded_cholesky.hpp"
@@ -31,6 +33,20 @@ struct VariableLayout {
   [[nodiscard]] int c(int k) const { return k < intervals() ? 4 * k + 2 : 4 * k + 1; }
   [[nodiscard]] int d(int k) const { return 4 * k + 3; }
   [[nodiscard]] int size() const { return 4 * grid_points - 2; }
+  // What a limit row of interval k reads (LinearRow::value's arguments).
+  struct Row {
+    int a, b0, b1, c0, c1;
+  };
+  // {a(k), b(k), b(k + 1), c(k), c(k + 1)} for k < intervals(), without a branch per entry: only
+  // node k + 1 can be the last.
+  [[nodiscard]] Row row(int k) const {
+    const int next = 4 * (k + 1) + static_cast<int>(k + 1 < intervals());
+    return {4 * k, 4 * k + 1, next, 4 * k + 2, next + 1};
+  }
+  // The values the boundary equalities pin, in the order of their multipliers (Multipliers::equality).
+  [[nodiscard]] std::array<int, 4> boundary() const {
+    return {b(0), b(grid_points - 1), c(0), c(grid_points - 1)};
+  }
 };
 
 struct Multipliers {
@@ -42,6 +58,14 @@ struct Multipliers {
   Eigen::VectorXd row_lower;     // eta of lo - (alpha a + beta b + gamma c) <= 0
   Eigen::VectorXd b_nonnegative; // eta of -b_k <= 0
   void reset(const Problem& problem);
+  // The three entries of mu of time cone k (interval k) and of speed cone k (node k).
+  [[nodiscard]] double* timeCone(int k) { return time_cone.data() + 3 * k; }
+  [[nodiscard]] const double* timeCone(int k) const { return time_cone.data() + 3 * k; }
+  [[nodiscard]] double* speedCone(int k) { return speed_cone.data() + 3 * k; }
+  [[nodiscard]] const double* speedCone(int k) const { return speed_cone.data() + 3 * k; }
+  // lambda of boundary equality i, in the order of VariableLayout::boundary().
+  [[nodiscard]] double& boundary(int i) { return equality[equality.size() - 4 + i]; }
+  [[nodiscard]] double boundary(int i) const { return equality[equality.size() - 4 + i]; }
 };
 
 struct AlSettings {

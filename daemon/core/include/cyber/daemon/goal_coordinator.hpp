@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -117,6 +118,7 @@ class GoalCoordinator {
     Program program;
     Attempt attempt;
     std::vector<std::int64_t> dropped;  // requests whose segments the program replaced
+    std::vector<std::pair<std::int64_t, std::int64_t>> pruned;  // segments over (request, superseded by)
   };
   using Stage = std::variant<Idle, Planning, Posted>;
 

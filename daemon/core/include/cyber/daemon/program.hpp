@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "cyber/daemon/hold_model.hpp"
@@ -74,8 +75,9 @@ class Program {
 
   struct Spliced;
   // Builds the successor of `base`: the same motion up to the new segment's start, then
-  // `request.added`. Segments that would start at or after the new one are dropped (their request
-  // ids are in the result). Nothing when the chain is full (the caller waits for segments to age out).
+  // `request.added`. Segments that would start at or after the new one are dropped, segments that
+  // are over are pruned (the request ids of both are in the result). Nothing when the chain is full
+  // (the caller waits for segments to age out).
   static std::optional<Spliced> splice(const Program& base, SpliceRequest request);
 
  private:
@@ -86,6 +88,10 @@ class Program {
 struct Program::Spliced {
   Program program;
   std::vector<std::int64_t> dropped_requests;  // requests of the segments the splice replaced
+  // Requests of the segments pruned because their successor had started by `now`, each with the
+  // request of that successor. A segment that started less than a stream period before its
+  // successor may never have been streamed, so no streamer event ever names it.
+  std::vector<std::pair<std::int64_t, std::int64_t>> pruned_requests;
 };
 
 }  // namespace cyber::daemon

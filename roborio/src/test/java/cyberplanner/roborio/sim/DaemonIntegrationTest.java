@@ -39,6 +39,10 @@ class DaemonIntegrationTest {
   static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
   static final double POSITION_TOLERANCE_M = 0.002;
   static final double ANGLE_TOLERANCE_RAD = 0.005;
+  // On the hold setpoints, in a row: SimulatedMechanism's critically damped joints (30 rad/s) leave
+  // (1 + 9) e^-9 = 0.12 % of the error they started the settling with.
+  static final double SETTLE_S = 0.3;
+  static final double SETTLE_WITHIN_S = 10.0;
 
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
     for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
@@ -52,9 +56,11 @@ class DaemonIntegrationTest {
       List<arm_setpoint_t> setpoints = new CopyOnWriteArrayList<>();
       client.setSetpointListener(setpoints::add);
       awaitDaemon(client);
+      StarvationWatch watch = StarvationWatch.fromDaemon();
       Thread publisher = new Thread(() -> {
         while (!Thread.currentThread().isInterrupted()) {
           client.publishState(0.58, 0.0, 2.97, 0.0, false, false);  // at rest at INTAKE
+          watch.tick();
           try {
             Thread.sleep(10);
           } catch (InterruptedException e) {
@@ -66,19 +72,36 @@ class DaemonIntegrationTest {
       try {
         for (int i = 0; i < 100 && client.daemonMode() != DaemonMode.HOLDING; ++i) Thread.sleep(50);
         assertEquals(DaemonMode.HOLDING, client.daemonMode());
-        MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
-        MoveState end = move.await(30);
-        System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
-        assertEquals(MoveState.DONE, end, move.toString());
-        assertTrue(move.durationS() > 0);
-        long moving = setpoints.stream()
-            .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
-        arm_setpoint_t last = setpoints.get(setpoints.size() - 1);
-        System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
-        // Full-rate echo: about one per 5 ms stream period over the trajectory.
-        assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
-        assertEquals(1.22, last.elevator_m, 1e-5);
-        assertEquals(5.69, last.arm_rad, 1e-5);
+        // A stale ARM_STATE cancels the move or makes the daemon hold INTAKE again (the state says so):
+        // nothing to restore.
+        watch.checkUnlessStarved("client: INTAKE -> L3", attempt -> {
+          MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
+          MoveState end = move.await(30);
+          System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
+          long moving = setpoints.stream()
+              .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_MOVING).count();
+          // The echo of the last tick may come after DONE (one loop in the daemon sends both): the hold.
+          arm_setpoint_t hold = null;
+          for (int i = 0; i < 200 && hold == null && end == MoveState.DONE; ++i) {
+            hold = setpoints.stream()
+                .filter(s -> s.request_id == move.requestId() && s.mode == arm_setpoint_t.MODE_HOLDING)
+                .findFirst().orElse(null);
+            if (hold == null) Thread.sleep(10);
+          }
+          arm_setpoint_t last = hold;
+          System.out.println("client: " + moving + " ARM_SETPOINT messages while moving");
+          return () -> {
+            assertEquals(MoveState.DONE, end, move.toString());
+            assertTrue(move.durationS() > 0);
+            // Full-rate echo: about one per 5 ms stream period over the trajectory.
+            assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
+            assertTrue(last != null, "no ARM_SETPOINT holding request " + move.requestId() + " within 2 s of DONE");
+            assertEquals(1.22, last.elevator_m, 1e-5);
+            assertEquals(5.69, last.arm_rad, 1e-5);
+          };
+        }, () -> {});
+        System.out.printf("client: void attempts %d, largest ARM_STATE gap %.3f s%n", watch.voided(),
+            watch.largestGapS());
       } finally {
         publisher.interrupt();
         publisher.join();
@@ -106,51 +129,104 @@ class DaemonIntegrationTest {
       CyberArmSubsystem subsystem = new CyberArmSubsystem(client, new LcmSetpointSource(client), mechanism.elevator,
           mechanism.arm, mechanism::state, guard, new HoldFallback(mechanism.elevator, mechanism.arm),
           () -> System.nanoTime() / 1000);
-      RobotLoop loop = new RobotLoop(subsystem, mechanism);
-      loop.runFor(1.0);  // the daemon takes the state and holds it
-      assertEquals(SetpointGuard.Verdict.USE, subsystem.verdict());
+      StarvationWatch watch = StarvationWatch.fromDaemon();
+      RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
+      watch.checkUnlessStarved("sim: start", attempt -> {
+        loop.runFor(1.0);  // the daemon takes the state and holds it
+        SetpointGuard.Verdict verdict = subsystem.verdict();
+        return () -> assertEquals(SetpointGuard.Verdict.USE, verdict);
+      }, () -> {});
       for (Pose goal : sequence) {
         mechanism.setPieces(goal.heldCoral(), goal.heldAlgae());
-        MoveToPoseCommand command = subsystem.moveToCommand(goal);
-        command.initialize();
-        double waited = 0;
-        while (!command.isFinished() && waited < 30) {
-          loop.runFor(LOOP_S);
-          waited += LOOP_S;
-        }
-        assertTrue(command.succeeded(), goal + ": " + command.move());
-        assertTrue(command.move().durationS() > 0.1, goal + ": no real move");
-        loop.runFor(0.3);  // settle on the hold setpoints
-        ArmState at = mechanism.state();
-        double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
-        double armError = Math.abs(at.armRad() - goal.armRad());
-        System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s%n", goal,
-            command.move().durationS(), elevatorError, armError, subsystem.verdict());
-        assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
-        assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+        // A stale ARM_STATE stops the move, or the hold at its end, where the state lagged behind.
+        ArmState from = mechanism.state();
+        watch.checkUnlessStarved("sim: " + goal, attempt -> {
+          MoveToPoseCommand command = subsystem.moveToCommand(goal);
+          command.initialize();
+          double waited = 0;
+          while (!command.isFinished() && waited < 30) {
+            loop.runFor(LOOP_S);
+            waited += LOOP_S;
+          }
+          long fallbackBefore = loop.fallbackLoops;
+          boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+          ArmState at = mechanism.state();
+          double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
+          double armError = Math.abs(at.armRad() - goal.armRad());
+          System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s, loops outside USE %d%n",
+              goal, command.move().durationS(), elevatorError, armError, subsystem.verdict(),
+              loop.fallbackLoops - fallbackBefore);
+          return () -> {
+            assertTrue(command.succeeded(), goal + ": " + command.move());
+            assertTrue(settled, goal + ": not " + SETTLE_S + " s in a row on the setpoints in " + SETTLE_WITHIN_S
+                + " s");
+            assertTrue(command.move().durationS() > 0.1, goal + ": no real move");  // restart() put it back
+            assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
+            assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+          };
+        }, () -> restart(loop, mechanism, from, watch));
       }
-      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d%n",
-          sequence.size(), guard.lostFrames(Joint.ELEVATOR), guard.lostFrames(Joint.ARM), loop.fallbackLoops,
-          loop.loops);
+      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d, "
+          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.ELEVATOR),
+          guard.lostFrames(Joint.ARM), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
     }
+  }
+
+  /**
+   * Puts the mechanism back where a void attempt started (it may have coasted anywhere on the last
+   * setpoint, even past a joint limit, and the daemon holds there) and makes the daemon take that
+   * state as it takes any after a stop: silence past state_timeout_s, until it logs the stop, then
+   * the loop again, as at the start.
+   */
+  static void restart(RobotLoop loop, SimulatedMechanism mechanism, ArmState from, StarvationWatch watch)
+      throws InterruptedException {
+    long stops = watch.daemonStaleStops();
+    Thread.sleep(Math.round(watch.stateTimeoutS() * 1e3));
+    for (int i = 0; i < 100 && watch.daemonStaleStops() == stops; ++i) Thread.sleep(50);
+    mechanism.placeAt(from.elevatorM(), from.armRad());
+    loop.resume();
+    loop.runFor(1.0);
   }
 
   /** The robot's main loop at 200 Hz in real time: subsystem.periodic(), then the model. */
   static final class RobotLoop {
     final CyberArmSubsystem subsystem;
     final SimulatedMechanism mechanism;
+    final StarvationWatch watch;
     long next = System.nanoTime();
     long loops;
     long fallbackLoops;
 
-    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism) {
+    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism, StarvationWatch watch) {
       this.subsystem = subsystem;
       this.mechanism = mechanism;
+      this.watch = watch;
+    }
+
+    /**
+     * Runs until the mechanism followed the setpoints (verdict USE) for seconds in a row, at most
+     * withinS; true if it did. After a stall the loop catches up faster than the setpoints arrive,
+     * and the guard holds the mechanism where it was meanwhile (HoldFallback): that is no settling.
+     */
+    boolean settle(double seconds, double withinS) throws InterruptedException {
+      long needed = Math.round(seconds / LOOP_S);
+      long inRow = 0;
+      for (long i = 0; inRow < needed && i < Math.round(withinS / LOOP_S); ++i) {
+        runFor(LOOP_S);
+        inRow = subsystem.verdict() == SetpointGuard.Verdict.USE ? inRow + 1 : 0;
+      }
+      return inRow >= needed;
+    }
+
+    /** Goes on after a pause without catching up on the periods missed. */
+    void resume() {
+      next = System.nanoTime();
     }
 
     void runFor(double seconds) throws InterruptedException {
       for (int i = 0; i < Math.round(seconds / LOOP_S); ++i) {
-        subsystem.periodic();
+        subsystem.periodic();  // publishes ARM_STATE first
+        watch.tick();
         if (subsystem.verdict() != SetpointGuard.Verdict.USE) fallbackLoops++;
         loops++;
         mechanism.step(LOOP_S);

@@ -31,6 +31,11 @@ public final class SimulatedMechanism {
       targetVelocity = velocity;
     }
 
+    void placeAt(double at) {
+      position = targetPosition = at;
+      velocity = targetVelocity = 0;
+    }
+
     void step(double dt) {
       double w = NATURAL_FREQUENCY_RADPS;
       double acceleration = w * w * (targetPosition - position) + 2 * w * (targetVelocity - velocity);
@@ -47,6 +52,12 @@ public final class SimulatedMechanism {
   public SimulatedMechanism(double elevatorM, double armRad) {
     elevator = new SimJoint(elevatorM);
     arm = new SimJoint(armRad);
+  }
+
+  /** At rest at elevatorM, armRad, holding there (a test putting the robot back). */
+  public void placeAt(double elevatorM, double armRad) {
+    elevator.placeAt(elevatorM);
+    arm.placeAt(armRad);
   }
 
   public void setPieces(boolean coral, boolean algae) {
