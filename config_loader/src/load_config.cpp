@@ -179,6 +179,9 @@ DaemonSettings readDaemon(TableReader d) {
   s.heartbeat_timeout_s = d.number("heartbeat_timeout_s", Bounds{0.001, 10.0});
   s.require_robot_enabled = d.boolean("require_robot_enabled");
   s.planning_budget_s = d.number("planning_budget_s", Bounds{0.0, 1.0});
+  if (d.has("max_planning_budget_s")) {
+    s.max_planning_budget_s = d.number("max_planning_budget_s", Bounds{s.planning_budget_s, 10.0});
+  }
   s.status_rate_hz = d.number("status_rate_hz", Bounds{0.1, 100.0});
   s.setpoint_echo_rate_hz = d.number("setpoint_echo_rate_hz", Bounds{0.1, 1000.0});
   if (d.has("setpoint_echo_full_rate")) s.setpoint_echo_full_rate = d.boolean("setpoint_echo_full_rate");

@@ -25,7 +25,7 @@ struct LaterEntry {
 
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic) {
+                                      bool use_heuristic, std::span<const std::uint8_t> also_blocked) {
   const int n = grid.cellCount();
   const int goal_node = n;  // virtual node behind every goal connection
   const double inf = std::numeric_limits<double>::infinity();
@@ -100,6 +100,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
         const int next = grid.cell(a, b);
         if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(top.node, di, dj)) continue;
+        if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next)] != 0) continue;
         const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next)));
         push(next, top.g + step, top.node);
       }

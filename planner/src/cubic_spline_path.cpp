@@ -1,14 +1,11 @@
 #include "cyber/planner/cubic_spline_path.hpp"
+#include "cyber/planner/weighted_norm.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace cyber::planner {
 namespace {
-
-double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[kElevator] * v[0] * v[0] + metric[kArm] * v[1] * v[1]);
-}
 
 constexpr double kMergeDistance = 1e-9;
 

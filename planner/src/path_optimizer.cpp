@@ -1,4 +1,5 @@
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/weighted_norm.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -47,10 +48,6 @@ struct BandedCholesky {
 };
 
 constexpr int kMaxClosePairs = 64;
-
-double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[kElevator] * v[0] * v[0] + metric[kArm] * v[1] * v[1]);
-}
 
 }  // namespace
 

@@ -3,10 +3,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "cyber/planner/astar_search.hpp"
+#include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/path_timing.hpp"
+#include "cyber/planner/weighted_norm.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -15,10 +19,6 @@ using Clock = std::chrono::steady_clock;
 
 double millisecondsSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[kElevator] * v[0] * v[0] + metric[kArm] * v[1] * v[1]);
 }
 
 std::string poseText(const JointVector& q) {
@@ -70,6 +70,68 @@ std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const Collisio
   return out;
 }
 
+// Candidate paths are timed by the reachability pass on this many grid points (path_timing.hpp).
+constexpr int kTimingGridPoints = 60;
+// Shortcut segments keep this much more than the clearance, so smoothing has room at corners.
+constexpr double kShortcutMargin_m = 0.015;
+// The other way round is searched for when the best path takes this much longer than the straight
+// segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
+constexpr double kDetourRatio = 1.05;
+constexpr int kBandRadius = 6;
+
+// The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
+// can replace replaced by it: the search's grid and potential bend the path toward the middle of
+// the free space, while time favours moving both joints at once in straight lines. The first
+// fixed_head points are kept. From each kept point the farthest reachable node is found by
+// bisection (clear segments are nearly monotone along a search path).
+std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std::vector<JointVector>& polyline,
+                                          int fixed_head, double clearance_m) {
+  std::vector<JointVector> out(polyline.begin(), polyline.begin() + fixed_head);
+  const int last = static_cast<int>(polyline.size()) - 1;
+  int from = fixed_head - 1;
+  while (from < last) {
+    int lo = from + 1, hi = last;
+    auto clear = [&](int to) {
+      return checkSegment(world, polyline[static_cast<size_t>(from)], polyline[static_cast<size_t>(to)], clearance_m).clear;
+    };
+    if (clear(hi)) {
+      lo = hi;
+    } else {
+      while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (clear(mid) ? lo : hi) = mid;
+      }
+    }
+    out.push_back(polyline[static_cast<size_t>(lo)]);
+    from = lo;
+  }
+  return out;
+}
+
+// Every node within `radius` index steps of the path's cells, except those within `radius` of
+// its two ends (the search must still leave the start and reach the goal): blocking this band
+// makes the search find the way round the other side of an obstacle, when there is one.
+std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<int>& cells, int radius) {
+  std::vector<std::uint8_t> band(static_cast<size_t>(grid.cellCount()), 0);
+  if (cells.empty()) return band;
+  const int ni = grid.elevatorAxis().count, nj = grid.armAxis().count;
+  auto near_end = [&](int i, int j) {
+    for (int end : {cells.front(), cells.back()}) {
+      if (std::abs(i - grid.elevatorIndex(end)) <= radius && std::abs(j - grid.armIndex(end)) <= radius) return true;
+    }
+    return false;
+  };
+  for (int cell : cells) {
+    const int i0 = grid.elevatorIndex(cell), j0 = grid.armIndex(cell);
+    for (int i = std::max(0, i0 - radius); i <= std::min(ni - 1, i0 + radius); ++i) {
+      for (int j = std::max(0, j0 - radius); j <= std::min(nj - 1, j0 + radius); ++j) {
+        if (!near_end(i, j)) band[static_cast<size_t>(grid.cell(i, j))] = 1;
+      }
+    }
+  }
+  return band;
+}
+
 }  // namespace
 
 PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(model), scene_(scene) {
@@ -83,9 +145,10 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(m
   }
 }
 
-Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
-                                      const JointVector& start_velocity) const {
-  using R = Result<PlannedPath>;
+Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
+                                                         HeldPieces pieces, const JointVector& start_velocity,
+                                                         PathAlternatives alternatives) const {
+  using R = Result<std::vector<PlannedPath>>;
   if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
   if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
   if (!start_velocity.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
@@ -125,7 +188,7 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
     out.direct = true;
     out.method = "zero-length";
     out.search_ms = millisecondsSince(t_search);
-    return out;
+    return std::vector<PlannedPath>{out};
   }
 
   // Lead-in: a straight piece along the start velocity, shortened until it is inside the limits
@@ -146,6 +209,8 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
     }
   }
 
+  std::vector<int> first_cells;
+  std::vector<SearchEndpoint> source_links, goal_links;
   if (checkSegment(world, from, goal, clearance).clear) {
     out.direct = true;
     polyline.push_back(goal);
@@ -168,51 +233,88 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
     out.search_expanded = found->expanded;
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
     polyline.push_back(goal);
+    first_cells = found->cells;
+    source_links = sources;
+    goal_links = goals;
   }
   out.search_waypoints = polyline;
   out.search_ms = millisecondsSince(t_search);
 
   // Smoothing: resample, optimise (eq. 8), spline, continuous check; weaker smoothing on failure.
+  // Done for the search's polyline and for its shortcut (docs/performance.md, "Choosing the path
+  // for time"); the one the reachability pass times faster is kept.
   const Clock::time_point t_smooth = Clock::now();
   const int fixed_head = out.lead_in ? 2 : 1;
-  const std::vector<JointVector> tail(polyline.begin() + fixed_head - 1, polyline.end());
-  auto prior_at = [&](double spacing) {
-    std::vector<JointVector> prior(polyline.begin(), polyline.begin() + fixed_head - 1);
-    const std::vector<JointVector> resampled = resamplePolyline(tail, metric, spacing);
-    prior.insert(prior.end(), resampled.begin(), resampled.end());
-    return prior;
-  };
   ClearanceCheck last_check;
-  auto accept = [&](const std::vector<JointVector>& waypoints, const char* method) {
-    auto spline = CubicSplinePath::through(waypoints, metric, start_velocity);
-    if (!spline.ok()) return false;
-    last_check = checkPath(spline.value(), world, model_, clearance);
-    if (!last_check.ok()) return false;
-    out.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
-    out.waypoints = waypoints;
-    out.min_clearance_m = last_check.min_distance_m;
-    out.method = method;
-    return true;
-  };
-  bool done = false;
-  if (out.direct && !out.lead_in) done = accept(polyline, "straight");
-  if (!done) {
+  auto smooth = [&](const std::vector<JointVector>& line, const char* label, PlannedPath& into) {
+    const std::vector<JointVector> tail(line.begin() + fixed_head - 1, line.end());
+    auto prior_at = [&](double spacing) {
+      std::vector<JointVector> prior(line.begin(), line.begin() + fixed_head - 1);
+      const std::vector<JointVector> resampled = resamplePolyline(tail, metric, spacing);
+      prior.insert(prior.end(), resampled.begin(), resampled.end());
+      return prior;
+    };
+    auto accept = [&](const std::vector<JointVector>& waypoints, const std::string& method) {
+      auto spline = CubicSplinePath::through(waypoints, metric, start_velocity);
+      if (!spline.ok()) return false;
+      last_check = checkPath(spline.value(), world, model_, clearance);
+      if (!last_check.ok()) return false;
+      into.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
+      into.waypoints = waypoints;
+      into.min_clearance_m = last_check.min_distance_m;
+      into.method = label + method;
+      return true;
+    };
+    if (out.direct && !out.lead_in) return accept(line, "straight");
     const std::vector<JointVector> prior = prior_at(smoothing.waypoint_spacing);
     const SmoothingResult optimised = optimizePath(world, prior, fixed_head, model_, smoothing);
-    out.optimizer_iterations = optimised.lbfgs.iterations;
-    done = accept(optimised.waypoints, "optimised");
-    if (!done) {
-      SmoothingSettings stronger = smoothing;
-      stronger.obstacle_weight *= 10.0;
-      const SmoothingResult pushed = optimizePath(world, prior, fixed_head, model_, stronger);
-      out.optimizer_iterations += pushed.lbfgs.iterations;
-      done = accept(pushed.waypoints, "optimised, obstacle weight x10");
+    into.optimizer_iterations += optimised.lbfgs.iterations;
+    if (accept(optimised.waypoints, "optimised")) return true;
+    SmoothingSettings stronger = smoothing;
+    stronger.obstacle_weight *= 10.0;
+    const SmoothingResult pushed = optimizePath(world, prior, fixed_head, model_, stronger);
+    into.optimizer_iterations += pushed.lbfgs.iterations;
+    if (accept(pushed.waypoints, "optimised, obstacle weight x10")) return true;
+    if (accept(prior, "prior")) return true;
+    return accept(prior_at(0.25 * smoothing.waypoint_spacing), "dense prior");
+  };
+  const bool done = smooth(polyline, "", out);
+  std::vector<PlannedPath> candidates;
+  if (done) candidates.push_back(out);
+  if (!out.direct && alternatives == PathAlternatives::kSearch) {
+    const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
+    const double b_start = start_speed * start_speed;
+    std::vector<double> estimates;
+    for (const PlannedPath& c : candidates) estimates.push_back(estimateDuration(*c.path, drives, b_start, kTimingGridPoints));
+    // Adds the polyline's shortcut (or the polyline itself) in the order of estimated time.
+    auto add = [&](const std::vector<JointVector>& line, const char* label) {
+      PlannedPath alternative = out;
+      if (!smooth(line, label, alternative)) return;
+      const double seconds = estimateDuration(*alternative.path, drives, b_start, kTimingGridPoints);
+      size_t at = 0;
+      while (at < estimates.size() && estimates[at] <= seconds) ++at;
+      estimates.insert(estimates.begin() + static_cast<long>(at), seconds);
+      candidates.insert(candidates.begin() + static_cast<long>(at), std::move(alternative));
+    };
+    const std::vector<JointVector> shortcut = shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
+    if (shortcut.size() < polyline.size()) add(shortcut, "shortcut, ");
+    const double direction_norm = weightedNorm(goal - from, metric);
+    const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
+    const double straight_s = estimateDuration(straight, drives, 0.0, kTimingGridPoints);
+    if (!estimates.empty() && estimates.front() > kDetourRatio * straight_s) {
+      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
+      const auto other = astarSearch(grid, source_links, goal_links, goal, true, band);
+      if (other) {
+        std::vector<JointVector> around(polyline.begin(), polyline.begin() + fixed_head);
+        for (int cell : other->cells) around.push_back(grid.node(cell));
+        around.push_back(goal);
+        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), "other way round, ");
+      }
     }
-    if (!done) done = accept(prior, "prior");
-    if (!done) done = accept(prior_at(0.25 * smoothing.waypoint_spacing), "dense prior");
   }
-  out.smooth_ms = millisecondsSince(t_smooth);
-  if (!done) {
+  const double smooth_ms = millisecondsSince(t_smooth);
+  for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
+  if (candidates.empty()) {
     char buffer[200];
     std::snprintf(buffer, sizeof buffer,
                   "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
@@ -220,7 +322,14 @@ Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVecto
                   last_check.at_s);
     return R::failure(PlanStatus::kClearanceNotMet, buffer);
   }
-  return out;
+  return candidates;
+}
+
+Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
+                                      const JointVector& start_velocity) const {
+  Result<std::vector<PlannedPath>> found = candidates(start, goal, pieces, start_velocity);
+  if (!found) return found.error();
+  return std::move(found.value().front());
 }
 
 }  // namespace cyber::planner

@@ -52,6 +52,7 @@ FrameWriterSettings writerSettingsOf(const DaemonOptions& options) {
 GoalHandler::Settings goalSettingsOf(const DaemonOptions& options) {
   GoalHandler::Settings out;
   out.coordinator.planning_budget_s = options.settings.planning_budget_s;
+  out.coordinator.max_budget_s = options.settings.max_planning_budget_s;
   out.coordinator.stream_period_s = 1.0 / options.settings.stream_rate_hz;
   out.trajectory_step_s = options.settings.trajectory_step_s;
   return out;

@@ -89,6 +89,12 @@ TEST(LoadConfig, SetpointEchoFullRateIsOptionalAndOffByDefault) {
                   .daemon.setpoint_echo_full_rate);
 }
 
+TEST(LoadConfig, MaxPlanningBudgetIsOptionalWithADefaultOfOneSecond) {
+  EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.max_planning_budget_s, 1.0);
+  const std::string with = mutated("planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 3.0\n");
+  EXPECT_EQ(parseConfig(with, "robot.toml").daemon.max_planning_budget_s, 3.0);
+}
+
 TEST(LoadConfig, MissingFileIsAnError) {
   try {
     (void)loadConfigFile("/nonexistent/robot.toml");
@@ -138,6 +144,10 @@ const BadCase kBadCases[] = {
     {"StreamRate", "stream_rate_hz = 200.0", "stream_rate_hz = 0.0", "daemon.stream_rate_hz", "out of range"},
     {"FullRateEchoType", "setpoint_echo_full_rate = false", "setpoint_echo_full_rate = 1",
      "daemon.setpoint_echo_full_rate", "expected true or false"},
+    {"MaxBudgetBelowBudget", "planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 0.01\n",
+     "daemon.max_planning_budget_s", "out of range"},
+    {"MaxBudgetTooLarge", "planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 11.0\n",
+     "daemon.max_planning_budget_s", "out of range"},
     {"DeviceNumber", "elevator = 1\n", "elevator = 64\n", "daemon.devices.elevator", "out of range"},
     {"NonConvex", "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.248, 0.514], [0.0, 0.454]]",
      "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.1, 0.1], [0.248, 0.514], [0.0, 0.454]]", "obstacles.l1_trough",

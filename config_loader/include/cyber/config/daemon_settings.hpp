@@ -28,6 +28,9 @@ struct DaemonSettings {
   double heartbeat_timeout_s = 0.1;    // robot-enabled gate (design.md: 100 ms)
   bool require_robot_enabled = true;   // false only for bench use without a roboRIO
   double planning_budget_s = 0.03;     // how far ahead a mid-motion replan starts
+  // The most the measured budget may grow to (a slow coprocessor or an emulated one plans
+  // slower). Optional key, default 1 s.
+  double max_planning_budget_s = 1.0;
   double status_rate_hz = 10.0;
   double setpoint_echo_rate_hz = 50.0; // ARM_SETPOINT copies for lcm-spy
   // ARM_SETPOINT after every stream tick instead (desktop simulation with --can none, where the

@@ -5,6 +5,8 @@
 // heuristic h(n) = |node(n) - target|_Sigma. Several source and goal nodes may be given, each with
 // the cost of connecting it to the exact start or goal pose.
 
+#include <cstdint>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -28,9 +30,11 @@ struct SearchPath {
 
 // The cheapest path from any free source to any free goal, or nullopt when none is reachable.
 // With use_heuristic the search is A*; it is admissible (returns the optimal cost) when every goal
-// cost is >= |node(goal) - target|_Sigma. Without it the search is Dijkstra's.
+// cost is >= |node(goal) - target|_Sigma. Without it the search is Dijkstra's. Nodes with a
+// non-zero entry in `also_blocked` (empty, or one entry per cell) count as blocked too: the
+// search for another way round an obstacle (path_planner.cpp).
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic = true);
+                                      bool use_heuristic = true, std::span<const std::uint8_t> also_blocked = {});
 
 }  // namespace cyber::planner

@@ -21,6 +21,9 @@
 
 namespace cyber::planner {
 
+// Whether candidates() also smooths and times the other ways to the goal it finds.
+enum class PathAlternatives { kNone, kSearch };
+
 struct PlannedPath {
   std::shared_ptr<const CubicSplinePath> path;  // q(s), s in [0, length]; a GeometricPath
   std::vector<JointVector> waypoints;           // the spline's knots: exact start ... exact goal
@@ -43,6 +46,13 @@ class PathPlanner {
   // with unit Sigma-speed, after a straight lead-in. Typed errors, never an exception.
   [[nodiscard]] Result<PlannedPath> plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
                                          const JointVector& start_velocity = JointVector::Zero()) const;
+  // Every path that passed the clearance check, the one a reachability pass times fastest first
+  // (the search's smoothed polyline and its shortcut; docs/performance.md). plan() is the first.
+  // Without alternatives, the search's smoothed polyline alone (a quick first look at a move).
+  [[nodiscard]] Result<std::vector<PlannedPath>> candidates(const JointVector& start, const JointVector& goal,
+                                                            HeldPieces pieces,
+                                                            const JointVector& start_velocity = JointVector::Zero(),
+                                                            PathAlternatives alternatives = PathAlternatives::kSearch) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
   [[nodiscard]] const Scene& scene() const { return scene_; }

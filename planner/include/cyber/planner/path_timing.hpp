@@ -1,0 +1,18 @@
+#pragma once
+// A quick estimate of how long a path takes (algorithm.md section 3's warm start alone): the
+// forward-backward reachability profile on a coarse grid, used to choose between candidate paths
+// before the full time-optimal parameterisation of the chosen one.
+
+#include <array>
+
+#include "cyber/planner/geometric_path.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::planner {
+
+// Seconds from path speed^2 b_start (path units) to rest at the end; infinity when the profile
+// does not exist (a limit that cannot hold, a start that cannot be stopped).
+double estimateDuration(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives, double b_start,
+                        int grid_points);
+
+}  // namespace cyber::planner

@@ -1,0 +1,15 @@
+#pragma once
+// The one C-space norm of algorithm.md section 2: |v|_Sigma = sqrt(v' Sigma v), Sigma diagonal
+// (RobotModel::planner.metric).
+
+#include <cmath>
+
+#include "cyber/planner/types.hpp"
+
+namespace cyber::planner {
+
+inline double weightedNorm(const JointVector& v, const JointVector& metric) {
+  return std::sqrt(metric[kElevator] * v[kElevator] * v[kElevator] + metric[kArm] * v[kArm] * v[kArm]);
+}
+
+}  // namespace cyber::planner
