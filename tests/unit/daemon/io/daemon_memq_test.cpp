@@ -147,10 +147,10 @@ class DaemonMemq : public ::testing::Test {
 
   template <class M>
   void publish(const std::string& channel, const M& message) {
-    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, &message); });
+    onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, &message); });
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+    onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
   }
 
   void goal(std::int64_t id, double elevator_m, double arm_rad) {
