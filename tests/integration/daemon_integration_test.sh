@@ -135,6 +135,13 @@ case "$case_name" in
     grep -q "request 11 trajectory: [0-9]* samples" "$tmp/goal.out" || fail "no trajectory"
 
     [ "$(status_value plans_succeeded)" -ge 1 ] || fail "plans_succeeded not counted"
+
+    # Run as root, so real-time priority is granted (docs/design.md, "Threads and ownership"): the
+    # streamer at SCHED_FIFO 50; the ARM_STATE receiver and LCM's receive thread under it at 45,
+    # so that the daemon's own scheduling cannot make a fresh state look stale; all others
+    # (event loop, the goal instance's LCM receive thread, planning worker, logger) SCHED_OTHER.
+    policies=$(ps -L -o cls=,rtprio= -p "$daemon_pid" | awk '{print $1 "/" $2}' | sort | uniq -c | awk '{print $2 "x" $1}' | tr '\n' ' ')
+    [ "$policies" = "FF/45x2 FF/50x1 TS/-x4 " ] || fail "thread policies (class/priority x count): $policies"
     ;;
 
   bad_goals)

@@ -106,6 +106,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       gate_(gateOf(options)),
       signals_(signals),
       lcm_(openLcm(options.settings.lcm_url)),
+      state_lcm_(openLcm(options.settings.lcm_url)),
       can_(openCan(options, eventLoopSocketOptions())),
       port_(can_ ? std::unique_ptr<CanPort>(std::make_unique<SocketCanPort>(*can_))
                  : std::unique_ptr<CanPort>(std::make_unique<DiscardingCanPort>())),
@@ -117,6 +118,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       worker_(planning),
       lcm_input_(robot_, channels_, [this](const GoalRequest& goal) { onGoal(goal); }),
       bridge_(*lcm_, options.settings.channels, lcm_input_.callbacks()),
+      state_receiver_(*state_lcm_, options.settings.channels.state, lcm_input_),
       goals_(robot_, goalSettingsOf(options), bridge_, worker_, channels_, loop_),
       can_input_(can_ ? std::make_unique<CanInput>(*can_, loop_) : nullptr),
       status_(StatusPublisher::Sources{channels_, goals_, lcm_input_, can_input_.get(), bridge_}, gate_) {
@@ -164,6 +166,13 @@ int Daemon::run() {
   channels_.loop_alive_ns.store(monotonicNow());
   worker_.start();
   streamer_thread_.start();
+  const int state_priority = state_receiver_.start();
+  if (state_priority > 0) {
+    spdlog::info("ARM_STATE is received at SCHED_FIFO priority {}", state_priority);
+  } else {
+    spdlog::info("real-time priority refused: ARM_STATE is received at normal priority, so a busy machine can "
+                 "make it look stale (docs/operations.md, \"Real-time priority\")");
+  }
   const MonoNs now = monotonicNow();
   status_timer_.startPeriodic(now + periodOf(s.status_rate_hz), periodOf(s.status_rate_hz));
   echo_timer_.startPeriodic(now + periodOf(s.setpoint_echo_rate_hz), periodOf(s.setpoint_echo_rate_hz));

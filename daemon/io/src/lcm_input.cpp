@@ -10,8 +10,10 @@ LcmInput::LcmInput(const planner::RobotModel& robot, StreamerChannels& channels,
 
 LcmBridge::Callbacks LcmInput::callbacks() {
   return LcmBridge::Callbacks{[this](const cyberplanner::arm_goal_t& m) { on_goal_(goalFromMessage(m)); },
-                              [this](const cyberplanner::arm_state_t& m) { onState(m); },
-                              [this](const std::string& channel, int size) { onUndecodable(channel, size); }};
+                              [this](const std::string& channel, int size) {
+                                ++undecodable_;
+                                warnUndecodable(undecodable_warning_, channel, size);
+                              }};
 }
 
 void LcmInput::onState(const cyberplanner::arm_state_t& message) {
@@ -31,9 +33,13 @@ void LcmInput::onState(const cyberplanner::arm_state_t& message) {
   channels_.state.store(state_);
 }
 
-void LcmInput::onUndecodable(const std::string& channel, int size) {
+void LcmInput::onUndecodableState(const std::string& channel, int size) {
   ++undecodable_;
-  undecodable_warning_.warn(monotonicNow(), "undecodable message on {} ({} bytes: wrong type, fingerprint or corrupt)",
+  warnUndecodable(state_undecodable_warning_, channel, size);
+}
+
+void LcmInput::warnUndecodable(ThrottledWarning& warning, const std::string& channel, int size) {
+  warning.warn(monotonicNow(), "undecodable message on {} ({} bytes: wrong type, fingerprint or corrupt)",
                             channel, size);
 }
 

@@ -4,12 +4,14 @@
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
 
+#include "cyber/daemon/io/thread_priority.hpp"
+
 namespace cyber::daemon::io {
 
 bool setupLogging(const std::string& level) {
   const spdlog::level::level_enum parsed = spdlog::level::from_str(level);
   if (parsed == spdlog::level::off && level != "off") return false;
-  spdlog::init_thread_pool(8192, 1);
+  spdlog::init_thread_pool(8192, 1, [] { useNormalScheduling(); });  // writes may block: never real-time
   // Overrun the oldest line rather than block a logging thread when the queue is full.
   auto logger = spdlog::create_async_nb<spdlog::sinks::stderr_sink_mt>("cyber-plannerd");
   logger->set_pattern("%Y-%m-%d %H:%M:%S.%e %l %v");

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "cyber/daemon/io/monotonic_clock.hpp"
+#include "cyber/daemon/io/thread_priority.hpp"
 
 namespace cyber::daemon::io {
 
@@ -44,6 +45,9 @@ bool PlanningWorker::stop(double timeout_s) {
 }
 
 void PlanningWorker::run() {
+  // Planning takes whole milliseconds of CPU: at a real-time priority inherited from a creator
+  // started with one, it would starve the machine.
+  useNormalScheduling();
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {
     wake_.wait(lock, [this] { return quit_ || job_.has_value(); });

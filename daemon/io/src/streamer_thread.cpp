@@ -1,10 +1,9 @@
 #include "cyber/daemon/io/streamer_thread.hpp"
 
-#include <pthread.h>
-#include <sched.h>
 #include <sys/prctl.h>
 
 #include "cyber/daemon/io/monotonic_clock.hpp"
+#include "cyber/daemon/io/thread_priority.hpp"
 #include "cyber/notify/notifier.hpp"
 
 namespace cyber::daemon::io {
@@ -31,12 +30,8 @@ void StreamerThread::stop() {
 }
 
 void StreamerThread::run() {
-  // Real-time priority when allowed (root or CAP_SYS_NICE); plain scheduling otherwise.
-  sched_param param{};
-  param.sched_priority = 50;
-  if (pthread_setschedparam(pthread_self(), SCHED_FIFO, &param) == 0) {
-    channels_.realtime_priority.store(param.sched_priority);
-  }
+  // Real-time priority when allowed (root, CAP_SYS_NICE or RLIMIT_RTPRIO); plain scheduling otherwise.
+  channels_.realtime_priority.store(requestRealtimePriority(kStreamerPriority));
   // Without this, a normal thread's timer wake-ups may be deferred by the default 50 us slack.
   prctl(PR_SET_TIMERSLACK, 1UL, 0UL, 0UL, 0UL);
 

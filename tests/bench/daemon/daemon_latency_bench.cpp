@@ -137,7 +137,7 @@ class Rig {
         cyberplanner::arm_state_t state{};
         state.elevator_m = forced_ || snapshot.ticks == 0 ? forced_q_[0].load() : snapshot.elevator.position;
         state.arm_rad = forced_ || snapshot.ticks == 0 ? forced_q_[1].load() : snapshot.arm.position;
-        onLoop([&] { DaemonProbe::lcm(*daemon_).publish("ARM_STATE", &state); });
+        onLoop([&] { DaemonProbe::lcmFor(*daemon_, "ARM_STATE").publish("ARM_STATE", &state); });
       }
       std::this_thread::sleep_for(10ms);
     }

@@ -147,10 +147,10 @@ class DaemonMemq : public ::testing::Test {
 
   template <class M>
   void publish(const std::string& channel, const M& message) {
-    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, &message); });
+    onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, &message); });
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    onLoop([&] { DaemonProbe::lcm(*daemon).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+    onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
   }
 
   void goal(std::int64_t id, double elevator_m, double arm_rad) {
@@ -287,6 +287,34 @@ TEST_F(DaemonMemq, StatusSaysWhetherTheStreamerGotRealTimePriority) {
   ASSERT_TRUE(listener.waitFor([&] { return !listener.daemon_statuses.empty(); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
   EXPECT_EQ(listener.daemon_statuses.back().realtime_priority, realtimeAllowed() ? 50 : 0);
+}
+
+// ARM_STATE is taken and stamped on the state receiver's thread, not on the event loop: a state
+// that arrives while the loop is busy (here: blocked) reaches the streamer at once, so the loop's
+// own scheduling never counts as the state's age (docs/design.md, "Threads and ownership").
+TEST_F(DaemonMemq, AStateIsTakenWhileTheEventLoopIsBusy) {
+  waitForHolding();
+  auto blocked = std::make_shared<std::promise<void>>();
+  auto release = std::make_shared<std::promise<void>>();
+  std::future<void> loop_blocked = blocked->get_future();
+  std::shared_future<void> released = release->get_future().share();
+  DaemonProbe::post(*daemon, [blocked, released] {
+    blocked->set_value();
+    released.wait_for(5s);
+  });
+  loop_blocked.wait();
+  cyberplanner::arm_state_t state{};
+  state.elevator_m = 0.3;
+  state.arm_rad = 1.3;
+  // From this thread: the loop is blocked, and memq:// publishing is thread-safe (LCM locks it).
+  DaemonProbe::lcmFor(*daemon, "ARM_STATE").publish("ARM_STATE", &state);
+  bool taken = false;
+  for (int i = 0; i < 400 && !taken; ++i) {
+    taken = DaemonProbe::channels(*daemon).state.load().measured_q[0] == state.elevator_m;
+    if (!taken) std::this_thread::sleep_for(5ms);
+  }
+  release->set_value();
+  EXPECT_TRUE(taken) << "the state waited for the event loop";
 }
 
 TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {

@@ -22,6 +22,7 @@
 #include "cyber/daemon/io/lcm_bridge.hpp"
 #include "cyber/daemon/io/lcm_input.hpp"
 #include "cyber/daemon/io/planning_worker.hpp"
+#include "cyber/daemon/io/state_receiver.hpp"
 #include "cyber/daemon/io/status_publisher.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/robot_link.hpp"
@@ -71,6 +72,7 @@ class Daemon final {
   const SignalFd* signals_;
 
   std::unique_ptr<lcm::LCM> lcm_;
+  std::unique_ptr<lcm::LCM> state_lcm_;  // ARM_STATE alone, on the state receiver's thread
   std::optional<can::CanSocket> can_;
   std::unique_ptr<CanPort> port_;
   // The streamer's receive-only socket for the frames that gate motion (robot_link.hpp).
@@ -85,6 +87,7 @@ class Daemon final {
   EventLoop loop_;
   LcmInput lcm_input_;
   LcmBridge bridge_;
+  StateReceiver state_receiver_;
   GoalHandler goals_;
   std::unique_ptr<CanInput> can_input_;  // null without a CAN bus
   StatusPublisher status_;

@@ -1,7 +1,8 @@
 #pragma once
-// The daemon's LCM endpoint on the event-loop thread: raw subscriptions to the goal and state
-// channels, decoded with safeDecode (an undecodable or foreign message is counted, never trusted),
-// and typed publishing on the output channels.
+// The daemon's LCM endpoint on the event-loop thread: a raw subscription to the goal channel,
+// decoded with safeDecode (an undecodable or foreign message is counted, never trusted), and typed
+// publishing on the output channels. ARM_STATE has an LCM instance and a thread of its own
+// (state_receiver.hpp).
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -10,15 +11,26 @@
 
 #include "cyber/config/daemon_settings.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
-#include "cyberplanner/arm_state_t.hpp"
+#include "cyber/lcmtypes/safe_decode.hpp"
 
 namespace cyber::daemon::io {
+
+// Hands a received message to `on_message` decoded, or its channel and size to `on_undecodable`.
+template <class Message, class OnMessage, class OnUndecodable>
+void deliverDecoded(const lcm::ReceiveBuffer* buffer, const std::string& channel, OnMessage&& on_message,
+                    OnUndecodable&& on_undecodable) {
+  Message message;
+  if (lcmtypes::safeDecode(message, buffer->data, static_cast<int>(buffer->data_size)) < 0) {
+    on_undecodable(channel, static_cast<int>(buffer->data_size));
+    return;
+  }
+  on_message(message);
+}
 
 class LcmBridge {
  public:
   struct Callbacks {
     std::function<void(const cyberplanner::arm_goal_t&)> goal;
-    std::function<void(const cyberplanner::arm_state_t&)> state;
     std::function<void(const std::string& channel, int size)> undecodable;
   };
 
@@ -43,7 +55,6 @@ class LcmBridge {
 
  private:
   void onGoal(const lcm::ReceiveBuffer* buffer, const std::string& channel);
-  void onState(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
   config::ChannelNames channels_;

@@ -1,14 +1,17 @@
 #pragma once
-// ARM_GOAL and ARM_STATE as the event loop receives them: goals go on to `on_goal`, valid measured
-// states to the streamer (StreamerChannels::state); states with non-finite or absurd values and
-// undecodable messages are counted (ARM_DAEMON_STATUS.decode_errors) and logged, throttled.
+// ARM_GOAL and ARM_STATE as the daemon receives them: goals (on the event loop) go on to
+// `on_goal`, valid measured states (on the state receiver's thread, state_receiver.hpp) to the
+// streamer (StreamerChannels::state); states with non-finite or absurd values and undecodable
+// messages are counted (ARM_DAEMON_STATUS.decode_errors) and logged, throttled.
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
 
 #include "cyber/daemon/goal_request.hpp"
 #include "cyber/daemon/io/lcm_bridge.hpp"
+#include "cyberplanner/arm_state_t.hpp"
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/planner/robot_model.hpp"
@@ -24,26 +27,30 @@ class LcmInput {
   LcmInput(const LcmInput&) = delete;
   LcmInput& operator=(const LcmInput&) = delete;
 
-  // What the LcmBridge calls for each message.
+  // What the LcmBridge calls for each goal (event loop).
   [[nodiscard]] LcmBridge::Callbacks callbacks();
+  // What the StateReceiver calls for each ARM_STATE (its thread only). A state is stamped here, on
+  // CLOCK_MONOTONIC, as it is handed over.
+  void onState(const cyberplanner::arm_state_t& message);
+  void onUndecodableState(const std::string& channel, int size);
 
-  // The latest valid ARM_STATE (state_ns kNever before the first).
-  [[nodiscard]] const MeasuredStateData& state() const { return state_; }
+  // The latest valid ARM_STATE (state_ns kNever before the first). Any thread.
+  [[nodiscard]] MeasuredStateData state() const { return channels_.state.load(); }
   // Undecodable or foreign messages on ARM_GOAL / ARM_STATE, and decodable states with bad values.
-  [[nodiscard]] std::int64_t decodeErrors() const { return undecodable_ + bad_states_; }
+  [[nodiscard]] std::int64_t decodeErrors() const { return undecodable_.load() + bad_states_.load(); }
 
  private:
-  void onState(const cyberplanner::arm_state_t& message);
-  void onUndecodable(const std::string& channel, int size);
+  static void warnUndecodable(ThrottledWarning& warning, const std::string& channel, int size);
 
   const planner::RobotModel& robot_;
   StreamerChannels& channels_;
   GoalHandler on_goal_;
-  MeasuredStateData state_;
-  std::int64_t undecodable_ = 0;
-  std::int64_t bad_states_ = 0;
-  ThrottledWarning undecodable_warning_;
-  ThrottledWarning state_warning_;
+  MeasuredStateData state_;  // the receiver's copy
+  std::atomic<std::int64_t> undecodable_{0};
+  std::atomic<std::int64_t> bad_states_{0};
+  ThrottledWarning undecodable_warning_;        // event loop
+  ThrottledWarning state_undecodable_warning_;  // state receiver
+  ThrottledWarning state_warning_;              // state receiver
 };
 
 }  // namespace cyber::daemon::io
