@@ -6,8 +6,7 @@ namespace cyber::can {
 
 Result<BusError, CodecError> decodeBusError(const Frame& frame) {
   if (!frame.error) return CodecError::kWrongId;
-  constexpr std::uint32_t kKnown =
-      CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_TX_TIMEOUT | CAN_ERR_RESTARTED;
+  constexpr std::uint32_t kKnown = CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_TX_TIMEOUT | CAN_ERR_RESTARTED;
   BusError out;
   out.bus_off = (frame.id & CAN_ERR_BUSOFF) != 0;
   out.controller_problem = (frame.id & CAN_ERR_CRTL) != 0;

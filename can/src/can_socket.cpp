@@ -1,11 +1,11 @@
 #include "cyber/can/can_socket.hpp"
 
-#include <fcntl.h>
 #include <linux/can.h>
 #include <linux/can/error.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
 #include <sys/socket.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,8 +17,7 @@ namespace cyber::can {
 
 namespace {
 
-SocketError openError(OpenError kind, int error_number, std::string_view ifname,
-                      std::string_view what) {
+SocketError openError(OpenError kind, int error_number, std::string_view ifname, std::string_view what) {
   std::string message = "CAN interface '" + std::string(ifname) + "': " + std::string(what);
   if (error_number != 0) message += " (" + errnoText(error_number) + ")";
   return SocketError{kind, error_number, std::move(message)};
@@ -34,8 +33,7 @@ bool validInterfaceName(std::string_view name) {
 
 }  // namespace
 
-Result<CanSocket, SocketError> CanSocket::open(std::string_view ifname,
-                                               const SocketOptions& options) {
+Result<CanSocket, SocketError> CanSocket::open(std::string_view ifname, const SocketOptions& options) {
   if (!validInterfaceName(ifname)) {
     return openError(OpenError::kInvalidName, 0, ifname,
                      "invalid interface name (1 to 15 characters, no '/' or white space)");
@@ -70,15 +68,13 @@ Result<CanSocket, SocketError> CanSocket::open(std::string_view ifname,
       kernel_filters.push_back(toKernelFilter(filter));
     }
     const auto bytes = static_cast<socklen_t>(kernel_filters.size() * sizeof(can_filter));
-    if (::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER,
-                     kernel_filters.empty() ? nullptr : kernel_filters.data(), bytes) != 0) {
+    if (::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_FILTER, kernel_filters.empty() ? nullptr : kernel_filters.data(),
+                     bytes) != 0) {
       return openError(OpenError::kSetupFailed, errno, ifname, "setting CAN_RAW_FILTER failed");
     }
   }
   const can_err_mask_t error_mask =
-      options.receive_bus_errors
-          ? (CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_TX_TIMEOUT | CAN_ERR_RESTARTED)
-          : 0;
+      options.receive_bus_errors ? (CAN_ERR_BUSOFF | CAN_ERR_CRTL | CAN_ERR_TX_TIMEOUT | CAN_ERR_RESTARTED) : 0;
   if (::setsockopt(fd, SOL_CAN_RAW, CAN_RAW_ERR_FILTER, &error_mask, sizeof error_mask) != 0) {
     return openError(OpenError::kSetupFailed, errno, ifname, "setting CAN_RAW_ERR_FILTER failed");
   }

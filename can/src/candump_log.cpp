@@ -134,8 +134,8 @@ std::string formatLogLine(const LogRecord& record) {
   const std::uint64_t seconds = record.time.seconds + record.time.microseconds / 1000000u;
   const std::uint32_t micros = record.time.microseconds % 1000000u;
   std::array<char, 48> stamp{};
-  std::snprintf(stamp.data(), stamp.size(), "(%010llu.%06u) ",
-                static_cast<unsigned long long>(seconds), static_cast<unsigned>(micros));
+  std::snprintf(stamp.data(), stamp.size(), "(%010llu.%06u) ", static_cast<unsigned long long>(seconds),
+                static_cast<unsigned>(micros));
   std::string line = stamp.data();
   line += record.iface;
   line.push_back(' ');

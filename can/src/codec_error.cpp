@@ -7,8 +7,7 @@ std::string_view toString(CodecError error) {
     case CodecError::kDeviceOutOfRange: return "device number out of range (0..63)";
     case CodecError::kPositionOutOfRange:
       return "position does not fit signed 24-bit at 1e-5 (|x| <= 83.88607) or is not finite";
-    case CodecError::kVelocityOutOfRange:
-      return "velocity does not fit int16 at 1e-3 (|v| <= 32.767) or is not finite";
+    case CodecError::kVelocityOutOfRange: return "velocity does not fit int16 at 1e-3 (|v| <= 32.767) or is not finite";
     case CodecError::kVoltageOutOfRange:
       return "feedforward voltage does not fit int16 millivolts (|u| <= 32.767 V) or is not finite";
     case CodecError::kBadMode: return "status mode byte is not a defined mode";

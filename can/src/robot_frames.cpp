@@ -6,8 +6,7 @@
 namespace cyber::can {
 
 Result<Heartbeat, CodecError> decodeHeartbeat(const Frame& frame) {
-  if (const auto problem =
-          wire::checkDataFrame(frame, frame.id == kHeartbeatId, kHeartbeatLength)) {
+  if (const auto problem = wire::checkDataFrame(frame, frame.id == kHeartbeatId, kHeartbeatLength)) {
     return *problem;
   }
   const std::uint8_t flags = frame.data[kHeartbeatFlagsByte];
@@ -35,9 +34,7 @@ Frame encodeHeartbeat(const Heartbeat& heartbeat) {
   return frame;
 }
 
-bool isBroadcastDisable(const Frame& frame) {
-  return !frame.error && frame.id == kBroadcastDisableId;
-}
+bool isBroadcastDisable(const Frame& frame) { return !frame.error && frame.id == kBroadcastDisableId; }
 
 Frame makeBroadcastDisable() {
   Frame frame;

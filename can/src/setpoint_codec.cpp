@@ -7,8 +7,7 @@ namespace cyber::can {
 
 Result<Frame, CodecError> encodeSetpoint(std::uint8_t device, const Setpoint& setpoint) {
   if (device > kMaxDeviceNumber) return CodecError::kDeviceOutOfRange;
-  const auto position = wire::toCounts(setpoint.position, kPositionCountsPerUnit,
-                                       kPositionMinCount, kPositionMaxCount);
+  const auto position = wire::toCounts(setpoint.position, kPositionCountsPerUnit, kPositionMinCount, kPositionMaxCount);
   if (!position) return CodecError::kPositionOutOfRange;
   const auto velocity = wire::toCounts(setpoint.velocity, kVelocityCountsPerUnit, kInt16MinCount, kInt16MaxCount);
   if (!velocity) return CodecError::kVelocityOutOfRange;
@@ -29,8 +28,7 @@ Result<Frame, CodecError> encodeSetpoint(std::uint8_t device, const Setpoint& se
 
 Result<DeviceSetpoint, CodecError> decodeSetpoint(const Frame& frame) {
   const FrcId id = unpackFrcId(frame.id);
-  const bool id_matches = id.device_type == kDeviceTypeMiscellaneous &&
-                          id.manufacturer == kManufacturerTeamUse &&
+  const bool id_matches = id.device_type == kDeviceTypeMiscellaneous && id.manufacturer == kManufacturerTeamUse &&
                           id.api_class == kSetpointApiClass && id.api_index == kSetpointApiIndex;
   if (const auto problem = wire::checkDataFrame(frame, id_matches, kSetpointLength)) {
     return *problem;

@@ -8,9 +8,7 @@
 namespace cyber::can {
 
 namespace {
-bool isDefinedMode(std::uint8_t mode) {
-  return mode <= static_cast<std::uint8_t>(Mode::kRobotDisabled);
-}
+bool isDefinedMode(std::uint8_t mode) { return mode <= static_cast<std::uint8_t>(Mode::kRobotDisabled); }
 }  // namespace
 
 std::string_view toString(Mode mode) {
@@ -52,8 +50,7 @@ Result<Frame, CodecError> encodeStatus(std::uint8_t device, const Status& status
 
 Result<DeviceStatus, CodecError> decodeStatus(const Frame& frame) {
   const FrcId id = unpackFrcId(frame.id);
-  const bool id_matches = id.device_type == kDeviceTypeMiscellaneous &&
-                          id.manufacturer == kManufacturerTeamUse &&
+  const bool id_matches = id.device_type == kDeviceTypeMiscellaneous && id.manufacturer == kManufacturerTeamUse &&
                           id.api_class == kStatusApiClass && id.api_index == kStatusApiIndex;
   if (const auto problem = wire::checkDataFrame(frame, id_matches, kStatusLength)) {
     return *problem;

@@ -19,13 +19,9 @@ inline std::uint16_t getU16(const Frame& frame, int at) {
   return static_cast<std::uint16_t>(frame.data[at] | (frame.data[at + 1] << 8));
 }
 
-inline void putI16(Frame& frame, int at, std::int16_t value) {
-  putU16(frame, at, static_cast<std::uint16_t>(value));
-}
+inline void putI16(Frame& frame, int at, std::int16_t value) { putU16(frame, at, static_cast<std::uint16_t>(value)); }
 
-inline std::int16_t getI16(const Frame& frame, int at) {
-  return static_cast<std::int16_t>(getU16(frame, at));
-}
+inline std::int16_t getI16(const Frame& frame, int at) { return static_cast<std::int16_t>(getU16(frame, at)); }
 
 // Two's complement in 24 bits.
 inline void putI24(Frame& frame, int at, std::int32_t value) {
@@ -39,14 +35,13 @@ inline std::int32_t getI24(const Frame& frame, int at) {
   const std::uint32_t bits = std::uint32_t{frame.data[at]} | (std::uint32_t{frame.data[at + 1]} << 8) |
                              (std::uint32_t{frame.data[at + 2]} << 16);
   // Sign-extend bit 23 without relying on implementation-defined shifts.
-  return (bits & 0x800000u) != 0 ? static_cast<std::int32_t>(bits) - (1 << 24)
-                                 : static_cast<std::int32_t>(bits);
+  return (bits & 0x800000u) != 0 ? static_cast<std::int32_t>(bits) - (1 << 24) : static_cast<std::int32_t>(bits);
 }
 
 // value * counts_per_unit rounded to the nearest count (halves away from zero), if it lies in
 // [min_count, max_count]; nullopt otherwise, including NaN and infinities.
-inline std::optional<std::int32_t> toCounts(double value, double counts_per_unit,
-                                            std::int32_t min_count, std::int32_t max_count) {
+inline std::optional<std::int32_t> toCounts(double value, double counts_per_unit, std::int32_t min_count,
+                                            std::int32_t max_count) {
   const double scaled = value * counts_per_unit;
   // Also rejects NaN; the bound keeps llround far from its own overflow.
   if (!(std::fabs(scaled) < 1e12)) return std::nullopt;
@@ -56,8 +51,7 @@ inline std::optional<std::int32_t> toCounts(double value, double counts_per_unit
 }
 
 // The flags/id/length checks of a fixed-length extended data frame.
-inline std::optional<CodecError> checkDataFrame(const Frame& frame, bool id_matches,
-                                                std::uint8_t length) {
+inline std::optional<CodecError> checkDataFrame(const Frame& frame, bool id_matches, std::uint8_t length) {
   if (frame.error) return CodecError::kErrorFrame;
   if (frame.remote) return CodecError::kRemoteFrame;
   if (!frame.extended) return CodecError::kNotExtended;

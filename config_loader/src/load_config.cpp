@@ -47,8 +47,7 @@ void readRobot(TableReader robot_table, RobotModel& robot) {
   robot_table.finish();
 }
 
-void readScenes(TableReader& root, const std::map<std::string, planner::ConvexPolygon>& obstacles,
-                RobotModel& robot) {
+void readScenes(TableReader& root, const std::map<std::string, planner::ConvexPolygon>& obstacles, RobotModel& robot) {
   const toml::array& scenes = root.array("scenes");
   if (scenes.empty()) root.fail("scenes", "expected at least one scene");
   for (size_t i = 0; i < scenes.size(); ++i) {
@@ -205,10 +204,10 @@ DaemonSettings readDaemon(TableReader d) {
   }
   {
     TableReader ch = d.table("channels");
-    for (auto [key, field] : {std::pair{"goal", &s.channels.goal}, std::pair{"state", &s.channels.state},
-                              std::pair{"plan_status", &s.channels.plan_status},
-                              std::pair{"trajectory", &s.channels.trajectory}, std::pair{"setpoint", &s.channels.setpoint},
-                              std::pair{"daemon_status", &s.channels.daemon_status}}) {
+    for (auto [key, field] :
+         {std::pair{"goal", &s.channels.goal}, std::pair{"state", &s.channels.state},
+          std::pair{"plan_status", &s.channels.plan_status}, std::pair{"trajectory", &s.channels.trajectory},
+          std::pair{"setpoint", &s.channels.setpoint}, std::pair{"daemon_status", &s.channels.daemon_status}}) {
       *field = ch.string(key);
       if (field->empty()) ch.fail(key, "channel name must not be empty");
     }
@@ -220,7 +219,8 @@ DaemonSettings readDaemon(TableReader d) {
 
 std::vector<PoseSet> readPoses(TableReader t, const RobotModel& robot) {
   std::vector<PoseSet> sets;
-  const std::pair<const char*, planner::HeldPieces> kSets[] = {{"none", {}}, {"coral", {true, false}}, {"algae", {false, true}}};
+  const std::pair<const char*, planner::HeldPieces> kSets[] = {
+      {"none", {}}, {"coral", {true, false}}, {"algae", {false, true}}};
   for (const auto& [name, pieces] : kSets) {
     if (!t.has(name)) continue;
     TableReader set = t.table(name);

@@ -106,7 +106,8 @@ std::vector<planner::ConvexPolygon> TableReader::polygons(const std::string& key
   const toml::array& list = array(key);
   if (list.empty()) fail(key, "expected at least one polygon");
   std::vector<planner::ConvexPolygon> out;
-  for (size_t i = 0; i < list.size(); ++i) out.push_back(polygonFrom(list[i], pathOf(key) + "[" + std::to_string(i) + "]"));
+  for (size_t i = 0; i < list.size(); ++i)
+    out.push_back(polygonFrom(list[i], pathOf(key) + "[" + std::to_string(i) + "]"));
   return out;
 }
 

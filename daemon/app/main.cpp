@@ -47,8 +47,8 @@ int main(int argc, char** argv) {
   config::Config config;
   try {
     // Without --config, the embedded reference robot, as cyber-plan does.
-    config = command.config_path.empty() ? config::loadEmbeddedDefaultConfig()
-                                         : config::loadConfigFile(command.config_path);
+    config =
+        command.config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(command.config_path);
   } catch (const config::ConfigError& error) {
     return fail(2, error.what());
   }

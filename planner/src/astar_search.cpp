@@ -16,9 +16,7 @@ struct OpenEntry {
 
 // Min-heap on f; among equal f the deeper node (larger g) first, which expands fewer nodes.
 struct LaterEntry {
-  bool operator()(const OpenEntry& a, const OpenEntry& b) const {
-    return a.f > b.f || (a.f == b.f && a.g < b.g);
-  }
+  bool operator()(const OpenEntry& a, const OpenEntry& b) const { return a.f > b.f || (a.f == b.f && a.g < b.g); }
 };
 
 }  // namespace

@@ -70,7 +70,8 @@ bool CollisionWorld::pairDistance(size_t r, size_t o, const ArmPose& pose, doubl
   const int n = static_cast<int>(part.vertices.size());
   // Circle against box bounds the distance of separated shapes only, so it prunes only when
   // positive (a penetration can be deeper than the circle's radius).
-  const double circle_bound = pointBoxDistance(pose.toWorld(part.centre), obstacle.box_min, obstacle.box_max) - part.radius;
+  const double circle_bound =
+      pointBoxDistance(pose.toWorld(part.centre), obstacle.box_min, obstacle.box_max) - part.radius;
   if (circle_bound > 0.0 && circle_bound >= bound) {
     out.value = circle_bound;
     out.exact = false;

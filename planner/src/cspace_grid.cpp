@@ -78,8 +78,10 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
         const int bit = kStepBit[di + 1][dj + 1];
         if (((grid.steps_[static_cast<size_t>(c)] >> bit) & 1U) == 0) continue;
         const int target = grid.cell(i + di, j + dj);
-        const double margin = 0.5 * world.lipschitzBound(JointVector(std::abs(di) * elevator.step, std::abs(dj) * arm.step));
-        if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin) continue;
+        const double margin =
+            0.5 * world.lipschitzBound(JointVector(std::abs(di) * elevator.step, std::abs(dj) * arm.step));
+        if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin)
+          continue;
         ++grid.checked_steps_;
         if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
           grid.steps_[static_cast<size_t>(c)] &= static_cast<std::uint8_t>(~(1U << bit));

@@ -18,7 +18,7 @@ namespace {
 
 constexpr double kNoStop = std::numeric_limits<double>::infinity();
 constexpr int kEstimatePoints = 200;
-constexpr double kBracketGrowth = 1.2;     // widens the bracket around the estimate
+constexpr double kBracketGrowth = 1.2;  // widens the bracket around the estimate
 constexpr int kBracketSteps = 12;
 constexpr double kLengthTolerance = 1e-4;  // relative: the line is at most this much longer than needed
 constexpr double kRetryGrowth = 1.002;     // when the solver (with refined limits) still cannot stop
@@ -67,13 +67,15 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   const std::array<DriveParams, kJointCount> drives{model.elevator_drive, model.arm_drive};
   const double reach = std::min(distanceToLimits(model, start, direction), 10.0);
   const auto cannot_stop = [] {
-    return R::failure(PlanStatus::kInfeasibleStart, "the start velocity cannot be braked to rest inside the joint limits");
+    return R::failure(PlanStatus::kInfeasibleStart,
+                      "the start velocity cannot be braked to rest inside the joint limits");
   };
   if (reach <= 0.0) return cannot_stop();
 
   topp::Problem problem;
   topp::LimitMargins margins;
-  const double estimate = stopDistanceEstimate(StraightPath(start, direction, reach), drives, b_start, problem, margins);
+  const double estimate =
+      stopDistanceEstimate(StraightPath(start, direction, reach), drives, b_start, problem, margins);
   if (estimate == kNoStop) return cannot_stop();
   // The shortest line whose controllable start (on the solver's own grid) holds b_start: on it the
   // time-optimal profile brakes from the first instant (a longer one would first speed up).
@@ -116,7 +118,8 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   int kept_side = 0;
   while (hi - lo > kLengthTolerance * hi && m_hi > kLengthTolerance) {
     double mid = 0.5 * (lo + hi);
-    if (m_lo > -1.0) mid = std::clamp(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));
+    if (m_lo > -1.0)
+      mid = std::clamp(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));
     const double m_mid = margin(mid);
     if (m_mid >= 0.0) {
       hi = mid, m_hi = f_hi = m_mid;
@@ -139,7 +142,8 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
     const bool full_speed = report.start_speed_ratio == 1.0;
     if (last.ok() && full_speed) {
       if (!checkSegment(world, start, line->at(length).q, model.clearance_m).clear) {
-        return R::failure(PlanStatus::kClearanceNotMet, "braking along the start velocity comes closer than the clearance");
+        return R::failure(PlanStatus::kClearanceNotMet,
+                          "braking along the start velocity comes closer than the clearance");
       }
       return last;
     }
@@ -163,7 +167,8 @@ Result<Trajectory> stretchedStop(const RobotModel& model, const CollisionWorld& 
   const double length = factor * stop.path().length();
   auto line = std::make_shared<const StraightPath>(start.q, start.dq_ds, length);
   const JointVector end = line->at(length).q;
-  if (!model.withinLimits(end)) return R::failure(PlanStatus::kInfeasibleStart, "a gentler stop leaves the joint range");
+  if (!model.withinLimits(end))
+    return R::failure(PlanStatus::kInfeasibleStart, "a gentler stop leaves the joint range");
   if (!checkSegment(world, start.q, end, model.clearance_m).clear) {
     return R::failure(PlanStatus::kClearanceNotMet, "a gentler stop comes closer than the clearance");
   }

@@ -106,10 +106,9 @@ LbfgsResult minimizeLbfgs(const LbfgsObjective& f, Eigen::VectorXd& x, const Lbf
       const bool trial_finite = std::isfinite(trial_cost) && finite(w.gradient_trial);
       const double trial_slope = trial_finite ? w.gradient_trial.dot(w.direction) : 0.0;
       const bool sufficient = trial_finite && trial_cost <= cost + settings.armijo_c1 * step * slope;
-      const bool approximate =
-          trial_finite && trial_cost <= cost + roundoff &&
-          trial_slope >= settings.curvature_c2 * slope &&
-          trial_slope <= (2.0 * settings.armijo_c1 - 1.0) * slope;
+      const bool approximate = trial_finite && trial_cost <= cost + roundoff &&
+                               trial_slope >= settings.curvature_c2 * slope &&
+                               trial_slope <= (2.0 * settings.armijo_c1 - 1.0) * slope;
       if (approximate || (sufficient && trial_slope >= settings.curvature_c2 * slope)) {
         accepted = true;
         break;

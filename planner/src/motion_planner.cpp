@@ -31,8 +31,9 @@ double msSince(std::chrono::steady_clock::time_point start) {
 }
 
 Result<Plan> inconsistent() {
-  return Result<Plan>::failure(PlanStatus::kSolverNotConverged,
-                               "the trajectory's velocities or accelerations do not integrate to its positions at 1 ms");
+  return Result<Plan>::failure(
+      PlanStatus::kSolverNotConverged,
+      "the trajectory's velocities or accelerations do not integrate to its positions at 1 ms");
 }
 
 bool consistent(const Trajectory& trajectory) {
@@ -160,11 +161,10 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   Result<Plan> direct = timedPath(model_, paths, request.start, request.goal, request.pieces, request.start_velocity,
                                   moving ? PathAlternatives::kNone : PathAlternatives::kSearch);
   // Errors of the request itself (bad poses, a goal in collision) are the same for both.
-  const bool request_error = !direct && (direct.status() == PlanStatus::kInvalidInput ||
-                                          direct.status() == PlanStatus::kStartOutOfRange ||
-                                          direct.status() == PlanStatus::kGoalOutOfRange ||
-                                          direct.status() == PlanStatus::kStartInCollision ||
-                                          direct.status() == PlanStatus::kGoalInCollision);
+  const bool request_error =
+      !direct && (direct.status() == PlanStatus::kInvalidInput || direct.status() == PlanStatus::kStartOutOfRange ||
+                  direct.status() == PlanStatus::kGoalOutOfRange || direct.status() == PlanStatus::kStartInCollision ||
+                  direct.status() == PlanStatus::kGoalInCollision);
   Result<Plan> chosen = std::move(direct);
   if (moving && !request_error) {
     Result<Plan> stopped = stopThenPlan(model_, paths, request);

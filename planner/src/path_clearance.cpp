@@ -22,8 +22,8 @@ bool walk(const Curve& curve, double u0, double u1, const JointVector& abs_speed
     ++check->evaluations;
     // Values beyond the cutoff are only lower bounds; the minimum reported is the smallest exact
     // value when there is one.
-    const bool smaller = d.exact ? (!*have_exact || d.value < check->min_distance_m)
-                                 : (!*have_exact && d.value < check->min_distance_m);
+    const bool smaller =
+        d.exact ? (!*have_exact || d.value < check->min_distance_m) : (!*have_exact && d.value < check->min_distance_m);
     if (smaller) {
       check->min_distance_m = d.value;
       check->at_s = u;
@@ -34,7 +34,8 @@ bool walk(const Curve& curve, double u0, double u1, const JointVector& abs_speed
       return false;
     }
     if (u >= u1) return true;
-    const double certified_du = lipschitz > 0.0 ? (d.value - clearance_m) / lipschitz : std::numeric_limits<double>::infinity();
+    const double certified_du =
+        lipschitz > 0.0 ? (d.value - clearance_m) / lipschitz : std::numeric_limits<double>::infinity();
     u = std::min(u1, u + std::max(dense_du, certified_du));
   }
 }
@@ -46,8 +47,8 @@ ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, c
   ClearanceCheck check;
   bool have_exact = false;
   const JointVector delta = b - a;
-  walk([&](double u) -> JointVector { return a + u * delta; }, 0.0, 1.0, delta.cwiseAbs(), world, clearance_m,
-       max_step, &check, &have_exact);
+  walk([&](double u) -> JointVector { return a + u * delta; }, 0.0, 1.0, delta.cwiseAbs(), world, clearance_m, max_step,
+       &check, &have_exact);
   return check;
 }
 

@@ -73,7 +73,8 @@ Eigen::VectorXd SmoothingObjective::priorVariables() const {
 
 std::vector<JointVector> SmoothingObjective::waypoints(const Eigen::VectorXd& x) const {
   std::vector<JointVector> out = prior_;
-  for (int k = 0; k < free_count_; ++k) out[static_cast<size_t>(fixed_head_ + k)] = JointVector(x[k], x[free_count_ + k]);
+  for (int k = 0; k < free_count_; ++k)
+    out[static_cast<size_t>(fixed_head_ + k)] = JointVector(x[k], x[free_count_ + k]);
   return out;
 }
 
@@ -163,9 +164,12 @@ void SmoothingObjective::quadraticHessian(int joint, Eigen::VectorXd& diag0, Eig
         const int ka = a - fixed_head_, kb = b - fixed_head_;
         if (ka >= 0 && ka < m && kb >= ka && kb < m) {
           const double v = 2.0 * w * sigma * ca * cb;
-          if (kb == ka) diag0[ka] += v;
-          else if (kb == ka + 1) diag1[ka] += v;
-          else if (kb == ka + 2) diag2[ka] += v;
+          if (kb == ka)
+            diag0[ka] += v;
+          else if (kb == ka + 1)
+            diag1[ka] += v;
+          else if (kb == ka + 2)
+            diag2[ka] += v;
         }
         ++b;
       }

@@ -36,12 +36,13 @@ std::string rangeText(const RobotModel& model) {
 
 std::string obstacleName(const Scene& scene, int index) {
   // CollisionWorld skips empty polygons; the loader never produces them, so indices agree.
-  if (index >= 0 && index < static_cast<int>(scene.obstacles.size())) return scene.obstacles[static_cast<size_t>(index)].name;
+  if (index >= 0 && index < static_cast<int>(scene.obstacles.size()))
+    return scene.obstacles[static_cast<size_t>(index)].name;
   return "an obstacle";
 }
 
-constexpr double kSamePose = 1e-9;    // weighted; closer poses are the same pose
-constexpr int kMaxConnectionRing = 4; // nodes up to this many steps from a pose may be connected
+constexpr double kSamePose = 1e-9;     // weighted; closer poses are the same pose
+constexpr int kMaxConnectionRing = 4;  // nodes up to this many steps from a pose may be connected
 constexpr int kLeadInHalvings = 5;
 
 // Free grid nodes near a pose that a straight, clear segment reaches, with the connection cost
@@ -92,7 +93,8 @@ std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std
   while (from < last) {
     int lo = from + 1, hi = last;
     auto clear = [&](int to) {
-      return checkSegment(world, polyline[static_cast<size_t>(from)], polyline[static_cast<size_t>(to)], clearance_m).clear;
+      return checkSegment(world, polyline[static_cast<size_t>(from)], polyline[static_cast<size_t>(to)], clearance_m)
+          .clear;
     };
     if (clear(hi)) {
       lo = hi;
@@ -151,12 +153,15 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   using R = Result<std::vector<PlannedPath>>;
   if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
   if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
-  if (!start_velocity.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
+  if (!start_velocity.allFinite())
+    return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
   if (!model_.withinLimits(start)) {
-    return R::failure(PlanStatus::kStartOutOfRange, "start " + poseText(start) + " is outside the joint limits: " + rangeText(model_));
+    return R::failure(PlanStatus::kStartOutOfRange,
+                      "start " + poseText(start) + " is outside the joint limits: " + rangeText(model_));
   }
   if (!model_.withinLimits(goal)) {
-    return R::failure(PlanStatus::kGoalOutOfRange, "goal " + poseText(goal) + " is outside the joint limits: " + rangeText(model_));
+    return R::failure(PlanStatus::kGoalOutOfRange,
+                      "goal " + poseText(goal) + " is outside the joint limits: " + rangeText(model_));
   }
   const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
   const CSpaceGrid& grid = grids_[static_cast<size_t>(pieces.index())];
@@ -227,8 +232,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     }
     const auto found = astarSearch(grid, sources, goals, goal);
     if (!found) {
-      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(goal) + " cannot be reached from " + poseText(from) +
-                                                 " without coming closer than the clearance");
+      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(goal) + " cannot be reached from " +
+                                                 poseText(from) + " without coming closer than the clearance");
     }
     out.search_expanded = found->expanded;
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
@@ -285,7 +290,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
     const double b_start = start_speed * start_speed;
     std::vector<double> estimates;
-    for (const PlannedPath& c : candidates) estimates.push_back(estimateDuration(*c.path, drives, b_start, kTimingGridPoints));
+    for (const PlannedPath& c : candidates)
+      estimates.push_back(estimateDuration(*c.path, drives, b_start, kTimingGridPoints));
     // Adds the polyline's shortcut (or the polyline itself) in the order of estimated time.
     auto add = [&](const std::vector<JointVector>& line, const char* label) {
       PlannedPath alternative = out;
@@ -296,7 +302,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
       estimates.insert(estimates.begin() + static_cast<long>(at), seconds);
       candidates.insert(candidates.begin() + static_cast<long>(at), std::move(alternative));
     };
-    const std::vector<JointVector> shortcut = shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
+    const std::vector<JointVector> shortcut =
+        shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
     if (shortcut.size() < polyline.size()) add(shortcut, "shortcut, ");
     const double direction_norm = weightedNorm(goal - from, metric);
     const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
@@ -316,10 +323,11 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
   if (candidates.empty()) {
     char buffer[200];
-    std::snprintf(buffer, sizeof buffer,
-                  "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
-                  clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
-                  last_check.at_s);
+    std::snprintf(
+        buffer, sizeof buffer,
+        "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
+        clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
+        last_check.at_s);
     return R::failure(PlanStatus::kClearanceNotMet, buffer);
   }
   return candidates;

@@ -4,9 +4,7 @@
 
 namespace cyber::planner {
 
-double DriveParams::gravityFactor(double q) const {
-  return gravity == GravityModel::kCosine ? std::cos(q) : 1.0;
-}
+double DriveParams::gravityFactor(double q) const { return gravity == GravityModel::kCosine ? std::cos(q) : 1.0; }
 
 double DriveParams::volts(double q, double qdot, double qddot) const {
   const double sign = static_cast<double>((qdot > 0.0) - (qdot < 0.0));

@@ -14,12 +14,12 @@ namespace {
 
 using topp::LimitKind;
 
-constexpr int kMinGridPoints = 3;          // rest to rest needs one node in between
-constexpr double kSpeedBound = 1e3;        // path units/s: far beyond any motor (reachability search)
-constexpr double kCheckShare = 0.6;        // of limit_check_tolerance accepted at the check's samples
-constexpr double kMaxMargin = 0.05;        // limits are lowered by at most this fraction
-constexpr double kRefineAbove = 0.02;      // overshoots beyond this fraction refine the grid instead
-constexpr int kMaxGridFactor = 8;          // the grid may grow to this multiple of grid_points
+constexpr int kMinGridPoints = 3;      // rest to rest needs one node in between
+constexpr double kSpeedBound = 1e3;    // path units/s: far beyond any motor (reachability search)
+constexpr double kCheckShare = 0.6;    // of limit_check_tolerance accepted at the check's samples
+constexpr double kMaxMargin = 0.05;    // limits are lowered by at most this fraction
+constexpr double kRefineAbove = 0.02;  // overshoots beyond this fraction refine the grid instead
+constexpr int kMaxGridFactor = 8;      // the grid may grow to this multiple of grid_points
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -28,10 +28,9 @@ bool validDrive(const DriveParams& d, const char* name, std::string* error) {
   const bool ok = positiveFinite(m.nominal_voltage_volts) && positiveFinite(m.stall_current_amps) &&
                   positiveFinite(m.free_speed_radps) && std::isfinite(m.free_current_amps) &&
                   positiveFinite(m.kvRadpsPerVolt()) && positiveFinite(d.gearing) && d.motor_count >= 1 &&
-                  std::isfinite(d.kS_volts) && d.kS_volts >= 0.0 && std::isfinite(d.kG_volts) &&
-                  std::isfinite(d.kV) && d.kV >= 0.0 && std::isfinite(d.kA) && d.kA >= 0.0 &&
-                  positiveFinite(d.voltage_limit_volts) && positiveFinite(d.current_limit_amps) &&
-                  (!d.velocity_limit || positiveFinite(*d.velocity_limit)) &&
+                  std::isfinite(d.kS_volts) && d.kS_volts >= 0.0 && std::isfinite(d.kG_volts) && std::isfinite(d.kV) &&
+                  d.kV >= 0.0 && std::isfinite(d.kA) && d.kA >= 0.0 && positiveFinite(d.voltage_limit_volts) &&
+                  positiveFinite(d.current_limit_amps) && (!d.velocity_limit || positiveFinite(*d.velocity_limit)) &&
                   (!d.acceleration_limit || positiveFinite(*d.acceleration_limit));
   if (!ok) *error = std::string("the ") + name + " drive figures are not finite and positive where required";
   return ok;
@@ -259,8 +258,7 @@ Result<Trajectory> ToppSolver::solvedTrajectory(const Move& move, double time_sc
   s_grid.back() = move.length;
   b_grid.front() = problem_.b_start == move.unit_b_start ? move.b_start : problem_.b_start * move.length_squared;
   b_grid.back() = 0.0;
-  return Trajectory::create(move.path, move.drives[kElevator], move.drives[kArm], std::move(s_grid),
-                            std::move(b_grid));
+  return Trajectory::create(move.path, move.drives[kElevator], move.drives[kArm], std::move(s_grid), std::move(b_grid));
 }
 
 // One attempt on the current rows: warm start, augmented Lagrangian, continuous check.
@@ -276,8 +274,9 @@ ToppSolver::Attempt ToppSolver::solveRows(const Move& move, const topp::AlSettin
   }
   Result<Trajectory> trajectory = solvedTrajectory(move, time_scale.value());
   if (!trajectory) {
-    return {Attempt::End::kBroken, PlanError{PlanStatus::kInternalError, "the solved profile is not a valid trajectory: " +
-                                                                             trajectory.error().reason}};
+    return {Attempt::End::kBroken,
+            PlanError{PlanStatus::kInternalError,
+                      "the solved profile is not a valid trajectory: " + trajectory.error().reason}};
   }
   const bool within = checkLimits(trajectory.value(), settings_, margins_, report);
   return {within ? Attempt::End::kWithinLimits : Attempt::End::kOverLimits, std::move(trajectory)};
@@ -333,8 +332,7 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
     const bool may_refine = refinement < settings_.max_limit_refinements;
     switch (attempt.end) {
       case Attempt::End::kWithinLimits:
-      case Attempt::End::kBroken:
-        return std::move(attempt.result);
+      case Attempt::End::kBroken: return std::move(attempt.result);
       case Attempt::End::kHard: {
         // Tightened rows that turned out infeasible or hard are given up for a finer grid.
         if (rows != RowLimits::kTightened || !may_refine) return std::move(attempt.result);

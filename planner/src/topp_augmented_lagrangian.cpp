@@ -204,8 +204,7 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
   return value;
 }
 
-AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& settings, AlState& state,
-                                  AlWorkspace& w) {
+AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& settings, AlState& state, AlWorkspace& w) {
   AlReport report;
   const VariableLayout v{problem.gridPoints()};
   const int n = v.size();

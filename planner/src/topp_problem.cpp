@@ -154,16 +154,29 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
 
         // Voltage: V = kS sgn + kG g + kV q' c + kA (q'' b + q' a), |V| <= Vmax.
         const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
-        LinearRow voltage{k, at, d.kA * qp, d.kA * qpp, d.kV * qp, -v_limit - gravity - coulomb_lo,
-                          v_limit - gravity - coulomb_hi, joint, LimitKind::kVoltage};
+        LinearRow voltage{k,
+                          at,
+                          d.kA * qp,
+                          d.kA * qpp,
+                          d.kV * qp,
+                          -v_limit - gravity - coulomb_lo,
+                          v_limit - gravity - coulomb_hi,
+                          joint,
+                          LimitKind::kVoltage};
         if (!addRow(problem, voltage, d.voltage_limit_volts, error)) return false;
 
         // Current: I R = V - G q' c / Kv, |I| <= Imax.
         const double r = d.motor.resistanceOhms();
         const double back_emf = d.gearing / d.motor.kvRadpsPerVolt();
         const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
-        LinearRow current{k, at, d.kA * qp, d.kA * qpp, (d.kV - back_emf) * qp,
-                          -r * i_limit - gravity - coulomb_lo, r * i_limit - gravity - coulomb_hi, joint,
+        LinearRow current{k,
+                          at,
+                          d.kA * qp,
+                          d.kA * qpp,
+                          (d.kV - back_emf) * qp,
+                          -r * i_limit - gravity - coulomb_lo,
+                          r * i_limit - gravity - coulomb_hi,
+                          joint,
                           LimitKind::kCurrent};
         if (!addRow(problem, current, r * d.current_limit_amps, error)) return false;
 

@@ -36,7 +36,8 @@ void addRoots(double a, double b, double c, double t_max, std::array<double, kMa
 
 // Rows of interval k in the speed of one end with the other end's speed fixed. `forward`: the
 // free speed is c_{k+1} (given c_k = fixed), else c_k (given c_{k+1} = fixed).
-int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward, std::array<Quadratic, kMaxCandidates>& q) {
+int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward,
+                     std::array<Quadratic, kMaxCandidates>& q) {
   const double inv = 1.0 / (2.0 * problem.ds(k));
   const int begin = problem.row_begin[static_cast<size_t>(k)];
   const int end = problem.row_begin[static_cast<size_t>(k) + 1];

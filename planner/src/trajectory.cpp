@@ -7,8 +7,7 @@
 namespace cyber::planner {
 
 Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                      const DriveParams& arm, std::vector<double> s_grid,
-                                      std::vector<double> b_grid) {
+                                      const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid) {
   if (!path) return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "trajectory without a path");
   const double length = path->length();
   if (!std::isfinite(length) || length < 0.0) {

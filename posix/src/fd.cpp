@@ -7,8 +7,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <pthread.h>
 #include <system_error>
+#include <pthread.h>
 
 namespace cyber::posix {
 

@@ -121,8 +121,7 @@ void checkEncode(cyber::fuzz::FuzzInput& in) {
   }
 
   const auto flags = in.take<std::uint8_t>();
-  const Heartbeat heartbeat{(flags & 1) != 0, (flags & 2) != 0, (flags & 4) != 0, (flags & 8) != 0,
-                            (flags & 16) != 0};
+  const Heartbeat heartbeat{(flags & 1) != 0, (flags & 2) != 0, (flags & 4) != 0, (flags & 8) != 0, (flags & 16) != 0};
   const auto decoded = decodeHeartbeat(encodeHeartbeat(heartbeat));
   CYBER_FUZZ_CHECK(decoded && decoded.value() == heartbeat);
 

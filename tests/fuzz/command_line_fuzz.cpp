@@ -31,7 +31,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     CYBER_FUZZ_CHECK(plan->help || (plan->from.allFinite() && plan->to.allFinite() && plan->from_velocity.allFinite()));
   }
   for (const auto& arg : args) {
-    if (const auto pair = cyber::cli::parseNumberPair(arg)) CYBER_FUZZ_CHECK(std::isfinite((*pair)[0]) && std::isfinite((*pair)[1]));
+    if (const auto pair = cyber::cli::parseNumberPair(arg))
+      CYBER_FUZZ_CHECK(std::isfinite((*pair)[0]) && std::isfinite((*pair)[1]));
   }
 
   const auto goal = cyber::tools::parseGoalArguments(args);

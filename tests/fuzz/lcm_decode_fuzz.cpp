@@ -39,7 +39,9 @@ std::vector<std::uint8_t> encode(const Message& message) {
 // not round-trip (lcm-gen's limit), and the daemon must never send one (checkGoal).
 bool hasNul(const std::string& text) { return text.find('\0') != std::string::npos; }
 template <class Message>
-bool stringsRoundTrip(const Message&) { return true; }
+bool stringsRoundTrip(const Message&) {
+  return true;
+}
 bool stringsRoundTrip(const cyberplanner::arm_goal_t& m) { return !hasNul(m.scene_name); }
 bool stringsRoundTrip(const cyberplanner::arm_plan_status_t& m) { return !hasNul(m.reason); }
 

@@ -6,8 +6,8 @@
 #include <linux/can.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
-#include <poll.h>
 #include <sys/socket.h>
+#include <poll.h>
 #include <unistd.h>
 
 #include <array>

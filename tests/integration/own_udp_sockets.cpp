@@ -1,7 +1,7 @@
 #include "own_udp_sockets.hpp"
 
-#include <dirent.h>
 #include <sys/socket.h>
+#include <dirent.h>
 #include <unistd.h>
 
 #include <algorithm>

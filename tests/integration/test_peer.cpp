@@ -136,16 +136,19 @@ int runState(lcm::LCM& lcm, const Args& args) {
 int runFlood(lcm::LCM& lcm, const Args& args) {
   if (args.targets.empty()) return 2;
   long long sent = 0;
-  paced(lcm, args.rate_hz, args.seconds, [&](long long k) {
-    cyberplanner::arm_goal_t goal{};
-    goal.utime = nowMicros();
-    goal.request_id = args.first_id + k;
-    const auto& target = args.targets[static_cast<size_t>(k) % args.targets.size()];
-    goal.elevator_m = target.first;
-    goal.arm_rad = target.second;
-    lcm.publish("ARM_GOAL", &goal);
-    ++sent;
-  }, args.count);
+  paced(
+      lcm, args.rate_hz, args.seconds,
+      [&](long long k) {
+        cyberplanner::arm_goal_t goal{};
+        goal.utime = nowMicros();
+        goal.request_id = args.first_id + k;
+        const auto& target = args.targets[static_cast<size_t>(k) % args.targets.size()];
+        goal.elevator_m = target.first;
+        goal.arm_rad = target.second;
+        lcm.publish("ARM_GOAL", &goal);
+        ++sent;
+      },
+      args.count);
   std::printf("sent %lld goals, ids %lld..%lld\n", sent, args.first_id, args.first_id + sent - 1);
   return 0;
 }
@@ -229,7 +232,8 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   // Subscribed: a sender may start now (statuses sent before this socket joined are not seen).
   std::printf("watching ids %lld..%lld\n", args.first_id, args.first_id + args.count - 1);
   std::fflush(stdout);
-  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
+  const auto end =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   while (Clock::now() < end && static_cast<long long>(tally.finals.size()) < args.count) lcm.handleTimeout(50);
   // A little longer, to catch a second final status for any id.
   const auto settle = Clock::now() + std::chrono::milliseconds(300);
@@ -243,9 +247,10 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
       ++listed;
     }
   }
-  std::printf("final statuses for %zu of %lld ids; duplicates %lld; done %lld rejected %lld failed %lld cancelled %lld\n",
-              tally.finals.size(), args.count, duplicates, tally.by_status[3], tally.by_status[4], tally.by_status[5],
-              tally.by_status[6]);
+  std::printf(
+      "final statuses for %zu of %lld ids; duplicates %lld; done %lld rejected %lld failed %lld cancelled %lld\n",
+      tally.finals.size(), args.count, duplicates, tally.by_status[3], tally.by_status[4], tally.by_status[5],
+      tally.by_status[6]);
   const std::int64_t drops = cyber::test::kernelDrops(sockets) - drops_before;
   std::printf("watcher: %zu UDP sockets, kernel drops on them during the watch %lld\n", sockets.size(),
               static_cast<long long>(drops));
@@ -266,22 +271,23 @@ struct StatusCatcher {
 int runStatus(lcm::LCM& lcm, const Args& args) {
   StatusCatcher catcher;
   lcm.subscribe("ARM_DAEMON_STATUS", &StatusCatcher::on, &catcher);
-  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
+  const auto end =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   while (!catcher.got && Clock::now() < end) lcm.handleTimeout(50);
   if (!catcher.got) return 1;
   const auto& s = catcher.status;
   std::printf("utime=%lld\n", static_cast<long long>(s.utime));
-  std::printf("mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
-              "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"
-              "decode_errors=%lld\nstream_overruns=%lld\npublish_failures=%lld\nplan_time_p50_ms=%.2f\nplan_time_p99_ms=%.2f\n"
-              "stream_jitter_p50_us=%.1f\nstream_jitter_p99_us=%.1f\nstream_jitter_max_us=%.1f\nrealtime_priority=%d\n",
-              s.mode, s.robot_enabled, s.motion_allowed, static_cast<long long>(s.active_request_id), s.state_age_ms,
-              static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
-              static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
-              static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
-              static_cast<long long>(s.stream_overruns),
-              static_cast<long long>(s.publish_failures), s.plan_time_p50_ms, s.plan_time_p99_ms,
-              s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us, s.realtime_priority);
+  std::printf(
+      "mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
+      "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"
+      "decode_errors=%lld\nstream_overruns=%lld\npublish_failures=%lld\nplan_time_p50_ms=%.2f\nplan_time_p99_ms=%.2f\n"
+      "stream_jitter_p50_us=%.1f\nstream_jitter_p99_us=%.1f\nstream_jitter_max_us=%.1f\nrealtime_priority=%d\n",
+      s.mode, s.robot_enabled, s.motion_allowed, static_cast<long long>(s.active_request_id), s.state_age_ms,
+      static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
+      static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
+      static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
+      static_cast<long long>(s.stream_overruns), static_cast<long long>(s.publish_failures), s.plan_time_p50_ms,
+      s.plan_time_p99_ms, s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us, s.realtime_priority);
   return 0;
 }
 
@@ -301,11 +307,16 @@ int main(int argc, char** argv) {
     return 1;
   }
   int rc = 2;
-  if (args.command == "state") rc = runState(lcm, args);
-  else if (args.command == "flood") rc = runFlood(lcm, args);
-  else if (args.command == "garbage") rc = runGarbage(lcm, args);
-  else if (args.command == "watch") rc = runWatch(lcm, args);
-  else if (args.command == "status") rc = runStatus(lcm, args);
+  if (args.command == "state")
+    rc = runState(lcm, args);
+  else if (args.command == "flood")
+    rc = runFlood(lcm, args);
+  else if (args.command == "garbage")
+    rc = runGarbage(lcm, args);
+  else if (args.command == "watch")
+    rc = runWatch(lcm, args);
+  else if (args.command == "status")
+    rc = runStatus(lcm, args);
   if (rc == 2) std::fprintf(stderr, "cyber-test-peer: bad arguments for '%s'\n", args.command.c_str());
   return rc;
 }

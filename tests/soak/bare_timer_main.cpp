@@ -18,10 +18,14 @@ int main(int argc, char** argv) {
   int priority = 50;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string arg = argv[i];
-    if (arg == "--seconds") seconds = std::atof(argv[i + 1]);
-    else if (arg == "--rate") rate_hz = std::atof(argv[i + 1]);
-    else if (arg == "--priority") priority = std::atoi(argv[i + 1]);
-    else argc = -1;
+    if (arg == "--seconds")
+      seconds = std::atof(argv[i + 1]);
+    else if (arg == "--rate")
+      rate_hz = std::atof(argv[i + 1]);
+    else if (arg == "--priority")
+      priority = std::atoi(argv[i + 1]);
+    else
+      argc = -1;
   }
   if (argc < 0 || argc % 2 == 0 || !(seconds > 0.0) || !(rate_hz > 0.0)) {
     std::fprintf(stderr, "usage: cyber-bare-timer --seconds S [--rate HZ] [--priority P]\n");
@@ -44,10 +48,11 @@ int main(int argc, char** argv) {
   cyber::test::BareTimerResult result;
   const auto period_ns = static_cast<cyber::daemon::MonoNs>(1e9 / rate_hz);
   cyber::test::measureBareTimer(seconds, period_ns, priority, result, &stop);
-  std::printf("bare_ticks=%lld\nbare_overruns=%lld\nbare_jitter_p50_us=%.1f\nbare_jitter_p99_us=%.1f\n"
-              "bare_jitter_max_us=%.1f\nbare_sched_fifo=%d\n",
-              static_cast<long long>(result.jitter.count()), static_cast<long long>(result.overruns.load()),
-              result.jitter.percentileUs(0.5), result.jitter.percentileUs(0.99), result.jitter.maxUs(),
-              result.realtime.load() ? 1 : 0);
+  std::printf(
+      "bare_ticks=%lld\nbare_overruns=%lld\nbare_jitter_p50_us=%.1f\nbare_jitter_p99_us=%.1f\n"
+      "bare_jitter_max_us=%.1f\nbare_sched_fifo=%d\n",
+      static_cast<long long>(result.jitter.count()), static_cast<long long>(result.overruns.load()),
+      result.jitter.percentileUs(0.5), result.jitter.percentileUs(0.99), result.jitter.maxUs(),
+      result.realtime.load() ? 1 : 0);
   return 0;
 }

@@ -60,15 +60,24 @@ std::optional<Args> parse(int argc, char** argv) {
   Args args;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string arg = argv[i], value = argv[i + 1];
-    if (arg == "--daemon-pid") args.daemon_pid = std::atol(value.c_str());
-    else if (arg == "--seconds") args.seconds = std::atof(value.c_str());
-    else if (arg == "--warmup") args.warmup_s = std::atof(value.c_str());
-    else if (arg == "--sample-s") args.sample_s = std::atof(value.c_str());
-    else if (arg == "--csv") args.csv_path = value;
-    else if (arg == "--seed") args.seed = static_cast<unsigned>(std::atol(value.c_str()));
-    else if (arg == "--lcm-url") args.lcm_url = value;
-    else if (arg == "--rss-slack-kib") args.rss_slack_kib = std::atol(value.c_str());
-    else return std::nullopt;
+    if (arg == "--daemon-pid")
+      args.daemon_pid = std::atol(value.c_str());
+    else if (arg == "--seconds")
+      args.seconds = std::atof(value.c_str());
+    else if (arg == "--warmup")
+      args.warmup_s = std::atof(value.c_str());
+    else if (arg == "--sample-s")
+      args.sample_s = std::atof(value.c_str());
+    else if (arg == "--csv")
+      args.csv_path = value;
+    else if (arg == "--seed")
+      args.seed = static_cast<unsigned>(std::atol(value.c_str()));
+    else if (arg == "--lcm-url")
+      args.lcm_url = value;
+    else if (arg == "--rss-slack-kib")
+      args.rss_slack_kib = std::atol(value.c_str());
+    else
+      return std::nullopt;
   }
   if (argc % 2 == 0 || args.daemon_pid <= 0 || !(args.seconds > 0.0) || !(args.sample_s > 0.0)) return std::nullopt;
   return args;
@@ -158,9 +167,8 @@ enum class GoalKind { kPose, kMidMotion, kOutOfRange, kCollision, kUnknownScene,
 GoalKind pickKind(std::mt19937& random) {
   // Weights: mostly feasible moves, a fifth infeasible, a few malformed, rare bursts.
   static const std::vector<std::pair<GoalKind, int>> kWeights = {
-      {GoalKind::kPose, 40},       {GoalKind::kMidMotion, 25},   {GoalKind::kOutOfRange, 5},
-      {GoalKind::kCollision, 5},   {GoalKind::kUnknownScene, 4}, {GoalKind::kNotFinite, 4},
-      {GoalKind::kMalformed, 12},  {GoalKind::kBurst, 5}};
+      {GoalKind::kPose, 40},        {GoalKind::kMidMotion, 25}, {GoalKind::kOutOfRange, 5}, {GoalKind::kCollision, 5},
+      {GoalKind::kUnknownScene, 4}, {GoalKind::kNotFinite, 4},  {GoalKind::kMalformed, 12}, {GoalKind::kBurst, 5}};
   int total = 0;
   for (const auto& [kind, weight] : kWeights) total += weight;
   int pick = std::uniform_int_distribution<int>(0, total - 1)(random);
@@ -185,10 +193,23 @@ class GoalSender {
     switch (kind) {
       case GoalKind::kPose: publish(goal); return uniform(1.0, 4.0);
       case GoalKind::kMidMotion: publish(goal); return uniform(0.1, 0.6);  // the next one lands mid-motion
-      case GoalKind::kOutOfRange: goal.elevator_m = 5.0; publish(goal); return uniform(0.2, 1.0);
-      case GoalKind::kCollision: goal.elevator_m = 0.0; goal.arm_rad = 4.71; publish(goal); return uniform(0.2, 1.0);
-      case GoalKind::kUnknownScene: goal.scene_name = "moon"; publish(goal); return uniform(0.2, 1.0);
-      case GoalKind::kNotFinite: goal.arm_rad = std::numeric_limits<double>::quiet_NaN(); publish(goal); return uniform(0.2, 1.0);
+      case GoalKind::kOutOfRange:
+        goal.elevator_m = 5.0;
+        publish(goal);
+        return uniform(0.2, 1.0);
+      case GoalKind::kCollision:
+        goal.elevator_m = 0.0;
+        goal.arm_rad = 4.71;
+        publish(goal);
+        return uniform(0.2, 1.0);
+      case GoalKind::kUnknownScene:
+        goal.scene_name = "moon";
+        publish(goal);
+        return uniform(0.2, 1.0);
+      case GoalKind::kNotFinite:
+        goal.arm_rad = std::numeric_limits<double>::quiet_NaN();
+        publish(goal);
+        return uniform(0.2, 1.0);
       case GoalKind::kMalformed: malformed(goal); return uniform(0.1, 1.0);
       case GoalKind::kBurst: {
         const int count = std::uniform_int_distribution<int>(10, 40)(random_);
@@ -235,7 +256,9 @@ class GoalSender {
         bytes.resize(static_cast<size_t>(std::uniform_int_distribution<int>(1, 300)(random_)));
         for (auto& b : bytes) b = static_cast<std::uint8_t>(random_());
         break;
-      case 1: bytes.resize(static_cast<size_t>(std::uniform_int_distribution<size_t>(0, bytes.size() - 1)(random_))); break;
+      case 1:
+        bytes.resize(static_cast<size_t>(std::uniform_int_distribution<size_t>(0, bytes.size() - 1)(random_)));
+        break;
       default: bytes[bytes.size() - 9] = 0x7f; break;  // the scene_name length's high byte
     }
     const char* channel = random_() % 2 == 0 ? "ARM_GOAL" : "ARM_STATE";
@@ -284,8 +307,9 @@ void writeCsvRow(std::FILE* csv, const Row& r) {
 int main(int argc, char** argv) {
   const auto parsed = parse(argc, argv);
   if (!parsed) {
-    std::fprintf(stderr, "usage: cyber-soak-peer --daemon-pid PID --seconds S [--warmup S] [--sample-s S] [--csv FILE] "
-                         "[--seed N] [--lcm-url URL] [--rss-slack-kib K]\n");
+    std::fprintf(stderr,
+                 "usage: cyber-soak-peer --daemon-pid PID --seconds S [--warmup S] [--sample-s S] [--csv FILE] "
+                 "[--seed N] [--lcm-url URL] [--rss-slack-kib K]\n");
     return 2;
   }
   const Args& args = *parsed;
@@ -344,8 +368,8 @@ int main(int argc, char** argv) {
       next_sample_s += args.sample_s;
       const auto process = sampleProcess(args.daemon_pid);
       if (!process) {
-        failures.push_back("the daemon (pid " + std::to_string(args.daemon_pid) + ") is gone at t=" +
-                           std::to_string(static_cast<int>(t)) + " s");
+        failures.push_back("the daemon (pid " + std::to_string(args.daemon_pid) +
+                           ") is gone at t=" + std::to_string(static_cast<int>(t)) + " s");
         break;
       }
       if (peer.status && std::chrono::duration<double>(Clock::now() - peer.status_at).count() > 2.0) ++status_gaps;
@@ -358,8 +382,9 @@ int main(int argc, char** argv) {
     for (auto it = peer.open_goals.begin(); it != peer.open_goals.end();) {
       if (std::chrono::duration<double>(Clock::now() - it->second).count() > args.answer_timeout_s) {
         ++lost;
-        if (lost <= 10) std::fprintf(stderr, "cyber-soak-peer: no final status for request %lld\n",
-                                     static_cast<long long>(it->first));
+        if (lost <= 10)
+          std::fprintf(stderr, "cyber-soak-peer: no final status for request %lld\n",
+                       static_cast<long long>(it->first));
         it = peer.open_goals.erase(it);
       } else {
         ++it;
@@ -411,7 +436,8 @@ int main(int argc, char** argv) {
       failures.push_back("RSS grew from " + std::to_string(median(early_rss)) + " KiB to " +
                          std::to_string(median(late_rss)) + " KiB after the warm-up");
     }
-    if (max_fds > warm_fds) failures.push_back("open fds rose from " + std::to_string(warm_fds) + " to " + std::to_string(max_fds));
+    if (max_fds > warm_fds)
+      failures.push_back("open fds rose from " + std::to_string(warm_fds) + " to " + std::to_string(max_fds));
     if (max_threads > warm_threads) {
       failures.push_back("threads rose from " + std::to_string(warm_threads) + " to " + std::to_string(max_threads));
     }
@@ -425,20 +451,21 @@ int main(int argc, char** argv) {
               sender.sent, sender.malformed_sent, sender.bursts, answered, lost, duplicates);
   std::printf("done=%lld\nrejected=%lld\nfailed=%lld\ncancelled=%lld\n", peer.by_status[3], peer.by_status[4],
               peer.by_status[5], peer.by_status[6]);
-  std::printf("rss_kib_early_median=%ld\nrss_kib_late_median=%ld\nrss_kib_max=%ld\nfds_warm=%ld\nfds_max=%ld\n"
-              "threads_warm=%ld\nthreads_max=%ld\n",
-              median(early_rss), median(late_rss), max_rss, warm_fds, max_fds, warm_threads, max_threads);
-  std::printf("daemon_goals_received=%lld\ndaemon_plans_succeeded=%lld\ndaemon_plans_failed=%lld\n"
-              "daemon_frames_sent=%lld\ndaemon_can_errors=%lld\ndaemon_decode_errors=%lld\n"
-              "daemon_stream_overruns=%lld\ndaemon_publish_failures=%lld\n"
-              "daemon_plan_time_p50_ms=%.2f\ndaemon_plan_time_p99_ms=%.2f\ndaemon_plan_time_max_ms=%.2f\n"
-              "daemon_stream_jitter_p50_us=%.1f\ndaemon_stream_jitter_p99_us=%.1f\ndaemon_stream_jitter_max_us=%.1f\n",
-              static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
-              static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
-              static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
-              static_cast<long long>(s.stream_overruns), static_cast<long long>(s.publish_failures),
-              s.plan_time_p50_ms, s.plan_time_p99_ms, s.plan_time_max_ms, s.stream_jitter_p50_us,
-              s.stream_jitter_p99_us, s.stream_jitter_max_us);
+  std::printf(
+      "rss_kib_early_median=%ld\nrss_kib_late_median=%ld\nrss_kib_max=%ld\nfds_warm=%ld\nfds_max=%ld\n"
+      "threads_warm=%ld\nthreads_max=%ld\n",
+      median(early_rss), median(late_rss), max_rss, warm_fds, max_fds, warm_threads, max_threads);
+  std::printf(
+      "daemon_goals_received=%lld\ndaemon_plans_succeeded=%lld\ndaemon_plans_failed=%lld\n"
+      "daemon_frames_sent=%lld\ndaemon_can_errors=%lld\ndaemon_decode_errors=%lld\n"
+      "daemon_stream_overruns=%lld\ndaemon_publish_failures=%lld\n"
+      "daemon_plan_time_p50_ms=%.2f\ndaemon_plan_time_p99_ms=%.2f\ndaemon_plan_time_max_ms=%.2f\n"
+      "daemon_stream_jitter_p50_us=%.1f\ndaemon_stream_jitter_p99_us=%.1f\ndaemon_stream_jitter_max_us=%.1f\n",
+      static_cast<long long>(s.goals_received), static_cast<long long>(s.plans_succeeded),
+      static_cast<long long>(s.plans_failed), static_cast<long long>(s.frames_sent),
+      static_cast<long long>(s.can_errors), static_cast<long long>(s.decode_errors),
+      static_cast<long long>(s.stream_overruns), static_cast<long long>(s.publish_failures), s.plan_time_p50_ms,
+      s.plan_time_p99_ms, s.plan_time_max_ms, s.stream_jitter_p50_us, s.stream_jitter_p99_us, s.stream_jitter_max_us);
   std::printf("peer_publish_failures=%lld\nstatus_messages=%lld\nforeign_finals=%lld\n",
               sender.publish_failures + state_publish_failures, peer.status_messages, peer.foreign_finals);
   for (const auto& failure : failures) std::printf("FAIL: %s\n", failure.c_str());

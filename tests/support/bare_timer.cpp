@@ -1,8 +1,8 @@
 #include "bare_timer.hpp"
 
+#include <sys/prctl.h>
 #include <pthread.h>
 #include <sched.h>
-#include <sys/prctl.h>
 
 #include <thread>
 

@@ -20,8 +20,8 @@ std::string readFile(const std::string& path) {
 ToolRun runTool(const std::string& program, const std::string& args) {
   // Per process and call, so tests of one binary running in parallel do not share the file.
   static int calls = 0;
-  const std::string err_path = ::testing::TempDir() + "cyber_tool_" + std::to_string(::getpid()) + "_" +
-                               std::to_string(calls++) + "_stderr.txt";
+  const std::string err_path =
+      ::testing::TempDir() + "cyber_tool_" + std::to_string(::getpid()) + "_" + std::to_string(calls++) + "_stderr.txt";
   const std::string command = program + " " + args + " 2>" + err_path;
   ToolRun run;
   FILE* pipe = ::popen(command.c_str(), "r");

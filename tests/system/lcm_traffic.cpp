@@ -4,9 +4,9 @@
 //   lcm_traffic publish --lcm-url URL --rate-hz R --duration-s D
 //       publishes one message of each type on its channel (design.md) R times a second for D s
 //   lcm_traffic listen --lcm-url URL --duration-s D [--quiet-s Q]
-//       prints "listening" once subscribed, then "CHANNEL received decoded" for each of the six channels after D s; "decoded"
-//       counts messages that decode as the channel's type with the values publish puts in.
-//       With --quiet-s it stops earlier: Q s after the last message, once one has arrived.
+//       prints "listening" once subscribed, then "CHANNEL received decoded" for each of the six channels after D s;
+//       "decoded" counts messages that decode as the channel's type with the values publish puts in. With --quiet-s it
+//       stops earlier: Q s after the last message, once one has arrived.
 //
 // Exit codes: 0 done, 2 bad arguments, 1 LCM could not be opened.
 
@@ -155,8 +155,7 @@ class Listener {
     Counts& counts = self->counts_[channel];
     ++counts.received;
     Message message;
-    if (cyber::lcmtypes::safeDecode(message, rbuf->data, static_cast<int>(rbuf->data_size)) >= 0 &&
-        isOurs(message)) {
+    if (cyber::lcmtypes::safeDecode(message, rbuf->data, static_cast<int>(rbuf->data_size)) >= 0 && isOurs(message)) {
       ++counts.decoded;
     }
   }
@@ -164,14 +163,14 @@ class Listener {
 };
 
 std::int64_t nowUtime() {
-  return std::chrono::duration_cast<std::chrono::microseconds>(
-             std::chrono::system_clock::now().time_since_epoch())
+  return std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
 }
 
 int publish(lcm::LCM& lcm, double rate_hz, double duration_s) {
   const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / rate_hz));
-  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
+  const auto end =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
   auto next = Clock::now();
   long rounds = 0;
   while (next < end) {
@@ -206,7 +205,8 @@ int listen(lcm::LCM& lcm, double duration_s, double quiet_s) {
   // Tests wait for this line before they start sending.
   std::printf("listening\n");
   std::fflush(stdout);
-  const auto end = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
+  const auto end =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(duration_s));
   const auto quiet = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(quiet_s));
   auto last_message = Clock::now();
   for (auto now = Clock::now(); now < end; now = Clock::now()) {

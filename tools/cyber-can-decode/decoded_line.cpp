@@ -17,9 +17,8 @@ namespace {
 
 // All CSV columns; a row fills the ones that apply to its kind and leaves the others empty.
 struct Row {
-  std::string time_s, iface, kind, device, joint, seq, position, velocity, volts, mode,
-      request_id, time_remaining_ms, fault_bits, red_alliance, enabled, autonomous, test,
-      system_watchdog, id, data, error;
+  std::string time_s, iface, kind, device, joint, seq, position, velocity, volts, mode, request_id, time_remaining_ms,
+      fault_bits, red_alliance, enabled, autonomous, test, system_watchdog, id, data, error;
 };
 
 constexpr const char* kHeader =
@@ -45,11 +44,11 @@ std::string csvField(const std::string& text) {
 }
 
 std::string joinCsv(const Row& r) {
-  const std::string* fields[] = {&r.time_s, &r.iface, &r.kind, &r.device, &r.joint, &r.seq,
-                                 &r.position, &r.velocity, &r.volts, &r.mode, &r.request_id,
-                                 &r.time_remaining_ms, &r.fault_bits, &r.red_alliance,
-                                 &r.enabled, &r.autonomous, &r.test, &r.system_watchdog, &r.id,
-                                 &r.data, &r.error};
+  const std::string* fields[] = {
+      &r.time_s,     &r.iface,        &r.kind,    &r.device,     &r.joint,      &r.seq,
+      &r.position,   &r.velocity,     &r.volts,   &r.mode,       &r.request_id, &r.time_remaining_ms,
+      &r.fault_bits, &r.red_alliance, &r.enabled, &r.autonomous, &r.test,       &r.system_watchdog,
+      &r.id,         &r.data,         &r.error};
   std::string line;
   for (const std::string* field : fields) {
     if (!line.empty() || field != fields[0]) line += ',';
@@ -71,8 +70,7 @@ std::string hexId(const can::Frame& frame) {
 
 std::string flag(bool value) { return value ? "1" : "0"; }
 
-void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints, Row& row,
-                  std::string& text) {
+void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints, Row& row, std::string& text) {
   const auto& s = decoded.setpoint;
   const bool elevator = decoded.device == joints.elevator;
   const bool arm = decoded.device == joints.arm;
@@ -83,9 +81,8 @@ void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints
   row.volts = format("%.3f", s.feedforward_volts);
   const char* unit = elevator ? " m" : arm ? " rad" : "";
   const char* rate = elevator ? " m/s" : arm ? " rad/s" : "";
-  text += (row.joint.empty() ? std::string() : " " + row.joint) + " dev " + row.device +
-          " seq " + row.seq + " position " + row.position + unit + " velocity " + row.velocity +
-          rate + " ff " + row.volts + " V";
+  text += (row.joint.empty() ? std::string() : " " + row.joint) + " dev " + row.device + " seq " + row.seq +
+          " position " + row.position + unit + " velocity " + row.velocity + rate + " ff " + row.volts + " V";
 }
 
 void fillStatus(const can::DeviceStatus& decoded, Row& row, std::string& text) {
@@ -95,8 +92,8 @@ void fillStatus(const can::DeviceStatus& decoded, Row& row, std::string& text) {
   row.request_id = std::to_string(s.request_id);
   row.time_remaining_ms = std::to_string(s.time_remaining_ms);
   row.fault_bits = format("0x%02X", s.fault_bits);
-  text += " dev " + row.device + " seq " + row.seq + " mode " + row.mode + " request " +
-          row.request_id + " remaining " + row.time_remaining_ms + " ms faults " + row.fault_bits;
+  text += " dev " + row.device + " seq " + row.seq + " mode " + row.mode + " request " + row.request_id +
+          " remaining " + row.time_remaining_ms + " ms faults " + row.fault_bits;
 }
 
 void fillHeartbeat(const can::Heartbeat& h, Row& row, std::string& text) {
@@ -105,8 +102,8 @@ void fillHeartbeat(const can::Heartbeat& h, Row& row, std::string& text) {
   row.autonomous = flag(h.autonomous);
   row.test = flag(h.test);
   row.system_watchdog = flag(h.system_watchdog);
-  text += " enabled=" + row.enabled + " watchdog=" + row.system_watchdog + " red=" +
-          row.red_alliance + " auto=" + row.autonomous + " test=" + row.test;
+  text += " enabled=" + row.enabled + " watchdog=" + row.system_watchdog + " red=" + row.red_alliance +
+          " auto=" + row.autonomous + " test=" + row.test;
 }
 
 void fillBusError(const can::BusError& e, std::string& text) {
@@ -121,8 +118,8 @@ void fillBusError(const can::BusError& e, std::string& text) {
 
 std::string csvHeader() { return kHeader; }
 
-std::string decodeRecord(const can::LogRecord& record, const JointDevices& joints,
-                         OutputFormat format_kind, DecodeCounts& counts) {
+std::string decodeRecord(const can::LogRecord& record, const JointDevices& joints, OutputFormat format_kind,
+                         DecodeCounts& counts) {
   const can::Frame& frame = record.frame;
   ++counts.frames;
   Row row;
@@ -181,8 +178,8 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
     ++counts.undecodable;
     row.kind = "undecodable";
     row.error = std::string(can::toString(*problem));
-    text = row.time_s + " " + row.iface + " undecodable " + std::string(can::toString(kind)) +
-           " " + row.id + "#" + row.data + ": " + row.error;
+    text = row.time_s + " " + row.iface + " undecodable " + std::string(can::toString(kind)) + " " + row.id + "#" +
+           row.data + ": " + row.error;
   } else if (kind == can::FrameKind::kOther) {
     ++counts.other;
   } else {

@@ -27,7 +27,7 @@ struct DecodeCounts {
 std::string csvHeader();
 
 // Decodes one record, counts it, and returns its output line (without newline).
-std::string decodeRecord(const can::LogRecord& record, const JointDevices& joints,
-                         OutputFormat format, DecodeCounts& counts);
+std::string decodeRecord(const can::LogRecord& record, const JointDevices& joints, OutputFormat format,
+                         DecodeCounts& counts);
 
 }  // namespace cyber::tools

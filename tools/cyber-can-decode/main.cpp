@@ -53,9 +53,9 @@ int main(int argc, char** argv) {
     std::cout << cyber::tools::decodeRecord(record.value(), args.joints, args.format, counts) << '\n';
   }
 
-  std::cerr << "cyber-can-decode: " << counts.frames << " frames (" << counts.decoded
-            << " decoded, " << counts.undecodable << " undecodable, " << counts.other
-            << " other), " << counts.malformed << " malformed lines\n";
+  std::cerr << "cyber-can-decode: " << counts.frames << " frames (" << counts.decoded << " decoded, "
+            << counts.undecodable << " undecodable, " << counts.other << " other), " << counts.malformed
+            << " malformed lines\n";
   if (args.strict && (counts.undecodable > 0 || counts.malformed > 0)) return 1;
   return 0;
 }

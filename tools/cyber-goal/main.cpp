@@ -90,24 +90,27 @@ int main(int argc, char** argv) {
     return kExitLcm;
   }
   Watcher watcher;
-  watcher.request_id = args.request_id >= 0
-                           ? args.request_id
-                           : std::chrono::duration_cast<std::chrono::microseconds>(
-                                 std::chrono::system_clock::now().time_since_epoch())
-                                     .count() %
-                                 1'000'000'000;
+  watcher.request_id =
+      args.request_id >= 0
+          ? args.request_id
+          : std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+                    .count() %
+                1'000'000'000;
   lcm.subscribe("ARM_DAEMON_STATUS", &Watcher::onDaemonStatus, &watcher);
   lcm.subscribe("ARM_PLAN_STATUS", &Watcher::onStatus, &watcher);
   lcm.subscribe("ARM_TRAJECTORY", &Watcher::onTrajectory, &watcher);
 
-  const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
+  const auto deadline =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(args.timeout_s));
   if (args.wait_for_daemon && !handleUntil(lcm, deadline, [&] { return watcher.daemon_heard; })) {
     std::cerr << "cyber-goal: no cyber-plannerd heard on ARM_DAEMON_STATUS within " << args.timeout_s << " s\n";
     return kExitTimeout;
   }
 
   cyberplanner::arm_goal_t goal{};
-  goal.utime = std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch()).count();
+  goal.utime =
+      std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count();
   goal.request_id = watcher.request_id;
   goal.elevator_m = args.elevator_m;
   goal.arm_rad = args.arm_rad;

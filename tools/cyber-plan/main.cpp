@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
   std::string error;
   config::Config config;
   try {
-    config = args->config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args->config_path);
+    config =
+        args->config_path.empty() ? config::loadEmbeddedDefaultConfig() : config::loadConfigFile(args->config_path);
   } catch (const config::ConfigError& e) {
     return fail(2, e.what());
   }
@@ -79,8 +80,8 @@ int main(int argc, char** argv) {
   } else {
     const auto& p = plan.value();
     std::printf("planned %s -> %s: %.3f s, min clearance %.4f m, plan %.2f ms (search %.2f, smooth %.2f, topp %.2f)\n",
-                poseText(args->from).c_str(), poseText(args->to).c_str(), p.trajectory->duration_s(),
-                p.min_clearance_m, p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
+                poseText(args->from).c_str(), poseText(args->to).c_str(), p.trajectory->duration_s(), p.min_clearance_m,
+                p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
   }
   return 0;
 }

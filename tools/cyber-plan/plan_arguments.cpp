@@ -26,7 +26,8 @@ namespace {
 cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
   return [into, what](const std::string& text) -> std::string {
     const auto pair = cli::parseNumberPair(text);
-    if (!pair) return std::string("expects ") + what + " as two finite numbers separated by a comma, got '" + text + "'";
+    if (!pair)
+      return std::string("expects ") + what + " as two finite numbers separated by a comma, got '" + text + "'";
     *into = planner::JointVector((*pair)[0], (*pair)[1]);
     return "";
   };
@@ -61,7 +62,8 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
     out.help = true;
     return out;
   }
-  if (!have_from || !have_to) return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
+  if (!have_from || !have_to)
+    return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
   return out;
 }
 

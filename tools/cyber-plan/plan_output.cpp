@@ -25,9 +25,10 @@ bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string
     *error = path + ": cannot open for writing";
     return false;
   }
-  std::fputs("t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,"
-             "elevator_amps,arm_amps\n",
-             file.get());
+  std::fputs(
+      "t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,"
+      "elevator_amps,arm_amps\n",
+      file.get());
   forEachSample(trajectory, [&](const planner::TrajectorySample& s) {
     std::fprintf(file.get(), "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.t, s.q[0], s.qdot[0],
                  s.qddot[0], s.q[1], s.qdot[1], s.qddot[1], s.volts[0], s.volts[1], s.amps[0], s.amps[1]);

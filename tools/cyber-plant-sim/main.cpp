@@ -2,10 +2,10 @@
 // interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
 // options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
 
+#include <sys/stat.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <sched.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -64,9 +64,8 @@ int main(int argc, char** argv) {
   }
   const auto& robot = config.robot;
   if (!robot.withinLimits(options.initial_q)) {
-    return usageError("--initial " + std::to_string(options.initial_q[0]) + "," +
-                      std::to_string(options.initial_q[1]) + " is outside the joint ranges of " +
-                      robot.name);
+    return usageError("--initial " + std::to_string(options.initial_q[0]) + "," + std::to_string(options.initial_q[1]) +
+                      " is outside the joint ranges of " + robot.name);
   }
   const auto& devices = config.daemon.devices;
   if (!validDevice(devices.elevator) || !validDevice(devices.arm) || devices.elevator == devices.arm) {
@@ -83,8 +82,7 @@ int main(int argc, char** argv) {
   auto& sim = setup.simulation;
   sim.plants[cyber::planner::kElevator] =
       cyber::plant::JointPlant::fromDrive(robot.elevator_drive, robot.elevator_range_m);
-  sim.plants[cyber::planner::kArm] =
-      cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.arm_range_rad);
+  sim.plants[cyber::planner::kArm] = cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.arm_range_rad);
   sim.gains[cyber::planner::kElevator] = options.elevator_gains;
   sim.gains[cyber::planner::kArm] = options.arm_gains;
   sim.setpoint_timeout_s = options.setpoint_timeout_s;
@@ -92,14 +90,12 @@ int main(int argc, char** argv) {
   // Only the two setpoint ids reach us; the kernel drops everything else.
   cyber::can::SocketOptions socket_options;
   socket_options.filters = std::vector<cyber::can::IdFilter>{
-      cyber::can::IdFilter::exact(cyber::can::teamFrameId(cyber::can::kSetpointApiClass,
-                                                          cyber::can::kSetpointApiIndex,
-                                                          setup.elevator_device),
-                                  true),
-      cyber::can::IdFilter::exact(cyber::can::teamFrameId(cyber::can::kSetpointApiClass,
-                                                          cyber::can::kSetpointApiIndex,
-                                                          setup.arm_device),
-                                  true)};
+      cyber::can::IdFilter::exact(
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.elevator_device),
+          true),
+      cyber::can::IdFilter::exact(
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.arm_device),
+          true)};
   auto socket = cyber::can::CanSocket::open(setup.can_interface, socket_options);
   if (!socket) {
     std::cerr << "cyber-plant-sim: " << socket.error().message << "\n";

@@ -2,9 +2,9 @@
 
 #include <array>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdarg>
-#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <optional>
@@ -113,8 +113,8 @@ class Runner {
   std::array<bool, kJointCount> joint_moving_{};  // the joint's latest setpoint has a velocity
   bool moving_ = false;
   double last_moving_frame_s_ = -1.0;  // real time of the latest setpoint with a velocity
-  int motions_ = 0;  // motions started so far
-  bool link_trouble_ = false;  // a read or write failed since the last success: report once
+  int motions_ = 0;                    // motions started so far
+  bool link_trouble_ = false;          // a read or write failed since the last success: report once
 };
 
 void Runner::say(const char* format, ...) const {
@@ -156,8 +156,8 @@ int Runner::run() {
   state_timer_.startPeriodic(toNs(start_mono_s_), toNs(1.0 / setup_.options.state_rate_hz));
   armFaultTimer();
   say("running on %s: elevator device %u, arm device %u, ARM_STATE on %s at %g Hz, heartbeat %s",
-      setup_.can_interface.c_str(), setup_.elevator_device, setup_.arm_device,
-      setup_.state_channel.c_str(), setup_.options.state_rate_hz, switches_.heartbeat ? "on" : "off");
+      setup_.can_interface.c_str(), setup_.elevator_device, setup_.arm_device, setup_.state_channel.c_str(),
+      setup_.options.state_rate_hz, switches_.heartbeat ? "on" : "off");
 
   while (!switches_.exit) {
     std::uint64_t tags[8];
@@ -173,7 +173,10 @@ int Runner::run() {
         case kHeartbeatTag: onHeartbeatTimer(); break;
         case kStateTag: onStateTimer(); break;
         case kFaultTag: onFaultTimer(); break;
-        case kSignalTag: say("stopping on a signal"); switches_.exit = true; break;
+        case kSignalTag:
+          say("stopping on a signal");
+          switches_.exit = true;
+          break;
         case kControlTag: onControlReadable(); break;
         default: break;
       }
@@ -212,8 +215,8 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
   if (!decoded) {
     const auto id = can::unpackFrcId(frame.id);
     const bool ours = frame.extended && id.device_type == can::kDeviceTypeMiscellaneous &&
-                      id.manufacturer == can::kManufacturerTeamUse &&
-                      id.api_class == can::kSetpointApiClass && id.api_index == can::kSetpointApiIndex;
+                      id.manufacturer == can::kManufacturerTeamUse && id.api_class == can::kSetpointApiClass &&
+                      id.api_index == can::kSetpointApiIndex;
     ++(ours ? counters_.malformed : counters_.other_frames);
     return;
   }
@@ -361,17 +364,15 @@ void Runner::printSummary() const {
   say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
       "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
-      q[planner::kElevator], q[planner::kArm], counters_.setpoints[0], counters_.setpoints[1],
-      counters_.sequence_gaps, counters_.malformed, counters_.other_frames, counters_.bus_errors,
-      counters_.read_failures, counters_.heartbeats_sent, counters_.disables_sent,
-      counters_.write_failures, counters_.states_published, counters_.publish_failures, motions_,
-      clock_.freezes(), clock_.frozenSeconds());
+      q[planner::kElevator], q[planner::kArm], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps,
+      counters_.malformed, counters_.other_frames, counters_.bus_errors, counters_.read_failures,
+      counters_.heartbeats_sent, counters_.disables_sent, counters_.write_failures, counters_.states_published,
+      counters_.publish_failures, motions_, clock_.freezes(), clock_.frozenSeconds());
 }
 
 }  // namespace
 
-int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log,
-                 int control_fd) {
+int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log, int control_fd) {
   // The descriptors are made at start-up and throw only then (cyber/posix/fd.hpp).
   try {
     Runner runner(setup, std::move(socket), lcm, log, control_fd);

@@ -27,21 +27,20 @@ struct RunnerSetup {
 
 struct RunCounters {
   long setpoints[kJointCount] = {0, 0};
-  long sequence_gaps = 0;       // setpoint sequence bytes that did not follow the previous one
-  long malformed = 0;           // our setpoint ids with a payload the codec rejects
-  long other_frames = 0;        // anything else that passed the receive filter
-  long bus_errors = 0;          // controller error frames
-  long read_failures = 0;       // socket read errors (e.g. ENETDOWN while the link is down)
+  long sequence_gaps = 0;  // setpoint sequence bytes that did not follow the previous one
+  long malformed = 0;      // our setpoint ids with a payload the codec rejects
+  long other_frames = 0;   // anything else that passed the receive filter
+  long bus_errors = 0;     // controller error frames
+  long read_failures = 0;  // socket read errors (e.g. ENETDOWN while the link is down)
   long heartbeats_sent = 0;
   long disables_sent = 0;
-  long write_failures = 0;      // heartbeat / disable writes that failed
+  long write_failures = 0;  // heartbeat / disable writes that failed
   long states_published = 0;
   long publish_failures = 0;
 };
 
 // Runs until SIGINT/SIGTERM, --duration or an exit fault. control_fd: the --control FIFO opened
 // read-write and non-blocking, or -1. Returns the process exit status.
-int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log,
-                 int control_fd);
+int runSimulator(const RunnerSetup& setup, can::CanSocket socket, lcm::LCM& lcm, std::FILE* log, int control_fd);
 
 }  // namespace cyber::plant

@@ -21,8 +21,8 @@ int fail(const std::string& message) {
 
 // The robot at the named poses of its held-piece set, or at a few poses spread over the joint
 // ranges when the description names none.
-int previewConfig(const cyber::config::Config& config, int scene, cyber::planner::HeldPieces pieces, const std::string& source,
-                  const std::string& out) {
+int previewConfig(const cyber::config::Config& config, int scene, cyber::planner::HeldPieces pieces,
+                  const std::string& source, const std::string& out) {
   using namespace cyber;
   const planner::RobotModel& robot = config.robot;
   std::vector<plot::NamedJointPose> poses;
@@ -43,8 +43,10 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
       poses.push_back({name, q});
     }
   }
-  const std::string which = named ? "poses of [poses." + set_name + "]" : "no [poses] for these pieces: poses across the ranges";
-  const std::string title = robot.name + " (" + source + "): " + which + ", scene " + robot.scenes[static_cast<size_t>(scene)].name;
+  const std::string which =
+      named ? "poses of [poses." + set_name + "]" : "no [poses] for these pieces: poses across the ranges";
+  const std::string title =
+      robot.name + " (" + source + "): " + which + ", scene " + robot.scenes[static_cast<size_t>(scene)].name;
   std::string error;
   if (!plot::renderConfigPreviewPng(robot, scene, pieces, poses, title, out, &error)) return fail(error);
   return 0;
@@ -85,19 +87,22 @@ int main(int argc, char** argv) {
     if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
     char title[96];
     std::snprintf(title, sizeof title, "%s at %.3f m, %.3f rad", robot.name.c_str(), q[0], q[1]);
-    if (!plot::renderWorldPng(robot, scene, pieces, q, title + pieces_label + scene_label, out, &error)) return fail(error);
+    if (!plot::renderWorldPng(robot, scene, pieces, q, title + pieces_label + scene_label, out, &error))
+      return fail(error);
     return 0;
   }
 
   plot::TrajectoryPlotData data;
-  const bool ok = csv.empty() ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
-                              : tools::readPlanCsv(csv, data, &error);
+  const bool ok = csv.empty()
+                      ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
+                      : tools::readPlanCsv(csv, data, &error);
   if (!ok) return fail(error);
   if (data.title.empty()) data.title = "trajectory " + csv;
   data.title += pieces_label;
   if (args.world) {
     const plot::Move move = plot::moveOf(data);
-    if (!plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out, &error)) return fail(error);
+    if (!plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out, &error))
+      return fail(error);
     if (!args.animation_path.empty() &&
         !plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path, &error)) {
       return fail(error);

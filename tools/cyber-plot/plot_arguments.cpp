@@ -60,10 +60,12 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
     return out;
   }
   if (out.out_path.empty()) return cli::ArgumentError{"missing --out FILE.png"};
-  if (!out.world && (!out.animation_path.empty() || out.at)) return cli::ArgumentError{"--animation and --at need --world"};
+  if (!out.world && (!out.animation_path.empty() || out.at))
+    return cli::ArgumentError{"--animation and --at need --world"};
   const int sources = (out.csv_path.empty() ? 0 : 1) + (out.log_path.empty() ? 0 : 1) + (out.at ? 1 : 0);
   if (!out.preview() && sources != 1) {
-    return cli::ArgumentError{out.world ? "give exactly one of --at, --csv and --lcm-log" : "give exactly one of --csv and --lcm-log"};
+    return cli::ArgumentError{out.world ? "give exactly one of --at, --csv and --lcm-log"
+                                        : "give exactly one of --csv and --lcm-log"};
   }
   if (out.at && !out.animation_path.empty()) {
     return cli::ArgumentError{"--animation needs a trajectory (--csv or --lcm-log), not --at"};

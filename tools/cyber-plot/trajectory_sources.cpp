@@ -35,8 +35,8 @@ bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::s
   const std::vector<std::string> header = split(line);
   std::map<std::string, size_t> column;
   for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-  const char* needed[] = {"t", "elevator_m", "elevator_mps", "arm_rad", "arm_radps",
-                          "elevator_volts", "arm_volts", "elevator_amps", "arm_amps"};
+  const char* needed[] = {"t",         "elevator_m",    "elevator_mps", "arm_rad", "arm_radps", "elevator_volts",
+                          "arm_volts", "elevator_amps", "arm_amps"};
   for (const char* name : needed) {
     if (!column.contains(name)) {
       *error = path + ": no column \"" + name + "\" (expected cyber-plan --csv output)";

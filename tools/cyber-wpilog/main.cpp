@@ -24,7 +24,8 @@ std::string enclosed(const char* open, const std::string& middle, const char* cl
   return out;
 }
 
-std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry& entry, const cyber::wpilog::Record& r) {
+std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry& entry,
+                      const cyber::wpilog::Record& r) {
   using namespace cyber::wpilog;
   const auto p = log.payload(r);
   char buf[64];
@@ -35,7 +36,8 @@ std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry&
   if (entry.type == "int64" && asInt64(p)) return std::to_string(*asInt64(p));
   if (entry.type == "boolean" && asBoolean(p)) return *asBoolean(p) ? "true" : "false";
   if (entry.type == "string" || entry.type == "json") return enclosed("\"", asString(p), "\"");
-  if (entry.type == "double[]" && asDoubleArray(p)) return enclosed("[", std::to_string(asDoubleArray(p)->size()), " doubles]");
+  if (entry.type == "double[]" && asDoubleArray(p))
+    return enclosed("[", std::to_string(asDoubleArray(p)->size()), " doubles]");
   return enclosed("(", std::to_string(p.size()), " bytes)");
 }
 
@@ -50,8 +52,8 @@ int list(const std::string& path) {
     ++count[r.entry];
     last[r.entry] = &r;
   }
-  std::printf("%s: WPILOG %d.%d, \"%s\", %zu entries, %zu records\n", path.c_str(), log.version >> 8, log.version & 0xff,
-              log.extra_header.c_str(), log.entries.size(), log.records.size());
+  std::printf("%s: WPILOG %d.%d, \"%s\", %zu entries, %zu records\n", path.c_str(), log.version >> 8,
+              log.version & 0xff, log.extra_header.c_str(), log.entries.size(), log.records.size());
   int undecodable = 0;
   for (size_t i = 0; i < log.entries.size(); ++i) {
     const Entry& e = log.entries[i];
@@ -59,7 +61,8 @@ int list(const std::string& path) {
     std::printf("%s\t%s\t%zu\t%s\n", e.name.c_str(), e.type.c_str(), count[i],
                 last[i] != nullptr ? lastValue(log, e, *last[i]).c_str() : "");
   }
-  if (undecodable > 0) return fail(path + ": " + std::to_string(undecodable) + " records do not decode as their entry's type");
+  if (undecodable > 0)
+    return fail(path + ": " + std::to_string(undecodable) + " records do not decode as their entry's type");
   return 0;
 }
 
@@ -85,7 +88,8 @@ int main(int argc, char** argv) {
   wpilog::Writer writer;
   wpilog::ConvertStats stats;
   std::string error;
-  if (!wpilog::convertLcmLog(args.lcm_log_path, config.daemon.channels, wpilog::mechanismGeometry(config.robot), &writer, &stats, &error) ||
+  if (!wpilog::convertLcmLog(args.lcm_log_path, config.daemon.channels, wpilog::mechanismGeometry(config.robot),
+                             &writer, &stats, &error) ||
       !writer.writeFile(args.wpilog_path, &error)) {
     return fail(error);
   }

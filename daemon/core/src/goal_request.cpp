@@ -41,10 +41,10 @@ bool isSceneName(const std::string& name) {
 planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
   using planner::PlanStatus;
   if (!isSceneName(goal.scene_name)) {
-    return planner::Result<ValidGoal>::failure(
-        PlanStatus::kInvalidInput, "scene_name is not a name (" + std::to_string(goal.scene_name.size()) +
-                                       " bytes; at most " + std::to_string(kMaxSceneNameLength) +
-                                       " printable ASCII characters)");
+    return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
+                                               "scene_name is not a name (" + std::to_string(goal.scene_name.size()) +
+                                                   " bytes; at most " + std::to_string(kMaxSceneNameLength) +
+                                                   " printable ASCII characters)");
   }
   if (!std::isfinite(goal.elevator_m)) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,

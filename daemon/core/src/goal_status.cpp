@@ -19,10 +19,8 @@ GoalStatus statusOfPlanError(planner::PlanStatus status) {
   switch (status) {
     case planner::PlanStatus::kInvalidInput:
     case planner::PlanStatus::kGoalOutOfRange:
-    case planner::PlanStatus::kGoalInCollision:
-      return GoalStatus::kRejected;
-    default:
-      return GoalStatus::kFailed;
+    case planner::PlanStatus::kGoalInCollision: return GoalStatus::kRejected;
+    default: return GoalStatus::kFailed;
   }
 }
 

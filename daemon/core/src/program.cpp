@@ -6,9 +6,7 @@ namespace cyber::daemon {
 
 namespace {
 
-MonoNs segmentEndNs(const Segment& segment) {
-  return segment.start_ns + secondsToNs(segment.source->durationS());
-}
+MonoNs segmentEndNs(const Segment& segment) { return segment.start_ns + secondsToNs(segment.source->durationS()); }
 
 }  // namespace
 
@@ -29,7 +27,9 @@ void Program::resetToHold(std::uint64_t epoch_value, const JointVector& q) {
   floating = false;
 }
 
-MonoNs Program::endNs() const { return count_ == 0 ? kNever : segmentEndNs(segments_[static_cast<size_t>(count_ - 1)]); }
+MonoNs Program::endNs() const {
+  return count_ == 0 ? kNever : segmentEndNs(segments_[static_cast<size_t>(count_ - 1)]);
+}
 
 JointVector Program::restPosition() const {
   if (count_ == 0) return rest_q;

@@ -25,8 +25,7 @@ int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int 
         link.broadcast_disable_ns = now;
         ++link.broadcast_disable_count;
         break;
-      default:
-        break;
+      default: break;
     }
   }
   return count;

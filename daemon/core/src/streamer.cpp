@@ -130,7 +130,7 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   if (!verdict.open()) {
     if (running_) stop(now, verdict.reason, out);
     if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
-    out.mode = verdict.reason == GateReason::kFault       ? StreamMode::kFault
+    out.mode = verdict.reason == GateReason::kFault    ? StreamMode::kFault
                : isRobotDisabledReason(verdict.reason) ? StreamMode::kRobotDisabled
                                                        : StreamMode::kNoState;
     out.request_id = last_request_;

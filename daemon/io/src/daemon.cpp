@@ -18,8 +18,8 @@ namespace cyber::daemon::io {
 
 namespace {
 
-constexpr double kShutdownHoldS = 0.05;     // hold setpoints streamed before exiting
-constexpr double kWorkerJoinS = 0.3;        // a plan still running after this is abandoned
+constexpr double kShutdownHoldS = 0.05;  // hold setpoints streamed before exiting
+constexpr double kWorkerJoinS = 0.3;     // a plan still running after this is abandoned
 constexpr int kMaxMessagesPerWake = 64;
 
 GateSettings gateOf(const DaemonOptions& options) {
@@ -153,7 +153,8 @@ Daemon::~Daemon() {
 int Daemon::run() {
   const auto& s = options_.settings;
   spdlog::info("cyber-plannerd: robot '{}', LCM '{}', CAN {}, {} Hz streaming, robot-enabled gate {}", robot_.name,
-               s.lcm_url, options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'",
+               s.lcm_url,
+               options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'",
                s.stream_rate_hz, gate_.require_robot_enabled ? "on" : "off");
   // Opens the service manager's socket here, not on the streaming thread (no-op without systemd).
   notify::notifyStatus("starting");
@@ -170,8 +171,9 @@ int Daemon::run() {
   if (state_priority > 0) {
     spdlog::info("ARM_STATE is received at SCHED_FIFO priority {}", state_priority);
   } else {
-    spdlog::info("real-time priority refused: ARM_STATE is received at normal priority, so a busy machine can "
-                 "make it look stale (docs/operations.md, \"Real-time priority\")");
+    spdlog::info(
+        "real-time priority refused: ARM_STATE is received at normal priority, so a busy machine can "
+        "make it look stale (docs/operations.md, \"Real-time priority\")");
   }
   const MonoNs now = monotonicNow();
   status_timer_.startPeriodic(now + periodOf(s.status_rate_hz), periodOf(s.status_rate_hz));

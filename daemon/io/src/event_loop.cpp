@@ -61,7 +61,7 @@ void EventLoop::run() {
     }
     for (int i = 0; i < n && !stopping_; ++i) {
       auto it = handlers_.find(events[static_cast<size_t>(i)].data.fd);
-      if (it == handlers_.end()) continue;  // removed by an earlier handler of this batch
+      if (it == handlers_.end()) continue;                  // removed by an earlier handler of this batch
       const std::shared_ptr<Handler> handler = it->second;  // a handler may remove itself
       (*handler)();
     }

@@ -39,8 +39,8 @@ void LcmInput::onUndecodableState(const std::string& channel, int size) {
 }
 
 void LcmInput::warnUndecodable(ThrottledWarning& warning, const std::string& channel, int size) {
-  warning.warn(monotonicNow(), "undecodable message on {} ({} bytes: wrong type, fingerprint or corrupt)",
-                            channel, size);
+  warning.warn(monotonicNow(), "undecodable message on {} ({} bytes: wrong type, fingerprint or corrupt)", channel,
+               size);
 }
 
 }  // namespace cyber::daemon::io

@@ -15,7 +15,9 @@ PlanningWorker::~PlanningWorker() {
   }
 }
 
-void PlanningWorker::start() { thread_ = std::thread([this] { run(); }); }
+void PlanningWorker::start() {
+  thread_ = std::thread([this] { run(); });
+}
 
 void PlanningWorker::submit(const PlanJob& job) {
   {

@@ -22,7 +22,9 @@ StreamerThread::StreamerThread(StreamerChannels& channels, Streamer& streamer, F
 
 StreamerThread::~StreamerThread() { stop(); }
 
-void StreamerThread::start() { thread_ = std::thread([this] { run(); }); }
+void StreamerThread::start() {
+  thread_ = std::thread([this] { run(); });
+}
 
 void StreamerThread::stop() {
   quit_.store(true);

@@ -32,8 +32,7 @@ Notifier::Notifier(std::string_view socket_name) {
   address_.sun_family = AF_UNIX;
   std::memcpy(address_.sun_path, socket_name.data(), socket_name.size());
   if (is_abstract) address_.sun_path[0] = '\0';
-  address_length_ = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + socket_name.size() +
-                                            (is_path ? 1 : 0));
+  address_length_ = static_cast<socklen_t>(offsetof(sockaddr_un, sun_path) + socket_name.size() + (is_path ? 1 : 0));
   fd_ = ::socket(AF_UNIX, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
 }
 
@@ -66,8 +65,7 @@ SendResult Notifier::sendRaw(std::string_view datagram) {
   const auto* target = reinterpret_cast<const sockaddr*>(&address_);
   ssize_t written = -1;
   do {
-    written = ::sendto(fd_, datagram.data(), datagram.size(), MSG_DONTWAIT | MSG_NOSIGNAL, target,
-                       address_length_);
+    written = ::sendto(fd_, datagram.data(), datagram.size(), MSG_DONTWAIT | MSG_NOSIGNAL, target, address_length_);
   } while (written < 0 && errno == EINTR);
   return written == static_cast<ssize_t>(datagram.size()) ? SendResult::sent : SendResult::failed;
 }
@@ -76,9 +74,7 @@ SendResult Notifier::ready() { return sendRaw("READY=1"); }
 SendResult Notifier::watchdog() { return sendRaw("WATCHDOG=1"); }
 SendResult Notifier::stopping() { return sendRaw("STOPPING=1"); }
 SendResult Notifier::status(std::string_view text) { return sendWithStatus("STATUS=", text); }
-SendResult Notifier::readyWithStatus(std::string_view text) {
-  return sendWithStatus("READY=1\nSTATUS=", text);
-}
+SendResult Notifier::readyWithStatus(std::string_view text) { return sendWithStatus("READY=1\nSTATUS=", text); }
 
 SendResult Notifier::sendWithStatus(std::string_view prefix, std::string_view text) {
   if (fd_ < 0) return SendResult::disabled;
@@ -86,13 +82,12 @@ SendResult Notifier::sendWithStatus(std::string_view prefix, std::string_view te
   static_assert(sizeof("READY=1\nSTATUS=") <= 32);
   std::memcpy(buffer, prefix.data(), prefix.size());
   const std::size_t text_bytes = std::min(text.size(), kMaxStatusBytes);
-  std::replace_copy(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text_bytes),
-                    buffer + prefix.size(), '\n', ' ');
+  std::replace_copy(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(text_bytes), buffer + prefix.size(), '\n',
+                    ' ');
   return sendRaw(std::string_view(buffer, prefix.size() + text_bytes));
 }
 
-std::chrono::microseconds watchdogIntervalFrom(const char* watchdog_usec, const char* watchdog_pid,
-                                               long own_pid) {
+std::chrono::microseconds watchdogIntervalFrom(const char* watchdog_usec, const char* watchdog_pid, long own_pid) {
   const auto parse = [](const char* text, long long& value) {
     const char* end = text + std::strlen(text);
     const auto [ptr, error] = std::from_chars(text, end, value);
@@ -109,8 +104,7 @@ std::chrono::microseconds watchdogIntervalFrom(const char* watchdog_usec, const 
 }
 
 std::chrono::microseconds watchdogInterval() {
-  return watchdogIntervalFrom(std::getenv("WATCHDOG_USEC"), std::getenv("WATCHDOG_PID"),
-                              static_cast<long>(::getpid()));
+  return watchdogIntervalFrom(std::getenv("WATCHDOG_USEC"), std::getenv("WATCHDOG_PID"), static_cast<long>(::getpid()));
 }
 
 namespace {
@@ -124,8 +118,6 @@ SendResult notifyReady() { return processNotifier().ready(); }
 SendResult notifyWatchdog() { return processNotifier().watchdog(); }
 SendResult notifyStopping() { return processNotifier().stopping(); }
 SendResult notifyStatus(std::string_view text) { return processNotifier().status(text); }
-SendResult notifyReadyWithStatus(std::string_view text) {
-  return processNotifier().readyWithStatus(text);
-}
+SendResult notifyReadyWithStatus(std::string_view text) { return processNotifier().readyWithStatus(text); }
 
 }  // namespace cyber::notify

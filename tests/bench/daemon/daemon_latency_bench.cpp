@@ -6,9 +6,9 @@
 // The real daemon (event loop, worker and streamer threads, real planner) on memq://, no CAN socket.
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <future>
 #include <mutex>
@@ -18,13 +18,13 @@
 
 #include <spdlog/spdlog.h>
 
+#include "bare_timer.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/daemon/io/daemon_probe.hpp"
 #include "cyber/daemon/motion_planner_service.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
 #include "cyberplanner/arm_state_t.hpp"
-#include "bare_timer.hpp"
 #include "public_moves.hpp"
 
 namespace {
@@ -34,8 +34,8 @@ using cyber::daemon::io::Daemon;
 using cyber::daemon::io::DaemonProbe;
 
 void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
-  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n",
-              label, static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
+  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n", label,
+              static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
               channels.jitter.percentileUs(0.99), channels.jitter.maxUs(),
               static_cast<long long>(channels.overruns.load()),
               channels.realtime_priority.load() > 0 ? "on" : "refused");
@@ -197,10 +197,11 @@ int main() {
       ++id;
     }
     const auto& latency = DaemonProbe::goalToSetpointLatency(rig.daemon());
-    std::printf("goal -> first setpoint, %lld public moves from rest (%d executed, %d not): median %.2f ms  p99 %.2f ms  "
-                "max %.2f ms\n",
-                static_cast<long long>(latency.count()), done, other, latency.percentileUs(0.5) * 1e-3,
-                latency.percentileUs(0.99) * 1e-3, latency.maxUs() * 1e-3);
+    std::printf(
+        "goal -> first setpoint, %lld public moves from rest (%d executed, %d not): median %.2f ms  p99 %.2f ms  "
+        "max %.2f ms\n",
+        static_cast<long long>(latency.count()), done, other, latency.percentileUs(0.5) * 1e-3,
+        latency.percentileUs(0.99) * 1e-3, latency.maxUs() * 1e-3);
     printJitter("stream jitter while moving:", DaemonProbe::channels(rig.daemon()));
   }
 

@@ -23,8 +23,7 @@ LogRecord parseOk(std::string_view line) {
 }
 
 TEST(CandumpLog, FormatsLikeCandump) {
-  LogRecord record{{1700000000, 123456}, "vcan0",
-                   extendedFrame(0x0A080040u, {1, 2, 3, 4, 5, 6, 7, 8})};
+  LogRecord record{{1700000000, 123456}, "vcan0", extendedFrame(0x0A080040u, {1, 2, 3, 4, 5, 6, 7, 8})};
   EXPECT_EQ(formatLogLine(record), "(1700000000.123456) vcan0 0A080040#0102030405060708");
 
   Frame standard;
@@ -48,8 +47,7 @@ TEST(CandumpLog, FormatsLikeCandump) {
   error.error = true;
   error.id = 0x40;  // CAN_ERR_BUSOFF
   error.dlc = 8;
-  EXPECT_EQ(formatLogLine(LogRecord{{1, 0}, "can0", error}),
-            "(0000000001.000000) can0 20000040#0000000000000000");
+  EXPECT_EQ(formatLogLine(LogRecord{{1, 0}, "can0", error}), "(0000000001.000000) can0 20000040#0000000000000000");
 }
 
 TEST(CandumpLog, ParsesCandumpLines) {
@@ -85,8 +83,7 @@ TEST(CandumpLog, RandomRecordsRoundTrip) {
   std::mt19937_64 rng(123);
   std::uniform_int_distribution<int> flavour(0, 3), dlc(0, 8), byte(0, 255), name_length(1, 15);
   std::uniform_int_distribution<std::uint64_t> seconds(0, 9999999999ull);
-  std::uniform_int_distribution<std::uint32_t> micros(0, 999999), eff(0, 0x1FFFFFFFu),
-      sff(0, 0x7FFu), letter(0, 25);
+  std::uniform_int_distribution<std::uint32_t> micros(0, 999999), eff(0, 0x1FFFFFFFu), sff(0, 0x7FFu), letter(0, 25);
   for (int i = 0; i < 5000; ++i) {
     LogRecord record;
     record.time = LogTime{seconds(rng), micros(rng)};
@@ -95,9 +92,18 @@ TEST(CandumpLog, RandomRecordsRoundTrip) {
     Frame& frame = record.frame;
     switch (flavour(rng)) {
       case 0: frame.id = sff(rng); break;
-      case 1: frame.id = eff(rng); frame.extended = true; break;
-      case 2: frame.id = sff(rng); frame.remote = true; break;
-      default: frame.id = eff(rng) & 0x1FFu; frame.error = true; break;
+      case 1:
+        frame.id = eff(rng);
+        frame.extended = true;
+        break;
+      case 2:
+        frame.id = sff(rng);
+        frame.remote = true;
+        break;
+      default:
+        frame.id = eff(rng) & 0x1FFu;
+        frame.error = true;
+        break;
     }
     frame.dlc = static_cast<std::uint8_t>(dlc(rng));
     if (!frame.remote) {
@@ -115,36 +121,36 @@ TEST(CandumpLog, RejectsMalformedLines) {
   const char* bad[] = {
       "",
       "   ",
-      "vcan0 123#00",                                 // no timestamp
-      "(1700000000.123456)",                          // nothing after the time
-      "(1700000000.123456) vcan0",                    // no frame
-      "1700000000.123456 vcan0 123#00",               // no parentheses
-      "(1700000000.12345) vcan0 123#00",              // 5 fraction digits
-      "(1700000000.1234567) vcan0 123#00",            // 7 fraction digits
-      "(17000x0000.123456) vcan0 123#00",             // non-digit in time
-      "(.123456) vcan0 123#00",                       // no seconds
-      "(1700000000.123456) vcan0 12#00",              // 2-digit id
-      "(1700000000.123456) vcan0 1234#00",            // 4-digit id
-      "(1700000000.123456) vcan0 800#00",             // standard id above 0x7FF
-      "(1700000000.123456) vcan0 4A080040#00",        // flag bit 0x40000000 set
-      "(1700000000.123456) vcan0 G23#00",             // non-hex id
-      "(1700000000.123456) vcan0 123",                // no '#'
-      "(1700000000.123456) vcan0 123#0",              // odd digit count
-      "(1700000000.123456) vcan0 123#0G",             // non-hex data
+      "vcan0 123#00",                                      // no timestamp
+      "(1700000000.123456)",                               // nothing after the time
+      "(1700000000.123456) vcan0",                         // no frame
+      "1700000000.123456 vcan0 123#00",                    // no parentheses
+      "(1700000000.12345) vcan0 123#00",                   // 5 fraction digits
+      "(1700000000.1234567) vcan0 123#00",                 // 7 fraction digits
+      "(17000x0000.123456) vcan0 123#00",                  // non-digit in time
+      "(.123456) vcan0 123#00",                            // no seconds
+      "(1700000000.123456) vcan0 12#00",                   // 2-digit id
+      "(1700000000.123456) vcan0 1234#00",                 // 4-digit id
+      "(1700000000.123456) vcan0 800#00",                  // standard id above 0x7FF
+      "(1700000000.123456) vcan0 4A080040#00",             // flag bit 0x40000000 set
+      "(1700000000.123456) vcan0 G23#00",                  // non-hex id
+      "(1700000000.123456) vcan0 123",                     // no '#'
+      "(1700000000.123456) vcan0 123#0",                   // odd digit count
+      "(1700000000.123456) vcan0 123#0G",                  // non-hex data
       "(1700000000.123456) vcan0 123#010203040506070809",  // 9 bytes
-      "(1700000000.123456) vcan0 123#.01",            // leading '.'
-      "(1700000000.123456) vcan0 123#01.",            // trailing '.'
-      "(1700000000.123456) vcan0 123#01..02",         // double '.'
-      "(1700000000.123456) vcan0 123##1020304",       // CAN FD
-      "(1700000000.123456) vcan0 123#R9",             // remote length 9
-      "(1700000000.123456) vcan0 123#R12",            // remote length two digits
-      "(1700000000.123456) vcan0 20000004#R",         // remote error frame
-      "(1700000000.123456) vcan0 123#00 X",           // junk after the frame
-      "(1700000000.123456) vcan0 123#00 T extra",     // junk after the direction
+      "(1700000000.123456) vcan0 123#.01",                 // leading '.'
+      "(1700000000.123456) vcan0 123#01.",                 // trailing '.'
+      "(1700000000.123456) vcan0 123#01..02",              // double '.'
+      "(1700000000.123456) vcan0 123##1020304",            // CAN FD
+      "(1700000000.123456) vcan0 123#R9",                  // remote length 9
+      "(1700000000.123456) vcan0 123#R12",                 // remote length two digits
+      "(1700000000.123456) vcan0 20000004#R",              // remote error frame
+      "(1700000000.123456) vcan0 123#00 X",                // junk after the frame
+      "(1700000000.123456) vcan0 123#00 T extra",          // junk after the direction
       "(1700000000.123456) averyveryverylongname 123#00",  // 21-character interface
-      "(1700000000.040000) c0#\n 09000000#\n",              // line break in the interface (fuzz reproducer)
-      "(1700000000.123456) vcan\r0 123#00",                 // control character in the interface
-      "(1700000000.123456) vcan\x7f 123#00",                // DEL in the interface
+      "(1700000000.040000) c0#\n 09000000#\n",             // line break in the interface (fuzz reproducer)
+      "(1700000000.123456) vcan\r0 123#00",                // control character in the interface
+      "(1700000000.123456) vcan\x7f 123#00",               // DEL in the interface
   };
   for (const char* line : bad) {
     const auto parsed = parseLogLine(line);

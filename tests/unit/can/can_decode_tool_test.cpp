@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "tool_run.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tool_run.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -21,8 +21,8 @@
 namespace cyber::can {
 namespace {
 
-using test::ToolRun;
 using test::readFile;
+using test::ToolRun;
 
 std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "cyber_can_decode_" + std::to_string(::getpid()) + "_" + name;
@@ -111,8 +111,7 @@ TEST(CanDecodeTool, TextOutput) {
   EXPECT_EQ(out[8].rfind("1700000000.080000 vcan0 undecodable status 0A080803#", 0), 0u) << out[8];
   EXPECT_NE(out[8].find("mode"), std::string::npos);
   EXPECT_NE(run.err.find("line 11: malformed"), std::string::npos) << run.err;
-  EXPECT_NE(run.err.find("9 frames (6 decoded, 2 undecodable, 1 other), 1 malformed lines"),
-            std::string::npos)
+  EXPECT_NE(run.err.find("9 frames (6 decoded, 2 undecodable, 1 other), 1 malformed lines"), std::string::npos)
       << run.err;
   std::remove(path.c_str());
 }
@@ -169,15 +168,13 @@ TEST(CanDecodeTool, RandomSetpointsDecodeToTheirQuantizedValues) {
     ASSERT_EQ(std::stod(fields[7]), sent[i].velocity) << out[i + 1];
     ASSERT_EQ(std::stod(fields[8]), sent[i].feedforward_volts) << out[i + 1];
   }
-  EXPECT_NE(run.err.find("200 frames (200 decoded, 0 undecodable, 0 other), 0 malformed lines"),
-            std::string::npos);
+  EXPECT_NE(run.err.find("200 frames (200 decoded, 0 undecodable, 0 other), 0 malformed lines"), std::string::npos);
   std::remove(path.c_str());
 }
 
 TEST(CanDecodeTool, JointDevicesFromOptions) {
-  const std::string path =
-      writeLog("devices.log", {record(0, encodeSetpoint(5, Setpoint{0.25, 0, 0, 1}).value()),
-                               record(1, encodeSetpoint(1, Setpoint{0.25, 0, 0, 1}).value())});
+  const std::string path = writeLog("devices.log", {record(0, encodeSetpoint(5, Setpoint{0.25, 0, 0, 1}).value()),
+                                                    record(1, encodeSetpoint(1, Setpoint{0.25, 0, 0, 1}).value())});
   const ToolRun run = runTool("--elevator-device 5 --arm-device 6 - < " + path);
   EXPECT_EQ(run.exit_code, 0);
   const auto out = lines(run.out);

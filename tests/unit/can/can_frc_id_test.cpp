@@ -25,8 +25,8 @@ TEST(FrcId, HeartbeatIdIsTheRoboRiosUniversalHeartbeat) {
 
 TEST(FrcId, RandomFieldsRoundTrip) {
   std::mt19937 rng(20250101);
-  std::uniform_int_distribution<int> type(0, 31), manufacturer(0, 255), api_class(0, 63),
-      api_index(0, 15), device(0, 63);
+  std::uniform_int_distribution<int> type(0, 31), manufacturer(0, 255), api_class(0, 63), api_index(0, 15),
+      device(0, 63);
   for (int i = 0; i < 5000; ++i) {
     const FrcId id{static_cast<std::uint8_t>(type(rng)), static_cast<std::uint8_t>(manufacturer(rng)),
                    static_cast<std::uint8_t>(api_class(rng)), static_cast<std::uint8_t>(api_index(rng)),

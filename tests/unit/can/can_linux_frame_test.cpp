@@ -17,9 +17,18 @@ Frame randomFrame(std::mt19937& rng) {
   Frame frame;
   switch (flavour(rng)) {
     case 0: frame.id = sff(rng); break;
-    case 1: frame.id = eff(rng); frame.extended = true; break;
-    case 2: frame.id = sff(rng); frame.remote = true; break;
-    default: frame.id = eff(rng) & 0x1FFu; frame.error = true; break;
+    case 1:
+      frame.id = eff(rng);
+      frame.extended = true;
+      break;
+    case 2:
+      frame.id = sff(rng);
+      frame.remote = true;
+      break;
+    default:
+      frame.id = eff(rng) & 0x1FFu;
+      frame.error = true;
+      break;
   }
   frame.dlc = static_cast<std::uint8_t>(dlc(rng));
   if (!frame.remote) {

@@ -54,8 +54,7 @@ TEST(ProtocolExamples, ArmHoldSetpoint) {
 TEST(ProtocolExamples, DaemonStatus) {
   // Moving, request 1234, 850 ms left, no faults, sequence 42.
   const Frame frame =
-      encodeStatus(kDaemonDevice, Status{Mode::kMoving, requestIdLow16(1234),
-                                         saturateTimeRemainingMs(0.85), 0, 42})
+      encodeStatus(kDaemonDevice, Status{Mode::kMoving, requestIdLow16(1234), saturateTimeRemainingMs(0.85), 0, 42})
           .value();
   EXPECT_EQ(line(1700000000, 100000, frame), kStatusLine);
 }
@@ -66,9 +65,7 @@ TEST(ProtocolExamples, Heartbeat) {
   EXPECT_EQ(line(1700000000, 20000, frame), kHeartbeatLine);
 }
 
-TEST(ProtocolExamples, BroadcastDisable) {
-  EXPECT_EQ(line(1700000000, 40000, makeBroadcastDisable()), kDisableLine);
-}
+TEST(ProtocolExamples, BroadcastDisable) { EXPECT_EQ(line(1700000000, 40000, makeBroadcastDisable()), kDisableLine); }
 
 TEST(ProtocolExamples, ExamplesDecodeBack) {
   const auto elevator = decodeSetpoint(parseLogLine(kElevatorLine).value().frame);
@@ -94,8 +91,7 @@ TEST(ProtocolExamples, DocumentShowsExactlyTheseFrames) {
   std::stringstream text;
   text << file.rdbuf();
   const std::string doc = text.str();
-  for (const char* example :
-       {kElevatorLine, kArmLine, kHoldLine, kStatusLine, kHeartbeatLine, kDisableLine}) {
+  for (const char* example : {kElevatorLine, kArmLine, kHoldLine, kStatusLine, kHeartbeatLine, kDisableLine}) {
     EXPECT_NE(doc.find(example), std::string::npos) << "not in docs/can-protocol.md: " << example;
   }
   // The ids worked out in the document.

@@ -33,8 +33,7 @@ TEST(Heartbeat, EachBitFromTheMostSignificant) {
 
 TEST(Heartbeat, AllFlagCombinationsRoundTrip) {
   for (int bits = 0; bits < 32; ++bits) {
-    const Heartbeat in{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0,
-                       (bits & 16) != 0};
+    const Heartbeat in{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0, (bits & 16) != 0};
     const Frame frame = encodeHeartbeat(in);
     EXPECT_EQ(frame.id, kHeartbeatId);
     EXPECT_TRUE(frame.extended);
@@ -103,8 +102,8 @@ TEST(Classify, EachKind) {
   Frame short_setpoint = encodeSetpoint(1, Setpoint{}).value();
   short_setpoint.dlc = 7;
   EXPECT_EQ(classify(short_setpoint), FrameKind::kSetpoint);
-  for (auto kind : {FrameKind::kSetpoint, FrameKind::kStatus, FrameKind::kHeartbeat,
-                    FrameKind::kBroadcastDisable, FrameKind::kBusError, FrameKind::kOther}) {
+  for (auto kind : {FrameKind::kSetpoint, FrameKind::kStatus, FrameKind::kHeartbeat, FrameKind::kBroadcastDisable,
+                    FrameKind::kBusError, FrameKind::kOther}) {
     EXPECT_FALSE(toString(kind).empty());
   }
 }
@@ -117,8 +116,7 @@ TEST(BusError, DecodesErrorClasses) {
   EXPECT_EQ(decodeBusError(frame).value(), (BusError{true, false, 0, false, false, false}));
   frame.id = CAN_ERR_CRTL;
   frame.data[1] = CAN_ERR_CRTL_TX_PASSIVE;
-  EXPECT_EQ(decodeBusError(frame).value(),
-            (BusError{false, true, CAN_ERR_CRTL_TX_PASSIVE, false, false, false}));
+  EXPECT_EQ(decodeBusError(frame).value(), (BusError{false, true, CAN_ERR_CRTL_TX_PASSIVE, false, false, false}));
   frame.id = CAN_ERR_TX_TIMEOUT | CAN_ERR_RESTARTED;
   frame.data[1] = 0;
   EXPECT_EQ(decodeBusError(frame).value(), (BusError{false, false, 0, true, true, false}));

@@ -138,12 +138,10 @@ TEST(SetpointCodec, SequenceWrapsThroughAllValues) {
 
 TEST(SetpointCodec, RandomValuesRoundTripWithinHalfACount) {
   std::mt19937_64 rng(424242);
-  std::uniform_real_distribution<double> position(-83.886, 83.886), velocity(-32.76, 32.76),
-      volts(-32.76, 32.76);
+  std::uniform_real_distribution<double> position(-83.886, 83.886), velocity(-32.76, 32.76), volts(-32.76, 32.76);
   std::uniform_int_distribution<int> device(0, 63), sequence(0, 255);
   for (int i = 0; i < 20000; ++i) {
-    const Setpoint in{position(rng), velocity(rng), volts(rng),
-                      static_cast<std::uint8_t>(sequence(rng))};
+    const Setpoint in{position(rng), velocity(rng), volts(rng), static_cast<std::uint8_t>(sequence(rng))};
     const auto dev = static_cast<std::uint8_t>(device(rng));
     const auto frame = encodeSetpoint(dev, in);
     ASSERT_TRUE(frame.ok()) << i;
@@ -152,8 +150,7 @@ TEST(SetpointCodec, RandomValuesRoundTripWithinHalfACount) {
     ASSERT_EQ(out.value().device, dev);
     ASSERT_LE(std::fabs(out.value().setpoint.position - in.position), 0.5e-5 + 1e-12) << i;
     ASSERT_LE(std::fabs(out.value().setpoint.velocity - in.velocity), 0.5e-3 + 1e-12) << i;
-    ASSERT_LE(std::fabs(out.value().setpoint.feedforward_volts - in.feedforward_volts),
-              0.5e-3 + 1e-12) << i;
+    ASSERT_LE(std::fabs(out.value().setpoint.feedforward_volts - in.feedforward_volts), 0.5e-3 + 1e-12) << i;
     ASSERT_EQ(out.value().setpoint.sequence, in.sequence);
     // The decoded values are exactly representable on the wire: re-encoding gives the same bytes.
     ASSERT_EQ(encodeSetpoint(dev, out.value().setpoint).value(), frame.value()) << i;

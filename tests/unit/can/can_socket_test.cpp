@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include <fcntl.h>
 #include <sys/socket.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -34,8 +34,7 @@ TEST(CanSocket, OpenFailsCleanlyWithoutCanOrInterface) {
   } else {
     EXPECT_EQ(socket.error().kind, OpenError::kKernelWithoutCan);
     EXPECT_NE(socket.error().error_number, 0);
-    EXPECT_NE(socket.error().message.find("address family not supported"), std::string::npos)
-        << socket.error().message;
+    EXPECT_NE(socket.error().message.find("address family not supported"), std::string::npos) << socket.error().message;
     EXPECT_NE(socket.error().message.find("kernel without CAN"), std::string::npos);
   }
 }
@@ -154,8 +153,7 @@ TEST(IoResult, ErrnoMapping) {
 
 TEST(IdFilter, MaskSelectsAllDevicesOfOneApi) {
   // Setpoints from any device: everything but the 6 device bits must match.
-  const IdFilter all_setpoints{teamFrameId(kSetpointApiClass, kSetpointApiIndex, 0),
-                               kExtendedIdMask & ~0x3Fu, true};
+  const IdFilter all_setpoints{teamFrameId(kSetpointApiClass, kSetpointApiIndex, 0), kExtendedIdMask & ~0x3Fu, true};
   const can_filter kernel = toKernelFilter(all_setpoints);
   for (std::uint8_t device = 0; device <= kMaxDeviceNumber; ++device) {
     EXPECT_TRUE(kernelFilterMatches(kernel, encodeSetpoint(device, Setpoint{}).value()));

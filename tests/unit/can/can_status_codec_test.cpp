@@ -16,8 +16,7 @@ TEST(StatusCodec, HandComputedBytes) {
   EXPECT_EQ(frame.value().id, 0x0A080803u);
   EXPECT_TRUE(frame.value().extended);
   EXPECT_EQ(frame.value().dlc, 8);
-  EXPECT_EQ(frame.value().data,
-            (std::array<std::uint8_t, 8>{0x02, 0xD2, 0x04, 0x52, 0x03, 0x04, 0x00, 0x2A}));
+  EXPECT_EQ(frame.value().data, (std::array<std::uint8_t, 8>{0x02, 0xD2, 0x04, 0x52, 0x03, 0x04, 0x00, 0x2A}));
 }
 
 TEST(StatusCodec, ModeNumbersAreTheContract) {

@@ -91,7 +91,8 @@ TEST(LoadConfig, SetpointEchoFullRateIsOptionalAndOffByDefault) {
 
 TEST(LoadConfig, MaxPlanningBudgetIsOptionalWithADefaultOfOneSecond) {
   EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.max_planning_budget_s, 1.0);
-  const std::string with = mutated("planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 3.0\n");
+  const std::string with =
+      mutated("planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 3.0\n");
   EXPECT_EQ(parseConfig(with, "robot.toml").daemon.max_planning_budget_s, 3.0);
 }
 
@@ -155,14 +156,13 @@ const BadCase kBadCases[] = {
     {"TwoVertices", "l4_post = [[0.03, 1.637], [0.072, 1.637], [0.072, 1.81], [0.03, 1.81]]",
      "l4_post = [[0.03, 1.637], [0.072, 1.637]]", "obstacles.l4_post", "at least 3 vertices"},
     {"BadVertex", "[0.25, 0.1], [0.25, -0.1]", "[0.25, 0.1, 0.3], [0.25, -0.1]", "robot.arm[0][1]", "pair"},
-    {"EmptyRobot", "arm = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "arm = []",
-     "robot.arm", "at least one polygon"},
+    {"EmptyRobot", "arm = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "arm = []", "robot.arm",
+     "at least one polygon"},
     {"UnknownObstacleInScene", "obstacles = [\"drivetrain_keepout\", \"floor\"]",
      "obstacles = [\"drivetrain_keepout\", \"flor\"]", "scenes[1].obstacles", "unknown obstacle \"flor\""},
     {"UnknownMotor", "motor = \"kraken_x60_foc\"", "motor = \"neo\"", "drives.elevator.motor", "unknown motor"},
     {"WrongGravity", "gravity = \"cosine\"", "gravity = \"constant\"", "drives.arm.gravity", "cosine"},
-    {"CannotHold", "current_limit_amps = 60.0", "current_limit_amps = 0.5", "drives.arm.current_limit_amps",
-     "hold"},
+    {"CannotHold", "current_limit_amps = 60.0", "current_limit_amps = 0.5", "drives.arm.current_limit_amps", "hold"},
     {"BadLogLevel", "log_level = \"info\"", "log_level = \"loud\"", "daemon.log_level", "expected one of"},
     {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
     {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},

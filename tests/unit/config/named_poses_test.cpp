@@ -22,7 +22,8 @@ TEST(NamedPoses, ReferenceRobotNamesThePublicPoses) {
     const auto& expected = test::publicPoses(set.name);
     ASSERT_EQ(set.poses.size(), expected.size()) << set.name;
     for (const auto& pose : expected) {
-      const auto it = std::find_if(set.poses.begin(), set.poses.end(), [&](const NamedPose& p) { return p.name == pose.name; });
+      const auto it =
+          std::find_if(set.poses.begin(), set.poses.end(), [&](const NamedPose& p) { return p.name == pose.name; });
       ASSERT_NE(it, set.poses.end()) << set.name << ":" << pose.name;
       EXPECT_EQ(it->q, pose.q) << set.name << ":" << pose.name;
     }

@@ -273,7 +273,7 @@ TEST(GoalCoordinator, ASegmentNoTickSampledIsCancelledWhenASpliceAfterItsSuccess
   h.goal(1, kHigh);
   h.run(0.3);
   ASSERT_EQ(h.lastRecord().mode, StreamMode::kMoving);
-  h.setPlanTime(1e9);  // from here plans are delivered by hand, at times between ticks
+  h.setPlanTime(1e9);                            // from here plans are delivered by hand, at times between ticks
   const MonoNs tick = h.now - Harness::kPeriod;  // the last tick
   const MonoNs ms = 1'000'000;
   // Goal 2 at tick + 1 ms starts at tick + 31 ms; goal 3, waiting until 2 is adopted at tick + 5 ms,

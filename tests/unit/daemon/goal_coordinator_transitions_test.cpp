@@ -63,8 +63,8 @@ class Transitions : public ::testing::Test {
     const PlanJob job = *sink.job;
     sink.job.reset();
     PlannedMotion motion;
-    motion.trajectory = test::makeHermite(job.request.start, job.request.start_velocity, job.request.goal,
-                                          duration_s, robot);
+    motion.trajectory =
+        test::makeHermite(job.request.start, job.request.start_velocity, job.request.goal, duration_s, robot);
     coordinator.onPlanResult(job.job_id, planner::Result<PlannedMotion>(motion), 0.001, now);
   }
   void failed(planner::PlanStatus status) {
@@ -126,7 +126,7 @@ TEST_F(Transitions, StreamingToStoppedCancelsTheScheduledTheExecutingAndTheWaiti
   planned(10.0);
   adopt();
   streamed(StreamEventKind::kExecuting, 1);
-  goal(2, kLow);  // planning
+  goal(2, kLow);   // planning
   goal(3, kStow);  // waiting
   stopped(GateReason::kRobotDisabled);
   for (std::int64_t id : {1, 3}) {
@@ -178,7 +178,7 @@ TEST_F(Transitions, ShutDownCancelsEveryOpenGoalAndIsTerminal) {
   goal(1, kHigh);
   planned(10.0);
   adopt();
-  goal(2, kLow);  // planning
+  goal(2, kLow);   // planning
   goal(3, kStow);  // waiting
   coordinator.onShutdown(now);
   for (std::int64_t id : {1, 2, 3}) {
@@ -295,7 +295,7 @@ TEST_F(Transitions, AReplanWithANewerGoalWaitingIsSupersededInstead) {
   goal(1, kHigh);
   hold(kLow);
   goal(2, kStow);  // waits behind 1
-  planned();        // 1's base is gone: it would be re-planned, but 2 is newer
+  planned();       // 1's base is gone: it would be re-planned, but 2 is newer
   EXPECT_EQ(sink.last(1)->status, S::kCancelled);
   EXPECT_EQ(reason(1), "superseded by request 2");
   EXPECT_EQ(sink.jobs_started.size(), 1u);  // 2 starts on the next event or timer
@@ -315,8 +315,7 @@ TEST_F(Transitions, PostedToIdleOnRejectionReplansAndCountsOnlyLateOnes) {
   rejectPosted(RejectReason::kLate);
   EXPECT_EQ(coordinator.counters().plans_late, 1);
   ASSERT_EQ(sink.jobs_started.size(), 3u);
-  EXPECT_NE(sink.notes.back().find("the streamer did not take the plan (late"), std::string::npos)
-      << sink.notes.back();
+  EXPECT_NE(sink.notes.back().find("the streamer did not take the plan (late"), std::string::npos) << sink.notes.back();
   EXPECT_EQ(statuses(1), (std::vector<S>{S::kAccepted, S::kPlanning}));
 }
 

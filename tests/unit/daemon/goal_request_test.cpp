@@ -75,7 +75,8 @@ TEST(ValidateGoal, ResolvesSceneNamesAndRejectsUnknownOnes) {
 TEST(ValidateGoal, RefusesSceneNamesThatAreNotShortPrintableWordsWithoutEchoingThem) {
   const auto& robot = cyber::test::referenceModel();
   for (const std::string& name : {std::string("reef\0oon", 8), std::string("reef\n"), std::string(65, 'a'),
-                                  std::string("r\xc3\xa9" "ef")}) {
+                                  std::string("r\xc3\xa9"
+                                              "ef")}) {
     auto refused = validateGoal(goalAt(0.5, 1.0, name), robot);
     ASSERT_FALSE(refused) << name;
     EXPECT_EQ(refused.error().status, PlanStatus::kInvalidInput);

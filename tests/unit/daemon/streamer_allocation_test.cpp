@@ -54,7 +54,10 @@ struct BusSource final : RobotFrameSource {
     enabled.system_watchdog = true;
     switch (step++ % 3) {
       case 0: frame = can::encodeHeartbeat(enabled); return {};
-      case 1: frame = can::encodeHeartbeat(enabled); frame.dlc = 3; return {};
+      case 1:
+        frame = can::encodeHeartbeat(enabled);
+        frame.dlc = 3;
+        return {};
       default: return can::ioResultFromErrno(EAGAIN);
     }
   }
@@ -127,7 +130,7 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
       {now, Segment{test::makeHermite(at.setpoints.position, at.setpoints.velocity, c, 1.0, robot), 2, branch}, false,
        2},
       *splice, dropped));
-  run(300, splice, true, true);  // splice and run to the end, every CAN write failing
+  run(300, splice, true, true);    // splice and run to the end, every CAN write failing
   run(40, nullptr, false, false);  // heartbeat lost: stop
   run(10, nullptr, true, false);   // re-enabled: hold measured
   ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),

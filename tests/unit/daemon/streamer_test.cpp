@@ -79,7 +79,8 @@ class StreamerTest : public ::testing::Test {
   }
 
   // A program moving from the streamer's hold at `from` to `to`, based on its current epoch.
-  Program* moveFromRest(std::int64_t id, std::uint64_t program_id, JointVector from, JointVector to, double duration_s) {
+  Program* moveFromRest(std::int64_t id, std::uint64_t program_id, JointVector from, JointVector to,
+                        double duration_s) {
     auto* p = new Program();
     std::vector<std::int64_t> dropped;
     Program base = Program::holdAt(streamer.epoch(), from);

@@ -131,8 +131,8 @@ arm_trajectory_t randomTrajectory(Values& v, int samples) {
   m.duration_s = v.real();
   m.dt_s = v.real();
   m.num_samples = samples;
-  for (auto* column : {&m.t_s, &m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps,
-                       &m.elevator_volts, &m.arm_volts}) {
+  for (auto* column :
+       {&m.t_s, &m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
     column->resize(static_cast<std::size_t>(samples));
     for (double& x : *column) x = v.real();
   }
@@ -313,7 +313,8 @@ TEST(LcmTypes, GarbageBytesFailCleanly) {
 // Write a big-endian int32 at offset (LCM's wire order).
 void putInt32(std::vector<std::uint8_t>& bytes, std::size_t offset, std::int32_t value) {
   const auto bits = static_cast<std::uint32_t>(value);
-  for (int i = 0; i < 4; ++i) bytes[offset + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(bits >> (24 - 8 * i));
+  for (int i = 0; i < 4; ++i)
+    bytes[offset + static_cast<std::size_t>(i)] = static_cast<std::uint8_t>(bits >> (24 - 8 * i));
 }
 
 std::int32_t getInt32(const std::vector<std::uint8_t>& bytes, std::size_t offset) {
@@ -343,8 +344,7 @@ TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
   for (std::int32_t bad : {0, -1, -100, INT32_MIN, 6, 1000, INT32_MAX}) {
     putInt32(goal_bytes, d::kGoalSceneNameLengthAt, bad);
     arm_goal_t out{};
-    EXPECT_LT(cyber::lcmtypes::safeDecode(out, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0)
-        << bad;
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0) << bad;
   }
 
   arm_plan_status_t status{};
@@ -353,8 +353,7 @@ TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
   for (std::int32_t bad : {0, INT32_MIN, 3, INT32_MAX}) {
     putInt32(status_bytes, d::kPlanStatusReasonLengthAt, bad);
     arm_plan_status_t out{};
-    EXPECT_LT(cyber::lcmtypes::safeDecode(out, status_bytes.data(), static_cast<int>(status_bytes.size())), 0)
-        << bad;
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, status_bytes.data(), static_cast<int>(status_bytes.size())), 0) << bad;
   }
 
   auto trajectory_bytes = encode(randomTrajectory(v, 3));

@@ -5,11 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "allocation_counter.hpp"
-#include <poll.h>
 #include <sys/socket.h>
 #include <sys/un.h>
+#include <poll.h>
 #include <unistd.h>
+#include "allocation_counter.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -245,8 +245,7 @@ TEST(Notifier, ConcurrentSendersKeepDatagramsWhole) {
   ASSERT_EQ(static_cast<int>(received.size()), kThreads * kPerThread);
   for (int t = 0; t < kThreads; ++t) {
     for (int i = 0; i < kPerThread; ++i) {
-      EXPECT_TRUE(received.count("STATUS=thread " + std::to_string(t) + " message " +
-                                 std::to_string(i)));
+      EXPECT_TRUE(received.count("STATUS=thread " + std::to_string(t) + " message " + std::to_string(i)));
     }
   }
 }

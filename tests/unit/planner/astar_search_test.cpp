@@ -56,10 +56,12 @@ double dijkstraCost(const CSpaceGrid& grid, const std::vector<SearchEndpoint>& s
     for (int di = -1; di <= 1; ++di) {
       for (int dj = -1; dj <= 1; ++dj) {
         const int a = i + di, b = j + dj;
-        if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= grid.elevatorAxis().count || b >= grid.armAxis().count) continue;
+        if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= grid.elevatorAxis().count || b >= grid.armAxis().count)
+          continue;
         const int v = grid.cell(a, b);
         if (grid.blocked(v)) continue;
-        dist[static_cast<size_t>(v)] = std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + stepCost(grid, u, v));
+        dist[static_cast<size_t>(v)] =
+            std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + stepCost(grid, u, v));
       }
     }
   }
@@ -138,8 +140,9 @@ TEST(AstarSearch, BlockedOrMissingEndpointsFindNothing) {
   EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{{12, 0.0}}, grid.node(12)).has_value());
   EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{}, grid.node(12)).has_value());
   EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{{99, 0.0}}, grid.node(4)).has_value());
-  EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{12, 0.0}}, std::vector<SearchEndpoint>{{24, 0.0}},
-                           grid.node(24)).has_value());
+  EXPECT_FALSE(
+      astarSearch(grid, std::vector<SearchEndpoint>{{12, 0.0}}, std::vector<SearchEndpoint>{{24, 0.0}}, grid.node(24))
+          .has_value());
   // A source that is also a goal: a one-node path.
   const auto same = astarSearch(grid, sources, std::vector<SearchEndpoint>{{0, 0.5}}, grid.node(0));
   ASSERT_TRUE(same.has_value());
@@ -152,7 +155,8 @@ TEST(AstarSearch, WallWithoutGapIsUnreachable) {
   for (int j = 0; j < 7; ++j) blocked[static_cast<size_t>(3 * 7 + j)] = 1;
   const CSpaceGrid grid(GridAxis{0.0, 0.1, 7}, GridAxis{0.0, 0.1, 7}, blocked, JointVector(1.0, 1.0), SearchSettings{});
   EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{grid.cell(0, 0), 0.0}},
-                           std::vector<SearchEndpoint>{{grid.cell(6, 6), 0.0}}, grid.node(grid.cell(6, 6))).has_value());
+                           std::vector<SearchEndpoint>{{grid.cell(6, 6), 0.0}}, grid.node(grid.cell(6, 6)))
+                   .has_value());
 }
 
 TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {
@@ -171,7 +175,8 @@ TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {
       int u = -1;
       for (int c = 0; c < n; ++c) {
         if (!done[static_cast<size_t>(c)] && std::isfinite(dist[static_cast<size_t>(c)]) &&
-            (u < 0 || dist[static_cast<size_t>(c)] < dist[static_cast<size_t>(u)])) u = c;
+            (u < 0 || dist[static_cast<size_t>(c)] < dist[static_cast<size_t>(u)]))
+          u = c;
       }
       if (u < 0) break;
       done[static_cast<size_t>(u)] = true;
@@ -180,7 +185,8 @@ TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {
           const int a = grid.elevatorIndex(u) + di, b = grid.armIndex(u) + dj;
           if (a < 0 || b < 0 || a >= 12 || b >= 15) continue;
           const int v = grid.cell(a, b);
-          dist[static_cast<size_t>(v)] = std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + grid.stepLength(di, dj));
+          dist[static_cast<size_t>(v)] =
+              std::min(dist[static_cast<size_t>(v)], dist[static_cast<size_t>(u)] + grid.stepLength(di, dj));
         }
       }
     }

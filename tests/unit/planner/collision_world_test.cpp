@@ -40,8 +40,10 @@ double bruteForceDistance(const JointVector& q, HeldPieces pieces) {
   const Point2 pivot = model().rail.base_m + q[0] * Point2(std::cos(tilt), std::sin(tilt));
   std::vector<const ConvexPolygon*> robot;
   for (const auto& p : model().geometry.arm) robot.push_back(&p);
-  if (pieces.coral) for (const auto& p : model().geometry.coral) robot.push_back(&p);
-  if (pieces.algae) for (const auto& p : model().geometry.algae) robot.push_back(&p);
+  if (pieces.coral)
+    for (const auto& p : model().geometry.coral) robot.push_back(&p);
+  if (pieces.algae)
+    for (const auto& p : model().geometry.algae) robot.push_back(&p);
   double best = std::numeric_limits<double>::infinity();
   for (const ConvexPolygon* polygon : robot) {
     std::vector<Point2> world;
@@ -53,8 +55,9 @@ double bruteForceDistance(const JointVector& q, HeldPieces pieces) {
     for (const NamedPolygon& obstacle : scene().obstacles) {
       const std::vector<Point2>& ov = obstacle.polygon.vertices();
       const std::vector<Point2> on = normalsOf(ov);
-      const PairDistance d = signedDistance(WorldPolygonView{world.data(), world_normals.data(), static_cast<int>(world.size())},
-                                            WorldPolygonView{ov.data(), on.data(), static_cast<int>(ov.size())});
+      const PairDistance d =
+          signedDistance(WorldPolygonView{world.data(), world_normals.data(), static_cast<int>(world.size())},
+                         WorldPolygonView{ov.data(), on.data(), static_cast<int>(ov.size())});
       best = std::min(best, d.value);
     }
   }
@@ -174,8 +177,8 @@ TEST(CollisionWorld, GradientMatchesCentralDifferences) {
       ++checked;
       if (d.value < 0) ++penetrating;
       EXPECT_NEAR((d.gradient - central).norm(), 0.0, 1e-5 * std::max(1.0, central.norm()))
-          << "set " << set << " q " << q.transpose() << " d " << d.value << " grad " << d.gradient.transpose()
-          << " fd " << central.transpose();
+          << "set " << set << " q " << q.transpose() << " d " << d.value << " grad " << d.gradient.transpose() << " fd "
+          << central.transpose();
     }
   }
   EXPECT_GT(checked, 1400);

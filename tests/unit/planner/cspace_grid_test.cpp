@@ -68,10 +68,12 @@ TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
       const int a = any(rng);
       const int di = offset(rng), dj = offset(rng);
       const int i = grid.elevatorIndex(a) + di, j = grid.armIndex(a) + dj;
-      if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count) continue;
+      if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count)
+        continue;
       const int b = grid.cell(i, j);
       // Only steps near the obstacles say anything.
-      if (grid.blocked(a) || grid.blocked(b) || world.distance(grid.node(a)).value > model().clearance_m + 0.02) continue;
+      if (grid.blocked(a) || grid.blocked(b) || world.distance(grid.node(a)).value > model().clearance_m + 0.02)
+        continue;
       EXPECT_EQ(grid.stepFree(a, di, dj), grid.stepFree(b, -di, -dj));
       if (!grid.stepFree(a, di, dj)) continue;
       ++checked;
@@ -80,8 +82,8 @@ TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
         const JointVector q = grid.node(a) + (grid.node(b) - grid.node(a)) * (k / 40.0);
         const double d = world.distance(q).value;
         closest = std::min(closest, d);
-        ASSERT_GE(d, model().clearance_m) << "set " << set << " between " << grid.node(a).transpose() << " and "
-                                          << grid.node(b).transpose();
+        ASSERT_GE(d, model().clearance_m)
+            << "set " << set << " between " << grid.node(a).transpose() << " and " << grid.node(b).transpose();
       }
     }
     EXPECT_LT(closest, model().clearance_m + 0.002) << "the sampled steps came near the clearance";

@@ -15,7 +15,6 @@
 
 #include "allocation_counter.hpp"
 
-
 namespace cyber::planner {
 namespace {
 
@@ -181,7 +180,8 @@ TEST(CubicSplinePath, SegmentBoundsAreExact) {
     const auto bounds = path.value().segmentBounds(k);
     JointVector lo = JointVector::Constant(1e9), hi = JointVector::Constant(-1e9), speed = JointVector::Zero();
     for (int i = 0; i <= 2000; ++i) {
-      const double s = knots[static_cast<size_t>(k)] + (knots[static_cast<size_t>(k) + 1] - knots[static_cast<size_t>(k)]) * i / 2000.0;
+      const double s = knots[static_cast<size_t>(k)] +
+                       (knots[static_cast<size_t>(k) + 1] - knots[static_cast<size_t>(k)]) * i / 2000.0;
       const PathPoint p = path.value().at(s);
       lo = lo.cwiseMin(p.q);
       hi = hi.cwiseMax(p.q);

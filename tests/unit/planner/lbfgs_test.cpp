@@ -70,7 +70,8 @@ TEST(Lbfgs, SeededRandomSpdQuadraticsMatchTheClosedForm) {
     settings.gradient_tolerance = 1e-9;  // below the Armijo roundoff floor: needs the approximate test
     settings.max_iterations = 5000;
     const LbfgsResult r = minimizeLbfgs(f, x, settings);
-    ASSERT_EQ(r.status, LbfgsStatus::kConverged) << "n=" << n << " it=" << r.iterations << " g=" << r.gradient_norm << " f=" << r.cost;
+    ASSERT_EQ(r.status, LbfgsStatus::kConverged)
+        << "n=" << n << " it=" << r.iterations << " g=" << r.gradient_norm << " f=" << r.cost;
     // |x - x*| <= |g| / lambda_min(A) and lambda_min >= 0.1.
     EXPECT_LE((x - exact).norm(), 1e-9 / 0.1 * 1.01) << "n=" << n;
     EXPECT_NEAR(r.cost, -0.5 * b.dot(exact), 1e-12 * std::max(1.0, std::abs(b.dot(exact))));

@@ -64,7 +64,8 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
     stopped_first += plan.value().path_method.rfind("stop", 0) == 0 ? 1 : 0;
     // Where the jump of acceleration at the instant of rest falls badly between two samples, the
     // stop is made gentler by at most 1.5 sample steps (docs/moving-starts.md).
-    EXPECT_LE(trajectory.duration_s(), std::max(1.005 * stop_first_s, stop_first_s + 1.5 * kStepS)) << plan.value().path_method;
+    EXPECT_LE(trajectory.duration_s(), std::max(1.005 * stop_first_s, stop_first_s + 1.5 * kStepS))
+        << plan.value().path_method;
     over_bound += trajectory.duration_s() > 1.005 * stop_first_s ? 1 : 0;
     EXPECT_LT((trajectory.sample(0.0).q - request.start).norm(), 1e-9);
     EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);

@@ -65,7 +65,8 @@ TEST(SmoothingObjective, GradientMatchesCentralDifferences) {
       }
       const std::vector<JointVector> w = objective.waypoints(x);
       for (int k = fixed_head; k + 1 < 30; ++k) {
-        if (world.distance(w[static_cast<size_t>(k)]).value < kObstacleCutoffDecays * model().planner.smoothing.obstacle_decay_m) {
+        if (world.distance(w[static_cast<size_t>(k)]).value <
+            kObstacleCutoffDecays * model().planner.smoothing.obstacle_decay_m) {
           ++near_obstacles;
         }
       }
@@ -94,8 +95,8 @@ TEST(SmoothingObjective, BandedHessianIsThatOfTheQuadraticPart) {
     ASSERT_EQ(d0.size(), m);
     for (int k = 0; k < m; ++k) {
       const auto at = [&](int i) { return (i >= 0 && i < m) ? v[joint * m + i] : 0.0; };
-      const double hv = d0[k] * at(k) + d1[k] * at(k + 1) + (k >= 1 ? d1[k - 1] * at(k - 1) : 0.0) +
-                        d2[k] * at(k + 2) + (k >= 2 ? d2[k - 2] * at(k - 2) : 0.0);
+      const double hv = d0[k] * at(k) + d1[k] * at(k + 1) + (k >= 1 ? d1[k - 1] * at(k - 1) : 0.0) + d2[k] * at(k + 2) +
+                        (k >= 2 ? d2[k - 2] * at(k - 2) : 0.0);
       EXPECT_NEAR(hv, g1[joint * m + k] - g0[joint * m + k], 1e-10) << "joint " << joint << " k " << k;
     }
   }
@@ -107,7 +108,8 @@ TEST(OptimizePath, LowersTheCostAndKeepsTheFixedWaypoints) {
   for (int fixed_head : {1, 2}) {
     const SmoothingResult result = optimizePath(world, prior, fixed_head, model(), model().planner.smoothing);
     ASSERT_EQ(result.waypoints.size(), prior.size());
-    for (int k = 0; k < fixed_head; ++k) EXPECT_EQ(result.waypoints[static_cast<size_t>(k)], prior[static_cast<size_t>(k)]);
+    for (int k = 0; k < fixed_head; ++k)
+      EXPECT_EQ(result.waypoints[static_cast<size_t>(k)], prior[static_cast<size_t>(k)]);
     EXPECT_EQ(result.waypoints.back(), prior.back());
     const SmoothingObjective objective(world, prior, fixed_head, model(), model().planner.smoothing);
     Eigen::VectorXd g(2 * objective.freeCount());

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
-#include <vector>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -51,7 +51,8 @@ struct DenseCheck {
 DenseCheck denseCheck(const GeometricPath& path, const CollisionWorld& world) {
   DenseCheck out;
   double fastest = 0.0;
-  for (int i = 0; i <= 1000; ++i) fastest = std::max(fastest, path.at(path.length() * i / 1000.0).dq_ds.cwiseAbs().maxCoeff());
+  for (int i = 0; i <= 1000; ++i)
+    fastest = std::max(fastest, path.at(path.length() * i / 1000.0).dq_ds.cwiseAbs().maxCoeff());
   const int samples = std::max(1, static_cast<int>(std::ceil(path.length() * fastest * 1.25 / 1e-3)));
   JointVector previous = path.at(0.0).q;
   for (int i = 0; i <= samples; ++i) {
@@ -77,7 +78,8 @@ class Components {
     label_.assign(static_cast<size_t>(ni_ * nj_), -2);  // -2 blocked, -1 free and unlabelled
     for (int i = 0; i < ni_; ++i) {
       for (int j = 0; j < nj_; ++j) {
-        if (world.distance(node(i, j), model().clearance_m).value >= model().clearance_m - slack) label_[index(i, j)] = -1;
+        if (world.distance(node(i, j), model().clearance_m).value >= model().clearance_m - slack)
+          label_[index(i, j)] = -1;
       }
     }
     int next = 0;
@@ -331,7 +333,8 @@ TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
           << toString(result.status()) << ": " << result.error().reason;
       EXPECT_FALSE(result.error().reason.empty());
       if (result.status() == PlanStatus::kNoPath && v0.isZero()) {
-        EXPECT_NE(components(pieces).of(start), components(pieces).of(goal)) << start.transpose() << " -> " << goal.transpose();
+        EXPECT_NE(components(pieces).of(start), components(pieces).of(goal))
+            << start.transpose() << " -> " << goal.transpose();
       }
       continue;
     }
@@ -364,7 +367,8 @@ TEST(PathPlanner, HeldPiecesShapeThePath) {
     const auto bare = planner().plan(move.from, move.to, HeldPieces{});
     if (!with_coral.ok() || !bare.ok()) continue;
     EXPECT_GE(denseCheck(*with_coral.value().path, planner().world(coral)).min_distance, model().clearance_m);
-    if (denseCheck(*bare.value().path, planner().world(coral)).min_distance < model().clearance_m) ++bare_path_too_close;
+    if (denseCheck(*bare.value().path, planner().world(coral)).min_distance < model().clearance_m)
+      ++bare_path_too_close;
   }
   EXPECT_GT(bare_path_too_close, 0);
 }

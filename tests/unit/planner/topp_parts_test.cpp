@@ -154,13 +154,13 @@ TEST(ToppProblem, RowsAreTheDriveModelAtTheirSamplePoints) {
     const double qdot = pt.dq_ds[row.joint] * sdot;
     const double qddot = pt.d2q_ds2[row.joint] * sdot * sdot + pt.dq_ds[row.joint] * sddot;
     const double v = d.volts(pt.q[row.joint], qdot, qddot);
-    const double scale = row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts
-                                                               : d.motor.resistanceOhms() * d.current_limit_amps;
+    const double scale =
+        row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : d.motor.resistanceOhms() * d.current_limit_amps;
     const double value = row.value(a, b, b, c, c) * scale;  // b, c equal at both nodes: the sample's own
     const double physical = row.kind == topp::LimitKind::kVoltage ? v : d.amps(v, qdot) * d.motor.resistanceOhms();
     // value = physical - (constant terms), the constants sit in the bounds: compare the bounds.
-    EXPECT_NEAR(row.hi * scale - value, (row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts
-                                                                                : scale) - physical,
+    EXPECT_NEAR(row.hi * scale - value,
+                (row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : scale) - physical,
                 1e-9 * (1.0 + std::abs(physical)));
   }
 }
@@ -189,10 +189,11 @@ TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
   EXPECT_EQ(topp::forwardBackward(fast, b, controllable, 0.2).status, topp::ReachabilityStatus::kStartNotControllable);
   // Within the start tolerance it starts from C_0 (the edge of the controllable set) instead.
   // (C_0 of a moving start: a start at rest pins the first node to qdot = 0, which changes its rows.)
-  const double edge = topp::forwardBackward(makeProblem(150, 0.5 * r.controllable_start_b), b, controllable)
-                          .controllable_start_b;
+  const double edge =
+      topp::forwardBackward(makeProblem(150, 0.5 * r.controllable_start_b), b, controllable).controllable_start_b;
   topp::Problem near_edge = makeProblem(150, 1.01 * 1.01 * edge);
-  EXPECT_EQ(topp::forwardBackward(near_edge, b, controllable, 0.005).status, topp::ReachabilityStatus::kStartNotControllable);
+  EXPECT_EQ(topp::forwardBackward(near_edge, b, controllable, 0.005).status,
+            topp::ReachabilityStatus::kStartNotControllable);
   const topp::ReachabilityResult clamped = topp::forwardBackward(near_edge, b, controllable, 0.02);
   ASSERT_EQ(clamped.status, topp::ReachabilityStatus::kOk);
   EXPECT_EQ(clamped.start_b, clamped.controllable_start_b);
@@ -260,7 +261,9 @@ TEST(ToppAugmentedLagrangian, GradientMatchesFiniteDifferences) {
     Eigen::VectorXd xp = x, xm = x;
     xp[i] += h;
     xm[i] -= h;
-    const double fd = (topp::augmentedLagrangian(p, m, rho, xp, scratch) - topp::augmentedLagrangian(p, m, rho, xm, scratch)) / (2 * h);
+    const double fd =
+        (topp::augmentedLagrangian(p, m, rho, xp, scratch) - topp::augmentedLagrangian(p, m, rho, xm, scratch)) /
+        (2 * h);
     EXPECT_NEAR(grad[i], fd, 1e-5 * (1.0 + std::abs(fd))) << "variable " << i;
     ++checked;
   }

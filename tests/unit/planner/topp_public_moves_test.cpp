@@ -51,8 +51,7 @@ TEST(ToppPublicMoves, EveryPlannedMoveMeetsTheLimitsAndTheReference) {
         ASSERT_LE(std::abs(d.amps(v, s.qdot[j])), 1.005 * d.current_limit_amps) << "t=" << s.t;
       }
     }
-    const double reference =
-        testing::FineReference(*path, model.elevator_drive, model.arm_drive, 2001).duration(0.0);
+    const double reference = testing::FineReference(*path, model.elevator_drive, model.arm_drive, 2001).duration(0.0);
     const double ratio = trajectory.duration_s() / reference;
     worst_ratio = std::max(worst_ratio, ratio);
     EXPECT_LE(ratio, 1.02) << trajectory.duration_s() << " s against " << reference << " s";

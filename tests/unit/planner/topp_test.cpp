@@ -23,7 +23,7 @@ using testing::FineReference;
 using testing::LinePath;
 using testing::WigglePath;
 
-constexpr double kLimitTolerance = 0.005;   // the 0.5 %
+constexpr double kLimitTolerance = 0.005;    // the 0.5 %
 constexpr double kDurationTolerance = 0.02;  // within 2 % of the fine reference
 constexpr int kReferencePoints = 2001;
 
@@ -122,8 +122,8 @@ std::vector<Case> typicalPaths() {
       {"arc reversed", std::make_shared<ArcPath>(JointVector(1.0, 3.0), 0.8, 3.0, -0.5)},
       {"S-curve, arm q' changes sign",
        std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0)},
-      {"arm out and back", std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0),
-                                                         JointVector(0.0, 1.0), 1.0, 1.2)},
+      {"arm out and back",
+       std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2)},
       {"short 5 cm", std::make_shared<LinePath>(JointVector(0.5, 1.0), JointVector(0.55, 1.0))},
   };
 }
@@ -167,8 +167,8 @@ TEST(Topp, SolverReportsItsOwnCheckOfTheLimits) {
 TEST(Topp, VelocityAndAccelerationLimitsHoldAtOneMillisecond) {
   DriveParams elevator = elevatorDrive();
   DriveParams arm = armDrive();
-  elevator.velocity_limit = 1.2;       // m/s, well below the voltage-limited 2.9 m/s
-  arm.acceleration_limit = 25.0;       // rad/s^2, well below the current-limited ~200 rad/s^2
+  elevator.velocity_limit = 1.2;  // m/s, well below the voltage-limited 2.9 m/s
+  arm.acceleration_limit = 25.0;  // rad/s^2, well below the current-limited ~200 rad/s^2
   const auto path = std::make_shared<LinePath>(JointVector(0.2, 0.5), JointVector(1.9, 5.5));
   const Result<Trajectory> result = parameterizeTimeOptimal(path, elevator, arm, {});
   ASSERT_TRUE(result.ok()) << result.error().reason;
@@ -253,8 +253,8 @@ TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
 }
 
 TEST(Topp, NonConvergenceIsReportedWithResiduals) {
-  const auto path = std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0),
-                                                 JointVector(0.05, 0.8), 3.0, 2.0);
+  const auto path =
+      std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
   ToppSettings settings;
   settings.max_outer_iterations = 1;
   settings.max_inner_iterations = 2;
@@ -316,8 +316,8 @@ TEST(Topp, VeryShortPathsGiveValidTrajectories) {
 
 TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   // The arm goes out and back while the elevator rises: q'_arm crosses zero mid-path.
-  const auto path = std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0),
-                                                 JointVector(0.0, 1.0), 1.0, 1.2);
+  const auto path =
+      std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2);
   const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {});
   ASSERT_TRUE(result.ok()) << result.error().reason;
   const Trajectory& trajectory = result.value();
@@ -336,8 +336,8 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
 }
 
 TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {
-  const auto path = std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0),
-                                                 JointVector(0.05, 0.8), 3.0, 2.0);
+  const auto path =
+      std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
   ToppSettings settings;
   settings.grid_points = 12;
   ToppReport report;

@@ -15,7 +15,6 @@
 
 #include "topp_fixtures.hpp"
 
-
 namespace cyber::planner {
 namespace {
 
@@ -45,11 +44,11 @@ TEST(Trajectory, InvalidProfilesAreTypedErrors) {
             PlanStatus::kInvalidInput);
   EXPECT_EQ(make({}, {}), PlanStatus::kInvalidInput);
   EXPECT_EQ(make({0.0, 1.0}, {0.0}), PlanStatus::kInvalidInput);
-  EXPECT_EQ(make({0.0, 0.5}, {0.0, 1.0}), PlanStatus::kInvalidInput);             // does not reach the end
+  EXPECT_EQ(make({0.0, 0.5}, {0.0, 1.0}), PlanStatus::kInvalidInput);                      // does not reach the end
   EXPECT_EQ(make({0.0, 0.6, 0.6, 1.0}, {0.0, 1.0, 1.0, 0.0}), PlanStatus::kInvalidInput);  // not increasing
-  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, -1.0, 0.0}), PlanStatus::kInvalidInput);  // negative b
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, -1.0, 0.0}), PlanStatus::kInvalidInput);           // negative b
   EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, NAN, 0.0}), PlanStatus::kInvalidInput);
-  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, 0.0, 1.0}), PlanStatus::kInvalidInput);   // at rest over an interval
+  EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, 0.0, 1.0}), PlanStatus::kInvalidInput);  // at rest over an interval
   EXPECT_EQ(make({0.0, 0.5, 1.0}, {0.0, 1.0, 0.0}), PlanStatus::kOk);
 }
 

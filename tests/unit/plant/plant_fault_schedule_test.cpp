@@ -28,11 +28,28 @@ TEST(FaultSchedule, ParsesEveryKindBothWays) {
 }
 
 TEST(FaultSchedule, RejectsBadSpecsWithAReason) {
-  for (const char* bad : {"heartbeat-stop", "heartbeat-stop@", "@1", "nonsense@1", "silent@-1",
-                          "silent@motion-1", "silent@motion+", "silent@1s", "silent@nan", "silent@inf",
-                          "silent@+1", "silent@ 1", "Silent@1", "silent@1@2", "silent@motion0+1",
-                          "silent@motion1000+1", "silent@motionx+1", "silent@motion 2+1", "silent@motion",
-                          "silent@motion2", "silent@motion-2+1", "silent@motion99999999999+1"}) {
+  for (const char* bad : {"heartbeat-stop",
+                          "heartbeat-stop@",
+                          "@1",
+                          "nonsense@1",
+                          "silent@-1",
+                          "silent@motion-1",
+                          "silent@motion+",
+                          "silent@1s",
+                          "silent@nan",
+                          "silent@inf",
+                          "silent@+1",
+                          "silent@ 1",
+                          "Silent@1",
+                          "silent@1@2",
+                          "silent@motion0+1",
+                          "silent@motion1000+1",
+                          "silent@motionx+1",
+                          "silent@motion 2+1",
+                          "silent@motion",
+                          "silent@motion2",
+                          "silent@motion-2+1",
+                          "silent@motion99999999999+1"}) {
     const auto parsed = parseFault(bad);
     EXPECT_FALSE(parsed.event) << bad;
     EXPECT_FALSE(parsed.error.empty()) << bad;
@@ -77,9 +94,8 @@ TEST(FaultSchedule, FiresInTimeOrderWithTiesInCommandLineOrder) {
 }
 
 TEST(FaultSchedule, MotionEventsWaitForTheirMotion) {
-  FaultSchedule schedule({{FaultKind::kHeartbeatStop, 1, 0.3},
-                          {FaultKind::kBroadcastDisable, 2, 0.1},
-                          {FaultKind::kExit, 0, 10.0}});
+  FaultSchedule schedule(
+      {{FaultKind::kHeartbeatStop, 1, 0.3}, {FaultKind::kBroadcastDisable, 2, 0.1}, {FaultKind::kExit, 0, 10.0}});
   EXPECT_EQ(schedule.nextDue_s(), 10.0);
   EXPECT_TRUE(schedule.takeDue(5.0).empty());
   schedule.motionStarted(1, 4.0);

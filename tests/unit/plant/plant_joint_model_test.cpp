@@ -18,8 +18,7 @@ JointPlant referencePlant(int joint) {
   return JointPlant::fromDrive(model.drive(joint), model.range(joint));
 }
 
-JointState run(const JointPlant& plant, JointState state, double volts, double duration_s,
-               double dt_s) {
+JointState run(const JointPlant& plant, JointState state, double volts, double duration_s, double dt_s) {
   const long steps = std::lround(duration_s / dt_s);
   for (long i = 0; i < steps; ++i) state = stepPlant(plant, state, volts, dt_s);
   return state;

@@ -42,12 +42,37 @@ TEST(SimOptions, DefaultsWithoutArguments) {
 }
 
 TEST(SimOptions, EveryOption) {
-  const auto parsed = parse({"--config", "robot.toml", "--can", "vcan0", "--lcm-url", "memq://",
-                             "--initial", "1.2,-0.5", "--coral", "--algae", "--state-rate", "50",
-                             "--no-heartbeat", "--fault", "heartbeat-stop@1.5", "--fault",
-                             "disable@motion+0.2", "--log", "out.csv", "--duration", "7.5",
-                             "--setpoint-timeout", "0.25", "--elevator-gains", "200,2",
-                             "--arm-gains", "40,0", "--realtime", "40", "--control", "ctl.fifo"});
+  const auto parsed = parse({"--config",
+                             "robot.toml",
+                             "--can",
+                             "vcan0",
+                             "--lcm-url",
+                             "memq://",
+                             "--initial",
+                             "1.2,-0.5",
+                             "--coral",
+                             "--algae",
+                             "--state-rate",
+                             "50",
+                             "--no-heartbeat",
+                             "--fault",
+                             "heartbeat-stop@1.5",
+                             "--fault",
+                             "disable@motion+0.2",
+                             "--log",
+                             "out.csv",
+                             "--duration",
+                             "7.5",
+                             "--setpoint-timeout",
+                             "0.25",
+                             "--elevator-gains",
+                             "200,2",
+                             "--arm-gains",
+                             "40,0",
+                             "--realtime",
+                             "40",
+                             "--control",
+                             "ctl.fifo"});
   const SimOptions& o = parsed.options;
   EXPECT_EQ(o.config_path, "robot.toml");
   EXPECT_EQ(o.can_interface, "vcan0");

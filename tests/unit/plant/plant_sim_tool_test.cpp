@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include "tool_run.hpp"
 #include <sys/wait.h>
 #include <unistd.h>
+#include "tool_run.hpp"
 
 #include <cstdio>
 #include <fstream>
@@ -15,8 +15,8 @@
 
 namespace {
 
-using cyber::test::ToolRun;
 using cyber::test::readFile;
+using cyber::test::ToolRun;
 
 std::string tempPath(const std::string& name) {
   return ::testing::TempDir() + "cyber_plant_sim_" + std::to_string(::getpid()) + "_" + name;

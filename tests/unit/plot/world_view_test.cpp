@@ -2,8 +2,8 @@
 // obstacle's vertices, and just inside the arm's tip corners and the held coral's end, have the
 // obstacle, arm and coral colours, and pixels just outside do not. The APNG animation is a
 // well-formed PNG whose frames, sequence numbers and CRCs agree.
-#include <cairo.h>
 #include <gtest/gtest.h>
+#include <cairo.h>
 #include <unistd.h>
 #include <zlib.h>
 
@@ -103,7 +103,8 @@ TEST_F(WorldView, ReefObstacleVerticesAreWhereTheConfigPutsThem) {
       if (v.x() < c.x0 || v.x() > c.x1 || v.y() < c.y0 || v.y() > c.y1) continue;  // the floor's far corners
       const Point2 in = corner(c, vertices, i, 2.5);
       const auto got = image.at(in.x(), in.y());
-      EXPECT_TRUE(near(got, kWorldColors.obstacle)) << o.name << " vertex " << v.transpose() << " got " << got[0] << "," << got[1] << "," << got[2];
+      EXPECT_TRUE(near(got, kWorldColors.obstacle))
+          << o.name << " vertex " << v.transpose() << " got " << got[0] << "," << got[1] << "," << got[2];
       ++checked;
     }
   }
@@ -136,9 +137,11 @@ TEST_F(WorldView, ArmTipAndHeldCoralAreWhereTheGeometryPutsThem) {
     for (size_t i = 0; i < arm_world.size(); ++i) {
       if (arm.vertices()[i].x() < 0.2) continue;
       const Point2 in = corner(c, arm_world, i, 2.5);
-      EXPECT_TRUE(near(image.at(in.x(), in.y()), kWorldColors.arm)) << pose.name << " arm corner " << arm.vertices()[i].transpose();
+      EXPECT_TRUE(near(image.at(in.x(), in.y()), kWorldColors.arm))
+          << pose.name << " arm corner " << arm.vertices()[i].transpose();
       const Point2 out = corner(c, arm_world, i, -4.0);
-      EXPECT_FALSE(near(image.at(out.x(), out.y()), kWorldColors.arm)) << pose.name << " arm corner " << arm.vertices()[i].transpose();
+      EXPECT_FALSE(near(image.at(out.x(), out.y()), kWorldColors.arm))
+          << pose.name << " arm corner " << arm.vertices()[i].transpose();
     }
     const Point2 end = p.toWorld(Point2(coral.vertices()[1].x(), 0.0));  // middle of the coral's far end
     const Point2 in = inset(c, end, p.toWorld(coral_mid), 3.0);

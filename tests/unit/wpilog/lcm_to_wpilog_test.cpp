@@ -54,7 +54,8 @@ class LcmToWpilog : public ::testing::Test {
     read();
     std::string error;
     config_ = config::loadEmbeddedDefaultConfig();
-    ASSERT_TRUE(convertLcmLog(path_.string(), config_.daemon.channels, mechanismGeometry(config_.robot), &writer_, &stats_, &error))
+    ASSERT_TRUE(convertLcmLog(path_.string(), config_.daemon.channels, mechanismGeometry(config_.robot), &writer_,
+                              &stats_, &error))
         << error;
     ReadResult r = parse(writer_.bytes());
     ASSERT_FALSE(r.error) << r.error->message;
@@ -156,7 +157,8 @@ class LcmToWpilog : public ::testing::Test {
           m.num_samples = 5 + static_cast<int>(rng() % 20);
           for (int i = 0; i < m.num_samples; ++i) {
             m.t_s.push_back(i * m.dt_s);
-            for (auto* v : {&m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
+            for (auto* v :
+                 {&m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
               v->push_back(u(rng));
             }
           }
@@ -248,7 +250,8 @@ TEST_F(LcmToWpilog, CountsEveryEvent) {
   EXPECT_EQ(stats_.converted, 12);
   EXPECT_EQ(stats_.undecodable, 1);
   EXPECT_EQ(stats_.other, 1);
-  EXPECT_EQ(log_.extra_header.find("Unix time " + std::to_string(kSyntheticT0)) != std::string::npos, true) << log_.extra_header;
+  EXPECT_EQ(log_.extra_header.find("Unix time " + std::to_string(kSyntheticT0)) != std::string::npos, true)
+      << log_.extra_header;
   for (const Entry& e : log_.entries) {
     if (e.name.rfind("/.schema/", 0) == 0) continue;
     EXPECT_EQ(e.name.rfind("/CyberPlanner/", 0), 0u) << e.name;
@@ -258,7 +261,8 @@ TEST_F(LcmToWpilog, CountsEveryEvent) {
 
 TEST_F(LcmToWpilog, MeasuredState) {
   expectSeries<State, double>(s_.states, "Elevator/MeasuredMeters", [](const State& m) { return m.elevator_m; });
-  expectSeries<State, double>(s_.states, "Elevator/MeasuredMetersPerSecond", [](const State& m) { return m.elevator_mps; });
+  expectSeries<State, double>(s_.states, "Elevator/MeasuredMetersPerSecond",
+                              [](const State& m) { return m.elevator_mps; });
   expectSeries<State, double>(s_.states, "Arm/MeasuredRadians", [](const State& m) { return m.arm_rad; });
   expectSeries<State, double>(s_.states, "Arm/MeasuredRadiansPerSecond", [](const State& m) { return m.arm_radps; });
   expectSeries<State, bool>(s_.states, "State/HeldCoral", [](const State& m) { return m.held_coral; });
@@ -266,17 +270,23 @@ TEST_F(LcmToWpilog, MeasuredState) {
 }
 
 TEST_F(LcmToWpilog, Setpoints) {
-  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/SetpointMeters", [](const Setpoint& m) { return m.elevator_m; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/VelocityMetersPerSecond", [](const Setpoint& m) { return m.elevator_mps; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/FeedforwardVolts", [](const Setpoint& m) { return m.elevator_volts; });
-  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence", [](const Setpoint& m) { return m.elevator_sequence; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/SetpointMeters",
+                                 [](const Setpoint& m) { return m.elevator_m; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/VelocityMetersPerSecond",
+                                 [](const Setpoint& m) { return m.elevator_mps; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Elevator/FeedforwardVolts",
+                                 [](const Setpoint& m) { return m.elevator_volts; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence",
+                                  [](const Setpoint& m) { return m.elevator_sequence; });
   expectSeries<Setpoint, double>(s_.setpoints, "Arm/SetpointRadians", [](const Setpoint& m) { return m.arm_rad; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Arm/VelocityRadiansPerSecond", [](const Setpoint& m) { return m.arm_radps; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/VelocityRadiansPerSecond",
+                                 [](const Setpoint& m) { return m.arm_radps; });
   expectSeries<Setpoint, double>(s_.setpoints, "Arm/FeedforwardVolts", [](const Setpoint& m) { return m.arm_volts; });
   expectSeries<Setpoint, int64_t>(s_.setpoints, "Arm/Sequence", [](const Setpoint& m) { return m.arm_sequence; });
   expectSeries<Setpoint, std::string>(s_.setpoints, "Setpoint/Mode", [](const Setpoint& m) { return kModes[m.mode]; });
   expectSeries<Setpoint, int64_t>(s_.setpoints, "Setpoint/RequestId", [](const Setpoint& m) { return m.request_id; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Setpoint/TrajectoryTimeSeconds", [](const Setpoint& m) { return m.trajectory_t_s; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Setpoint/TrajectoryTimeSeconds",
+                                 [](const Setpoint& m) { return m.trajectory_t_s; });
 }
 
 TEST_F(LcmToWpilog, GoalsAndPlanStatus) {
@@ -286,15 +296,18 @@ TEST_F(LcmToWpilog, GoalsAndPlanStatus) {
   expectSeries<Goal, bool>(s_.goals, "Goal/HeldCoral", [](const Goal& m) { return m.held_coral; });
   expectSeries<Goal, bool>(s_.goals, "Goal/HeldAlgae", [](const Goal& m) { return m.held_algae; });
   expectSeries<Goal, std::string>(s_.goals, "Goal/SceneName", [](const Goal& m) { return m.scene_name; });
-  expectSeries<PlanStatus, int64_t>(s_.statuses, "PlanStatus/RequestId", [](const PlanStatus& m) { return m.request_id; });
-  expectSeries<PlanStatus, std::string>(s_.statuses, "PlanStatus/Status", [](const PlanStatus& m) { return kStatuses[m.status]; });
+  expectSeries<PlanStatus, int64_t>(s_.statuses, "PlanStatus/RequestId",
+                                    [](const PlanStatus& m) { return m.request_id; });
+  expectSeries<PlanStatus, std::string>(s_.statuses, "PlanStatus/Status",
+                                        [](const PlanStatus& m) { return kStatuses[m.status]; });
   expectSeries<PlanStatus, std::string>(s_.statuses, "PlanStatus/Reason", [](const PlanStatus& m) { return m.reason; });
   expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/GridMs", [](const PlanStatus& m) { return m.grid_ms; });
   expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/SearchMs", [](const PlanStatus& m) { return m.search_ms; });
   expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/SmoothMs", [](const PlanStatus& m) { return m.smooth_ms; });
   expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/ToppMs", [](const PlanStatus& m) { return m.topp_ms; });
   expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/TotalMs", [](const PlanStatus& m) { return m.total_ms; });
-  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/DurationSeconds", [](const PlanStatus& m) { return m.duration_s; });
+  expectSeries<PlanStatus, double>(s_.statuses, "PlanStatus/DurationSeconds",
+                                   [](const PlanStatus& m) { return m.duration_s; });
 }
 
 TEST_F(LcmToWpilog, DaemonModeCountersAndTiming) {
@@ -326,20 +339,24 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
   expectSeries<T, int64_t>(s_.trajectories, "Trajectory/RequestId", [](const T& m) { return m.request_id; });
   expectSeries<T, double>(s_.trajectories, "Trajectory/DurationSeconds", [](const T& m) { return m.duration_s; });
   expectSeries<T, double>(s_.trajectories, "Trajectory/StepSeconds", [](const T& m) { return m.dt_s; });
-  const std::pair<const char*, std::vector<double> T::*> arrays[] = {
-      {"TimesSeconds", &T::t_s},           {"ElevatorMeters", &T::elevator_m},
-      {"ElevatorMetersPerSecond", &T::elevator_mps}, {"ElevatorVolts", &T::elevator_volts},
-      {"ArmRadians", &T::arm_rad},         {"ArmRadiansPerSecond", &T::arm_radps}, {"ArmVolts", &T::arm_volts}};
+  const std::pair<const char*, std::vector<double> T::*> arrays[] = {{"TimesSeconds", &T::t_s},
+                                                                     {"ElevatorMeters", &T::elevator_m},
+                                                                     {"ElevatorMetersPerSecond", &T::elevator_mps},
+                                                                     {"ElevatorVolts", &T::elevator_volts},
+                                                                     {"ArmRadians", &T::arm_rad},
+                                                                     {"ArmRadiansPerSecond", &T::arm_radps},
+                                                                     {"ArmVolts", &T::arm_volts}};
   for (const auto& [name, field] : arrays) {
     const auto rs = records(std::string("Trajectory/") + name, "double[]");
     ASSERT_EQ(rs.size(), s_.trajectories.size());
-    for (size_t i = 0; i < rs.size(); ++i) EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), s_.trajectories[i].second.*field) << name;
+    for (size_t i = 0; i < rs.size(); ++i)
+      EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), s_.trajectories[i].second.*field) << name;
   }
   // Sample k is commanded at start_utime + t_s[k], which is (start_utime - utime) after the
   // message's own time (5 ms in the synthetic log), until the next trajectory starts.
   const std::pair<const char*, std::vector<double> T::*> planned[] = {
-      {"Elevator/PlannedMeters", &T::elevator_m}, {"Elevator/PlannedMetersPerSecond", &T::elevator_mps},
-      {"Elevator/PlannedVolts", &T::elevator_volts}, {"Arm/PlannedRadians", &T::arm_rad},
+      {"Elevator/PlannedMeters", &T::elevator_m},     {"Elevator/PlannedMetersPerSecond", &T::elevator_mps},
+      {"Elevator/PlannedVolts", &T::elevator_volts},  {"Arm/PlannedRadians", &T::arm_rad},
       {"Arm/PlannedRadiansPerSecond", &T::arm_radps}, {"Arm/PlannedVolts", &T::arm_volts}};
   for (const auto& [name, field] : planned) {
     const auto rs = records(name, "double");
@@ -370,7 +387,8 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
   const auto start = records("Trajectory/StartSeconds", "double");
   ASSERT_EQ(start.size(), s_.trajectories.size());
   const auto& [t, first] = s_.trajectories.front();
-  EXPECT_DOUBLE_EQ(*asDouble(log_.payload(*start[0])), static_cast<double>(t - s_.t0 + first.start_utime - first.utime) * 1e-6);
+  EXPECT_DOUBLE_EQ(*asDouble(log_.payload(*start[0])),
+                   static_cast<double>(t - s_.t0 + first.start_utime - first.utime) * 1e-6);
 }
 
 // The 3-D components are the carriage at the pivot and the arm turned by its angle about the

@@ -12,7 +12,9 @@
 namespace cyber::wpilog {
 namespace {
 
-std::vector<uint8_t> tail(const std::vector<uint8_t>& bytes, size_t from) { return {bytes.begin() + static_cast<long>(from), bytes.end()}; }
+std::vector<uint8_t> tail(const std::vector<uint8_t>& bytes, size_t from) {
+  return {bytes.begin() + static_cast<long>(from), bytes.end()};
+}
 
 Log parsed(const Writer& w) {
   ReadResult r = parse(w.bytes());
@@ -29,8 +31,9 @@ TEST(WpilogFormat, StartAndInt64RecordsAreTheSpecificationsExamples) {
   Writer w;
   const uint32_t id = w.start("test", "int64", "", 1000000);
   ASSERT_EQ(id, 1u);
-  const std::vector<uint8_t> start{0x20, 0x00, 0x1a, 0x40, 0x42, 0x0f, 0x00, 0x01, 0x00, 0x00, 0x00, 0x04, 0x00, 0x00, 0x00, 0x74,
-                                   0x65, 0x73, 0x74, 0x05, 0x00, 0x00, 0x00, 0x69, 0x6e, 0x74, 0x36, 0x34, 0x00, 0x00, 0x00, 0x00};
+  const std::vector<uint8_t> start{0x20, 0x00, 0x1a, 0x40, 0x42, 0x0f, 0x00, 0x01, 0x00, 0x00, 0x00,
+                                   0x04, 0x00, 0x00, 0x00, 0x74, 0x65, 0x73, 0x74, 0x05, 0x00, 0x00,
+                                   0x00, 0x69, 0x6e, 0x74, 0x36, 0x34, 0x00, 0x00, 0x00, 0x00};
   EXPECT_EQ(tail(w.bytes(), 12), start);
   const size_t before = w.bytes().size();
   w.appendInt64(id, 1000000, 3);
@@ -38,7 +41,8 @@ TEST(WpilogFormat, StartAndInt64RecordsAreTheSpecificationsExamples) {
             (std::vector<uint8_t>{0x20, 0x01, 0x08, 0x40, 0x42, 0x0f, 0x03, 0, 0, 0, 0, 0, 0, 0}));
   const size_t before_finish = w.bytes().size();
   w.finish(id, 1000000);
-  EXPECT_EQ(tail(w.bytes(), before_finish), (std::vector<uint8_t>{0x20, 0x00, 0x05, 0x40, 0x42, 0x0f, 0x01, 0x01, 0, 0, 0}));
+  EXPECT_EQ(tail(w.bytes(), before_finish),
+            (std::vector<uint8_t>{0x20, 0x00, 0x05, 0x40, 0x42, 0x0f, 0x01, 0x01, 0, 0, 0}));
 }
 
 TEST(WpilogFormat, SetMetadataIsTheSpecificationsExample) {
@@ -46,9 +50,10 @@ TEST(WpilogFormat, SetMetadataIsTheSpecificationsExample) {
   const uint32_t id = w.start("test", "int64", "", 1000000);
   const size_t before = w.bytes().size();
   w.setMetadata(id, R"({"source":"NT"})", 1000000);
-  EXPECT_EQ(tail(w.bytes(), before),
-            (std::vector<uint8_t>{0x20, 0x00, 0x18, 0x40, 0x42, 0x0f, 0x02, 0x01, 0x00, 0x00, 0x00, 0x0f, 0x00, 0x00, 0x00, 0x7b,
-                                  0x22, 0x73, 0x6f, 0x75, 0x72, 0x63, 0x65, 0x22, 0x3a, 0x22, 0x4e, 0x54, 0x22, 0x7d}));
+  EXPECT_EQ(
+      tail(w.bytes(), before),
+      (std::vector<uint8_t>{0x20, 0x00, 0x18, 0x40, 0x42, 0x0f, 0x02, 0x01, 0x00, 0x00, 0x00, 0x0f, 0x00, 0x00, 0x00,
+                            0x7b, 0x22, 0x73, 0x6f, 0x75, 0x72, 0x63, 0x65, 0x22, 0x3a, 0x22, 0x4e, 0x54, 0x22, 0x7d}));
   const Log log = parsed(w);
   ASSERT_EQ(log.entries.size(), 1u);
   EXPECT_EQ(log.entries[0].metadata, R"({"source":"NT"})");
@@ -139,8 +144,9 @@ TEST(WpilogFormat, AnIdReusedAfterFinishIsANewEntry) {
   w.finish(id, 2);
   // The writer never reuses ids; a hand-made Start for id 1 again is what another writer may do.
   std::vector<uint8_t> bytes = w.bytes();
-  const std::vector<uint8_t> restart{0x00, 0x00, 0x19, 0x03, 0x00, 0x01, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, '/', 'b',
-                                     0x06, 0x00, 0x00, 0x00, 's', 't', 'r', 'i', 'n', 'g', 0x00, 0x00, 0x00, 0x00};
+  const std::vector<uint8_t> restart{0x00, 0x00, 0x19, 0x03, 0x00, 0x01, 0x00, 0x00, 0x00, 0x02,
+                                     0x00, 0x00, 0x00, '/',  'b',  0x06, 0x00, 0x00, 0x00, 's',
+                                     't',  'r',  'i',  'n',  'g',  0x00, 0x00, 0x00, 0x00};
   bytes.insert(bytes.end(), restart.begin(), restart.end());
   const std::vector<uint8_t> value{0x00, 0x01, 0x02, 0x04, 'h', 'i'};
   bytes.insert(bytes.end(), value.begin(), value.end());
@@ -162,7 +168,8 @@ TEST(WpilogFormat, Pose3dArraysRoundTripWithTheirSchemas) {
   ASSERT_TRUE(schema);
   EXPECT_EQ(log.entries[*schema].type, "structschema");
   EXPECT_EQ(asString(log.payload(*log.recordsOf(*schema).front())), "Translation3d translation;Rotation3d rotation");
-  for (const char* name : {"/.schema/struct:Translation3d", "/.schema/struct:Rotation3d", "/.schema/struct:Quaternion"}) {
+  for (const char* name :
+       {"/.schema/struct:Translation3d", "/.schema/struct:Rotation3d", "/.schema/struct:Quaternion"}) {
     EXPECT_TRUE(log.find(name)) << name;
   }
   std::vector<Pose3d> back;

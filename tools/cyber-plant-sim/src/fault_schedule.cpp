@@ -51,8 +51,8 @@ FaultParse parseFault(std::string_view text) {
     for (const auto& [k, name] : kNames) known += (known.empty() ? "" : ", ") + std::string(name);
     return {std::nullopt, "unknown fault '" + std::string(text.substr(0, at)) + "' (known: " + known + ")"};
   }
-  const std::string bad_time = "fault time in '" + std::string(text) +
-                               "' must be SECONDS, motion+SECONDS or motionN+SECONDS with SECONDS >= 0";
+  const std::string bad_time =
+      "fault time in '" + std::string(text) + "' must be SECONDS, motion+SECONDS or motionN+SECONDS with SECONDS >= 0";
   std::string_view when = text.substr(at + 1);
   int motion = 0;
   if (when.starts_with(kMotionPrefix)) {
@@ -94,7 +94,8 @@ FaultSchedule::FaultSchedule(std::vector<FaultEvent> events) : pending_(std::mov
 
 void FaultSchedule::motionStarted(int index, double t_s) {
   if (index < 1) return;
-  if (motion_starts_s_.size() < static_cast<std::size_t>(index)) motion_starts_s_.resize(static_cast<std::size_t>(index));
+  if (motion_starts_s_.size() < static_cast<std::size_t>(index))
+    motion_starts_s_.resize(static_cast<std::size_t>(index));
   auto& start = motion_starts_s_[static_cast<std::size_t>(index - 1)];
   if (!start) start = t_s;
 }

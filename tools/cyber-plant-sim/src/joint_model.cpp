@@ -11,8 +11,7 @@ double sign(double x) { return static_cast<double>((x > 0.0) - (x < 0.0)); }
 
 }  // namespace
 
-JointPlant JointPlant::fromDrive(const planner::DriveParams& drive,
-                                 const planner::JointRange& range) {
+JointPlant JointPlant::fromDrive(const planner::DriveParams& drive, const planner::JointRange& range) {
   JointPlant plant;
   plant.kS_volts = drive.kS_volts;
   plant.kG_volts = drive.kG_volts;
@@ -30,14 +29,12 @@ double JointPlant::gravityFactor(double q) const {
 
 double controllerVolts(const JointPlant& plant, const PdGains& gains, const JointCommand& command,
                        const JointState& state) {
-  const double volts = command.feedforward_volts +
-                       gains.kp_volts_per_unit * (command.position - state.position) +
+  const double volts = command.feedforward_volts + gains.kp_volts_per_unit * (command.position - state.position) +
                        gains.kd_volts_per_unit_per_s * (command.velocity - state.velocity);
   return std::clamp(volts, -plant.voltage_limit_volts, plant.voltage_limit_volts);
 }
 
-JointState stepPlant(const JointPlant& plant, const JointState& state, double applied_volts,
-                     double dt_s) {
+JointState stepPlant(const JointPlant& plant, const JointState& state, double applied_volts, double dt_s) {
   // Everything but friction and back-EMF, in volts.
   const double drive_volts = applied_volts - plant.kG_volts * plant.gravityFactor(state.position);
   JointState next = state;

@@ -5,8 +5,7 @@
 
 namespace cyber::plant {
 
-PlantSimulation::PlantSimulation(const SimulationSettings& settings,
-                                 const planner::JointVector& initial_q)
+PlantSimulation::PlantSimulation(const SimulationSettings& settings, const planner::JointVector& initial_q)
     : settings_(settings) {
   for (int joint = 0; joint < kJointCount; ++joint) states_[joint].position = initial_q[joint];
 }
@@ -50,8 +49,7 @@ void PlantSimulation::step() {
     if (!latest_[joint]) continue;  // resting at the initial pose until its first setpoint
     const JointPlant& plant = settings_.plants[joint];
     const auto command = effectiveCommand(joint, now_s);
-    applied_volts_[joint] =
-        command ? controllerVolts(plant, settings_.gains[joint], *command, states_[joint]) : 0.0;
+    applied_volts_[joint] = command ? controllerVolts(plant, settings_.gains[joint], *command, states_[joint]) : 0.0;
     states_[joint] = stepPlant(plant, states_[joint], applied_volts_[joint], settings_.step_s);
   }
   ++steps_;

@@ -28,12 +28,16 @@ constexpr double kRadToDeg = 180.0 / M_PI;
 class Entries {
  public:
   explicit Entries(Writer& writer) : writer_(writer) {}
-  void setChannel(const std::string& channel) { metadata_ = R"({"source":"cyber-wpilog","lcm_channel":")" + channel + "\"}"; }
+  void setChannel(const std::string& channel) {
+    metadata_ = R"({"source":"cyber-wpilog","lcm_channel":")" + channel + "\"}";
+  }
 
   void putDouble(const std::string& name, uint64_t t, double v) { writer_.appendDouble(id(name, "double", t), t, v); }
   void putInt64(const std::string& name, uint64_t t, int64_t v) { writer_.appendInt64(id(name, "int64", t), t, v); }
   void putBoolean(const std::string& name, uint64_t t, bool v) { writer_.appendBoolean(id(name, "boolean", t), t, v); }
-  void putString(const std::string& name, uint64_t t, const std::string& v) { writer_.appendString(id(name, "string", t), t, v); }
+  void putString(const std::string& name, uint64_t t, const std::string& v) {
+    writer_.appendString(id(name, "string", t), t, v);
+  }
   void putDoubles(const std::string& name, uint64_t t, const std::vector<double>& v) {
     writer_.appendDoubleArray(id(name, "double[]", t), t, v);
   }
@@ -139,7 +143,9 @@ class Converter {
     for (size_t k = 0; k < n; ++k) {
       const int64_t at = start_us + std::llround(m.t_s[k] * 1e6);
       if (at < 0) continue;
-      planned_.push_back(PlannedSample{at, m.request_id, {m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]},
+      planned_.push_back(PlannedSample{at,
+                                       m.request_id,
+                                       {m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]},
                                        {m.arm_rad[k], m.arm_radps[k], m.arm_volts[k]}});
     }
   }
@@ -165,8 +171,9 @@ class Converter {
     e_.putDouble("Daemon/StateAgeMs", t, m.state_age_ms);
     e_.putDouble("Daemon/HeartbeatAgeMs", t, m.heartbeat_age_ms);
     const std::pair<const char*, int64_t> counters[] = {
-        {"GoalsReceived", m.goals_received}, {"PlansSucceeded", m.plans_succeeded}, {"PlansFailed", m.plans_failed},
-        {"FramesSent", m.frames_sent},       {"CanErrors", m.can_errors},           {"DecodeErrors", m.decode_errors},
+        {"GoalsReceived", m.goals_received},   {"PlansSucceeded", m.plans_succeeded},
+        {"PlansFailed", m.plans_failed},       {"FramesSent", m.frames_sent},
+        {"CanErrors", m.can_errors},           {"DecodeErrors", m.decode_errors},
         {"StreamOverruns", m.stream_overruns}, {"PublishFailures", m.publish_failures}};
     for (const auto& [name, value] : counters) e_.putInt64(std::string("Daemon/") + name, t, value);
     const std::pair<const char*, double> timings[] = {
@@ -279,7 +286,8 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
   ConvertStats s;
   s.events = static_cast<int64_t>(events.size());
   s.first_event_unix_us = events.empty() ? 0 : static_cast<uint64_t>(events.front().timestamp_us);
-  *writer = Writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
+  *writer =
+      Writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
   Entries entries(*writer);
   Converter converter(entries, geometry);
   using Handler = std::function<bool(const Event&, uint64_t)>;

@@ -70,16 +70,19 @@ ReadResult parse(std::vector<uint8_t> bytes) {
   log.bytes = std::move(bytes);
   Cursor c{log.bytes};
   if (!c.has(6)) return failure(ReadErrorKind::kTruncated, 0, "shorter than the 12-byte header");
-  if (std::memcmp(log.bytes.data(), "WPILOG", 6) != 0) return failure(ReadErrorKind::kBadMagic, 0, "does not start with WPILOG");
+  if (std::memcmp(log.bytes.data(), "WPILOG", 6) != 0)
+    return failure(ReadErrorKind::kBadMagic, 0, "does not start with WPILOG");
   c.at = 6;
   uint64_t version = 0;
   if (!c.le(2, &version)) return failure(ReadErrorKind::kTruncated, c.at, "header ends in the version");
   log.version = static_cast<uint16_t>(version);
   if ((log.version >> 8) != 1) {
-    return failure(ReadErrorKind::kUnsupportedVersion, 6, "version " + std::to_string(log.version >> 8) + "." +
-                                                              std::to_string(log.version & 0xff) + " (only 1.x is known)");
+    return failure(ReadErrorKind::kUnsupportedVersion, 6,
+                   "version " + std::to_string(log.version >> 8) + "." + std::to_string(log.version & 0xff) +
+                       " (only 1.x is known)");
   }
-  if (!c.string(&log.extra_header)) return failure(ReadErrorKind::kTruncated, c.at, "header ends in the extra header string");
+  if (!c.string(&log.extra_header))
+    return failure(ReadErrorKind::kTruncated, c.at, "header ends in the extra header string");
 
   std::map<uint32_t, size_t> open;  // entry id -> index into log.entries
   while (c.at < log.bytes.size()) {
@@ -98,7 +101,8 @@ ReadResult parse(std::vector<uint8_t> bytes) {
     if (id != 0) {
       const auto it = open.find(static_cast<uint32_t>(id));
       if (it == open.end()) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at, "record for entry " + std::to_string(id) + ", which is not started");
+        return failure(ReadErrorKind::kUnknownEntry, record_at,
+                       "record for entry " + std::to_string(id) + ", which is not started");
       }
       log.records.push_back(Record{it->second, timestamp, payload_at, size});
       continue;
@@ -121,14 +125,16 @@ ReadResult parse(std::vector<uint8_t> bytes) {
     } else if (control == 1) {
       if (p.at != payload.size()) return bad("malformed Finish record");
       if (open.erase(target_id) == 0) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at, "Finish for entry " + std::to_string(target_id) + ", which is not started");
+        return failure(ReadErrorKind::kUnknownEntry, record_at,
+                       "Finish for entry " + std::to_string(target_id) + ", which is not started");
       }
     } else if (control == 2) {
       std::string metadata;
       if (!p.string(&metadata) || p.at != payload.size()) return bad("malformed Set Metadata record");
       const auto it = open.find(target_id);
       if (it == open.end()) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at, "Set Metadata for entry " + std::to_string(target_id) + ", which is not started");
+        return failure(ReadErrorKind::kUnknownEntry, record_at,
+                       "Set Metadata for entry " + std::to_string(target_id) + ", which is not started");
       }
       log.entries[it->second].metadata = std::move(metadata);
     } else {

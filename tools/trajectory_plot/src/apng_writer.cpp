@@ -69,7 +69,8 @@ bool writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const 
   std::vector<uint8_t> ihdr;
   for (size_t f = 0; f < frames.size(); ++f) {
     std::vector<uint8_t> png;
-    if (cairo_surface_write_to_png_stream(frames[f], appendBytes, &png) != CAIRO_STATUS_SUCCESS) return fail("cairo cannot encode a frame");
+    if (cairo_surface_write_to_png_stream(frames[f], appendBytes, &png) != CAIRO_STATUS_SUCCESS)
+      return fail("cairo cannot encode a frame");
     std::vector<Chunk> chunks;
     if (!chunksOf(png, &chunks) || chunks.empty() || chunks.front().type != "IHDR") return fail("cairo wrote no PNG");
     if (f == 0) {

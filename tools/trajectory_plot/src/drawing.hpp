@@ -17,7 +17,8 @@ struct Rgb {
 inline void setColor(cairo_t* cr, Rgb c, double alpha = 1.0) { cairo_set_source_rgba(cr, c.r, c.g, c.b, alpha); }
 
 // Text at (x, y) (baseline), left-aligned, centred or right-aligned on x.
-inline void text(cairo_t* cr, double x, double y, const std::string& s, double size, bool center = false, bool right = false) {
+inline void text(cairo_t* cr, double x, double y, const std::string& s, double size, bool center = false,
+                 bool right = false) {
   cairo_set_font_size(cr, size);
   cairo_text_extents_t ext;
   cairo_text_extents(cr, s.c_str(), &ext);
@@ -39,7 +40,7 @@ inline bool writePng(cairo_surface_t* surface, const std::string& path, std::str
 }
 
 // The C-space map in a box with the poses marked (render_png.cpp draws it as cyber-plan --plot).
-void drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x, double y,
-                         double w, double h);
+void drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x,
+                         double y, double w, double h);
 
 }  // namespace cyber::plot::detail

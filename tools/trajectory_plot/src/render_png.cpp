@@ -117,7 +117,8 @@ void hline(cairo_t* cr, const Axes& ax, double y, Rgb color) {
   cairo_set_dash(cr, nullptr, 0, 0);
 }
 
-std::pair<double, double> rangeOf(std::initializer_list<const std::vector<double>*> series, std::initializer_list<double> extra) {
+std::pair<double, double> rangeOf(std::initializer_list<const std::vector<double>*> series,
+                                  std::initializer_list<double> extra) {
   double lo = std::numeric_limits<double>::infinity();
   double hi = -lo;
   for (const auto* s : series) {
@@ -155,7 +156,8 @@ Axes drawCSpaceMap(cairo_t* cr, const CSpaceMap& m, const Box& box) {
   Axes ax{box, m.arm_rad.min, m.arm_rad.max, m.elevator_m.min, m.elevator_m.max};
   if (!(ax.x1 > ax.x0) || !(ax.y1 > ax.y0)) ax = Axes{box, 0, 1, 0, 1};
   drawFrame(cr, ax, "configuration space (grey: closer than the clearance)", "arm angle [rad]", "elevator travel [m]");
-  if (m.elevator_cells > 0 && m.arm_cells > 0 && m.blocked.size() == static_cast<size_t>(m.elevator_cells * m.arm_cells)) {
+  if (m.elevator_cells > 0 && m.arm_cells > 0 &&
+      m.blocked.size() == static_cast<size_t>(m.elevator_cells * m.arm_cells)) {
     const double cw = box.w / m.arm_cells;
     const double ch = box.h / m.elevator_cells;
     cairo_set_source_rgba(cr, 0.35, 0.35, 0.40, 0.75);
@@ -185,13 +187,15 @@ void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
   const auto& a = d.joints[1].position;
   polyline(cr, ax, a, e, Rgb{0.05, 0.55, 0.15}, 3.0);
   if (!e.empty()) {
-    for (auto [idx, label] : {std::pair{size_t{0}, "start"}, std::pair{e.size() - 1, "goal"}}) marker(cr, ax, a[idx], e[idx], label);
+    for (auto [idx, label] : {std::pair{size_t{0}, "start"}, std::pair{e.size() - 1, "goal"}})
+      marker(cr, ax, a[idx], e[idx], label);
   }
 }
 
-void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const std::string& title, const std::string& ylabel,
-                const std::function<const std::vector<double>&(const JointSeries&)>& pick, const std::array<double, 2>* limits,
-                const std::string& elevator_name, const std::string& arm_name, bool with_xlabel) {
+void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const std::string& title,
+                const std::string& ylabel, const std::function<const std::vector<double>&(const JointSeries&)>& pick,
+                const std::array<double, 2>* limits, const std::string& elevator_name, const std::string& arm_name,
+                bool with_xlabel) {
   const auto& s0 = pick(d.joints[0]);
   const auto& s1 = pick(d.joints[1]);
   // Both joints' limits stay in view (zero when there are none).
@@ -216,8 +220,8 @@ void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const 
 
 }  // namespace
 
-void detail::drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x, double y,
-                                 double w, double h) {
+void detail::drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x,
+                                 double y, double w, double h) {
   const Axes ax = drawCSpaceMap(cr, map, Box{x, y, w, h});
   for (const NamedJointPose& p : poses) marker(cr, ax, p.q[planner::kArm], p.q[planner::kElevator], p.name);
 }
@@ -234,19 +238,25 @@ bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, s
   drawCSpace(cr, d, Box{80, 70, 640, 860});
   const double x = 860, w = 700, h = 170, gap = 62;
   double y = 70;
-  drawSignal(cr, d, Box{x, y, w, h}, "position", "m | rad", [](const JointSeries& s) -> const std::vector<double>& { return s.position; },
-             nullptr, "elevator [m]", "arm [rad]", false);
+  drawSignal(
+      cr, d, Box{x, y, w, h}, "position", "m | rad",
+      [](const JointSeries& s) -> const std::vector<double>& { return s.position; }, nullptr, "elevator [m]",
+      "arm [rad]", false);
   y += h + gap;
-  drawSignal(cr, d, Box{x, y, w, h}, "velocity", "m/s | rad/s", [](const JointSeries& s) -> const std::vector<double>& { return s.velocity; },
-             nullptr, "elevator [m/s]", "arm [rad/s]", false);
+  drawSignal(
+      cr, d, Box{x, y, w, h}, "velocity", "m/s | rad/s",
+      [](const JointSeries& s) -> const std::vector<double>& { return s.velocity; }, nullptr, "elevator [m/s]",
+      "arm [rad/s]", false);
   y += h + gap;
-  drawSignal(cr, d, Box{x, y, w, h}, "feedforward voltage (dashed: limits)", "V",
-             [](const JointSeries& s) -> const std::vector<double>& { return s.volts; }, &d.voltage_limit_volts, "elevator [V]",
-             "arm [V]", false);
+  drawSignal(
+      cr, d, Box{x, y, w, h}, "feedforward voltage (dashed: limits)", "V",
+      [](const JointSeries& s) -> const std::vector<double>& { return s.volts; }, &d.voltage_limit_volts,
+      "elevator [V]", "arm [V]", false);
   y += h + gap;
-  drawSignal(cr, d, Box{x, y, w, h}, "current per motor (dashed: limits)", "A",
-             [](const JointSeries& s) -> const std::vector<double>& { return s.amps; }, &d.current_limit_amps, "elevator [A]",
-             "arm [A]", true);
+  drawSignal(
+      cr, d, Box{x, y, w, h}, "current per motor (dashed: limits)", "A",
+      [](const JointSeries& s) -> const std::vector<double>& { return s.amps; }, &d.current_limit_amps, "elevator [A]",
+      "arm [A]", true);
 
   cairo_destroy(cr);
   const bool ok = detail::writePng(surface, path, error);

@@ -101,8 +101,10 @@ void drawScene(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& rob
   cairo_line_to(cr, c.px(b.x()), c.py(b.y()));
   cairo_stroke(cr);
   cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
-  for (double x = std::ceil(c.x0 * 2) / 2; x <= c.x1; x += 0.5) text(cr, c.px(x), c.box_y + c.box_h - 4, format("%.1f", x), 10, true);
-  for (double y = std::ceil(c.y0 * 2) / 2; y <= c.y1; y += 0.5) text(cr, c.box_x + 3, c.py(y) + 4, format("%.1f", y), 10);
+  for (double x = std::ceil(c.x0 * 2) / 2; x <= c.x1; x += 0.5)
+    text(cr, c.px(x), c.box_y + c.box_h - 4, format("%.1f", x), 10, true);
+  for (double y = std::ceil(c.y0 * 2) / 2; y <= c.y1; y += 0.5)
+    text(cr, c.box_x + 3, c.py(y) + 4, format("%.1f", y), 10);
 }
 
 void endScene(cairo_t* cr, const WorldCanvas& c) {
@@ -113,10 +115,10 @@ void endScene(cairo_t* cr, const WorldCanvas& c) {
   cairo_stroke(cr);
 }
 
-void drawRobot(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces, const JointVector& q,
-               double alpha) {
+void drawRobot(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces,
+               const JointVector& q, double alpha) {
   const planner::ArmPose pose = planner::armPose(robot.rail, q);
-  auto draw = [&](const std::vector<ConvexPolygon>& polygons, const uint8_t (&color)[3]) {
+  auto draw = [&](const std::vector<ConvexPolygon>& polygons, const uint8_t(&color)[3]) {
     for (const ConvexPolygon& p : polygons) {
       std::vector<Point2> world;
       for (const Point2& v : p.vertices()) world.push_back(pose.toWorld(v));
@@ -132,8 +134,8 @@ void drawRobot(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& rob
   cairo_fill(cr);
 }
 
-void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point, const Point2& obstacle_point, double distance_m,
-                   const std::string& label) {
+void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point, const Point2& obstacle_point,
+                   double distance_m, const std::string& label) {
   setColor(cr, kClearance);
   cairo_set_line_width(cr, 2.0);
   cairo_move_to(cr, c.px(robot_point.x()), c.py(robot_point.y()));
@@ -148,7 +150,8 @@ void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point,
 }
 
 // The farthest robot point along the arm's x axis, traced over the move.
-void drawTipTrace(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces, const Move& move) {
+void drawTipTrace(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces,
+                  const Move& move) {
   double reach = 0;
   for (const ConvexPolygon* p : robotPolygons(robot, pieces)) {
     for (const Point2& v : p->vertices()) reach = std::max(reach, v.x());
@@ -176,7 +179,9 @@ JointVector at(const Move& move, double t) {
   return move.q[k - 1] + s * (move.q[k] - move.q[k - 1]);
 }
 
-planner::SignedDistance distanceAt(const planner::CollisionWorld& world, const JointVector& q) { return world.distance(q); }
+planner::SignedDistance distanceAt(const planner::CollisionWorld& world, const JointVector& q) {
+  return world.distance(q);
+}
 
 // Frame times: `count` even steps over the move, the one nearest the time of smallest clearance
 // moved onto it (the first and last stay: start and goal).
@@ -205,9 +210,9 @@ bool emptyMove(const Move& move, const std::string& path, std::string* error) {
 }
 
 // One frame of a move: scene, tip trace, the robot at t, the smallest clearance when at it.
-void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
-                   const Move& move, const planner::CollisionWorld& world, const Clearance& smallest, double t, bool mark_always,
-                   bool long_label) {
+void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, int scene,
+                   planner::HeldPieces pieces, const Move& move, const planner::CollisionWorld& world,
+                   const Clearance& smallest, double t, bool mark_always, bool long_label) {
   drawScene(cr, c, robot, scene);
   drawTipTrace(cr, c, robot, pieces, move);
   const JointVector q = at(move, t);
@@ -232,8 +237,9 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
   if (long_label) {
     setColor(cr, kClearance);
     text(cr, c.box_x + c.box_w / 2, c.box_y + 34,
-         format("smallest clearance %.3f m", smallest.distance_m) + format(" at %.2f s", smallest.time_s - move.time_s.front()), 12,
-         true);
+         format("smallest clearance %.3f m", smallest.distance_m) +
+             format(" at %.2f s", smallest.time_s - move.time_s.front()),
+         12, true);
   }
   if (at_smallest) {
     setColor(cr, kClearance);
@@ -255,7 +261,8 @@ WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_
   const Point2 b = robot.rail.base_m + robot.elevator_range_m.max * dir;
   constexpr double kMargin = 0.1;
   double x0 = std::min(a.x(), b.x()) - reach - kMargin, x1 = std::max(a.x(), b.x()) + reach + kMargin;
-  double y0 = std::min(-kMargin, std::min(a.y(), b.y()) - reach - kMargin), y1 = std::max(a.y(), b.y()) + reach + kMargin;
+  double y0 = std::min(-kMargin, std::min(a.y(), b.y()) - reach - kMargin),
+         y1 = std::max(a.y(), b.y()) + reach + kMargin;
   y0 = std::max(y0, -kMargin);  // below the floor there is nothing to see
   const double scale = std::min(box_w / (x1 - x0), box_h / (y1 - y0));
   const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
@@ -269,7 +276,8 @@ WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_
 Move moveOf(const TrajectoryPlotData& data) {
   Move move;
   move.time_s = data.time_s;
-  for (size_t k = 0; k < data.time_s.size(); ++k) move.q.emplace_back(data.joints[0].position[k], data.joints[1].position[k]);
+  for (size_t k = 0; k < data.time_s.size(); ++k)
+    move.q.emplace_back(data.joints[0].position[k], data.joints[1].position[k]);
   return move;
 }
 
@@ -287,7 +295,9 @@ Clearance smallestClearance(const planner::RobotModel& robot, int scene, planner
   return best;
 }
 
-WorldCanvas worldPngCanvas(const planner::RobotModel& robot) { return fitWorld(robot, 20, 50, kWorldWidth - 40, kWorldHeight - 70); }
+WorldCanvas worldPngCanvas(const planner::RobotModel& robot) {
+  return fitWorld(robot, 20, 50, kWorldWidth - 40, kWorldHeight - 70);
+}
 
 bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const JointVector& q,
                     const std::string& title, const std::string& path, std::string* error) {
@@ -306,8 +316,8 @@ bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPi
   return detail::writePng(s.surface, path, error);
 }
 
-bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int frames,
-                        const std::string& title, const std::string& path, std::string* error) {
+bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
+                        int frames, const std::string& title, const std::string& path, std::string* error) {
   if (emptyMove(move, path, error)) return false;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const std::vector<double> times = frameTimes(move, std::max(2, frames), smallest.time_s);
@@ -323,13 +333,14 @@ bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::He
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   text(s.cr, width / 2.0, 30, title, 16, true);
   text(s.cr, width / 2.0, kPanelH + 78,
-       format("smallest clearance %.3f m", smallest.distance_m) + format(" at t = %.2f s (red frame); green: path of the arm tip", smallest.time_s - move.time_s.front()),
+       format("smallest clearance %.3f m", smallest.distance_m) +
+           format(" at t = %.2f s (red frame); green: path of the arm tip", smallest.time_s - move.time_s.front()),
        13, true);
   return detail::writePng(s.surface, path, error);
 }
 
-bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int fps,
-                         const std::string& title, const std::string& path, std::string* error) {
+bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
+                         int fps, const std::string& title, const std::string& path, std::string* error) {
   if (emptyMove(move, path, error)) return false;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const double duration = move.time_s.back() - move.time_s.front();

@@ -11,12 +11,12 @@
 namespace cyber::can {
 
 struct BusError {
-  bool bus_off = false;             // controller went bus-off: nothing reaches the bus
-  bool controller_problem = false;  // see controller_status
+  bool bus_off = false;                // controller went bus-off: nothing reaches the bus
+  bool controller_problem = false;     // see controller_status
   std::uint8_t controller_status = 0;  // CAN_ERR_CRTL_* bits (rx/tx overflow, warning, passive)
-  bool tx_timeout = false;          // a transmission timed out in the driver
-  bool restarted = false;           // controller restarted after bus-off
-  bool other = false;               // any other error class bit
+  bool tx_timeout = false;             // a transmission timed out in the driver
+  bool restarted = false;              // controller restarted after bus-off
+  bool other = false;                  // any other error class bit
 
   bool operator==(const BusError&) const = default;
 };

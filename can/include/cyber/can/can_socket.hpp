@@ -37,8 +37,7 @@ struct SocketError {
 
 class CanSocket {
  public:
-  static Result<CanSocket, SocketError> open(std::string_view ifname,
-                                             const SocketOptions& options = {});
+  static Result<CanSocket, SocketError> open(std::string_view ifname, const SocketOptions& options = {});
   // Takes ownership of an already open descriptor (tests use a socketpair in place of CAN).
   static CanSocket adopt(int fd) { return CanSocket(fd); }
 

@@ -42,17 +42,14 @@ constexpr std::uint32_t packFrcId(const FrcId& id) {
 }
 
 constexpr FrcId unpackFrcId(std::uint32_t id) {
-  return FrcId{static_cast<std::uint8_t>((id >> 24) & 0x1Fu),
-               static_cast<std::uint8_t>((id >> 16) & 0xFFu),
-               static_cast<std::uint8_t>((id >> 10) & 0x3Fu),
-               static_cast<std::uint8_t>((id >> 6) & 0x0Fu), static_cast<std::uint8_t>(id & 0x3Fu)};
+  return FrcId{static_cast<std::uint8_t>((id >> 24) & 0x1Fu), static_cast<std::uint8_t>((id >> 16) & 0xFFu),
+               static_cast<std::uint8_t>((id >> 10) & 0x3Fu), static_cast<std::uint8_t>((id >> 6) & 0x0Fu),
+               static_cast<std::uint8_t>(id & 0x3Fu)};
 }
 
 // Id of one of our team-use frames (device type 10, manufacturer 8).
-constexpr std::uint32_t teamFrameId(std::uint8_t api_class, std::uint8_t api_index,
-                                    std::uint8_t device) {
-  return packFrcId(FrcId{kDeviceTypeMiscellaneous, kManufacturerTeamUse, api_class, api_index,
-                         device});
+constexpr std::uint32_t teamFrameId(std::uint8_t api_class, std::uint8_t api_index, std::uint8_t device) {
+  return packFrcId(FrcId{kDeviceTypeMiscellaneous, kManufacturerTeamUse, api_class, api_index, device});
 }
 
 }  // namespace cyber::can

@@ -17,7 +17,7 @@ struct ArgumentError {
 template <class T>
 class Parsed {
  public:
-  Parsed(T value) : v_(std::move(value)) {}             
+  Parsed(T value) : v_(std::move(value)) {}
   Parsed(ArgumentError error) : v_(std::move(error)) {}
   [[nodiscard]] bool ok() const { return v_.index() == 0; }
   explicit operator bool() const { return ok(); }

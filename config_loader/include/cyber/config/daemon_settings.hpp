@@ -24,19 +24,19 @@ struct DaemonSettings {
   std::string lcm_url = "udpm://239.255.76.67:7667?ttl=0";
   std::string can_interface = "can0";
   double stream_rate_hz = 200.0;
-  double state_timeout_s = 0.25;       // ARM_STATE older than this is stale: no motion
-  double heartbeat_timeout_s = 0.1;    // robot-enabled gate (design.md: 100 ms)
-  bool require_robot_enabled = true;   // false only for bench use without a roboRIO
-  double planning_budget_s = 0.03;     // how far ahead a mid-motion replan starts
+  double state_timeout_s = 0.25;      // ARM_STATE older than this is stale: no motion
+  double heartbeat_timeout_s = 0.1;   // robot-enabled gate (design.md: 100 ms)
+  bool require_robot_enabled = true;  // false only for bench use without a roboRIO
+  double planning_budget_s = 0.03;    // how far ahead a mid-motion replan starts
   // The most the measured budget may grow to (a slow coprocessor or an emulated one plans
   // slower). Optional key, default 1 s.
   double max_planning_budget_s = 1.0;
   double status_rate_hz = 10.0;
-  double setpoint_echo_rate_hz = 50.0; // ARM_SETPOINT copies for lcm-spy
+  double setpoint_echo_rate_hz = 50.0;  // ARM_SETPOINT copies for lcm-spy
   // ARM_SETPOINT after every stream tick instead (desktop simulation with --can none, where the
   // robot program takes its setpoints from LCM: docs/roborio.md). Optional key, default off.
   bool setpoint_echo_full_rate = false;
-  double trajectory_step_s = 0.01;     // ARM_TRAJECTORY sample step
+  double trajectory_step_s = 0.01;  // ARM_TRAJECTORY sample step
   std::string log_level = "info";
   DeviceNumbers devices;
   ChannelNames channels;

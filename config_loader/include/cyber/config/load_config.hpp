@@ -33,8 +33,7 @@ struct Config {
 // Thrown for any invalid configuration; what() reads "<source>: <key>: <problem>".
 class ConfigError : public std::runtime_error {
  public:
-  ConfigError(std::string key, const std::string& message)
-      : std::runtime_error(message), key_(std::move(key)) {}
+  ConfigError(std::string key, const std::string& message) : std::runtime_error(message), key_(std::move(key)) {}
   [[nodiscard]] const std::string& key() const { return key_; }
 
  private:

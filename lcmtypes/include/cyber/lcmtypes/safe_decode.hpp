@@ -34,8 +34,7 @@ inline constexpr int kTrajectoryArrays = 7;
 inline bool readInt32(const void* buf, int len, int at, std::int32_t& value) {
   if (at < 0 || len - at < 4) return false;
   const auto* bytes = static_cast<const std::uint8_t*>(buf) + at;
-  value = static_cast<std::int32_t>((std::uint32_t{bytes[0]} << 24) |
-                                    (std::uint32_t{bytes[1]} << 16) |
+  value = static_cast<std::int32_t>((std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
                                     (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]});
   return true;
 }

@@ -6,7 +6,6 @@
 // the cost of connecting it to the exact start or goal pose.
 
 #include <cstdint>
-#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>

@@ -18,10 +18,10 @@ struct SignedDistance {
   double value = std::numeric_limits<double>::infinity();
   JointVector gradient = JointVector::Zero();  // dd/dq (t in m, theta in rad)
   bool exact = false;
-  Point2 witness_robot = Point2::Zero();       // closest (or deepest) points, world frame
+  Point2 witness_robot = Point2::Zero();  // closest (or deepest) points, world frame
   Point2 witness_obstacle = Point2::Zero();
-  int robot_polygon = -1;                      // index into robotPolygons()
-  int obstacle = -1;                           // index into the scene's obstacles
+  int robot_polygon = -1;  // index into robotPolygons()
+  int obstacle = -1;       // index into the scene's obstacles
 };
 
 class CollisionWorld {

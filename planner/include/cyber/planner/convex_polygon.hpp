@@ -22,9 +22,7 @@ class ConvexPolygon {
   [[nodiscard]] bool empty() const { return vertices_.empty(); }
   [[nodiscard]] const Point2& vertex(int i) const { return vertices_[static_cast<size_t>(i)]; }
   // Edge i runs from vertex(i) to vertex(i+1 mod n).
-  [[nodiscard]] const Point2& edgeEnd(int i) const {
-    return vertices_[static_cast<size_t>((i + 1) % size())];
-  }
+  [[nodiscard]] const Point2& edgeEnd(int i) const { return vertices_[static_cast<size_t>((i + 1) % size())]; }
 
  private:
   explicit ConvexPolygon(std::vector<Point2> ccw) : vertices_(std::move(ccw)) {}

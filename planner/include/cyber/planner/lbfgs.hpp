@@ -13,8 +13,8 @@ struct LbfgsSettings {
   int max_iterations = 200;
   double gradient_tolerance = 1e-6;  // stop when the Euclidean norm of the gradient is below
   int max_line_search_steps = 40;
-  double armijo_c1 = 1e-4;           // sufficient decrease (weak Wolfe condition 1)
-  double curvature_c2 = 0.9;         // weak curvature condition (weak Wolfe condition 2)
+  double armijo_c1 = 1e-4;    // sufficient decrease (weak Wolfe condition 1)
+  double curvature_c2 = 0.9;  // weak curvature condition (weak Wolfe condition 2)
   // Near the optimum, cost differences drown in roundoff and the sufficient-decrease test fails
   // on good steps. A step is then accepted by the approximate Wolfe test of Hager and Zhang
   // (slope in [c2, 1 - 2 c1] times the initial slope) if its cost is within this fraction of

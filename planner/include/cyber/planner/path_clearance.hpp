@@ -19,8 +19,8 @@ struct ClearanceCheck {
   bool clear = true;          // d >= clearance along the whole segment or path
   bool within_limits = true;  // the path stays inside the joint limits (exact, per segment)
   double min_distance_m = std::numeric_limits<double>::infinity();  // smallest d sampled
-  double at_s = 0.0;          // where that was (path parameter, or fraction of the segment)
-  int evaluations = 0;        // distance evaluations spent
+  double at_s = 0.0;    // where that was (path parameter, or fraction of the segment)
+  int evaluations = 0;  // distance evaluations spent
 
   [[nodiscard]] bool ok() const { return clear && within_limits; }
 };
@@ -28,8 +28,8 @@ struct ClearanceCheck {
 inline constexpr double kDenseCheckStep = 1e-3;  // m or rad
 
 // Straight segment a -> b. Stops at the first sample closer than the clearance.
-ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, const JointVector& b,
-                            double clearance_m, double max_step = kDenseCheckStep);
+ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, const JointVector& b, double clearance_m,
+                            double max_step = kDenseCheckStep);
 
 // The whole spline path, and its exact joint range against the model's limits. Stops at the first
 // violation; on success the minimum is refined by a dense scan around the closest sample.

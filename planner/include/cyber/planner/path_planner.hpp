@@ -35,7 +35,7 @@ struct PlannedPath {
   bool lead_in = false;  // a straight lead-in along the start velocity was added
   int search_expanded = 0;
   int optimizer_iterations = 0;
-  std::string method;    // which attempt produced the path (e.g. "optimised", "prior")
+  std::string method;  // which attempt produced the path (e.g. "optimised", "prior")
 };
 
 class PathPlanner {
@@ -49,16 +49,20 @@ class PathPlanner {
   // Every path that passed the clearance check, the one a reachability pass times fastest first
   // (the search's smoothed polyline and its shortcut; docs/performance.md). plan() is the first.
   // Without alternatives, the search's smoothed polyline alone (a quick first look at a move).
-  [[nodiscard]] Result<std::vector<PlannedPath>> candidates(const JointVector& start, const JointVector& goal,
-                                                            HeldPieces pieces,
-                                                            const JointVector& start_velocity = JointVector::Zero(),
-                                                            PathAlternatives alternatives = PathAlternatives::kSearch) const;
+  [[nodiscard]] Result<std::vector<PlannedPath>> candidates(
+      const JointVector& start, const JointVector& goal, HeldPieces pieces,
+      const JointVector& start_velocity = JointVector::Zero(),
+      PathAlternatives alternatives = PathAlternatives::kSearch) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
   [[nodiscard]] const Scene& scene() const { return scene_; }
-  [[nodiscard]] const CollisionWorld& world(HeldPieces pieces) const { return worlds_[static_cast<size_t>(pieces.index())]; }
+  [[nodiscard]] const CollisionWorld& world(HeldPieces pieces) const {
+    return worlds_[static_cast<size_t>(pieces.index())];
+  }
   [[nodiscard]] const CSpaceGrid& grid(HeldPieces pieces) const { return grids_[static_cast<size_t>(pieces.index())]; }
-  [[nodiscard]] double gridBuildMs(HeldPieces pieces) const { return grid_build_ms_[static_cast<size_t>(pieces.index())]; }
+  [[nodiscard]] double gridBuildMs(HeldPieces pieces) const {
+    return grid_build_ms_[static_cast<size_t>(pieces.index())];
+  }
 
  private:
   RobotModel model_;

@@ -45,8 +45,6 @@ inline ArmPose armPose(const Point2& rail_base_m, const Point2& rail_direction, 
   return pose;
 }
 
-inline ArmPose armPose(const Rail& rail, const JointVector& q) {
-  return armPose(rail.base_m, railDirection(rail), q);
-}
+inline ArmPose armPose(const Rail& rail, const JointVector& q) { return armPose(rail.base_m, railDirection(rail), q); }
 
 }  // namespace cyber::planner

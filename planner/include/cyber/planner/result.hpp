@@ -38,11 +38,9 @@ struct PlanError {
 template <class T>
 class Result {
  public:
-  Result(T value) : storage_(std::move(value)) {}                // NOLINT(implicit)
-  Result(PlanError error) : storage_(std::move(error)) {}        // NOLINT(implicit)
-  static Result failure(PlanStatus status, std::string reason) {
-    return Result(PlanError{status, std::move(reason)});
-  }
+  Result(T value) : storage_(std::move(value)) {}          // NOLINT(implicit)
+  Result(PlanError error) : storage_(std::move(error)) {}  // NOLINT(implicit)
+  static Result failure(PlanStatus status, std::string reason) { return Result(PlanError{status, std::move(reason)}); }
 
   [[nodiscard]] bool ok() const { return std::holds_alternative<T>(storage_); }
   explicit operator bool() const { return ok(); }

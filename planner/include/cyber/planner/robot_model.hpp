@@ -73,9 +73,9 @@ struct DriveParams {
   double kA = 0.0;
   GravityModel gravity = GravityModel::kConstant;
   double voltage_limit_volts = 12.0;
-  double current_limit_amps = 0.0;               // per motor
-  std::optional<double> velocity_limit;          // joint units/s
-  std::optional<double> acceleration_limit;      // joint units/s^2
+  double current_limit_amps = 0.0;           // per motor
+  std::optional<double> velocity_limit;      // joint units/s
+  std::optional<double> acceleration_limit;  // joint units/s^2
 
   [[nodiscard]] double gravityFactor(double q) const;  // g(q) of algorithm.md section 3
   // Feedforward voltage V(q, qdot, qddot) and the per-motor current it draws.
@@ -89,8 +89,8 @@ struct GridSettings {
 };
 
 struct SearchSettings {
-  double potential_weight = 2.0;   // weight of the potential in the A* step cost
-  double potential_range = 0.15;   // weighted C-space distance over which the potential decays
+  double potential_weight = 2.0;  // weight of the potential in the A* step cost
+  double potential_range = 0.15;  // weighted C-space distance over which the potential decays
 };
 
 // Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
@@ -99,12 +99,12 @@ struct SearchSettings {
 // and fell back to the unsmoothed path), and L-BFGS needed ~40 iterations; these values keep the
 // search's topology, halve the curvature integral and converge in ~4 iterations.
 struct SmoothingSettings {
-  double waypoint_spacing = 0.05;    // weighted C-space spacing of the optimised waypoints
-  double obstacle_weight = 0.5;      // w_o  (eq. 8)
-  double obstacle_decay_m = 0.03;    // d0   (eq. 8)
-  double prior_weight = 20.0;        // w_p
-  double length_weight = 1.0;        // w_l
-  double smoothness_weight = 1000.0; // w_s
+  double waypoint_spacing = 0.05;     // weighted C-space spacing of the optimised waypoints
+  double obstacle_weight = 0.5;       // w_o  (eq. 8)
+  double obstacle_decay_m = 0.03;     // d0   (eq. 8)
+  double prior_weight = 20.0;         // w_p
+  double length_weight = 1.0;         // w_l
+  double smoothness_weight = 1000.0;  // w_s
   int max_iterations = 200;
   double gradient_tolerance = 1e-6;
   // L-BFGS also stops when a step lowers J by less than this fraction of max(1, |J|) (0: off).
@@ -116,17 +116,17 @@ struct SmoothingSettings {
 };
 
 struct ToppSettings {
-  int grid_points = 200;             // K
+  int grid_points = 200;  // K
   double primal_tolerance = 1e-6;
   double dual_tolerance = 1e-4;
-  int max_outer_iterations = 50;     // a cap, never the stopping rule
+  int max_outer_iterations = 50;  // a cap, never the stopping rule
   int max_inner_iterations = 500;
-  double limit_check_step_s = 0.001; // the continuous trajectory is checked at this step
+  double limit_check_step_s = 0.001;     // the continuous trajectory is checked at this step
   double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
-  int max_limit_refinements = 8;     // re-solves with tightened limits after a failed check
-  double penalty_initial = 1e3;      // rho_0 of the augmented Lagrangian (cost scaled to order one)
-  double penalty_growth = 1.0;       // gamma: rho <- min((1 + gamma) rho, beta)
-  double penalty_max = 1e6;          // beta
+  int max_limit_refinements = 8;         // re-solves with tightened limits after a failed check
+  double penalty_initial = 1e3;          // rho_0 of the augmented Lagrangian (cost scaled to order one)
+  double penalty_growth = 1.0;           // gamma: rho <- min((1 + gamma) rho, beta)
+  double penalty_max = 1e6;              // beta
 };
 
 struct PlannerSettings {

@@ -116,8 +116,7 @@ void vertexEdgeDistances(const P& p, const Q& q, bool p_is_a, double* best2, Pai
 // Signed distance of A and B. When the separating-axis gap (a lower bound of the distance) is
 // already >= cutoff, returns that bound with exact = false and skips the Euclidean part.
 template <class A, class B>
-PairDistance signedDistance(const A& a, const B& b,
-                            double cutoff = std::numeric_limits<double>::infinity()) {
+PairDistance signedDistance(const A& a, const B& b, double cutoff = std::numeric_limits<double>::infinity()) {
   PairDistance out;
   int edge_a = 0, vertex_b = 0, edge_b = 0, vertex_a = 0;
   const double gap_a = detail::largestEdgeGap(a, b, &edge_a, &vertex_b);

@@ -20,10 +20,10 @@ namespace cyber::planner {
 // What the solver did; filled on success and on failure.
 struct ToppReport {
   int grid_points = 0;
-  int outer_iterations = 0;   // summed over all solves (first solve and limit refinements)
-  int inner_iterations = 0;   // L-BFGS iterations, summed
-  int evaluations = 0;        // evaluations of L_rho, summed
-  int refinements = 0;        // re-solves after the continuous limit check tightened limits
+  int outer_iterations = 0;      // summed over all solves (first solve and limit refinements)
+  int inner_iterations = 0;      // L-BFGS iterations, summed
+  int evaluations = 0;           // evaluations of L_rho, summed
+  int refinements = 0;           // re-solves after the continuous limit check tightened limits
   double primal_residual = 0.0;  // of the last solve (see topp::AlReport)
   double dual_residual = 0.0;
   double penalty = 0.0;
@@ -70,8 +70,8 @@ class ToppSolver {
   Result<RowLimits> refineOrTighten(const Move& move, ToppReport& report);
 
   ToppSettings settings_;
-  topp::Problem problem_;       // unit length, seconds
-  topp::Problem scaled_;        // unit length, time in units of the warm start's duration
+  topp::Problem problem_;  // unit length, seconds
+  topp::Problem scaled_;   // unit length, time in units of the warm start's duration
   topp::LimitMargins margins_;
   std::vector<double> profile_;
   std::vector<double> controllable_;
@@ -81,7 +81,7 @@ class ToppSolver {
 
 // One-shot convenience wrapper around ToppSolver.
 Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                           const DriveParams& arm, const ToppSettings& settings,
-                                           double b_start = 0.0, ToppReport* report = nullptr);
+                                           const DriveParams& arm, const ToppSettings& settings, double b_start = 0.0,
+                                           ToppReport* report = nullptr);
 
 }  // namespace cyber::planner

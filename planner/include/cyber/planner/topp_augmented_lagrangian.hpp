@@ -44,19 +44,17 @@ struct VariableLayout {
     return {4 * k, 4 * k + 1, next, 4 * k + 2, next + 1};
   }
   // The values the boundary equalities pin, in the order of their multipliers (Multipliers::equality).
-  [[nodiscard]] std::array<int, 4> boundary() const {
-    return {b(0), b(grid_points - 1), c(0), c(grid_points - 1)};
-  }
+  [[nodiscard]] std::array<int, 4> boundary() const { return {b(0), b(grid_points - 1), c(0), c(grid_points - 1)}; }
 };
 
 struct Multipliers {
-  Eigen::VectorXd time_cone;     // mu, 3 per interval
-  Eigen::VectorXd speed_cone;    // mu, 3 per node
-  Eigen::VectorXd speed_square;  // nu, 1 per node
-  Eigen::VectorXd equality;      // lambda: one per interval, then b_0, b_{K-1}, c_0, c_{K-1}
-  Eigen::VectorXd row_upper;     // eta of alpha a + beta b + gamma c - hi <= 0
-  Eigen::VectorXd row_lower;     // eta of lo - (alpha a + beta b + gamma c) <= 0
-  Eigen::VectorXd b_nonnegative; // eta of -b_k <= 0
+  Eigen::VectorXd time_cone;      // mu, 3 per interval
+  Eigen::VectorXd speed_cone;     // mu, 3 per node
+  Eigen::VectorXd speed_square;   // nu, 1 per node
+  Eigen::VectorXd equality;       // lambda: one per interval, then b_0, b_{K-1}, c_0, c_{K-1}
+  Eigen::VectorXd row_upper;      // eta of alpha a + beta b + gamma c - hi <= 0
+  Eigen::VectorXd row_lower;      // eta of lo - (alpha a + beta b + gamma c) <= 0
+  Eigen::VectorXd b_nonnegative;  // eta of -b_k <= 0
   void reset(const Problem& problem);
   // The three entries of mu of time cone k (interval k) and of speed cone k (node k).
   [[nodiscard]] double* timeCone(int k) { return time_cone.data() + 3 * k; }

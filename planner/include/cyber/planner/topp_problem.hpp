@@ -63,12 +63,12 @@ class LimitMargins {
 // path derivatives are scaled to match (q' L, q'' L^2); scaleTime() further measures time in
 // units of a time scale. The optimiser then sees numbers of order one for any path.
 struct Problem {
-  std::vector<double> s;          // K grid points, s[0] = 0, s[K-1] = 1
-  std::vector<PathPoint> points;  // path samples at s
-  std::vector<PathPoint> midpoints;  // path samples halfway between consecutive grid points
+  std::vector<double> s;                  // K grid points, s[0] = 0, s[K-1] = 1
+  std::vector<PathPoint> points;          // path samples at s
+  std::vector<PathPoint> midpoints;       // path samples halfway between consecutive grid points
   std::vector<double> density_workspace;  // sampleGrid's buffer
-  std::vector<LinearRow> rows;    // sorted by interval
-  std::vector<int> row_begin;     // rows of interval k: [row_begin[k], row_begin[k+1])
+  std::vector<LinearRow> rows;            // sorted by interval
+  std::vector<int> row_begin;             // rows of interval k: [row_begin[k], row_begin[k+1])
   double b_start = 0.0;
   double b_end = 0.0;
   // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
@@ -92,8 +92,8 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 
 // Builds the limit rows of algorithm.md section 3 for the sampled grid, at both ends and the
 // middle of every interval. The Coulomb term kS*sgn(qdot) uses every sign qdot takes on the
-// interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with `error` set when a limit
-// cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
+// interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with
+// `error` set when a limit cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
 bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
                std::string* error);
 

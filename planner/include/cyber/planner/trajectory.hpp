@@ -15,10 +15,10 @@
 namespace cyber::planner {
 
 struct TrajectorySample {
-  double t = 0.0;       // s
-  double s = 0.0;       // path parameter
-  double sdot = 0.0;    // ds/dt
-  double sddot = 0.0;   // d2s/dt2 (constant on each grid interval)
+  double t = 0.0;      // s
+  double s = 0.0;      // path parameter
+  double sdot = 0.0;   // ds/dt
+  double sddot = 0.0;  // d2s/dt2 (constant on each grid interval)
   JointVector q = JointVector::Zero();
   JointVector qdot = JointVector::Zero();
   JointVector qddot = JointVector::Zero();

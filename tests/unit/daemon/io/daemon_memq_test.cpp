@@ -150,7 +150,9 @@ class DaemonMemq : public ::testing::Test {
     onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, &message); });
   }
   void publishRaw(const std::string& channel, const std::vector<std::uint8_t>& bytes) {
-    onLoop([&] { DaemonProbe::lcmFor(*daemon, channel).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size())); });
+    onLoop([&] {
+      DaemonProbe::lcmFor(*daemon, channel).publish(channel, bytes.data(), static_cast<unsigned>(bytes.size()));
+    });
   }
 
   void goal(std::int64_t id, double elevator_m, double arm_rad) {
@@ -261,9 +263,8 @@ TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
   cyberplanner::arm_state_t nan_state{};
   nan_state.elevator_m = std::nan("");
   publish("ARM_STATE", nan_state);
-  ASSERT_TRUE(listener.waitFor([&] {
-    return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 5;
-  }));
+  ASSERT_TRUE(listener.waitFor(
+      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 5; }));
   goal(7, 1.0, 1.0);
   ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
   std::lock_guard<std::mutex> lock(listener.mutex);

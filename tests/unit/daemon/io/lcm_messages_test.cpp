@@ -78,7 +78,8 @@ TEST(LcmMessages, StatusCarriesStatusReasonTimesAndDuration) {
 
 TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
   const auto& robot = cyber::test::referenceModel();
-  auto trajectory = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), 1.234, robot);
+  auto trajectory =
+      daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), 1.234, robot);
   const auto message = trajectoryMessage(4, *trajectory, 1000, 0.01, 2000);
   EXPECT_EQ(message.request_id, 4);
   EXPECT_EQ(message.start_utime, 1000);
@@ -104,7 +105,8 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
 TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
   const auto& robot = cyber::test::referenceModel();
   for (double duration : {9.98, 9.99, 10.0, 33.3, 120.0}) {
-    auto trajectory = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), duration, robot);
+    auto trajectory =
+        daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), duration, robot);
     const auto message = trajectoryMessage(1, *trajectory, 0, 0.01, 0);
     EXPECT_LE(message.num_samples, cyberplanner::arm_trajectory_t::MAX_SAMPLES) << duration;
     EXPECT_GE(message.dt_s, 0.01);

@@ -72,7 +72,7 @@ TEST(LatencyHistogram, PercentilesWithinTheBinWidth) {
   EXPECT_NEAR(h.percentileUs(0.99), 990.0, 990.0 * 0.02);
   EXPECT_DOUBLE_EQ(h.maxUs(), 1000.0);
   EXPECT_LE(h.percentileUs(1.0), 1000.0);
-  h.record(0.0);  // below the first bin edge
+  h.record(0.0);   // below the first bin edge
   h.record(1e12);  // beyond the last: clamped into it
   EXPECT_DOUBLE_EQ(h.maxUs(), 1e12);
 }

@@ -112,7 +112,9 @@ class Harness {
     GoalRequest request{id, q[0], q[1], coral, algae, std::move(scene)};
     coordinator_.onGoal(request, now, evaluateGate(inputs, now, settings_gate_));
   }
-  void rawGoal(const GoalRequest& request) { coordinator_.onGoal(request, now, evaluateGate(inputs, now, settings_gate_)); }
+  void rawGoal(const GoalRequest& request) {
+    coordinator_.onGoal(request, now, evaluateGate(inputs, now, settings_gate_));
+  }
 
   // One stream period: finished plans first (the worker wakes the loop), then the streamer's tick
   // and its events, then time advances. State and heartbeats are refreshed when asked to.

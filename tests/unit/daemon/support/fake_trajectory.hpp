@@ -15,8 +15,12 @@ class HermiteTrajectory final : public SetpointSource {
  public:
   HermiteTrajectory(JointVector start, JointVector start_velocity, JointVector goal, double duration_s,
                     const planner::DriveParams& elevator, const planner::DriveParams& arm)
-      : p0_(std::move(start)), v0_(std::move(start_velocity)), p1_(std::move(goal)), duration_s_(duration_s),
-        elevator_(elevator), arm_(arm) {}
+      : p0_(std::move(start)),
+        v0_(std::move(start_velocity)),
+        p1_(std::move(goal)),
+        duration_s_(duration_s),
+        elevator_(elevator),
+        arm_(arm) {}
 
   [[nodiscard]] double durationS() const override { return duration_s_; }
 

@@ -31,10 +31,10 @@ struct WriteReport {
   int frames_written = 0;
   int frames_failed = 0;
   int encode_errors = 0;
-  bool burst_started = false;          // first failure after a success
-  bool burst_ended = false;            // first success after failures
-  std::int64_t burst_failures = 0;     // with burst_ended: how many frames the burst lost
-  can::IoResult first_failure;         // with burst_started
+  bool burst_started = false;       // first failure after a success
+  bool burst_ended = false;         // first success after failures
+  std::int64_t burst_failures = 0;  // with burst_ended: how many frames the burst lost
+  can::IoResult first_failure;      // with burst_started
   bool status_sent = false;
   WireSetpoints wire;
 };

@@ -55,15 +55,15 @@ struct CoordinatorSettings {
   double planning_budget_s = 0.03;  // configured minimum
   double stream_period_s = 0.005;
   double max_budget_s = 1.0;
-  int max_late_attempts = 3;        // then finish the running motion and plan from rest
+  int max_late_attempts = 3;  // then finish the running motion and plan from rest
 };
 
 struct CoordinatorCounters {
   std::int64_t goals_received = 0;
-  std::int64_t goals_rejected = 0;   // REJECTED answers
+  std::int64_t goals_rejected = 0;  // REJECTED answers
   std::int64_t plans_succeeded = 0;
-  std::int64_t plans_failed = 0;     // FAILED answers
-  std::int64_t plans_late = 0;       // plans that missed their splice time
+  std::int64_t plans_failed = 0;  // FAILED answers
+  std::int64_t plans_late = 0;    // plans that missed their splice time
   std::int64_t goals_done = 0;
 };
 
@@ -117,7 +117,7 @@ class GoalCoordinator {
     std::uint64_t program_id = 0;
     Program program;
     Attempt attempt;
-    std::vector<std::int64_t> dropped;  // requests whose segments the program replaced
+    std::vector<std::int64_t> dropped;                          // requests whose segments the program replaced
     std::vector<std::pair<std::int64_t, std::int64_t>> pruned;  // segments over (request, superseded by)
   };
   using Stage = std::variant<Idle, Planning, Posted>;
@@ -129,7 +129,8 @@ class GoalCoordinator {
 
   // Transitions of the pipeline (each called only from the state it names).
   void startPlanning(MonoNs now);  // Idle -> Planning, when a goal waits and the stream runs
-  void onPlanned(Planning job, planner::Result<PlannedMotion> result, double plan_time_s, MonoNs now);  // Planning -> Posted | Idle
+  void onPlanned(Planning job, planner::Result<PlannedMotion> result, double plan_time_s,
+                 MonoNs now);                                            // Planning -> Posted | Idle
   void onAdopted(Posted posted, const StreamEvent& event, MonoNs now);   // Posted -> Idle
   void onRejected(Posted posted, const StreamEvent& event, MonoNs now);  // Posted -> Idle
   void replan(const Attempt& attempt, bool late, MonoNs now, const std::string& why);
@@ -157,9 +158,9 @@ class GoalCoordinator {
   Program mirror_;
   StreamState stream_ = Stopped{"no ARM_STATE received yet"};
   Stage stage_ = Idle{};
-  std::optional<Attempt> waiting_;                 // latest wins: the next goal for the worker
+  std::optional<Attempt> waiting_;  // latest wins: the next goal for the worker
   std::map<std::int64_t, OpenGoal> open_;
-  std::optional<std::int64_t> executing_;          // the open request being streamed
+  std::optional<std::int64_t> executing_;  // the open request being streamed
   std::uint64_t next_job_id_ = 1;
   std::uint64_t next_program_id_ = 1;
 };

@@ -9,8 +9,7 @@ namespace cyber::daemon {
 
 class HoldModel {
  public:
-  HoldModel(const planner::DriveParams& elevator, const planner::DriveParams& arm)
-      : elevator_(elevator), arm_(arm) {}
+  HoldModel(const planner::DriveParams& elevator, const planner::DriveParams& arm) : elevator_(elevator), arm_(arm) {}
   explicit HoldModel(const planner::RobotModel& robot) : HoldModel(robot.elevator_drive, robot.arm_drive) {}
 
   [[nodiscard]] JointSetpoints hold(const JointVector& q) const;

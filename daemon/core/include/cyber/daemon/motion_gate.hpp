@@ -22,8 +22,8 @@ struct RobotInputs {
   MonoNs state_ns = kNever;  // arrival of the latest valid ARM_STATE
   planner::JointVector measured_q = planner::JointVector::Zero();
   planner::JointVector measured_qdot = planner::JointVector::Zero();
-  MonoNs heartbeat_ns = kNever;       // arrival of the latest roboRIO heartbeat
-  bool heartbeat_watchdog = false;    // its system-watchdog bit
+  MonoNs heartbeat_ns = kNever;          // arrival of the latest roboRIO heartbeat
+  bool heartbeat_watchdog = false;       // its system-watchdog bit
   MonoNs broadcast_disable_ns = kNever;  // arrival of the latest broadcast disable
   // Broadcast disables seen so far. The streamer latches each new one as an event: a disable
   // followed within a period by an enabled heartbeat would otherwise be lifted before any tick saw it.
@@ -32,12 +32,12 @@ struct RobotInputs {
 
 enum class GateReason {
   kOpen,
-  kNoState,            // no ARM_STATE yet
-  kStateStale,         // the latest ARM_STATE is older than state_timeout_s
-  kRobotDisabled,      // the latest heartbeat lacks the system-watchdog bit
-  kNoHeartbeat,        // no heartbeat, or it is older than heartbeat_timeout_s
-  kBroadcastDisable,   // a broadcast disable arrived and no enabled heartbeat since
-  kFault,              // not from evaluateGate: the streamer stopped on a setpoint it could not send
+  kNoState,           // no ARM_STATE yet
+  kStateStale,        // the latest ARM_STATE is older than state_timeout_s
+  kRobotDisabled,     // the latest heartbeat lacks the system-watchdog bit
+  kNoHeartbeat,       // no heartbeat, or it is older than heartbeat_timeout_s
+  kBroadcastDisable,  // a broadcast disable arrived and no enabled heartbeat since
+  kFault,             // not from evaluateGate: the streamer stopped on a setpoint it could not send
 };
 
 std::string_view toString(GateReason reason);

@@ -34,11 +34,11 @@ struct SpliceRequest {
 
 struct ProgramSample {
   JointSetpoints setpoints;
-  int segment = -1;               // index of the segment in effect, -1 before the first
-  std::int64_t request_id = -1;   // its request, -1 when resting at rest_q
-  double segment_time_s = 0.0;    // time into that segment (clamped to its duration)
-  bool moving = false;            // inside a segment (false once it has finished: holding its end)
-  bool last_segment = false;      // the segment in effect is the program's last one
+  int segment = -1;              // index of the segment in effect, -1 before the first
+  std::int64_t request_id = -1;  // its request, -1 when resting at rest_q
+  double segment_time_s = 0.0;   // time into that segment (clamped to its duration)
+  bool moving = false;           // inside a segment (false once it has finished: holding its end)
+  bool last_segment = false;     // the segment in effect is the program's last one
 };
 
 class Program {
@@ -46,9 +46,9 @@ class Program {
   // A program with no segments: hold q. Id 0 marks the streamer's own hold programs.
   static Program holdAt(std::uint64_t epoch, const JointVector& q);
 
-  std::uint64_t id = 0;       // unique per posted program; 0 for the streamer's own
-  std::uint64_t base_id = 0;  // the program this one was spliced into
-  std::uint64_t epoch = 0;    // streamer epoch it is valid for (bumped on every stop/re-enable)
+  std::uint64_t id = 0;                      // unique per posted program; 0 for the streamer's own
+  std::uint64_t base_id = 0;                 // the program this one was spliced into
+  std::uint64_t epoch = 0;                   // streamer epoch it is valid for (bumped on every stop/re-enable)
   JointVector rest_q = JointVector::Zero();  // position before the first segment
 
   // The last segment starts at splice_ns (fixed splice), or, when floating, when the streamer

@@ -11,13 +11,13 @@
 namespace cyber::daemon {
 
 enum class StreamEventKind {
-  kAdopted,     // program_id is running now; start_ns = start of its last segment
-  kRejected,    // program_id was not taken (reject_reason); it never ran
-  kExecuting,   // request_id's segment is being streamed
-  kDone,        // request_id's segment finished; holding its end position
-  kStopped,     // motion stopped (gate closed, reason): nothing is streamed; new epoch
-  kHolding,     // the streamer holds `position` on its own (enabled again, shutdown); new epoch
-  kFault,       // a setpoint could not be streamed (non-finite or out of the frame's range)
+  kAdopted,    // program_id is running now; start_ns = start of its last segment
+  kRejected,   // program_id was not taken (reject_reason); it never ran
+  kExecuting,  // request_id's segment is being streamed
+  kDone,       // request_id's segment finished; holding its end position
+  kStopped,    // motion stopped (gate closed, reason): nothing is streamed; new epoch
+  kHolding,    // the streamer holds `position` on its own (enabled again, shutdown); new epoch
+  kFault,      // a setpoint could not be streamed (non-finite or out of the frame's range)
 };
 
 enum class RejectReason {

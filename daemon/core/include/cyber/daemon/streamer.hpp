@@ -43,7 +43,7 @@ struct TickOutput {
   GateReason gate_reason = GateReason::kNoState;
   std::int64_t request_id = -1;  // segment streamed, or the last one (held target); -1 none
   double segment_time_s = 0.0;
-  double remaining_s = 0.0;      // until the program comes to rest
+  double remaining_s = 0.0;  // until the program comes to rest
 
   std::array<StreamEvent, kMaxEvents> events{};
   int event_count = 0;
@@ -85,9 +85,9 @@ class Streamer {
 
   HoldModel hold_;
   StreamerSettings settings_;
-  Program own_;                // the streamer's own hold program, reused
-  Program* program_ = &own_;   // own_ or an adopted one (owned until retired)
-  bool running_ = false;       // streaming (holding or moving); false while the gate is closed
+  Program own_;               // the streamer's own hold program, reused
+  Program* program_ = &own_;  // own_ or an adopted one (owned until retired)
+  bool running_ = false;      // streaming (holding or moving); false while the gate is closed
   bool shutdown_hold_ = false;
   std::uint64_t epoch_ = 0;
   MonoNs last_sample_ns_ = kNever;

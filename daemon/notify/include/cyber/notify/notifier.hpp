@@ -72,8 +72,7 @@ class Notifier {
 // process. Ping at half this interval or faster.
 std::chrono::microseconds watchdogInterval();
 // The same rule on given values (nullptr = unset).
-std::chrono::microseconds watchdogIntervalFrom(const char* watchdog_usec, const char* watchdog_pid,
-                                               long own_pid);
+std::chrono::microseconds watchdogIntervalFrom(const char* watchdog_usec, const char* watchdog_pid, long own_pid);
 
 // A process-wide notifier built from $NOTIFY_SOCKET on first use (thread-safe). Make the first
 // call at start-up (e.g. notifyStatus("starting")), not on the streaming thread: it opens the

@@ -71,7 +71,7 @@ class FaultSchedule {
  private:
   [[nodiscard]] std::optional<double> dueTime(const FaultEvent& event) const;
 
-  std::vector<FaultEvent> pending_;  // command-line order
+  std::vector<FaultEvent> pending_;                     // command-line order
   std::vector<std::optional<double>> motion_starts_s_;  // [N - 1]: start of motion N
 };
 

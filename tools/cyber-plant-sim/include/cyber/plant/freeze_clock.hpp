@@ -9,8 +9,7 @@ namespace cyber::plant {
 
 class FreezeClock {
  public:
-  FreezeClock(double wake_interval_s, double tolerance_s)
-      : interval_s_(wake_interval_s), tolerance_s_(tolerance_s) {}
+  FreezeClock(double wake_interval_s, double tolerance_s) : interval_s_(wake_interval_s), tolerance_s_(tolerance_s) {}
 
   // At each wake, with the real time since start-up (non-decreasing); returns the simulation
   // time, which advances by at most one interval across a freeze.

@@ -33,8 +33,8 @@ struct JointPlant {
 
 // The controller's feedback gains on top of the feedforward.
 struct PdGains {
-  double kp_volts_per_unit = 0.0;          // V per m or V per rad of position error
-  double kd_volts_per_unit_per_s = 0.0;    // V per m/s or V per rad/s of velocity error
+  double kp_volts_per_unit = 0.0;        // V per m or V per rad of position error
+  double kd_volts_per_unit_per_s = 0.0;  // V per m/s or V per rad/s of velocity error
 };
 
 // What the controller tracks: a setpoint frame's content.
@@ -54,8 +54,7 @@ double controllerVolts(const JointPlant& plant, const PdGains& gains, const Join
                        const JointState& state);
 
 // Advances the plant by dt_s > 0 under a constant applied voltage.
-JointState stepPlant(const JointPlant& plant, const JointState& state, double applied_volts,
-                     double dt_s);
+JointState stepPlant(const JointPlant& plant, const JointState& state, double applied_volts, double dt_s);
 
 // The speed a joint settles at in neutral under gravity alone (brake mode), signed; 0 when
 // friction holds it: -(|kG g(q)| - kS) / kV * sgn(kG g(q)).

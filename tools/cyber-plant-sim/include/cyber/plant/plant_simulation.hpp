@@ -10,8 +10,8 @@
 #include <array>
 #include <optional>
 
-#include "cyber/plant/joint_model.hpp"
 #include "cyber/planner/types.hpp"
+#include "cyber/plant/joint_model.hpp"
 
 namespace cyber::plant {
 
@@ -20,8 +20,8 @@ inline constexpr int kJointCount = 2;  // planner::kElevator, planner::kArm
 struct SimulationSettings {
   std::array<JointPlant, kJointCount> plants;
   std::array<PdGains, kJointCount> gains;
-  double step_s = 0.001;              // controller and integration step (a 1 kHz loop)
-  double setpoint_timeout_s = 0.1;    // no setpoint for longer: neutral
+  double step_s = 0.001;            // controller and integration step (a 1 kHz loop)
+  double setpoint_timeout_s = 0.1;  // no setpoint for longer: neutral
 };
 
 // Default feedback gains of the simulated controllers. With the reference drives they give error
@@ -58,9 +58,7 @@ class PlantSimulation {
   [[nodiscard]] planner::JointVector velocities() const;
   // Voltage the controller applied during the latest step.
   [[nodiscard]] double appliedVolts(int joint) const { return applied_volts_[joint]; }
-  [[nodiscard]] const std::optional<ReceivedSetpoint>& latestSetpoint(int joint) const {
-    return latest_[joint];
-  }
+  [[nodiscard]] const std::optional<ReceivedSetpoint>& latestSetpoint(int joint) const { return latest_[joint]; }
   [[nodiscard]] const SimulationSettings& settings() const { return settings_; }
 
  private:

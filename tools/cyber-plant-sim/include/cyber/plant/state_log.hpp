@@ -12,8 +12,8 @@
 namespace cyber::plant {
 
 struct StateLogRow {
-  double t_s = 0.0;              // simulator time since start-up (monotonic), s
-  std::int64_t utime = 0;        // wall clock, us: the ARM_STATE utime, comparable to candump's
+  double t_s = 0.0;        // simulator time since start-up (monotonic), s
+  std::int64_t utime = 0;  // wall clock, us: the ARM_STATE utime, comparable to candump's
   std::array<JointState, kJointCount> state{};
   std::array<std::optional<JointCommand>, kJointCount> command{};  // empty: neutral
   std::array<double, kJointCount> applied_volts{};

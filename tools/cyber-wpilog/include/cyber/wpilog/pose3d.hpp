@@ -11,7 +11,7 @@
 namespace cyber::wpilog {
 
 struct Pose3d {
-  double x = 0, y = 0, z = 0;           // m
+  double x = 0, y = 0, z = 0;             // m
   double qw = 1, qx = 0, qy = 0, qz = 0;  // unit quaternion
 };
 

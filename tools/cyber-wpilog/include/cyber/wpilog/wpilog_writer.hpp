@@ -1,7 +1,7 @@
 #pragma once
-// Writes WPILib data log (.wpilog) files, version 1.0 (the format and what the project logs: docs/operations.md, "AdvantageScope"): entries
-// are started with a name, a type string and metadata, then carry timestamped records. The whole
-// file is built in memory; this is a tool, not the streaming path.
+// Writes WPILib data log (.wpilog) files, version 1.0 (the format and what the project logs: docs/operations.md,
+// "AdvantageScope"): entries are started with a name, a type string and metadata, then carry timestamped records. The
+// whole file is built in memory; this is a tool, not the streaming path.
 
 #include <cstdint>
 #include <span>

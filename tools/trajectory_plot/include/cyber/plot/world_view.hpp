@@ -62,16 +62,17 @@ constexpr int kWorldHeight = 900;
 WorldCanvas worldPngCanvas(const planner::RobotModel& robot);
 // One pose: the robot over its scene, kWorldWidth x kWorldHeight px. False with `error` set when
 // the file cannot be written.
-bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const planner::JointVector& q,
-                    const std::string& title, const std::string& path, std::string* error);
+bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                    const planner::JointVector& q, const std::string& title, const std::string& path,
+                    std::string* error);
 // `frames` poses at even times of the move side by side, the one nearest the smallest clearance
 // moved to it and framed in red.
-bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int frames,
-                        const std::string& title, const std::string& path, std::string* error);
+bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
+                        int frames, const std::string& title, const std::string& path, std::string* error);
 // The move as an animated PNG (APNG) at `fps` (at most 200 frames), each frame with its closest
 // pair in grey and the smallest clearance of the move in red; one frame is at that smallest.
-bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move, int fps,
-                         const std::string& title, const std::string& path, std::string* error);
+bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
+                         int fps, const std::string& title, const std::string& path, std::string* error);
 // A robot description at a glance: the robot at `poses` over the obstacles of `scene`, and the
 // C-space map of `pieces` with the poses marked.
 bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,

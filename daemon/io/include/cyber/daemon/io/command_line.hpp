@@ -10,7 +10,7 @@
 namespace cyber::daemon::io {
 
 struct CommandLine {
-  std::string config_path;  // empty: the embedded default configuration
+  std::string config_path;                   // empty: the embedded default configuration
   std::optional<std::string> can_interface;  // "none" = simulation
   std::optional<std::string> lcm_url;
   bool help = false;

@@ -10,8 +10,8 @@
 #include <string>
 
 #include "cyber/config/daemon_settings.hpp"
-#include "cyberplanner/arm_goal_t.hpp"
 #include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyberplanner/arm_goal_t.hpp"
 
 namespace cyber::daemon::io {
 

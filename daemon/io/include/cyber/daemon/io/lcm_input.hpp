@@ -11,10 +11,10 @@
 
 #include "cyber/daemon/goal_request.hpp"
 #include "cyber/daemon/io/lcm_bridge.hpp"
-#include "cyberplanner/arm_state_t.hpp"
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/planner/robot_model.hpp"
+#include "cyberplanner/arm_state_t.hpp"
 
 namespace cyber::daemon::io {
 

@@ -64,7 +64,7 @@ struct StreamerChannels {
   SpscRing<Program*, 64> retired;
   SpscRing<WriteNotice, 64> notices;
   LatestValue<StreamSnapshot> snapshot;
-  EventFd wake;  // the streamer has pushed events or notices
+  EventFd wake;                                // the streamer has pushed events or notices
   std::atomic<bool> wake_on_setpoints{false};  // also after every tick that wrote setpoints
 
   std::atomic<std::int64_t> frames_sent{0};
