@@ -4,6 +4,7 @@
 #include <string>
 
 #include "cyber/can/candump_log.hpp"
+#include "random_frame.hpp"
 
 namespace cyber::can {
 namespace {
@@ -81,34 +82,15 @@ TEST(CandumpLog, ParsesCandumpLines) {
 
 TEST(CandumpLog, RandomRecordsRoundTrip) {
   std::mt19937_64 rng(123);
-  std::uniform_int_distribution<int> flavour(0, 3), dlc(0, 8), byte(0, 255), name_length(1, 15);
+  std::uniform_int_distribution<int> name_length(1, 15);
   std::uniform_int_distribution<std::uint64_t> seconds(0, 9999999999ull);
-  std::uniform_int_distribution<std::uint32_t> micros(0, 999999), eff(0, 0x1FFFFFFFu), sff(0, 0x7FFu), letter(0, 25);
+  std::uniform_int_distribution<std::uint32_t> micros(0, 999999), letter(0, 25);
   for (int i = 0; i < 5000; ++i) {
     LogRecord record;
     record.time = LogTime{seconds(rng), micros(rng)};
     const int length = name_length(rng);
     for (int c = 0; c < length; ++c) record.iface.push_back(static_cast<char>('a' + letter(rng)));
-    Frame& frame = record.frame;
-    switch (flavour(rng)) {
-      case 0: frame.id = sff(rng); break;
-      case 1:
-        frame.id = eff(rng);
-        frame.extended = true;
-        break;
-      case 2:
-        frame.id = sff(rng);
-        frame.remote = true;
-        break;
-      default:
-        frame.id = eff(rng) & 0x1FFu;
-        frame.error = true;
-        break;
-    }
-    frame.dlc = static_cast<std::uint8_t>(dlc(rng));
-    if (!frame.remote) {
-      for (std::uint8_t b = 0; b < frame.dlc; ++b) frame.data[b] = static_cast<std::uint8_t>(byte(rng));
-    }
+    record.frame = test::randomFrame(rng);
     const std::string line = formatLogLine(record);
     const auto parsed = parseLogLine(line);
     ASSERT_TRUE(parsed.ok()) << line << ": " << parsed.error().reason;
