@@ -1,7 +1,6 @@
 #include "cyber/planner/motion_planner.hpp"
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -105,7 +104,7 @@ Result<Plan> planAfterStop(const RobotModel& model, const PathPlanner& paths, co
 // acceleration jumps (braking, then leaving along another direction); sampled every 1 ms, the
 // columns then agree only when the jump falls near the middle between samples (the trapezoid of
 // the two samples around it is then close to the true change of velocity), so when they do not,
-// the stop is made gentle enough to move the junction later, an eighth of a step at a time.
+// the stop is made gentle enough to move the junction later (docs/moving-starts.md).
 Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request) {
   const auto stop_start = std::chrono::steady_clock::now();
   ToppSolver solver(model.planner.topp);
@@ -117,14 +116,11 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
   const double steps = stop.value().duration_s() / kConsistencyStepS;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
   // the jump errs by at most a quarter of it), earliest first.
-  std::array<double, kGentlerSteps> later{};
   int tries = 0;
-  for (int i = 1; i <= kGentlerSteps && tries < kGentlerTries; ++i) {
+  for (int i = 1; i <= kGentlerSteps && tries < kGentlerTries && plan && !consistent(*plan.value().trajectory); ++i) {
     const double target = steps + kGentlerStep * i;
-    if (std::abs(target - std::floor(target) - 0.5) <= 0.25) later[static_cast<size_t>(tries++)] = target;
-  }
-  for (int i = 0; i < tries && plan && !consistent(*plan.value().trajectory); ++i) {
-    const double target = later[static_cast<size_t>(i)];
+    if (std::abs(target - std::floor(target) - 0.5) > 0.25) continue;
+    ++tries;
     Result<Trajectory> gentler = stretchedStop(model, world, stop.value(), target / steps);
     plan = gentler ? planAfterStop(model, paths, request, gentler.value()) : gentler.error();
   }
