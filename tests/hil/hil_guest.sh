@@ -1,11 +1,10 @@
 # Shared guest-side helpers of the daemon HIL scripts (sourced; POSIX sh, dash + busybox).
 # Work files go to the guest's tmpfs ($work) and are copied to $OUT_DIR by finish: one write per
-# frame to the 9p share costs the emulated guest too much. Progress lines (a few per run) go to
-# the console and to $work/script.log.
+# frame to the 9p share costs the emulated guest too much. $work is tools/vcan-vm's EVIDENCE_DIR,
+# which reaches the host after a timeout even when this script is stuck in a command that never
+# returns. Progress lines (a few per run) go to the console and to $work/script.log.
 
-# A fresh directory each run: in the VM /tmp is a new tmpfs anyway, but in host mode it is the
-# host's own /tmp, where an earlier run's files (its control FIFO) would still be.
-work=$(mktemp -d "${TMPDIR:-/tmp}/hil.XXXXXX")
+work=${EVIDENCE_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/hil.XXXXXX")}
 control=$work/control
 pids=""
 
@@ -27,10 +26,12 @@ if [ -e /vcan-vm/env ]; then echo "emulated=1" >>"$work/scenario.txt"; else echo
 # Records KEY=VALUE for the host-side check.
 note() { echo "$1" >>"$work/scenario.txt"; }
 
-# Copies the work files out, then exits with status $1 (message $2 on failure).
+# Copies the work files out, then exits with status $1 (message $2 on failure). The files go out
+# first, and again once every process is stopped: stopping a stuck one takes a while.
 finish() {
+  cp "$work"/*.* "$OUT_DIR"/ 2>/dev/null || true
   for pid in $pids; do kill "$pid" 2>/dev/null || true; done
-  for pid in $pids; do wait "$pid" 2>/dev/null || true; done
+  for pid in $pids; do await_exit "$pid" 5; done
   cp "$work"/*.* "$OUT_DIR"/ 2>/dev/null || true
   if [ "$1" -ne 0 ]; then
     echo "$script_name: FAIL at step '$step_name': $2" >&2
@@ -41,6 +42,23 @@ finish() {
   exit "$1"
 }
 
+# Waits up to $2 seconds for process $1 to exit, then kills it (SIGKILL); sets $exit_status, and
+# $killed to 1 when it had to be killed.
+await_exit() {
+  tries=0
+  killed=0
+  while kill -0 "$1" 2>/dev/null; do
+    tries=$((tries + 1))
+    if [ "$tries" -gt $(($2 * 20)) ]; then
+      kill -KILL "$1" 2>/dev/null || true
+      killed=1
+      break
+    fi
+    sleep 0.05
+  done
+  exit_status=0
+  wait "$1" 2>/dev/null || exit_status=$?
+}
 
 # candump -L of the bus into $work/bus.log (-D: keep going while the interface is down), once it
 # is seen listening.
@@ -210,17 +228,8 @@ goal_done() {
 
 # Waits up to 10 s for process $1 ($2 names it) to exit; sets $exit_status. Kills it after that.
 reap() {
-  tries=0
-  while kill -0 "$1" 2>/dev/null; do
-    tries=$((tries + 1))
-    if [ "$tries" -gt 200 ]; then
-      kill -KILL "$1" 2>/dev/null || true
-      fail "$2 did not exit within 10 s of its signal"
-    fi
-    sleep 0.05
-  done
-  exit_status=0
-  wait "$1" || exit_status=$?
+  await_exit "$1" 10
+  [ "$killed" -eq 0 ] || fail "$2 did not exit within 10 s of its signal"
 }
 
 # CPU time (clock ticks: user, system) of each process so far, and the guest's uptime, for the

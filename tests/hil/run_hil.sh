@@ -39,6 +39,10 @@ show_evidence() {
     echo "  --- $f (last 40 lines)"
     tail -n 40 "$dir/$f" | sed 's/^/  | /'
   done
+  if [[ -s $dir/timeout-tasks.txt ]]; then
+    echo "  --- timeout-tasks.txt: every task when the time ran out (kernel stacks in the file)"
+    grep -E '^(task|uptime|after)' "$dir/timeout-tasks.txt" | sed 's/^/  | /'
+  fi
   if [[ -s $dir/bus.log ]]; then
     echo "  --- bus.log: $(wc -l <"$dir/bus.log") frames, the last 10"
     tail -n 10 "$dir/bus.log" | sed 's/^/  | /'
@@ -126,6 +130,9 @@ case $1 in
     vcan_vm
     [[ $status -eq 124 ]] || fail script_timeout "expected status 124 from a script that never ends"
     grep -q "script timed out after 3 s" "$log" || fail script_timeout "not stopped by --script-timeout"
+    grep -q "left by the hung script" "$out/hang.txt" || fail script_timeout "\$EVIDENCE_DIR did not reach the host"
+    grep -Eq "^task [0-9]+/[0-9]+ (dash|sh) state" "$out/timeout-tasks.txt" ||
+      fail script_timeout "timeout-tasks.txt does not list the script's shell"
     ;;
   host_mode)
     vcan_vm
@@ -182,6 +189,8 @@ case $1 in
     [[ $status -eq 124 ]] || fail daemon_hang "expected status 124 from a hung script, got $status"
     grep -q "FAIL at step 'hanging on purpose" "$out/failure.txt" || fail daemon_hang "the failing step is not named"
     grep -q "cyber-plannerd: robot" "$out/daemon.log" || fail daemon_hang "the daemon's log did not reach the host"
+    grep -Eq "^task [0-9]+/[0-9]+ cyber-plannerd state" "$out/timeout-tasks.txt" ||
+      fail daemon_hang "timeout-tasks.txt does not list the daemon's threads"
     ;;
 esac
 echo "run_hil: $1 passed"
