@@ -15,7 +15,7 @@ wait_goal 1 0
 sleep 0.5
 start_goal 2 0.16,0.10
 goal2=$goal_pid
-wait_for_line "$work/goal2.out" executing 60
+wait_for_line "$work/goal2.out" "executing|$finals" 60
 start_goal 3 0.2,1.57 --no-wait-daemon
 wait_goal 3 0
 goal_pid=$goal2

@@ -1,5 +1,7 @@
 #include "cyber/daemon/io/streamer_thread.hpp"
 
+#include <optional>
+
 #include <sys/prctl.h>
 
 #include "cyber/daemon/io/monotonic_clock.hpp"
@@ -55,7 +57,10 @@ void StreamerThread::run() {
     scheduled += period_ns_;
 
     if (robot_source_ != nullptr) drainRobotFrames(*robot_source_, now, robot_link_);
-    const RobotInputs inputs = gateInputs(channels_.state.load(), robot_link_);
+    // Never wait for the state: the receiver runs below this thread, so on one CPU a store this
+    // tick interrupted cannot finish until the tick is over. The last state ages as it should.
+    if (const std::optional<MeasuredStateData> state = channels_.state.tryLoad()) state_ = *state;
+    const RobotInputs inputs = gateInputs(state_, robot_link_);
     Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
     streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);
     const WriteReport report = writer_.write(out, channels_.fault_bits.load(std::memory_order_relaxed));

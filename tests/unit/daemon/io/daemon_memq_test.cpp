@@ -22,6 +22,7 @@
 #include "cyberplanner/arm_state_t.hpp"
 #include "cyberplanner/arm_trajectory_t.hpp"
 #include "fake_trajectory.hpp"
+#include "latest_value_peer.hpp"
 #include "reference_model.hpp"
 
 namespace cyber::daemon::io {
@@ -316,6 +317,22 @@ TEST_F(DaemonMemq, AStateIsTakenWhileTheEventLoopIsBusy) {
   }
   release->set_value();
   EXPECT_TRUE(taken) << "the state waited for the event loop";
+}
+
+// The streamer never waits for the state receiver: with a store left unfinished (on one CPU, the
+// receiver preempted by the streamer in the middle of it) the streamer keeps ticking.
+TEST_F(DaemonMemq, TheStreamerKeepsTickingWhileAStateStoreIsUnfinished) {
+  waitForHolding();
+  StreamerChannels& channels = DaemonProbe::channels(*daemon);
+  LatestValueTestPeer<MeasuredStateData>::beginStore(channels.state);
+  const std::int64_t before = channels.snapshot.load().ticks;
+  bool ticking = false;
+  for (int i = 0; i < 400 && !ticking; ++i) {
+    ticking = channels.snapshot.load().ticks >= before + 10;
+    if (!ticking) std::this_thread::sleep_for(5ms);
+  }
+  LatestValueTestPeer<MeasuredStateData>::endStore(channels.state);
+  EXPECT_TRUE(ticking) << "the streamer waited for an unfinished ARM_STATE store";
 }
 
 TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {

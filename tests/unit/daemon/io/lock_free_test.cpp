@@ -6,8 +6,10 @@
 #include "cyber/daemon/io/latency_histogram.hpp"
 #include "cyber/daemon/io/latest_value.hpp"
 #include "cyber/daemon/io/spsc_ring.hpp"
+#include "latest_value_peer.hpp"
 
 namespace cyber::daemon::io {
+
 namespace {
 
 TEST(SpscRing, IsFifoAndRefusesWhenFull) {
@@ -59,6 +61,40 @@ TEST(LatestValue, ReadersNeverSeeATornValue) {
     ASSERT_EQ(static_cast<double>(p.a), p.c);
     ASSERT_GE(p.a, last);  // never goes back
     last = p.a;
+  }
+  writer.join();
+}
+
+// The streamer reads ARM_STATE with tryLoad: a writer stopped in the middle of a store (on one CPU,
+// the lower-priority receiver thread the streamer preempted) must not hold the reader up.
+TEST(LatestValue, TryLoadGivesNothingWhileAStoreIsUnfinishedAndDoesNotWait) {
+  LatestValue<Pair> latest(Pair{1, -1, 1.0});
+  ASSERT_TRUE(latest.tryLoad().has_value());
+  EXPECT_EQ(latest.tryLoad()->a, 1);
+  LatestValueTestPeer<Pair>::beginStore(latest);
+  EXPECT_FALSE(latest.tryLoad().has_value());
+  EXPECT_FALSE(latest.tryLoad().has_value());
+  LatestValueTestPeer<Pair>::endStore(latest);
+  ASSERT_TRUE(latest.tryLoad().has_value());
+  EXPECT_EQ(latest.tryLoad()->c, 1.0);
+  latest.store(Pair{2, -2, 2.0});
+  EXPECT_EQ(latest.tryLoad()->a, 2);
+}
+
+TEST(LatestValue, TryLoadNeverGivesATornValue) {
+  LatestValue<Pair> latest;
+  constexpr std::int64_t kWrites = 200000;
+  std::thread writer([&] {
+    for (std::int64_t i = 1; i <= kWrites; ++i) latest.store(Pair{i, -i, static_cast<double>(i)});
+  });
+  std::int64_t last = 0;
+  while (last < kWrites) {
+    const std::optional<Pair> p = latest.tryLoad();
+    if (!p) continue;
+    ASSERT_EQ(p->a, -p->b);
+    ASSERT_EQ(static_cast<double>(p->a), p->c);
+    ASSERT_GE(p->a, last);
+    last = p->a;
   }
   writer.join();
 }

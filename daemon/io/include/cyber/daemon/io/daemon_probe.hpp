@@ -19,6 +19,7 @@ class DaemonProbe {
     return channel == daemon.options_.settings.channels.state ? *daemon.state_lcm_ : *daemon.lcm_;
   }
   static const StreamerChannels& channels(const Daemon& daemon) { return daemon.channels_; }
+  static StreamerChannels& channels(Daemon& daemon) { return daemon.channels_; }
   // Loop thread, or after run() returned.
   static const LatencyHistogram& goalToSetpointLatency(const Daemon& daemon) { return daemon.goals_.goalLatency(); }
 };

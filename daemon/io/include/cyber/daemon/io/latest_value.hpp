@@ -1,12 +1,16 @@
 #pragma once
 // The latest value of a small trivially copyable struct, written by one thread and read by
 // others without locks (a sequence lock over atomic words, so it is race-free in the C++ memory
-// model). The writer never waits; a reader retries while a write is in progress.
+// model). The writer never waits. load() retries while a write is in progress; tryLoad() makes one
+// attempt, for a reader that must not wait for the writer (docs/design.md, "Threads and
+// ownership"): on one CPU, a reader of higher real-time priority that preempted the writer in the
+// middle of a store would spin in load() for ever, since the writer cannot run to finish it.
 
 #include <array>
 #include <atomic>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <type_traits>
 
 namespace cyber::daemon::io {
@@ -30,20 +34,28 @@ class LatestValue {
   }
 
   [[nodiscard]] T load() const {
-    std::array<std::uint64_t, kWords> words{};
     for (;;) {
-      const std::uint64_t before = sequence_.load(std::memory_order_acquire);
-      if ((before & 1) != 0) continue;
-      for (std::size_t i = 0; i < kWords; ++i) words[i] = words_[i].load(std::memory_order_relaxed);
-      std::atomic_thread_fence(std::memory_order_acquire);
-      if (sequence_.load(std::memory_order_relaxed) == before) break;
+      if (const std::optional<T> value = tryLoad()) return *value;
     }
+  }
+
+  // The value, or nothing when a write is in progress or ended while it was being read.
+  [[nodiscard]] std::optional<T> tryLoad() const {
+    std::array<std::uint64_t, kWords> words{};
+    const std::uint64_t before = sequence_.load(std::memory_order_acquire);
+    if ((before & 1) != 0) return std::nullopt;
+    for (std::size_t i = 0; i < kWords; ++i) words[i] = words_[i].load(std::memory_order_relaxed);
+    std::atomic_thread_fence(std::memory_order_acquire);
+    if (sequence_.load(std::memory_order_relaxed) != before) return std::nullopt;
     T value;
     std::memcpy(static_cast<void*>(&value), words.data(), sizeof(T));
     return value;
   }
 
  private:
+  template <class>
+  friend struct LatestValueTestPeer;  // stands for a writer stopped in the middle of a store
+
   std::atomic<std::uint64_t> sequence_{0};
   std::array<std::atomic<std::uint64_t>, kWords> words_{};
 };

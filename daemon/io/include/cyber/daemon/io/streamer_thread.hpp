@@ -108,6 +108,8 @@ class StreamerThread {
   std::atomic<bool> quit_{false};
   RobotFrameSource* robot_source_ = nullptr;
   RobotLink robot_link_;
+  // The last ARM_STATE taken whole: kept when the receiver is in the middle of a store.
+  MeasuredStateData state_;
   std::thread thread_;
 };
 
