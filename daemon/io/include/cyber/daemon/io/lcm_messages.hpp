@@ -35,8 +35,8 @@ std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& m
 
 cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::int64_t utime);
 
-// Samples at step_s, widened to duration / (MAX_SAMPLES - 1) for long trajectories so at most
-// MAX_SAMPLES samples cover the whole trajectory (docs/lcm.md).
+// Samples at step_s, widened to duration / (MAX_SAMPLES - 2) for long trajectories so at most
+// MAX_SAMPLES samples cover the whole trajectory, the last one at its end (docs/lcm.md).
 cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
                                                  std::int64_t start_utime, double step_s, std::int64_t utime);
 
