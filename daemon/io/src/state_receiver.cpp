@@ -38,6 +38,10 @@ void StateReceiver::run() {
       if (errno == EINTR) continue;
       return;
     }
+    // LCM's descriptor failing (its receive thread gone) would make every poll return at once:
+    // spinning here at real-time priority would starve the whole machine, so the thread ends
+    // and ARM_STATE goes stale, which stops motion and says so.
+    if (fds[0].revents & (POLLERR | POLLHUP | POLLNVAL)) return;
     if (fds[0].revents & POLLIN) lcm_.handleTimeout(0);
   }
 }
