@@ -191,12 +191,14 @@ def check(out):
     # about the plant.
     on_time = [f for i, f in enumerate(elevator_sp) if i > 0 and regular_before(elevator_sp, i, 0.06)
                and rows[0]["utime"] <= f.t * 1e6 <= rows[-1]["utime"]]
-    # A short stall of the guest (under the 20 ms the simulator leaves out) shifts the plant's CSV
-    # time against the capture's: the bound allows the setpoint's speed times that stall.
+    # A stall of the guest shifts the plant's CSV time against the capture's, and the simulated
+    # controller then takes up to ~0.1 s to pull back the error the stall left (after a 65 ms stall:
+    # 3.5 mm 76 ms later, 0.9 mm 97 ms later): the bound allows the setpoint's speed times the
+    # longest stall of the 150 ms before.
     row_t = [r["utime"] * 1e-6 for r in rows]
 
     def allowance(f):
-        gap = hil.longest_gap(row_t, f.t - 0.05, f.t + 0.01)
+        gap = hil.longest_gap(row_t, f.t - 0.15, f.t + 0.01)
         return abs(hil.decode_setpoint(f)[1]) * (max(gap - 0.010, 0.0) if gap == gap else 0.0)
 
     errors = [abs(interpolate(rows, "elevator_m", f.t * 1e6) - hil.decode_setpoint(f)[0]) for f in on_time]

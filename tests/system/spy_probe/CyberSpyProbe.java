@@ -20,6 +20,7 @@ import java.awt.Robot;
 import java.awt.Window;
 import java.io.File;
 import java.io.IOException;
+import java.lang.reflect.InvocationTargetException;
 import java.lang.instrument.Instrumentation;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -59,13 +60,14 @@ public final class CyberSpyProbe {
     long deadline = System.nanoTime() + (long) (Double.parseDouble(options.getOrDefault("timeout", "60")) * 1e9);
     boolean seen = false;
     try {
+      List<String[]> rows = new ArrayList<>();
       while (!seen && System.nanoTime() < deadline) {
         Thread.sleep(500);
-        List<String[]> rows = readTable();
+        rows = readTableOr(rows);
         write(out, rows);
         seen = allSeen(rows, expect, min);
       }
-      write(out, readTable());
+      write(out, readTableOr(rows));
       String screenshot = options.get("screenshot");
       if (screenshot != null) screenshot(new File(screenshot));
     } catch (Exception e) {
@@ -73,6 +75,18 @@ public final class CyberSpyProbe {
       Runtime.getRuntime().halt(4);
     }
     Runtime.getRuntime().halt(seen ? 0 : 3);
+  }
+
+  // The table now, or `previous` when it changed while being read: lcm-spy updates its table model
+  // from its LCM thread as messages arrive, not only on the event thread, so a row can go between
+  // getRowCount and getValueAt. The next read, 0.5 s later, sees it whole.
+  private static List<String[]> readTableOr(List<String[]> previous) throws Exception {
+    try {
+      return readTable();
+    } catch (InvocationTargetException e) {
+      System.err.println("cyber-spy-probe: the table changed while it was read (" + e.getCause() + "); reading again");
+      return previous;
+    }
   }
 
   // Header row first, then one row per channel; empty when no table is up yet.
