@@ -151,16 +151,16 @@ void readPlanner(TableReader p, planner::PlannerSettings& s) {
   {
     TableReader g = p.table("topp");
     s.topp.grid_points = static_cast<int>(g.integer("grid_points", 8, 100000));
-    s.topp.primal_tolerance = g.number("primal_tolerance", kPositive);
-    s.topp.dual_tolerance = g.number("dual_tolerance", kPositive);
-    s.topp.max_outer_iterations = static_cast<int>(g.integer("max_outer_iterations", 1, 100000));
-    s.topp.max_inner_iterations = static_cast<int>(g.integer("max_inner_iterations", 1, 1000000));
+    s.topp.solver.primal_tolerance = g.number("primal_tolerance", kPositive);
+    s.topp.solver.dual_tolerance = g.number("dual_tolerance", kPositive);
+    s.topp.solver.max_outer_iterations = static_cast<int>(g.integer("max_outer_iterations", 1, 100000));
+    s.topp.solver.max_inner_iterations = static_cast<int>(g.integer("max_inner_iterations", 1, 1000000));
     s.topp.limit_check_step_s = g.number("limit_check_step_s", Bounds{1e-5, 0.01});
     s.topp.limit_check_tolerance = g.number("limit_check_tolerance", Bounds{0.0, 0.1});
     s.topp.max_limit_refinements = static_cast<int>(g.integer("max_limit_refinements", 0, 100));
-    s.topp.penalty_initial = g.number("penalty_initial", kPositive);
-    s.topp.penalty_growth = g.number("penalty_growth", kNonNegative);
-    s.topp.penalty_max = g.number("penalty_max", Bounds{s.topp.penalty_initial, 1e300});
+    s.topp.solver.penalty_initial = g.number("penalty_initial", kPositive);
+    s.topp.solver.penalty_growth = g.number("penalty_growth", kNonNegative);
+    s.topp.solver.penalty_max = g.number("penalty_max", Bounds{s.topp.solver.penalty_initial, 1e300});
     g.finish();
   }
   p.finish();

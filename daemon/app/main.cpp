@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/daemon/io/command_line.hpp"
 #include "cyber/daemon/io/daemon.hpp"
@@ -29,15 +30,8 @@ int fail(int code, const std::string& message) {
 int main(int argc, char** argv) {
   using namespace cyber;
   const auto parsed = daemon::io::parseCommandLine(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) {
-    std::cerr << "cyber-plannerd: " << parsed.error().message << "\n" << daemon::io::usage();
-    return cli::kExitBadUsage;
-  }
+  if (const auto status = cli::exitBeforeWork(parsed, {"cyber-plannerd", daemon::io::usage(), true})) return *status;
   const auto& command = parsed.value();
-  if (command.help) {
-    std::cout << daemon::io::usage();
-    return 0;
-  }
 
   // Before any thread exists, so every thread inherits the blocked mask and the signals arrive
   // only through this descriptor.

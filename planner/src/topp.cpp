@@ -138,18 +138,6 @@ int finestGridPoints(const ToppSettings& settings) {
   return std::max(initialGridPoints(settings), kMaxGridFactor * settings.grid_points);
 }
 
-topp::AlSettings alSettingsOf(const ToppSettings& settings) {
-  topp::AlSettings al;
-  al.primal_tolerance = settings.primal_tolerance;
-  al.dual_tolerance = settings.dual_tolerance;
-  al.max_outer_iterations = settings.max_outer_iterations;
-  al.max_inner_iterations = settings.max_inner_iterations;
-  al.penalty_initial = settings.penalty_initial;
-  al.penalty_growth = settings.penalty_growth;
-  al.penalty_max = settings.penalty_max;
-  return al;
-}
-
 // Relative overshoot of the worst limit at the continuous check's samples.
 double peakOvershoot(const ToppReport& report) {
   return std::max({report.peak_voltage_ratio, report.peak_current_ratio, report.peak_velocity_ratio,
@@ -325,7 +313,7 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   if (!sampleRows(move, initialGridPoints(settings_), report, &error)) return fail(PlanStatus::kInvalidInput, error);
 
   // Attempts until one passes the continuous check (algorithm.md section 3, "Stopping rules").
-  const topp::AlSettings al = alSettingsOf(settings_);
+  const topp::AlSettings& al = settings_.solver;
   RowLimits rows = RowLimits::kAsGiven;
   for (int refinement = 0;; ++refinement) {
     Attempt attempt = solveRows(move, al, refinement == 0, report);

@@ -40,9 +40,7 @@ cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>
     out.path = path;
     return "";
   });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  out.help = scan.value() == cli::Scan::kHelp;
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   return out;
 }
 

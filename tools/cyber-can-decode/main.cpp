@@ -8,24 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "decode_arguments.hpp"
-
-namespace {
-
-int usageError(const std::string& message) {
-  std::cerr << "cyber-can-decode: " << message << "\n" << cyber::tools::decodeUsage();
-  return cyber::cli::kExitBadUsage;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const auto parsed = cyber::tools::parseDecodeArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) return usageError(parsed.error().message);
-  if (parsed->help) {
-    std::cout << cyber::tools::decodeUsage();
-    return 0;
-  }
+  const cyber::cli::ProgramUsage program{"cyber-can-decode", cyber::tools::decodeUsage(), true};
+  if (const auto status = cyber::cli::exitBeforeWork(parsed, program)) return *status;
   const cyber::tools::DecodeArguments& args = parsed.value();
   const auto& path = args.path;
 
@@ -33,7 +22,7 @@ int main(int argc, char** argv) {
   std::istream* input = &std::cin;
   if (path && *path != "-") {
     file.open(*path);
-    if (!file) return usageError("cannot open '" + *path + "'");
+    if (!file) return cyber::cli::reportBadUsage(program, {"cannot open '" + *path + "'"});
     input = &file;
   }
 

@@ -42,12 +42,7 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
     out.timeout_s = *seconds;
     return "";
   });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  if (scan.value() == cli::Scan::kHelp) {
-    out.help = true;
-    return out;
-  }
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   if (!have_target) return cli::ArgumentError{"--to ELEVATOR_M,ARM_RAD is required"};
   return out;
 }

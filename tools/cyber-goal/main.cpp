@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -74,15 +75,8 @@ bool handleUntil(lcm::LCM& lcm, Clock::time_point deadline, Done done) {
 int main(int argc, char** argv) {
   using namespace cyber::tools;
   const auto parsed = parseGoalArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) {
-    std::cerr << "cyber-goal: " << parsed.error().message << "\n" << goalUsage();
-    return kExitUsage;
-  }
+  if (const auto status = cyber::cli::exitBeforeWork(parsed, {"cyber-goal", goalUsage(), true})) return *status;
   const GoalArguments& args = parsed.value();
-  if (args.help) {
-    std::cout << goalUsage();
-    return 0;
-  }
 
   lcm::LCM lcm(args.lcm_url);
   if (!lcm.good()) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/motion_planner.hpp"
 #include "plan_arguments.hpp"
@@ -28,11 +29,7 @@ std::string poseText(const cyber::planner::JointVector& q) {
 int main(int argc, char** argv) {
   using namespace cyber;
   const auto args = tools::parsePlanArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!args) return fail(cli::kExitBadUsage, args.error().message);
-  if (args->help) {
-    std::fputs(tools::planUsage(), stdout);
-    return 0;
-  }
+  if (const auto status = cli::exitBeforeWork(args, {"cyber-plan", tools::planUsage()})) return *status;
 
   std::string error;
   config::Config config;

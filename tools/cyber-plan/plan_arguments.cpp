@@ -56,12 +56,7 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
   parser.option("--csv", cli::store(&out.csv_path));
   parser.option("--plot", cli::store(&out.plot_path));
   parser.flag("--json", [&] { out.json = true; });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  if (scan.value() == cli::Scan::kHelp) {
-    out.help = true;
-    return out;
-  }
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   if (!have_from || !have_to)
     return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
   return out;

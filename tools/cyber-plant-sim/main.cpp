@@ -19,6 +19,7 @@
 
 #include "cyber/can/frc_id.hpp"
 #include "cyber/can/id_filter.hpp"
+#include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/plant/sim_options.hpp"
 #include "cyber/plant/state_log.hpp"
@@ -27,11 +28,6 @@
 namespace {
 
 using cyber::plant::SimOptions;
-
-int usageError(const std::string& message) {
-  std::cerr << "cyber-plant-sim: " << message << "\n" << cyber::plant::simUsage();
-  return cyber::cli::kExitBadUsage;
-}
 
 bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxDeviceNumber; }
 
@@ -47,11 +43,8 @@ int main(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   const auto parsed = cyber::plant::parseSimArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) return usageError(parsed.error().message);
-  if (parsed->help) {
-    std::cout << cyber::plant::simUsage();
-    return 0;
-  }
+  const cyber::cli::ProgramUsage program{"cyber-plant-sim", std::string(cyber::plant::simUsage()), true};
+  if (const auto status = cyber::cli::exitBeforeWork(parsed, program)) return *status;
   const SimOptions& options = parsed->options;
 
   cyber::config::Config config;
@@ -64,8 +57,9 @@ int main(int argc, char** argv) {
   }
   const auto& robot = config.robot;
   if (!robot.withinLimits(options.initial_q)) {
-    return usageError("--initial " + std::to_string(options.initial_q[0]) + "," + std::to_string(options.initial_q[1]) +
-                      " is outside the joint ranges of " + robot.name);
+    return cyber::cli::reportBadUsage(
+        program, {"--initial " + std::to_string(options.initial_q[0]) + "," + std::to_string(options.initial_q[1]) +
+                  " is outside the joint ranges of " + robot.name});
   }
   const auto& devices = config.daemon.devices;
   if (!validDevice(devices.elevator) || !validDevice(devices.arm) || devices.elevator == devices.arm) {

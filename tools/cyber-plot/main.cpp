@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/plot/world_view.hpp"
 #include "plot_arguments.hpp"
@@ -57,12 +58,8 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
 int main(int argc, char** argv) {
   using namespace cyber;
   const auto parsed = tools::parsePlotArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) return fail(parsed.error().message);
+  if (const auto status = cli::exitBeforeWork(parsed, {"cyber-plot", tools::plotUsage()})) return *status;
   const tools::PlotArguments& args = parsed.value();
-  if (args.help) {
-    std::fputs(tools::plotUsage(), stdout);
-    return 0;
-  }
   const std::string& csv = args.csv_path;
   const std::string& out = args.out_path;
   const planner::HeldPieces pieces = args.pieces;

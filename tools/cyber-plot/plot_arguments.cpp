@@ -53,12 +53,7 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
     out.at_text = value;
     return "";
   });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  if (scan.value() == cli::Scan::kHelp) {
-    out.help = true;
-    return out;
-  }
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   if (out.out_path.empty()) return cli::ArgumentError{"missing --out FILE.png"};
   if (!out.world && (!out.animation_path.empty() || out.at))
     return cli::ArgumentError{"--animation and --at need --world"};

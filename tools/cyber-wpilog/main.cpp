@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/wpilog/lcm_to_wpilog.hpp"
 #include "cyber/wpilog/wpilog_reader.hpp"
@@ -71,12 +72,8 @@ int list(const std::string& path) {
 int main(int argc, char** argv) {
   using namespace cyber;
   const auto parsed = tools::parseWpilogArguments(std::vector<std::string>(argv + 1, argv + argc));
-  if (!parsed) return fail(parsed.error().message);
+  if (const auto status = cli::exitBeforeWork(parsed, {"cyber-wpilog", tools::wpilogUsage()})) return *status;
   const tools::WpilogArguments& args = parsed.value();
-  if (args.help) {
-    std::fputs(tools::wpilogUsage(), stdout);
-    return 0;
-  }
   if (!args.list_path.empty()) return list(args.list_path);
 
   config::Config config;

@@ -25,12 +25,7 @@ cli::Parsed<WpilogArguments> parseWpilogArguments(const std::vector<std::string>
     files.push_back(file);
     return std::string();
   });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  if (scan.value() == cli::Scan::kHelp) {
-    out.help = true;
-    return out;
-  }
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   if (!out.list_path.empty()) {
     if (!files.empty()) return cli::ArgumentError{"--list takes no other files"};
     return out;

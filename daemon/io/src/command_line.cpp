@@ -20,9 +20,7 @@ cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args) 
   parser.option("--config", cli::store(&out.config_path));
   parser.option("--can", cli::store(&out.can_interface));
   parser.option("--lcm-url", cli::store(&out.lcm_url));
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  out.help = scan.value() == cli::Scan::kHelp;
+  if (auto decided = parser.parseInto(args, out)) return *decided;
   return out;
 }
 

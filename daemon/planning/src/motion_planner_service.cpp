@@ -40,8 +40,7 @@ class MotionPlannerService final : public PlanningService {
     const planner::Plan& value = plan.value();
     PlannedMotion out;
     out.trajectory = std::make_shared<TrajectorySource>(value.trajectory);
-    out.times_ms = StageTimesMs{value.times_ms.grid, value.times_ms.search, value.times_ms.smooth, value.times_ms.topp,
-                                value.times_ms.total};
+    out.times_ms = value.times_ms;
     out.min_clearance_m = value.min_clearance_m;
     return out;
   }

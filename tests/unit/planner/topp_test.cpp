@@ -144,8 +144,8 @@ TEST(Topp, TypicalPathsMeetEveryLimitAndTheFineReference) {
     EXPECT_LE(ratio, 1.0 + kDurationTolerance) << "duration " << trajectory.duration_s() << " reference " << reference;
     EXPECT_GE(ratio, 1.0 - 0.005) << "faster than the reference: a limit is being cut";
 
-    EXPECT_LE(report.primal_residual, ToppSettings{}.primal_tolerance);
-    EXPECT_LE(report.dual_residual, ToppSettings{}.dual_tolerance);
+    EXPECT_LE(report.primal_residual, ToppSettings{}.solver.primal_tolerance);
+    EXPECT_LE(report.dual_residual, ToppSettings{}.solver.dual_tolerance);
     EXPECT_GE(report.outer_iterations, 1);
     EXPECT_GT(report.grid_points, 2);
   }
@@ -256,10 +256,10 @@ TEST(Topp, NonConvergenceIsReportedWithResiduals) {
   const auto path =
       std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
   ToppSettings settings;
-  settings.max_outer_iterations = 1;
-  settings.max_inner_iterations = 2;
-  settings.primal_tolerance = 1e-15;
-  settings.dual_tolerance = 1e-15;
+  settings.solver.max_outer_iterations = 1;
+  settings.solver.max_inner_iterations = 2;
+  settings.solver.primal_tolerance = 1e-15;
+  settings.solver.dual_tolerance = 1e-15;
   ToppReport report;
   const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), settings, 0.0, &report);
   ASSERT_FALSE(result.ok());
@@ -274,12 +274,12 @@ TEST(Topp, NonConvergenceIsReportedWithResiduals) {
 TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
   const auto path = std::make_shared<LinePath>(JointVector(0.20, 1.57), JointVector(1.97, 5.17));
   ToppSettings settings;
-  settings.max_outer_iterations = 1000;
+  settings.solver.max_outer_iterations = 1000;
   ToppReport report;
   ASSERT_TRUE(parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), settings, 0.0, &report).ok());
   EXPECT_LT(report.outer_iterations, 20);
-  EXPECT_LE(report.primal_residual, settings.primal_tolerance);
-  EXPECT_LE(report.dual_residual, settings.dual_tolerance);
+  EXPECT_LE(report.primal_residual, settings.solver.primal_tolerance);
+  EXPECT_LE(report.dual_residual, settings.solver.dual_tolerance);
 }
 
 TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {

@@ -107,9 +107,7 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
     o.realtime_priority = static_cast<int>(*prio);
     return "";
   });
-  const auto scan = parser.parse(args);
-  if (!scan) return scan.error();
-  result.help = scan.value() == cli::Scan::kHelp;
+  if (auto decided = parser.parseInto(args, result)) return *decided;
   return result;
 }
 

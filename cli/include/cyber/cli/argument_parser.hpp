@@ -32,6 +32,18 @@ class ArgumentParser {
 
   [[nodiscard]] Parsed<Scan> parse(const std::vector<std::string>& args) const;
 
+  // The start of every program's parse function: scans `args` (the handlers store into `out`) and
+  // returns the result when the scan alone decides it: the error, or `out` with `help` set after
+  // --help/-h. Nothing: the program's own checks of the whole line follow.
+  template <class Arguments>
+  [[nodiscard]] std::optional<Parsed<Arguments>> parseInto(const std::vector<std::string>& args, Arguments& out) const {
+    const Parsed<Scan> scan = parse(args);
+    if (!scan) return Parsed<Arguments>(scan.error());
+    if (scan.value() != Scan::kHelp) return std::nullopt;
+    out.help = true;
+    return Parsed<Arguments>(out);
+  }
+
  private:
   struct Entry {
     std::string name;

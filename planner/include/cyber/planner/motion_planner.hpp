@@ -10,6 +10,7 @@
 #include "cyber/planner/path_planner.hpp"
 #include "cyber/planner/result.hpp"
 #include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/stage_times.hpp"
 #include "cyber/planner/topp.hpp"
 #include "cyber/planner/trajectory.hpp"
 
@@ -21,14 +22,6 @@ struct PlanRequest {
   JointVector start_velocity = JointVector::Zero();  // (m/s, rad/s); zero: start at rest
   HeldPieces pieces;
   int scene = 0;  // index into RobotModel::scenes
-};
-
-struct StageTimesMs {
-  double grid = 0.0;    // building the grid of this scene and piece set, once at create()
-  double search = 0.0;  // this request: grid search (or the direct check)
-  double smooth = 0.0;  // this request: optimisation, spline, clearance check
-  double topp = 0.0;    // this request: time-optimal parameterisation and its limit check
-  double total = 0.0;   // this request, end to end (excludes the one-off grid build)
 };
 
 using SolverReport = ToppReport;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cyber/planner/convex_polygon.hpp"
+#include "cyber/planner/topp_al_settings.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
@@ -116,17 +117,12 @@ struct SmoothingSettings {
 };
 
 struct ToppSettings {
-  int grid_points = 200;  // K
-  double primal_tolerance = 1e-6;
-  double dual_tolerance = 1e-4;
-  int max_outer_iterations = 50;  // a cap, never the stopping rule
-  int max_inner_iterations = 500;
+  int grid_points = 200;                 // K
   double limit_check_step_s = 0.001;     // the continuous trajectory is checked at this step
   double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
   int max_limit_refinements = 8;         // re-solves with tightened limits after a failed check
-  double penalty_initial = 1e3;          // rho_0 of the augmented Lagrangian (cost scaled to order one)
-  double penalty_growth = 1.0;           // gamma: rho <- min((1 + gamma) rho, beta)
-  double penalty_max = 1e6;              // beta
+  // Tolerances, caps and penalty schedule of the solver; [planner.topp] sets all but the L-BFGS ones.
+  topp::AlSettings solver;
 };
 
 struct PlannerSettings {

@@ -18,6 +18,7 @@
 
 #include "cyber/planner/banded_cholesky.hpp"
 #include "cyber/planner/lbfgs.hpp"
+#include "cyber/planner/topp_al_settings.hpp"
 #include "cyber/planner/topp_problem.hpp"
 
 namespace cyber::planner::topp {
@@ -64,18 +65,6 @@ struct Multipliers {
   // lambda of boundary equality i, in the order of VariableLayout::boundary().
   [[nodiscard]] double& boundary(int i) { return equality[equality.size() - 4 + i]; }
   [[nodiscard]] double boundary(int i) const { return equality[equality.size() - 4 + i]; }
-};
-
-struct AlSettings {
-  double primal_tolerance = 1e-6;
-  double dual_tolerance = 1e-4;
-  int max_outer_iterations = 50;
-  int max_inner_iterations = 500;
-  double penalty_initial = 1e3;
-  double penalty_growth = 1.0;  // gamma: rho <- min((1 + gamma) rho, beta)
-  double penalty_max = 1e6;     // beta
-  int lbfgs_memory = 8;
-  int refresh_interval = 5;  // L-BFGS iterations before the preconditioner is refactored
 };
 
 struct AlReport {

@@ -4,6 +4,7 @@
 
 #include "cyber/daemon/setpoint_source.hpp"
 #include "cyber/planner/result.hpp"
+#include "cyber/planner/stage_times.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::daemon {
@@ -16,13 +17,7 @@ struct MotionRequest {
   int scene = 0;
 };
 
-struct StageTimesMs {
-  double grid = 0.0;
-  double search = 0.0;
-  double smooth = 0.0;
-  double topp = 0.0;
-  double total = 0.0;
-};
+using StageTimesMs = planner::StageTimesMs;
 
 struct PlannedMotion {
   SharedSetpointSource trajectory;
