@@ -14,7 +14,8 @@ import unittest
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hil_lib as hil  # noqa: E402
 
-GENERATED, WRITE_LOG = sys.argv[1], sys.argv[2]
+# The generated C++ headers, then the command of the C++ encoder (an emulator first in a cross build).
+GENERATED, WRITE_LOG = sys.argv[1], sys.argv[2:]
 
 
 def vector_lines(kind):
@@ -74,7 +75,7 @@ class LcmMessages(unittest.TestCase):
     def test_decodes_what_the_cpp_encoder_wrote_and_refuses_another_fingerprint(self):
         with tempfile.TemporaryDirectory() as tmp:
             log = os.path.join(tmp, "t.lcm")
-            subprocess.run([WRITE_LOG, log], check=True)
+            subprocess.run([*WRITE_LOG, log], check=True)
             events = [d for _, ch, d in hil.read_lcm_log(log) if ch == "ARM_TRAJECTORY"]
         self.assertEqual(len(events), 2)  # 7 garbage bytes, then the message
         with self.assertRaisesRegex(ValueError, "truncated"):
