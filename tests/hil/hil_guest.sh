@@ -42,15 +42,24 @@ finish() {
   exit "$1"
 }
 
+# Deadlines in seconds of the guest's clock (/proc/uptime, read without a fork), not counts of
+# tries: under emulation each try's fork may take far longer than its sleep.
+start_deadline() {
+  read -r deadline_s _ </proc/uptime
+  deadline_s=$((${deadline_s%.*} + $1))
+}
+past_deadline() {
+  read -r now_s _ </proc/uptime
+  [ "${now_s%.*}" -gt "$deadline_s" ]
+}
+
 # Waits up to $2 seconds for process $1 to exit, then kills it (SIGKILL); sets $exit_status, and
 # $killed to 1 when it had to be killed.
 await_exit() {
-  read_now
-  deadline_s=$((now_s + $2))
+  start_deadline "$2"
   killed=0
   while kill -0 "$1" 2>/dev/null; do
-    read_now
-    if [ "$now_s" -gt "$deadline_s" ]; then
+    if past_deadline; then
       kill -KILL "$1" 2>/dev/null || true
       killed=1
       break
@@ -119,11 +128,9 @@ control_answer() {
   step "asking the simulator '$1'"
   before=$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)
   echo "$1" >"$control"
-  read_now
-  deadline_s=$((now_s + 5))
+  start_deadline 5
   while [ "$(grep -Ec "$2|$3" "$work/plant_sim.err" || true)" -le "$before" ]; do
-    read_now
-    [ "$now_s" -le "$deadline_s" ] || fail "no answer from the simulator to '$1' within 5 s"
+    ! past_deadline || fail "no answer from the simulator to '$1' within 5 s"
     sleep 0.02
   done
   grep -E "$2|$3" "$work/plant_sim.err" | tail -n 1 | grep -Eq "$2"
@@ -136,22 +143,13 @@ fault_if_moving() { control_answer "$1 if-moving" "fault $1 \(control\)" "$1 if-
 # Returns 0 when the simulator saw a moving setpoint within the last 20 ms.
 moving_now() { control_answer probe "probe: moving" "probe: not moving"; }
 
-# The guest's uptime in whole seconds, in $now_s (no fork: a fork costs milliseconds emulated).
-read_now() {
-  read -r now_s _ </proc/uptime
-  now_s=${now_s%.*}
-}
 
-# Waits up to $3 seconds for a line matching the extended regex $2 in file $1. Seconds of the
-# guest's clock, not a count of tries: under emulation each try's fork may take far longer than
-# its sleep.
+# Waits up to $3 seconds (start_deadline) for a line matching the extended regex $2 in file $1.
 wait_for_line() {
   step "waiting up to $3 s for '$2' in $(basename "$1")"
-  read_now
-  deadline_s=$((now_s + $3))
+  start_deadline "$3"
   until grep -Eqs "$2" "$1"; do
-    read_now
-    [ "$now_s" -le "$deadline_s" ] || fail "no '$2' in $(basename "$1") after $3 s"
+    ! past_deadline || fail "no '$2' in $(basename "$1") after $3 s"
     sleep 0.02
   done
 }
