@@ -783,15 +783,21 @@ def guest_stalled(out, limit_s):
     """True when the capture has a silence of limit_s or more: no frame at all, not the roboRIO
     heartbeat (cyber-plant-sim, SCHED_FIFO 40), not a setpoint, not a status. The whole emulated
     guest stood still then (its host did not run it), which takes away the heartbeat a run relies
-    on; the daemon's verdict on such a run says nothing about the daemon."""
+    on; the daemon's verdict on such a run says nothing about the daemon. Silences are counted
+    from the simulator's first heartbeat: before it the bus is quiet because nothing has started."""
     path = os.path.join(out, "bus.log")
     if not os.path.exists(path):
         print(f"stalled: no capture at {path}")
         return False
-    times = [f.t for f in hil.read_candump(path)]
-    gap, at = max(((b - a, a) for a, b in zip(times, times[1:])), default=(0.0, 0.0))
-    print(f"stalled: the longest silence on the bus is {gap * 1e3:.0f} ms "
-          f"({at - times[0] if times else 0.0:.2f} s into the capture; limit {limit_s * 1e3:.0f} ms)")
+    frames = hil.read_candump(path)
+    first_beat = next((f.t for f in frames if f.extended and f.id == hil.HEARTBEAT_ID), None)
+    if first_beat is None:
+        print("stalled: the capture has no roboRIO heartbeat")
+        return False
+    times = [f.t for f in frames if f.t >= first_beat]
+    gap, at = max(((b - a, a) for a, b in zip(times, times[1:])), default=(0.0, first_beat))
+    print(f"stalled: the longest silence on the bus after the first heartbeat is {gap * 1e3:.0f} ms "
+          f"({at - first_beat:.2f} s after it; limit {limit_s * 1e3:.0f} ms)")
     return gap >= limit_s
 
 

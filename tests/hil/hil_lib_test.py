@@ -99,5 +99,28 @@ class Gaps(unittest.TestCase):
         self.assertEqual(hil.longest_gap([1.0], 0.0, 2.0, default=0.0), 0.0)
 
 
+class StallVerdict(unittest.TestCase):
+    """daemon_check.py stalled: a silence counts only once the simulator's heartbeat has begun."""
+
+    def stalled(self, lines):
+        with tempfile.TemporaryDirectory() as out:
+            with open(os.path.join(out, "bus.log"), "w") as f:
+                f.write("".join(line + "\n" for line in lines))
+            checker = os.path.join(os.path.dirname(os.path.abspath(__file__)), "daemon_check.py")
+            run = subprocess.run([sys.executable, checker, "stalled", out, "0.5"], capture_output=True, text=True)
+            self.assertIn(run.returncode, (0, 1), run.stderr)
+            return run.returncode == 0
+
+    def beats(self, t0, t1):
+        return [f"({t0 + 0.02 * k:.6f}) vcan0 {hil.HEARTBEAT_ID:08X}#01" for k in range(int((t1 - t0) / 0.02) + 1)]
+
+    def test_start_up_silence_before_the_first_heartbeat_is_not_a_stall(self):
+        self.assertFalse(self.stalled(["(1.000000) vcan0 7FF#00"] + self.beats(1.9, 3.0)))
+
+    def test_silence_after_the_heartbeat_began_is_a_stall(self):
+        self.assertTrue(self.stalled(self.beats(1.0, 2.0) + self.beats(2.6, 3.0)))
+        self.assertFalse(self.stalled(self.beats(1.0, 2.0) + self.beats(2.4, 3.0)))
+
+
 if __name__ == "__main__":
     unittest.main(argv=sys.argv[:1], verbosity=2)
