@@ -1,5 +1,6 @@
 #include "cyber/daemon/io/streamer_thread.hpp"
 
+#include <cstdlib>
 #include <optional>
 
 #include <sys/prctl.h>
@@ -83,9 +84,10 @@ void StreamerThread::run() {
 
     bool wake = false;
     for (int i = 0; i < out.retired_count; ++i) {
-      if (!channels_.retired.push(out.retired[static_cast<size_t>(i)])) {
-        channels_.lost_messages.fetch_add(1, std::memory_order_relaxed);  // leaks one program
-      }
+      // Only a few programs exist at once (docs/design.md, "Threads and ownership"), so a full
+      // ring is a defect; dropping the pointer would leak the program. abort() neither allocates
+      // nor blocks.
+      if (!channels_.retired.push(out.retired[static_cast<size_t>(i)])) std::abort();
       wake = true;
     }
     for (int i = 0; i < out.event_count; ++i) {
