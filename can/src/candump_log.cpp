@@ -1,9 +1,9 @@
 #include "cyber/can/candump_log.hpp"
 
+#include <fmt/format.h>
 #include <linux/can.h>
 
-#include <array>
-#include <cstdio>
+#include <iterator>
 #include <optional>
 
 namespace cyber::can {
@@ -133,12 +133,8 @@ Result<Frame, LogParseError> parseFrame(std::string_view token) {
 std::string formatLogLine(const LogRecord& record) {
   const std::uint64_t seconds = record.time.seconds + record.time.microseconds / 1000000u;
   const std::uint32_t micros = record.time.microseconds % 1000000u;
-  std::array<char, 48> stamp{};
-  std::snprintf(stamp.data(), stamp.size(), "(%010llu.%06u) ", static_cast<unsigned long long>(seconds),
-                static_cast<unsigned>(micros));
-  std::string line = stamp.data();
-  line += record.iface;
-  line.push_back(' ');
+  std::string line;
+  fmt::format_to(std::back_inserter(line), "({:010}.{:06}) {} ", seconds, micros, record.iface);
 
   const Frame& frame = record.frame;
   if (frame.error) {

@@ -1,13 +1,15 @@
 #include "cyber/config/load_config.hpp"
 
+#include <fmt/format.h>
+
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <numbers>
-#include <sstream>
 
 #include "table_reader.hpp"
 
@@ -281,9 +283,8 @@ Config parseConfig(std::string_view toml_text, std::string_view source_name) {
   try {
     root = toml::parse(toml_text, source_name);
   } catch (const toml::parse_error& e) {
-    std::ostringstream out;
-    out << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    throw ConfigError("", out.str());
+    throw ConfigError(
+        "", fmt::format("{}:{}:{}: {}", source_name, e.source().begin.line, e.source().begin.column, e.description()));
   }
   try {
     return readRoot(root);
@@ -298,9 +299,8 @@ Config loadConfigFile(const std::string& path) {
   if (!in) throw ConfigError("", path + ": cannot open the configuration file (" + std::strerror(errno) + ")");
   // A directory opens but reads as empty, which would be reported as a missing key.
   if (std::filesystem::is_directory(path)) throw ConfigError("", path + ": is a directory, not a configuration file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseConfig(text.str(), path);
+  const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return parseConfig(text, path);
 }
 
 Config loadEmbeddedDefaultConfig() { return parseConfig(embeddedDefaultConfig(), embeddedDefaultConfigName()); }

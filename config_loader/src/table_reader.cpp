@@ -1,7 +1,8 @@
 #include "table_reader.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
-#include <sstream>
 
 namespace cyber::config::detail {
 namespace {
@@ -10,11 +11,7 @@ namespace {
   throw ConfigError(path, path + ": " + problem);
 }
 
-std::string describe(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
+std::string describe(double x) { return fmt::format("{:g}", x); }
 
 double numberFrom(const toml::node& node, const std::string& path, Bounds bounds) {
   if (!node.is_number()) failAt(path, "expected a number");

@@ -1,6 +1,8 @@
 #include "decoded_line.hpp"
 
-#include <cstdio>
+#include <fmt/format.h>
+
+#include <iterator>
 #include <optional>
 #include <string_view>
 
@@ -25,13 +27,6 @@ constexpr const char* kHeader =
     "time_s,iface,kind,device,joint,seq,position,velocity,volts,mode,request_id,"
     "time_remaining_ms,fault_bits,red_alliance,enabled,autonomous,test,system_watchdog,id,data,"
     "error";
-
-template <class... Args>
-std::string format(const char* pattern, Args... args) {
-  char buffer[128];
-  std::snprintf(buffer, sizeof buffer, pattern, args...);
-  return buffer;
-}
 
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -60,12 +55,12 @@ std::string joinCsv(const Row& r) {
 std::string hexData(const can::Frame& frame) {
   if (frame.remote) return "R" + std::to_string(frame.dlc);
   std::string out;
-  for (std::uint8_t i = 0; i < frame.dlc; ++i) out += format("%02X", frame.data[i]);
+  for (std::uint8_t i = 0; i < frame.dlc; ++i) fmt::format_to(std::back_inserter(out), "{:02X}", frame.data[i]);
   return out;
 }
 
 std::string hexId(const can::Frame& frame) {
-  return frame.extended || frame.error ? format("%08X", frame.id) : format("%03X", frame.id);
+  return frame.extended || frame.error ? fmt::format("{:08X}", frame.id) : fmt::format("{:03X}", frame.id);
 }
 
 std::string flag(bool value) { return value ? "1" : "0"; }
@@ -76,9 +71,9 @@ void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints
   const bool arm = decoded.device == joints.arm;
   row.joint = elevator ? "elevator" : arm ? "arm" : "";
   row.seq = std::to_string(s.sequence);
-  row.position = format("%.5f", s.position);
-  row.velocity = format("%.3f", s.velocity);
-  row.volts = format("%.3f", s.feedforward_volts);
+  row.position = fmt::format("{:.5f}", s.position);
+  row.velocity = fmt::format("{:.3f}", s.velocity);
+  row.volts = fmt::format("{:.3f}", s.feedforward_volts);
   const char* unit = elevator ? " m" : arm ? " rad" : "";
   const char* rate = elevator ? " m/s" : arm ? " rad/s" : "";
   text += (row.joint.empty() ? std::string() : " " + row.joint) + " dev " + row.device + " seq " + row.seq +
@@ -91,7 +86,7 @@ void fillStatus(const can::DeviceStatus& decoded, Row& row, std::string& text) {
   row.mode = std::string(can::toString(s.mode));
   row.request_id = std::to_string(s.request_id);
   row.time_remaining_ms = std::to_string(s.time_remaining_ms);
-  row.fault_bits = format("0x%02X", s.fault_bits);
+  row.fault_bits = fmt::format("0x{:02X}", s.fault_bits);
   text += " dev " + row.device + " seq " + row.seq + " mode " + row.mode + " request " + row.request_id +
           " remaining " + row.time_remaining_ms + " ms faults " + row.fault_bits;
 }
@@ -108,7 +103,7 @@ void fillHeartbeat(const can::Heartbeat& h, Row& row, std::string& text) {
 
 void fillBusError(const can::BusError& e, std::string& text) {
   if (e.bus_off) text += " bus-off";
-  if (e.controller_problem) text += format(" controller(0x%02X)", e.controller_status);
+  if (e.controller_problem) fmt::format_to(std::back_inserter(text), " controller(0x{:02X})", e.controller_status);
   if (e.tx_timeout) text += " tx-timeout";
   if (e.restarted) text += " restarted";
   if (e.other) text += " other";
@@ -123,8 +118,7 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
   const can::Frame& frame = record.frame;
   ++counts.frames;
   Row row;
-  row.time_s = format("%llu.%06u", static_cast<unsigned long long>(record.time.seconds),
-                      static_cast<unsigned>(record.time.microseconds));
+  row.time_s = fmt::format("{}.{:06}", record.time.seconds, record.time.microseconds);
   row.iface = record.iface;
   row.id = hexId(frame);
   row.data = hexData(frame);

@@ -1,6 +1,8 @@
 // cyber-plan: plans one move with the planner core and writes what design.md promises.
 // Exit status: 0 planned, 2 bad input, 3 no feasible motion; a one-line reason on stderr.
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,11 +20,7 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-std::string poseText(const cyber::planner::JointVector& q) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.3f m, %.3f rad)", q[0], q[1]);
-  return buf;
-}
+std::string poseText(const cyber::planner::JointVector& q) { return fmt::format("({:.3f} m, {:.3f} rad)", q[0], q[1]); }
 
 }  // namespace
 

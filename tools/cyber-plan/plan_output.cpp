@@ -1,9 +1,10 @@
 #include "plan_output.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 
 namespace cyber::tools {
 namespace {
@@ -41,17 +42,14 @@ bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string
 }
 
 std::string planSummaryJson(const planner::Plan& plan) {
-  std::ostringstream o;
-  o.precision(9);
   const auto& t = plan.times_ms;
   const auto& r = plan.solver;
-  o << "{\"status\":\"ok\",\"duration_s\":" << plan.trajectory->duration_s() << ",\"grid_ms\":" << t.grid
-    << ",\"search_ms\":" << t.search << ",\"smooth_ms\":" << t.smooth << ",\"topp_ms\":" << t.topp
-    << ",\"total_ms\":" << t.total << ",\"primal_residual\":" << r.primal_residual
-    << ",\"dual_residual\":" << r.dual_residual << ",\"outer_iterations\":" << r.outer_iterations
-    << ",\"inner_iterations\":" << r.inner_iterations << ",\"min_clearance_m\":" << plan.min_clearance_m
-    << ",\"waypoints\":" << plan.waypoints.size() << "}";
-  return o.str();
+  return fmt::format(
+      "{{\"status\":\"ok\",\"duration_s\":{:.9g},\"grid_ms\":{:.9g},\"search_ms\":{:.9g},\"smooth_ms\":{:.9g},"
+      "\"topp_ms\":{:.9g},\"total_ms\":{:.9g},\"primal_residual\":{:.9g},\"dual_residual\":{:.9g},"
+      "\"outer_iterations\":{},\"inner_iterations\":{},\"min_clearance_m\":{:.9g},\"waypoints\":{}}}",
+      plan.trajectory->duration_s(), t.grid, t.search, t.smooth, t.topp, t.total, r.primal_residual, r.dual_residual,
+      r.outer_iterations, r.inner_iterations, plan.min_clearance_m, plan.waypoints.size());
 }
 
 plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::RobotModel& robot, int scene,

@@ -3,6 +3,8 @@
 // move as a filmstrip and an APNG animation); with only --config a preview of the description
 // (docs/configuration.md). Exit: 0 written, 2 bad input.
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -39,9 +41,7 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
     const planner::JointRange e = robot.elevator_range_m, a = robot.arm_range_rad;
     for (double f : {0.1, 0.5, 0.9}) {
       const planner::JointVector q(e.min + f * (e.max - e.min), a.min + f * (a.max - a.min));
-      char name[48];
-      std::snprintf(name, sizeof name, "%.2f m, %.2f rad", q[0], q[1]);
-      poses.push_back({name, q});
+      poses.push_back({fmt::format("{:.2f} m, {:.2f} rad", q[0], q[1]), q});
     }
   }
   const std::string which =
@@ -82,10 +82,9 @@ int main(int argc, char** argv) {
   if (args.at) {
     const planner::JointVector q = *args.at;
     if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
-    char title[96];
-    std::snprintf(title, sizeof title, "%s at %.3f m, %.3f rad", robot.name.c_str(), q[0], q[1]);
-    if (!plot::renderWorldPng(robot, scene, pieces, q, title + pieces_label + scene_label, out, &error))
-      return fail(error);
+    const std::string title =
+        fmt::format("{} at {:.3f} m, {:.3f} rad{}{}", robot.name, q[0], q[1], pieces_label, scene_label);
+    if (!plot::renderWorldPng(robot, scene, pieces, q, title, out, &error)) return fail(error);
     return 0;
   }
 

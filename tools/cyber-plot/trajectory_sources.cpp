@@ -16,7 +16,7 @@ namespace {
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
-  std::stringstream in(line);
+  std::istringstream in(line);
   std::string cell;
   while (std::getline(in, cell, ',')) out.push_back(cell);
   return out;

@@ -1,6 +1,8 @@
 // cyber-wpilog: an lcm-logger log of a cyber-planner session as a WPILOG file for AdvantageScope
 // (docs/operations.md, "AdvantageScope"), and a listing of any .wpilog. Exit: 0 done, 2 bad input.
 
+#include <fmt/format.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,28 +20,16 @@ int fail(const std::string& message) {
   return cyber::cli::kExitBadUsage;
 }
 
-// open + middle + close, built by appending (g++ 12 -O3 warns falsely about "x" + std::string).
-std::string enclosed(const char* open, const std::string& middle, const char* close) {
-  std::string out(open);
-  out.append(middle).append(close);
-  return out;
-}
-
 std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry& entry,
                       const cyber::wpilog::Record& r) {
   using namespace cyber::wpilog;
   const auto p = log.payload(r);
-  char buf[64];
-  if (entry.type == "double" && asDouble(p)) {
-    std::snprintf(buf, sizeof buf, "%.9g", *asDouble(p));
-    return buf;
-  }
+  if (entry.type == "double" && asDouble(p)) return fmt::format("{:.9g}", *asDouble(p));
   if (entry.type == "int64" && asInt64(p)) return std::to_string(*asInt64(p));
   if (entry.type == "boolean" && asBoolean(p)) return *asBoolean(p) ? "true" : "false";
-  if (entry.type == "string" || entry.type == "json") return enclosed("\"", asString(p), "\"");
-  if (entry.type == "double[]" && asDoubleArray(p))
-    return enclosed("[", std::to_string(asDoubleArray(p)->size()), " doubles]");
-  return enclosed("(", std::to_string(p.size()), " bytes)");
+  if (entry.type == "string" || entry.type == "json") return fmt::format("\"{}\"", asString(p));
+  if (entry.type == "double[]" && asDoubleArray(p)) return fmt::format("[{} doubles]", asDoubleArray(p)->size());
+  return fmt::format("({} bytes)", p.size());
 }
 
 int list(const std::string& path) {

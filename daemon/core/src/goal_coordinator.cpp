@@ -1,6 +1,7 @@
 #include "cyber/daemon/goal_coordinator.hpp"
 
-#include <sstream>
+#include <fmt/format.h>
+
 #include <utility>
 
 namespace cyber::daemon {
@@ -9,12 +10,7 @@ namespace {
 
 std::string superseded(std::int64_t by) { return "superseded by request " + std::to_string(by); }
 
-std::string ms(double seconds) {
-  std::ostringstream out;
-  out.precision(1);
-  out << std::fixed << seconds * 1e3 << " ms";
-  return out.str();
-}
+std::string ms(double seconds) { return fmt::format("{:.1f} ms", seconds * 1e3); }
 
 }  // namespace
 

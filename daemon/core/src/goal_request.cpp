@@ -1,25 +1,18 @@
 #include "cyber/daemon/goal_request.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <optional>
-#include <sstream>
 
 namespace cyber::daemon {
 
 namespace {
 
-std::string describe(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 std::optional<std::string> checkJoint(const char* name, double value, const planner::JointRange& range,
                                       const char* unit) {
   if (value >= range.min && value <= range.max) return std::nullopt;
-  std::ostringstream out;
-  out << name << " = " << value << " " << unit << " is outside [" << range.min << ", " << range.max << "] " << unit;
-  return out.str();
+  return fmt::format("{} = {:g} {} is outside [{:g}, {:g}] {}", name, value, unit, range.min, range.max, unit);
 }
 
 // Scene names are short words from the config; anything else is refused without being echoed.
@@ -48,11 +41,11 @@ planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::
   }
   if (!std::isfinite(goal.elevator_m)) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                               "elevator_m is not finite (" + describe(goal.elevator_m) + ")");
+                                               fmt::format("elevator_m is not finite ({:g})", goal.elevator_m));
   }
   if (!std::isfinite(goal.arm_rad)) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                               "arm_rad is not finite (" + describe(goal.arm_rad) + ")");
+                                               fmt::format("arm_rad is not finite ({:g})", goal.arm_rad));
   }
   if (auto problem = checkJoint("elevator_m", goal.elevator_m, robot.elevator_range_m, "m")) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kGoalOutOfRange, *problem);

@@ -32,14 +32,14 @@ ToolRun runTool(const std::string& args) { return test::runTool(CYBER_CAN_DECODE
 
 std::vector<std::string> lines(const std::string& text) {
   std::vector<std::string> out;
-  std::stringstream stream(text);
+  std::istringstream stream(text);
   for (std::string line; std::getline(stream, line);) out.push_back(line);
   return out;
 }
 
 std::vector<std::string> splitCsv(const std::string& row) {
   std::vector<std::string> fields;
-  std::stringstream stream(row);
+  std::istringstream stream(row);
   for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
   if (!row.empty() && row.back() == ',') fields.emplace_back();
   return fields;

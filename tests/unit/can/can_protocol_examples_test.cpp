@@ -3,8 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +11,7 @@
 #include "cyber/can/robot_frames.hpp"
 #include "cyber/can/setpoint_codec.hpp"
 #include "cyber/can/status_codec.hpp"
+#include "tool_run.hpp"
 
 namespace cyber::can {
 namespace {
@@ -86,11 +85,8 @@ TEST(ProtocolExamples, ExamplesDecodeBack) {
 }
 
 TEST(ProtocolExamples, DocumentShowsExactlyTheseFrames) {
-  std::ifstream file(std::string(CYBER_SOURCE_DIR) + "/docs/can-protocol.md");
-  ASSERT_TRUE(file.good()) << "docs/can-protocol.md is missing";
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string doc = text.str();
+  const std::string doc = test::readFile(std::string(CYBER_SOURCE_DIR) + "/docs/can-protocol.md");
+  ASSERT_FALSE(doc.empty()) << "docs/can-protocol.md is missing or empty";
   for (const char* example : {kElevatorLine, kArmLine, kHoldLine, kStatusLine, kHeartbeatLine, kDisableLine}) {
     EXPECT_NE(doc.find(example), std::string::npos) << "not in docs/can-protocol.md: " << example;
   }

@@ -13,7 +13,7 @@ namespace {
 
 std::vector<std::string> fields(const std::string& line) {
   std::vector<std::string> out;
-  std::stringstream stream(line);
+  std::istringstream stream(line);
   for (std::string field; std::getline(stream, field, ',');) out.push_back(field);
   if (!line.empty() && line.back() == ',') out.emplace_back();
   return out;

@@ -1,7 +1,8 @@
 #include "cyber/plant/state_log.hpp"
 
-#include <cinttypes>
-#include <cstdio>
+#include <fmt/format.h>
+
+#include <iterator>
 
 #include "cyber/planner/types.hpp"
 
@@ -9,21 +10,13 @@ namespace cyber::plant {
 
 namespace {
 
-void append(std::string& out, const char* format, double value) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, format, value);
-  out += ',';
-  out += buffer;
-}
-
 void appendCommand(std::string& out, const std::optional<JointCommand>& command) {
   if (!command) {
     out += ",,,";
     return;
   }
-  append(out, "%.6f", command->position);
-  append(out, "%.6f", command->velocity);
-  append(out, "%.4f", command->feedforward_volts);
+  fmt::format_to(std::back_inserter(out), ",{:.6f},{:.6f},{:.4f}", command->position, command->velocity,
+                 command->feedforward_volts);
 }
 
 }  // namespace
@@ -36,17 +29,13 @@ std::string stateLogHeader() {
 }
 
 std::string stateLogRow(const StateLogRow& row) {
-  std::string out;
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.6f,%" PRId64, row.t_s, row.utime);
-  out += buffer;
+  std::string out = fmt::format("{:.6f},{}", row.t_s, row.utime);
   for (int joint : {planner::kElevator, planner::kArm}) {
-    append(out, "%.6f", row.state[joint].position);
-    append(out, "%.6f", row.state[joint].velocity);
+    fmt::format_to(std::back_inserter(out), ",{:.6f},{:.6f}", row.state[joint].position, row.state[joint].velocity);
   }
   for (int joint : {planner::kElevator, planner::kArm}) {
     appendCommand(out, row.command[joint]);
-    append(out, "%.4f", row.applied_volts[joint]);
+    fmt::format_to(std::back_inserter(out), ",{:.4f}", row.applied_volts[joint]);
   }
   out += row.heartbeat ? ",1" : ",0";
   out += row.robot_enabled ? ",1" : ",0";

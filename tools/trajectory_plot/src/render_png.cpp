@@ -1,8 +1,8 @@
+#include <fmt/format.h>
 #include <cairo.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <limits>
 
@@ -45,10 +45,8 @@ double niceStep(double span, int target_ticks) {
 
 std::string format(double v, double step) {
   if (std::abs(v) < 1e-9 * step) v = 0.0;  // a tick at zero reached by summing steps: no "-0"
-  char buf[32];
   const int decimals = step >= 1 ? 0 : static_cast<int>(std::ceil(-std::log10(step)));
-  std::snprintf(buf, sizeof buf, "%.*f", std::clamp(decimals, 0, 4), v);
-  return buf;
+  return fmt::format("{:.{}f}", v, std::clamp(decimals, 0, 4));
 }
 
 void drawFrame(cairo_t* cr, const Axes& ax, const std::string& title, const std::string& xlabel,

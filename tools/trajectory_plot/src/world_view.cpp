@@ -1,8 +1,9 @@
 #include "cyber/plot/world_view.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <memory>
 
@@ -40,12 +41,6 @@ struct Surface {
   Surface(const Surface&) = delete;
   Surface& operator=(const Surface&) = delete;
 };
-
-std::string format(const char* fmt, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, v);
-  return buf;
-}
 
 std::vector<const ConvexPolygon*> robotPolygons(const planner::RobotModel& robot, planner::HeldPieces pieces) {
   std::vector<const ConvexPolygon*> out;
@@ -102,9 +97,9 @@ void drawScene(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& rob
   cairo_stroke(cr);
   cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
   for (double x = std::ceil(c.x0 * 2) / 2; x <= c.x1; x += 0.5)
-    text(cr, c.px(x), c.box_y + c.box_h - 4, format("%.1f", x), 10, true);
+    text(cr, c.px(x), c.box_y + c.box_h - 4, fmt::format("{:.1f}", x), 10, true);
   for (double y = std::ceil(c.y0 * 2) / 2; y <= c.y1; y += 0.5)
-    text(cr, c.box_x + 3, c.py(y) + 4, format("%.1f", y), 10);
+    text(cr, c.box_x + 3, c.py(y) + 4, fmt::format("{:.1f}", y), 10);
 }
 
 void endScene(cairo_t* cr, const WorldCanvas& c) {
@@ -146,7 +141,7 @@ void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point,
     cairo_fill(cr);
   }
   const Point2 mid = (robot_point + obstacle_point) / 2;
-  text(cr, c.px(mid.x()) + 8, c.py(mid.y()) - 6, label + format("%.3f m", distance_m), 12);
+  text(cr, c.px(mid.x()) + 8, c.py(mid.y()) - 6, fmt::format("{}{:.3f} m", label, distance_m), 12);
 }
 
 // The farthest robot point along the arm's x axis, traced over the move.
@@ -233,12 +228,12 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
   }
   endScene(cr, c);
   cairo_set_source_rgb(cr, 0, 0, 0);
-  text(cr, c.box_x + c.box_w / 2, c.box_y + 16, format("t = %.2f s", t - move.time_s.front()), 13, true);
+  text(cr, c.box_x + c.box_w / 2, c.box_y + 16, fmt::format("t = {:.2f} s", t - move.time_s.front()), 13, true);
   if (long_label) {
     setColor(cr, kClearance);
     text(cr, c.box_x + c.box_w / 2, c.box_y + 34,
-         format("smallest clearance %.3f m", smallest.distance_m) +
-             format(" at %.2f s", smallest.time_s - move.time_s.front()),
+         fmt::format("smallest clearance {:.3f} m at {:.2f} s", smallest.distance_m,
+                     smallest.time_s - move.time_s.front()),
          12, true);
   }
   if (at_smallest) {
@@ -333,8 +328,8 @@ bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::He
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   text(s.cr, width / 2.0, 30, title, 16, true);
   text(s.cr, width / 2.0, kPanelH + 78,
-       format("smallest clearance %.3f m", smallest.distance_m) +
-           format(" at t = %.2f s (red frame); green: path of the arm tip", smallest.time_s - move.time_s.front()),
+       fmt::format("smallest clearance {:.3f} m at t = {:.2f} s (red frame); green: path of the arm tip",
+                   smallest.distance_m, smallest.time_s - move.time_s.front()),
        13, true);
   return detail::writePng(s.surface, path, error);
 }
