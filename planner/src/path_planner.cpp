@@ -2,8 +2,9 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
+
+#include <fmt/format.h>
 
 #include "cyber/planner/astar_search.hpp"
 #include "cyber/planner/joined_path.hpp"
@@ -21,17 +22,11 @@ double millisecondsSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-std::string poseText(const JointVector& q) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.4f m, %.4f rad)", q[0], q[1]);
-  return buffer;
-}
+std::string poseText(const JointVector& q) { return fmt::format("({:.4f} m, {:.4f} rad)", q[0], q[1]); }
 
 std::string rangeText(const RobotModel& model) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "elevator [%.4f, %.4f] m, arm [%.4f, %.4f] rad", model.elevator_range_m.min,
-                model.elevator_range_m.max, model.arm_range_rad.min, model.arm_range_rad.max);
-  return buffer;
+  return fmt::format("elevator [{:.4f}, {:.4f}] m, arm [{:.4f}, {:.4f}] rad", model.elevator_range_m.min,
+                     model.elevator_range_m.max, model.arm_range_rad.min, model.arm_range_rad.max);
 }
 
 std::string obstacleName(const Scene& scene, int index) {
@@ -79,6 +74,8 @@ constexpr double kShortcutMargin_m = 0.015;
 // segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
 constexpr double kDetourRatio = 1.05;
 constexpr int kBandRadius = 6;
+// The other side of this many holes of C-space (the largest) is searched for as well.
+constexpr size_t kMaxHoleSides = 2;
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
 // can replace replaced by it: the search's grid and potential bend the path toward the middle of
@@ -169,11 +166,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const JointVector& metric = model_.planner.metric;
   const SmoothingSettings& smoothing = model_.planner.smoothing;
   auto too_close = [&](const char* which, const JointVector& q, const SignedDistance& d) {
-    char buffer[128];
-    std::snprintf(buffer, sizeof buffer, " is %.4f m from ", d.value);
-    char tail[64];
-    std::snprintf(tail, sizeof tail, " (clearance %.4f m)", clearance);
-    return std::string(which) + " " + poseText(q) + buffer + obstacleName(scene_, d.obstacle) + tail;
+    return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(q), d.value,
+                       obstacleName(scene_, d.obstacle), clearance);
   };
   const SignedDistance d_start = world.distance(start);
   if (d_start.value < clearance) return R::failure(PlanStatus::kStartInCollision, too_close("start", start, d_start));
@@ -309,26 +303,33 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
     const double straight_s = estimateDuration(straight, drives, 0.0, kTimingGridPoints);
     if (!estimates.empty() && estimates.front() > kDetourRatio * straight_s) {
-      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
-      const auto other = astarSearch(grid, source_links, goal_links, goal, true, band);
-      if (other) {
+      auto add_search = [&](const std::optional<SearchPath>& found, const char* label) {
+        if (!found) return;
         std::vector<JointVector> around(polyline.begin(), polyline.begin() + fixed_head);
-        for (int cell : other->cells) around.push_back(grid.node(cell));
+        for (int cell : found->cells) around.push_back(grid.node(cell));
         around.push_back(goal);
-        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), "other way round, ");
+        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), label);
+      };
+      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
+      add_search(astarSearch(grid, source_links, goal_links, goal, true, band), "other way round, ");
+      // The band also blocks a narrow corridor both ways share (leaving coral L1, say), so the
+      // other side of each large hole is searched for directly.
+      const std::vector<GridHole>& holes = grid.holes();
+      for (size_t h = 0; h < std::min(holes.size(), kMaxHoleSides); ++h) {
+        const SideOfHole other_side{holes[h], 1 - rayCrossingParity(grid, holes[h], first_cells)};
+        add_search(astarSearch(grid, source_links, goal_links, goal, true, {}, other_side), "other side, ");
       }
     }
   }
   const double smooth_ms = millisecondsSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
   if (candidates.empty()) {
-    char buffer[200];
-    std::snprintf(
-        buffer, sizeof buffer,
-        "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
-        clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
-        last_check.at_s);
-    return R::failure(PlanStatus::kClearanceNotMet, buffer);
+    return R::failure(
+        PlanStatus::kClearanceNotMet,
+        fmt::format("no smoothed path keeps the clearance {:.4f} m and the joint limits (last attempt: {}, {:.4f} m at "
+                    "s = {:.4f})",
+                    clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
+                    last_check.at_s));
   }
   return candidates;
 }

@@ -31,9 +31,19 @@ struct SearchPath {
 // With use_heuristic the search is A*; it is admissible (returns the optimal cost) when every goal
 // cost is >= |node(goal) - target|_Sigma. Without it the search is Dijkstra's. Nodes with a
 // non-zero entry in `also_blocked` (empty, or one entry per cell) count as blocked too: the
-// search for another way round an obstacle (path_planner.cpp).
+// search for another way round an obstacle (path_planner.cpp). With a SideOfHole the path must
+// cross the hole's ray (cspace_grid.hpp) an even or odd number of times: the cheapest path on
+// that side of the hole (the search runs over nodes x crossing parity).
+struct SideOfHole {
+  GridHole hole;
+  int parity = 0;  // crossings modulo 2
+};
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic = true, std::span<const std::uint8_t> also_blocked = {});
+                                      bool use_heuristic = true, std::span<const std::uint8_t> also_blocked = {},
+                                      const std::optional<SideOfHole>& side = std::nullopt);
+
+// How often a path through these grid nodes crosses the hole's ray, modulo 2.
+int rayCrossingParity(const CSpaceGrid& grid, const GridHole& hole, std::span<const int> cells);
 
 }  // namespace cyber::planner
