@@ -23,8 +23,10 @@ struct LaterEntry {
 
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic, std::span<const std::uint8_t> also_blocked,
-                                      const std::optional<SideOfHole>& side) {
+                                      const SearchOptions& options) {
+  const bool use_heuristic = options.use_heuristic;
+  const std::span<const std::uint8_t> also_blocked = options.also_blocked;
+  const std::optional<SideOfHole>& side = options.side;
   // A search node is a grid cell and, with a side, the parity of ray crossings so far: node =
   // cell + parity * n.
   const int n = grid.cellCount();
@@ -84,6 +86,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     const OpenEntry top = open.back();
     open.pop_back();
     if (closed[static_cast<size_t>(top.node)] != 0 || top.g > g[static_cast<size_t>(top.node)]) continue;
+    if (top.f > options.max_cost) break;
     closed[static_cast<size_t>(top.node)] = 1;
     ++expanded;
     if (top.node == goal_node) break;

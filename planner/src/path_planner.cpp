@@ -10,6 +10,7 @@
 #include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/path_shaping.hpp"
 #include "cyber/planner/path_timing.hpp"
 #include "cyber/planner/weighted_norm.hpp"
 
@@ -74,8 +75,18 @@ constexpr double kShortcutMargin_m = 0.015;
 // segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
 constexpr double kDetourRatio = 1.05;
 constexpr int kBandRadius = 6;
+// The fastest candidate's shape is searched against its estimated time when it is estimated this
+// much slower than the straight segment, and kept when a finer estimate (grid points) finds it this
+// much faster: the search's own coarse estimate could be fooled between its grid points.
+constexpr double kShapeRatio = 1.02;
+constexpr double kShapeGain = 0.002;
+constexpr int kShapeCheckGridPoints = 100;
 // The other side of this many holes of C-space (the largest) is searched for as well.
+// Only when it costs at most this much more than the first path in the search's own metric (the
+// other sides that were faster on the public moves cost 1.03-1.06 times as much; most that were
+// not, 1.1 to 4.5 times): the search gives up early on a far detour, and it is not smoothed.
 constexpr size_t kMaxHoleSides = 2;
+constexpr double kMaxSideCost = 1.08;
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
 // can replace replaced by it: the search's grid and potential bend the path toward the middle of
@@ -209,6 +220,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   }
 
   std::vector<int> first_cells;
+  double first_cost = 0.0;  // in the search's metric
   std::vector<SearchEndpoint> source_links, goal_links;
   if (checkSegment(world, from, goal, clearance).clear) {
     out.direct = true;
@@ -233,6 +245,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
     polyline.push_back(goal);
     first_cells = found->cells;
+    first_cost = found->cost;
     source_links = sources;
     goal_links = goals;
   }
@@ -310,14 +323,36 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
         around.push_back(goal);
         add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), label);
       };
-      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
-      add_search(astarSearch(grid, source_links, goal_links, goal, true, band), "other way round, ");
-      // The band also blocks a narrow corridor both ways share (leaving coral L1, say), so the
-      // other side of each large hole is searched for directly.
+      // Without a hole the other way round is the search with the first path's band blocked;
+      // with holes, the other side of each (the band also blocks a narrow corridor both ways share,
+      // leaving coral L1 for example, and finds nothing).
       const std::vector<GridHole>& holes = grid.holes();
+      if (holes.empty()) {
+        const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
+        add_search(astarSearch(grid, source_links, goal_links, goal, SearchOptions{.also_blocked = band}),
+                   "other way round, ");
+      }
       for (size_t h = 0; h < std::min(holes.size(), kMaxHoleSides); ++h) {
         const SideOfHole other_side{holes[h], 1 - rayCrossingParity(grid, holes[h], first_cells)};
-        add_search(astarSearch(grid, source_links, goal_links, goal, true, {}, other_side), "other side, ");
+        add_search(astarSearch(grid, source_links, goal_links, goal,
+                               SearchOptions{.side = other_side, .max_cost = kMaxSideCost * first_cost}),
+                   "other side, ");
+      }
+    }
+    if (!estimates.empty() && estimates.front() > kShapeRatio * straight_s) {
+      const PlannedPath& fastest = candidates.front();
+      ShapedPath shaped =
+          shapeForTime(fastest.waypoints, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
+      // The search's estimate is coarse: the shaped path must also be faster on TOPP's grid.
+      if (shaped.improvements > 0 &&
+          estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
+              (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints)) {
+        PlannedPath better = fastest;
+        better.path = std::make_shared<const CubicSplinePath>(std::move(shaped.path));
+        better.waypoints = std::move(shaped.waypoints);
+        better.min_clearance_m = shaped.min_clearance_m;
+        better.method = "shaped for time, " + fastest.method;
+        candidates.insert(candidates.begin(), std::move(better));
       }
     }
   }

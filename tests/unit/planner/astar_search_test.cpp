@@ -98,8 +98,8 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
       }
     }
     const double expected = dijkstraCost(grid, sources, goals);
-    const auto astar = astarSearch(grid, sources, goals, target, true);
-    const auto dijkstra = astarSearch(grid, sources, goals, target, false);
+    const auto astar = astarSearch(grid, sources, goals, target);
+    const auto dijkstra = astarSearch(grid, sources, goals, target, SearchOptions{.use_heuristic = false});
     if (!std::isfinite(expected)) {
       ++unreachable;
       EXPECT_FALSE(astar.has_value()) << "trial " << trial;
@@ -112,6 +112,11 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
     EXPECT_NEAR(astar->cost, expected, 1e-9) << "trial " << trial;
     EXPECT_NEAR(dijkstra->cost, expected, 1e-9) << "trial " << trial;
     EXPECT_LE(astar->expanded, dijkstra->expanded + 1);
+    // A cost cap just below the optimum finds nothing, one at it the same path.
+    EXPECT_FALSE(astarSearch(grid, sources, goals, target, SearchOptions{.max_cost = expected - 1e-9}).has_value());
+    const auto capped = astarSearch(grid, sources, goals, target, SearchOptions{.max_cost = expected + 1e-9});
+    ASSERT_TRUE(capped.has_value()) << "trial " << trial;
+    EXPECT_NEAR(capped->cost, expected, 1e-9);
     // The returned path is a chain of free 8-neighbours whose costs add up to the cost.
     ASSERT_GE(astar->source, 0);
     ASSERT_GE(astar->goal, 0);
@@ -194,7 +199,7 @@ TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
     const auto free = astarSearch(grid, sources, goals, grid.node(goal));
     std::optional<SearchPath> side[2];
     for (int parity : {0, 1}) {
-      side[parity] = astarSearch(grid, sources, goals, grid.node(goal), true, {}, SideOfHole{*square, parity});
+      side[parity] = astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.side = SideOfHole{*square, parity}});
       if (!side[parity]) continue;
       EXPECT_EQ(rayCrossingParity(grid, *square, side[parity]->cells), parity) << "trial " << trial;
       EXPECT_EQ(side[parity]->cells.front(), source);
