@@ -343,7 +343,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
       const PlannedPath& fastest = candidates.front();
       ShapedPath shaped =
           shapeForTime(fastest.waypoints, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
-      // The search's estimate is coarse: the shaped path must also be faster on TOPP's grid.
+      // The search's estimate is coarse: the shaped path must also be faster on a finer grid.
       if (shaped.improvements > 0 &&
           estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
               (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints)) {

@@ -30,9 +30,9 @@ inline constexpr double kJointLimitMargin = 0.005;
 
 // A blocked region that touches no edge of the grid: an obstacle of C-space a path can pass on
 // either side. Its ray runs up (increasing arm index) from between nodes (i, j) and (i + 1, j),
-// both in the region, to the grid's edge; a path's side of the hole is the parity of its
-// crossings of the ray (two paths with the same ends and different parities cannot be deformed
-// into each other without crossing the hole).
+// both in the region (a region with no two such nodes is left out), to the grid's edge; a path's
+// side of the hole is the parity of its crossings of the ray (two paths with the same ends and
+// different parities cannot be deformed into each other without crossing the hole).
 struct GridHole {
   int i = 0;
   int j = 0;
