@@ -23,9 +23,16 @@ struct LaterEntry {
 
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic, std::span<const std::uint8_t> also_blocked) {
+                                      const SearchOptions& options) {
+  const bool use_heuristic = options.use_heuristic;
+  const std::span<const std::uint8_t> also_blocked = options.also_blocked;
+  const std::optional<SideOfHole>& side = options.side;
+  // A search node is a grid cell and, with a side, the parity of ray crossings so far: node =
+  // cell + parity * n.
   const int n = grid.cellCount();
-  const int goal_node = n;  // virtual node behind every goal connection
+  const int layers = side ? 2 : 1;
+  const int goal_layer = side ? side->parity : 0;
+  const int goal_node = layers * n;  // virtual node behind every goal connection
   const double inf = std::numeric_limits<double>::infinity();
   const int nj = grid.armAxis().count;
   const int ni = grid.elevatorAxis().count;
@@ -46,13 +53,14 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
 
   auto heuristic = [&](int node) {
     if (!use_heuristic || node == goal_node) return 0.0;
-    const JointVector d = grid.node(node) - target;
+    const JointVector d = grid.node(node % n) - target;
     return std::sqrt(metric[kElevator] * d[0] * d[0] + metric[kArm] * d[1] * d[1]);
   };
 
-  std::vector<double> g(static_cast<size_t>(n) + 1, inf);
-  std::vector<int> parent(static_cast<size_t>(n) + 1, -1);
-  std::vector<std::uint8_t> closed(static_cast<size_t>(n) + 1, 0);
+  const auto nodes = static_cast<size_t>(goal_node) + 1;
+  std::vector<double> g(nodes, inf);
+  std::vector<int> parent(nodes, -1);
+  std::vector<std::uint8_t> closed(nodes, 0);
   std::vector<OpenEntry> open;
   open.reserve(1024);
   auto push = [&](int node, double cost, int from) {
@@ -78,28 +86,33 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     const OpenEntry top = open.back();
     open.pop_back();
     if (closed[static_cast<size_t>(top.node)] != 0 || top.g > g[static_cast<size_t>(top.node)]) continue;
+    if (top.f > options.max_cost) break;
     closed[static_cast<size_t>(top.node)] = 1;
     ++expanded;
     if (top.node == goal_node) break;
 
-    const int i = grid.elevatorIndex(top.node);
-    const int j = grid.armIndex(top.node);
-    if (i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
+    const int here = top.node % n;
+    const int layer = top.node / n;
+    const int i = grid.elevatorIndex(here);
+    const int j = grid.armIndex(here);
+    if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
       for (const SearchEndpoint& goal : goals) {
-        if (goal.cell == top.node) push(goal_node, top.g + goal.cost, top.node);
+        if (goal.cell == here) push(goal_node, top.g + goal.cost, top.node);
       }
     }
-    const double p_here = grid.potential(top.node);
+    const double p_here = grid.potential(here);
     for (int di = -1; di <= 1; ++di) {
       const int a = i + di;
       if (a < 0 || a >= ni) continue;
       for (int dj = -1; dj <= 1; ++dj) {
         const int b = j + dj;
         if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
-        const int next = grid.cell(a, b);
-        if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(top.node, di, dj)) continue;
-        if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next)] != 0) continue;
-        const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next)));
+        const int next_cell = grid.cell(a, b);
+        const int next_layer = side && grid.crossesRay(side->hole, here, di, dj) ? 1 - layer : layer;
+        const int next = next_cell + next_layer * n;
+        if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(here, di, dj)) continue;
+        if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
+        const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
         push(next, top.g + step, top.node);
       }
     }
@@ -110,13 +123,13 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   path.cost = g[static_cast<size_t>(goal_node)];
   path.expanded = expanded;
   const int last = parent[static_cast<size_t>(goal_node)];
-  for (int node = last; node >= 0; node = parent[static_cast<size_t>(node)]) path.cells.push_back(node);
+  for (int node = last; node >= 0; node = parent[static_cast<size_t>(node)]) path.cells.push_back(node % n);
   std::reverse(path.cells.begin(), path.cells.end());
   // The endpoints actually used (the cheapest entry when a node is listed twice).
   const double goal_link = path.cost - g[static_cast<size_t>(last)];
   double best_goal_error = inf;
   for (size_t k = 0; k < goals.size(); ++k) {
-    if (goals[k].cell != last) continue;
+    if (goals[k].cell != last % n) continue;
     const double error = std::abs(goals[k].cost - goal_link);
     if (error < best_goal_error) {
       best_goal_error = error;
@@ -134,6 +147,16 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     }
   }
   return path;
+}
+
+int rayCrossingParity(const CSpaceGrid& grid, const GridHole& hole, std::span<const int> cells) {
+  int parity = 0;
+  for (size_t k = 1; k < cells.size(); ++k) {
+    const int di = grid.elevatorIndex(cells[k]) - grid.elevatorIndex(cells[k - 1]);
+    const int dj = grid.armIndex(cells[k]) - grid.armIndex(cells[k - 1]);
+    if (grid.crossesRay(hole, cells[k - 1], di, dj)) parity ^= 1;
+  }
+  return parity;
 }
 
 }  // namespace cyber::planner

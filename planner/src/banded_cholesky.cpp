@@ -46,7 +46,7 @@ int BandedCholesky::factor(double min_pivot) {
   return replaced;
 }
 
-void BandedCholesky::solveLower(Eigen::VectorXd& x) const {
+void BandedCholesky::solveLower(Eigen::Ref<Eigen::VectorXd> x) const {
   for (Eigen::Index i = 0; i < n_; ++i) {
     double v = x[i];
     for (Eigen::Index k = std::max<Eigen::Index>(0, i - w_); k < i; ++k) v -= at(i, k) * x[k];
@@ -54,7 +54,7 @@ void BandedCholesky::solveLower(Eigen::VectorXd& x) const {
   }
 }
 
-void BandedCholesky::solveUpper(Eigen::VectorXd& x) const {
+void BandedCholesky::solveUpper(Eigen::Ref<Eigen::VectorXd> x) const {
   // Column-oriented: once x_i is final, remove its contribution from the rows above (row i of
   // L is contiguous in the band storage).
   for (Eigen::Index i = n_ - 1; i >= 0; --i) {

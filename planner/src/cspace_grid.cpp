@@ -34,6 +34,50 @@ CSpaceGrid::CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t
   blocked_.resize(static_cast<size_t>(cellCount()), 0);
   allowAllStepsBetweenFreeNodes();
   computePotential(search.potential_range);
+  findHoles();
+}
+
+void CSpaceGrid::findHoles() {
+  // Blocked regions, 8-connected, by a flood fill from each unlabelled blocked node.
+  const int ni = elevator_.count, nj = arm_.count;
+  std::vector<int> label(static_cast<size_t>(cellCount()), -1);
+  std::vector<int> stack;
+  holes_.clear();
+  for (int start = 0; start < cellCount(); ++start) {
+    if (!blocked(start) || label[static_cast<size_t>(start)] >= 0) continue;
+    const int id = start;
+    bool touches_edge = false;
+    GridHole hole{-1, -1, 0};
+    stack.assign(1, start);
+    label[static_cast<size_t>(start)] = id;
+    while (!stack.empty()) {
+      const int c = stack.back();
+      stack.pop_back();
+      ++hole.cells;
+      const int i = elevatorIndex(c), j = armIndex(c);
+      touches_edge = touches_edge || i == 0 || j == 0 || i == ni - 1 || j == nj - 1;
+      for (int di = -1; di <= 1; ++di) {
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int a = i + di, b = j + dj;
+          if (a < 0 || b < 0 || a >= ni || b >= nj) continue;
+          const int next = cell(a, b);
+          if (!blocked(next) || label[static_cast<size_t>(next)] >= 0) continue;
+          label[static_cast<size_t>(next)] = id;
+          stack.push_back(next);
+        }
+      }
+    }
+    if (touches_edge) continue;
+    // The ray's foot: the highest pair of horizontally adjacent nodes of the region.
+    for (int c = start; c < cellCount(); ++c) {
+      const int i = elevatorIndex(c), j = armIndex(c);
+      if (label[static_cast<size_t>(c)] != id || i + 1 >= ni || label[static_cast<size_t>(cell(i + 1, j))] != id)
+        continue;
+      if (j > hole.j) hole = GridHole{i, j, hole.cells};
+    }
+    if (hole.i >= 0) holes_.push_back(hole);
+  }
+  std::sort(holes_.begin(), holes_.end(), [](const GridHole& a, const GridHole& b) { return a.cells > b.cells; });
 }
 
 void CSpaceGrid::allowAllStepsBetweenFreeNodes() {

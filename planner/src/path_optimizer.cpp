@@ -1,4 +1,5 @@
 #include "cyber/planner/path_optimizer.hpp"
+
 #include "cyber/planner/weighted_norm.hpp"
 
 #include <algorithm>
@@ -6,46 +7,6 @@
 
 namespace cyber::planner {
 namespace {
-
-// Banded Cholesky factor of a symmetric positive definite pentadiagonal matrix:
-// l0 the diagonal of L, l1[i] = L(i, i-1), l2[i] = L(i, i-2).
-struct BandedCholesky {
-  Eigen::VectorXd l0, l1, l2;
-
-  // Returns false when the matrix is not positive definite.
-  bool factor(const Eigen::VectorXd& a0, const Eigen::VectorXd& a1, const Eigen::VectorXd& a2) {
-    const Eigen::Index n = a0.size();
-    l0.setZero(n);
-    l1.setZero(n);
-    l2.setZero(n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (i >= 2) l2[i] = a2[i - 2] / l0[i - 2];
-      if (i >= 1) l1[i] = (a1[i - 1] - l2[i] * l1[i - 1]) / l0[i - 1];
-      const double pivot = a0[i] - l1[i] * l1[i] - l2[i] * l2[i];
-      if (!(pivot > 0.0)) return false;
-      l0[i] = std::sqrt(pivot);
-    }
-    return true;
-  }
-  // out = L^-1 b (forward substitution); in place is fine.
-  void solveLower(const double* b, double* out, Eigen::Index n) const {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double v = b[i];
-      if (i >= 1) v -= l1[i] * out[i - 1];
-      if (i >= 2) v -= l2[i] * out[i - 2];
-      out[i] = v / l0[i];
-    }
-  }
-  // out = L^-T b (back substitution); in place is fine.
-  void solveUpper(const double* b, double* out, Eigen::Index n) const {
-    for (Eigen::Index i = n - 1; i >= 0; --i) {
-      double v = b[i];
-      if (i + 1 < n) v -= l1[i + 1] * out[i + 1];
-      if (i + 2 < n) v -= l2[i + 2] * out[i + 2];
-      out[i] = v / l0[i];
-    }
-  }
-};
 
 constexpr int kMaxClosePairs = 64;
 
@@ -147,14 +108,11 @@ double SmoothingObjective::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& g
   return cost;
 }
 
-void SmoothingObjective::quadraticHessian(int joint, Eigen::VectorXd& diag0, Eigen::VectorXd& diag1,
-                                          Eigen::VectorXd& diag2) const {
+void SmoothingObjective::quadraticHessian(int joint, BandedCholesky& hessian) const {
   const int m = free_count_;
   const int n = static_cast<int>(prior_.size());
   const double sigma = metric_[joint];
-  diag0.setZero(m);
-  diag1.setZero(m);
-  diag2.setZero(m);
+  hessian.reset(m, 2);
   // Adds 2 w r r^T for a row r with coefficients c at waypoints first, first+1, ...
   auto add_row = [&](double w, int first, std::initializer_list<double> coefficients) {
     int a = first;
@@ -162,15 +120,7 @@ void SmoothingObjective::quadraticHessian(int joint, Eigen::VectorXd& diag0, Eig
       int b = first;
       for (double cb : coefficients) {
         const int ka = a - fixed_head_, kb = b - fixed_head_;
-        if (ka >= 0 && ka < m && kb >= ka && kb < m) {
-          const double v = 2.0 * w * sigma * ca * cb;
-          if (kb == ka)
-            diag0[ka] += v;
-          else if (kb == ka + 1)
-            diag1[ka] += v;
-          else if (kb == ka + 2)
-            diag2[ka] += v;
-        }
+        if (ka >= 0 && ka < m && kb >= ka && kb < m) hessian.add(kb, ka, 2.0 * w * sigma * ca * cb);
         ++b;
       }
       ++a;
@@ -192,23 +142,18 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
   }
   BandedCholesky factors[kJointCount];
   bool preconditioned = true;
-  {
-    Eigen::VectorXd a0, a1, a2;
-    for (int j = 0; j < kJointCount; ++j) {
-      objective.quadraticHessian(j, a0, a1, a2);
-      preconditioned = preconditioned && factors[j].factor(a0, a1, a2);
-    }
+  for (int j = 0; j < kJointCount; ++j) {
+    objective.quadraticHessian(j, factors[j]);
+    // A pivot floor of 0 replaces only pivots that are not positive: then there is no factor.
+    preconditioned = preconditioned && factors[j].factor(0.0) == 0;
   }
   const Eigen::VectorXd x_prior = objective.priorVariables();
   Eigen::VectorXd x(2 * m), gradient_x(2 * m);
   // x = x_prior + L^-T y, per joint block; without a factor (all quadratic weights zero) y = x - x_prior.
   auto to_x = [&](const Eigen::VectorXd& y) {
     for (int j = 0; j < kJointCount; ++j) {
-      if (preconditioned) {
-        factors[j].solveUpper(y.data() + j * m, x.data() + j * m, m);
-      } else {
-        x.segment(j * m, m) = y.segment(j * m, m);
-      }
+      x.segment(j * m, m) = y.segment(j * m, m);
+      if (preconditioned) factors[j].solveUpper(x.segment(j * m, m));
     }
     x += x_prior;
   };
@@ -216,11 +161,8 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
     to_x(y);
     const double cost = objective.evaluate(x, gradient_x);
     for (int j = 0; j < kJointCount; ++j) {
-      if (preconditioned) {
-        factors[j].solveLower(gradient_x.data() + j * m, gradient_y.data() + j * m, m);
-      } else {
-        gradient_y.segment(j * m, m) = gradient_x.segment(j * m, m);
-      }
+      gradient_y.segment(j * m, m) = gradient_x.segment(j * m, m);
+      if (preconditioned) factors[j].solveLower(gradient_y.segment(j * m, m));
     }
     return cost;
   };

@@ -2,13 +2,15 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
+
+#include <fmt/format.h>
 
 #include "cyber/planner/astar_search.hpp"
 #include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_clearance.hpp"
 #include "cyber/planner/path_optimizer.hpp"
+#include "cyber/planner/path_shaping.hpp"
 #include "cyber/planner/path_timing.hpp"
 #include "cyber/planner/weighted_norm.hpp"
 
@@ -21,17 +23,11 @@ double millisecondsSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-std::string poseText(const JointVector& q) {
-  char buffer[96];
-  std::snprintf(buffer, sizeof buffer, "(%.4f m, %.4f rad)", q[0], q[1]);
-  return buffer;
-}
+std::string poseText(const JointVector& q) { return fmt::format("({:.4f} m, {:.4f} rad)", q[0], q[1]); }
 
 std::string rangeText(const RobotModel& model) {
-  char buffer[160];
-  std::snprintf(buffer, sizeof buffer, "elevator [%.4f, %.4f] m, arm [%.4f, %.4f] rad", model.elevator_range_m.min,
-                model.elevator_range_m.max, model.arm_range_rad.min, model.arm_range_rad.max);
-  return buffer;
+  return fmt::format("elevator [{:.4f}, {:.4f}] m, arm [{:.4f}, {:.4f}] rad", model.elevator_range_m.min,
+                     model.elevator_range_m.max, model.arm_range_rad.min, model.arm_range_rad.max);
 }
 
 std::string obstacleName(const Scene& scene, int index) {
@@ -79,6 +75,18 @@ constexpr double kShortcutMargin_m = 0.015;
 // segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
 constexpr double kDetourRatio = 1.05;
 constexpr int kBandRadius = 6;
+// The fastest candidate's shape is searched against its estimated time when it is estimated this
+// much slower than the straight segment, and kept when a finer estimate (grid points) finds it this
+// much faster: the search's own coarse estimate could be fooled between its grid points.
+constexpr double kShapeRatio = 1.02;
+constexpr double kShapeGain = 0.002;
+constexpr int kShapeCheckGridPoints = 100;
+// The other side of this many holes of C-space (the largest) is searched for as well.
+// Only when it costs at most this much more than the first path in the search's own metric (the
+// other sides that were faster on the public moves cost 1.03-1.06 times as much; most that were
+// not, 1.1 to 4.5 times): the search gives up early on a far detour, and it is not smoothed.
+constexpr size_t kMaxHoleSides = 2;
+constexpr double kMaxSideCost = 1.08;
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
 // can replace replaced by it: the search's grid and potential bend the path toward the middle of
@@ -169,11 +177,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const JointVector& metric = model_.planner.metric;
   const SmoothingSettings& smoothing = model_.planner.smoothing;
   auto too_close = [&](const char* which, const JointVector& q, const SignedDistance& d) {
-    char buffer[128];
-    std::snprintf(buffer, sizeof buffer, " is %.4f m from ", d.value);
-    char tail[64];
-    std::snprintf(tail, sizeof tail, " (clearance %.4f m)", clearance);
-    return std::string(which) + " " + poseText(q) + buffer + obstacleName(scene_, d.obstacle) + tail;
+    return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(q), d.value,
+                       obstacleName(scene_, d.obstacle), clearance);
   };
   const SignedDistance d_start = world.distance(start);
   if (d_start.value < clearance) return R::failure(PlanStatus::kStartInCollision, too_close("start", start, d_start));
@@ -215,6 +220,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   }
 
   std::vector<int> first_cells;
+  double first_cost = 0.0;  // in the search's metric
   std::vector<SearchEndpoint> source_links, goal_links;
   if (checkSegment(world, from, goal, clearance).clear) {
     out.direct = true;
@@ -239,6 +245,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
     polyline.push_back(goal);
     first_cells = found->cells;
+    first_cost = found->cost;
     source_links = sources;
     goal_links = goals;
   }
@@ -309,26 +316,55 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
     const double straight_s = estimateDuration(straight, drives, 0.0, kTimingGridPoints);
     if (!estimates.empty() && estimates.front() > kDetourRatio * straight_s) {
-      const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
-      const auto other = astarSearch(grid, source_links, goal_links, goal, true, band);
-      if (other) {
+      auto add_search = [&](const std::optional<SearchPath>& found, const char* label) {
+        if (!found) return;
         std::vector<JointVector> around(polyline.begin(), polyline.begin() + fixed_head);
-        for (int cell : other->cells) around.push_back(grid.node(cell));
+        for (int cell : found->cells) around.push_back(grid.node(cell));
         around.push_back(goal);
-        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), "other way round, ");
+        add(shortcutPolyline(world, around, fixed_head, clearance + kShortcutMargin_m), label);
+      };
+      // Without a hole the other way round is the search with the first path's band blocked;
+      // with holes, the other side of each (the band also blocks a narrow corridor both ways share,
+      // leaving coral L1 for example, and finds nothing).
+      const std::vector<GridHole>& holes = grid.holes();
+      if (holes.empty()) {
+        const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);
+        add_search(astarSearch(grid, source_links, goal_links, goal, SearchOptions{.also_blocked = band}),
+                   "other way round, ");
+      }
+      for (size_t h = 0; h < std::min(holes.size(), kMaxHoleSides); ++h) {
+        const SideOfHole other_side{holes[h], 1 - rayCrossingParity(grid, holes[h], first_cells)};
+        add_search(astarSearch(grid, source_links, goal_links, goal,
+                               SearchOptions{.side = other_side, .max_cost = kMaxSideCost * first_cost}),
+                   "other side, ");
+      }
+    }
+    if (!estimates.empty() && estimates.front() > kShapeRatio * straight_s) {
+      const PlannedPath& fastest = candidates.front();
+      ShapedPath shaped =
+          shapeForTime(fastest.waypoints, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
+      // The search's estimate is coarse: the shaped path must also be faster on a finer grid.
+      if (shaped.improvements > 0 &&
+          estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
+              (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints)) {
+        PlannedPath better = fastest;
+        better.path = std::make_shared<const CubicSplinePath>(std::move(shaped.path));
+        better.waypoints = std::move(shaped.waypoints);
+        better.min_clearance_m = shaped.min_clearance_m;
+        better.method = "shaped for time, " + fastest.method;
+        candidates.insert(candidates.begin(), std::move(better));
       }
     }
   }
   const double smooth_ms = millisecondsSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
   if (candidates.empty()) {
-    char buffer[200];
-    std::snprintf(
-        buffer, sizeof buffer,
-        "no smoothed path keeps the clearance %.4f m and the joint limits (last attempt: %s, %.4f m at s = %.4f)",
-        clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
-        last_check.at_s);
-    return R::failure(PlanStatus::kClearanceNotMet, buffer);
+    return R::failure(
+        PlanStatus::kClearanceNotMet,
+        fmt::format("no smoothed path keeps the clearance {:.4f} m and the joint limits (last attempt: {}, {:.4f} m at "
+                    "s = {:.4f})",
+                    clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
+                    last_check.at_s));
   }
   return candidates;
 }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -97,8 +98,8 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
       }
     }
     const double expected = dijkstraCost(grid, sources, goals);
-    const auto astar = astarSearch(grid, sources, goals, target, true);
-    const auto dijkstra = astarSearch(grid, sources, goals, target, false);
+    const auto astar = astarSearch(grid, sources, goals, target);
+    const auto dijkstra = astarSearch(grid, sources, goals, target, SearchOptions{.use_heuristic = false});
     if (!std::isfinite(expected)) {
       ++unreachable;
       EXPECT_FALSE(astar.has_value()) << "trial " << trial;
@@ -111,6 +112,11 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
     EXPECT_NEAR(astar->cost, expected, 1e-9) << "trial " << trial;
     EXPECT_NEAR(dijkstra->cost, expected, 1e-9) << "trial " << trial;
     EXPECT_LE(astar->expanded, dijkstra->expanded + 1);
+    // A cost cap just below the optimum finds nothing, one at it the same path.
+    EXPECT_FALSE(astarSearch(grid, sources, goals, target, SearchOptions{.max_cost = expected - 1e-9}).has_value());
+    const auto capped = astarSearch(grid, sources, goals, target, SearchOptions{.max_cost = expected + 1e-9});
+    ASSERT_TRUE(capped.has_value()) << "trial " << trial;
+    EXPECT_NEAR(capped->cost, expected, 1e-9);
     // The returned path is a chain of free 8-neighbours whose costs add up to the cost.
     ASSERT_GE(astar->source, 0);
     ASSERT_GE(astar->goal, 0);
@@ -157,6 +163,96 @@ TEST(AstarSearch, WallWithoutGapIsUnreachable) {
   EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{grid.cell(0, 0), 0.0}},
                            std::vector<SearchEndpoint>{{grid.cell(6, 6), 0.0}}, grid.node(grid.cell(6, 6)))
                    .has_value());
+}
+
+// A grid with a square hole in its middle and, on random grids, random extra blocked nodes: the
+// search on each side of the hole returns a path with that parity, the cheaper side costs what
+// the unconstrained search costs, and on the clean grid the two sides pass above and below.
+TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
+  std::mt19937 rng(11);
+  int both_sides = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const int ni = 13, nj = 11;
+    std::bernoulli_distribution is_blocked(trial == 0 ? 0.0 : 0.15);
+    std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj));
+    for (auto& b : blocked) b = is_blocked(rng) ? 1 : 0;
+    for (int i = 5; i <= 7; ++i) {
+      for (int j = 4; j <= 6; ++j) blocked[static_cast<size_t>(i * nj + j)] = 1;
+    }
+    const int source = 0 * nj + 5, goal = 12 * nj + 5;
+    blocked[static_cast<size_t>(source)] = blocked[static_cast<size_t>(goal)] = 0;
+    SearchSettings search;
+    search.potential_weight = trial % 2 == 0 ? 0.0 : 2.0;
+    search.potential_range = 0.1;
+    const CSpaceGrid grid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, blocked, JointVector(1.0, 0.1), search);
+    // The square is a hole unless random nodes join it to the edge.
+    const GridHole* square = nullptr;
+    for (const GridHole& hole : grid.holes()) {
+      if (hole.i >= 5 && hole.i + 1 <= 7 && hole.j >= 4 && hole.j <= 6) square = &hole;
+    }
+    if (trial == 0) {
+      ASSERT_NE(square, nullptr);
+      EXPECT_EQ(square->cells, 9);
+    }
+    if (square == nullptr) continue;
+    const std::vector<SearchEndpoint> sources{{source, 0.0}}, goals{{goal, 0.0}};
+    const auto free = astarSearch(grid, sources, goals, grid.node(goal));
+    std::optional<SearchPath> side[2];
+    for (int parity : {0, 1}) {
+      side[parity] = astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.side = SideOfHole{*square, parity}});
+      if (!side[parity]) continue;
+      EXPECT_EQ(rayCrossingParity(grid, *square, side[parity]->cells), parity) << "trial " << trial;
+      EXPECT_EQ(side[parity]->cells.front(), source);
+      EXPECT_EQ(side[parity]->cells.back(), goal);
+      ASSERT_TRUE(free.has_value());
+      EXPECT_GE(side[parity]->cost, free->cost - 1e-12);
+    }
+    if (!free) {
+      EXPECT_FALSE(side[0] || side[1]) << "trial " << trial;
+      continue;
+    }
+    const double cheaper = std::min(side[0] ? side[0]->cost : INFINITY, side[1] ? side[1]->cost : INFINITY);
+    EXPECT_NEAR(cheaper, free->cost, 1e-9) << "trial " << trial;
+    if (!side[0] || !side[1]) continue;
+    ++both_sides;
+    if (trial == 0) {
+      // The ray runs up from the square: the path above crosses it once, the path below never.
+      for (int parity : {0, 1}) {
+        for (int cell : side[parity]->cells) {
+          if (grid.elevatorIndex(cell) == 6) {
+            EXPECT_EQ(grid.armIndex(cell) > 6, parity == 1);
+          }
+        }
+      }
+      EXPECT_NEAR(side[0]->cost, side[1]->cost, 1e-9) << "the grid is symmetric about the middle row";
+    }
+  }
+  EXPECT_GT(both_sides, 50);
+}
+
+TEST(CSpaceGrid, HolesAreTheBlockedRegionsAwayFromTheEdges) {
+  const int ni = 12, nj = 10;
+  std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj), 0);
+  auto block = [&](int i, int j) { blocked[static_cast<size_t>(i * nj + j)] = 1; };
+  block(2, 2), block(3, 2), block(3, 3), block(4, 4);  // a hole of 4 nodes, diagonally joined
+  for (int j = 0; j < 4; ++j) block(8, j);                // touches the edge: not a hole
+  block(8, 7), block(9, 7), block(8, 6);                  // a hole of 3 nodes
+  block(5, 8);                                            // one node wide: no ray foot, left out
+  const CSpaceGrid grid(GridAxis{0.0, 0.1, ni}, GridAxis{0.0, 0.1, nj}, blocked, JointVector(1.0, 1.0),
+                        SearchSettings{});
+  ASSERT_EQ(grid.holes().size(), 2U);
+  EXPECT_EQ(grid.holes()[0].cells, 4);
+  EXPECT_EQ(grid.holes()[0].i, 2);
+  EXPECT_EQ(grid.holes()[0].j, 2);
+  EXPECT_EQ(grid.holes()[1].cells, 3);
+  EXPECT_EQ(grid.holes()[1].i, 8);
+  EXPECT_EQ(grid.holes()[1].j, 7);
+  // The ray leaves upward between columns 8 and 9 above row 7.
+  EXPECT_TRUE(grid.crossesRay(grid.holes()[1], grid.cell(8, 9), 1, 0));
+  EXPECT_TRUE(grid.crossesRay(grid.holes()[1], grid.cell(9, 8), -1, 1));
+  EXPECT_FALSE(grid.crossesRay(grid.holes()[1], grid.cell(8, 5), 1, 0));
+  EXPECT_FALSE(grid.crossesRay(grid.holes()[1], grid.cell(8, 9), 0, -1));
+  EXPECT_FALSE(grid.crossesRay(grid.holes()[1], grid.cell(7, 9), 1, 0));
 }
 
 TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {

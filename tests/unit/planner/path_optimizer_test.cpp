@@ -3,6 +3,7 @@
 
 #include "cyber/planner/path_optimizer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -90,13 +91,13 @@ TEST(SmoothingObjective, BandedHessianIsThatOfTheQuadraticPart) {
   objective.evaluate(x, g0);
   objective.evaluate(x + v, g1);
   for (int joint = 0; joint < 2; ++joint) {
-    Eigen::VectorXd d0, d1, d2;
-    objective.quadraticHessian(joint, d0, d1, d2);
-    ASSERT_EQ(d0.size(), m);
+    BandedCholesky h;
+    objective.quadraticHessian(joint, h);
+    ASSERT_EQ(h.size(), m);
+    ASSERT_EQ(h.bandwidth(), 2);
     for (int k = 0; k < m; ++k) {
-      const auto at = [&](int i) { return (i >= 0 && i < m) ? v[joint * m + i] : 0.0; };
-      const double hv = d0[k] * at(k) + d1[k] * at(k + 1) + (k >= 1 ? d1[k - 1] * at(k - 1) : 0.0) + d2[k] * at(k + 2) +
-                        (k >= 2 ? d2[k - 2] * at(k - 2) : 0.0);
+      double hv = 0.0;
+      for (int i = std::max(0, k - 2); i <= std::min(m - 1, k + 2); ++i) hv += h.entry(k, i) * v[joint * m + i];
       EXPECT_NEAR(hv, g1[joint * m + k] - g0[joint * m + k], 1e-10) << "joint " << joint << " k " << k;
     }
   }

@@ -6,6 +6,7 @@
 // the cost of connecting it to the exact start or goal pose.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -27,13 +28,33 @@ struct SearchPath {
   int expanded = 0;        // nodes taken off the open list
 };
 
-// The cheapest path from any free source to any free goal, or nullopt when none is reachable.
-// With use_heuristic the search is A*; it is admissible (returns the optimal cost) when every goal
-// cost is >= |node(goal) - target|_Sigma. Without it the search is Dijkstra's. Nodes with a
-// non-zero entry in `also_blocked` (empty, or one entry per cell) count as blocked too: the
-// search for another way round an obstacle (path_planner.cpp).
+// With a SideOfHole the path must cross the hole's ray (cspace_grid.hpp) an even or odd number of
+// times: the cheapest path on that side of the hole (the search runs over nodes x crossing parity).
+struct SideOfHole {
+  GridHole hole;
+  int parity = 0;  // crossings modulo 2
+};
+
+struct SearchOptions {
+  // A* (admissible, the optimal cost, when every goal cost is >= |node(goal) - target|_Sigma);
+  // without, Dijkstra's.
+  bool use_heuristic = true;
+  // Nodes with a non-zero entry (empty, or one entry per cell) count as blocked too: the search
+  // for another way round an obstacle (path_planner.cpp).
+  std::span<const std::uint8_t> also_blocked = {};
+  std::optional<SideOfHole> side = std::nullopt;
+  // Paths that cost more are not wanted: the search gives up once every remaining one would
+  // (exact with the heuristic, which never overestimates).
+  double max_cost = std::numeric_limits<double>::infinity();
+};
+
+// The cheapest path from any free source to any free goal, or nullopt when none is reachable
+// (within options.max_cost).
 std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
                                       std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      bool use_heuristic = true, std::span<const std::uint8_t> also_blocked = {});
+                                      const SearchOptions& options = {});
+
+// How often a path through these grid nodes crosses the hole's ray, modulo 2.
+int rayCrossingParity(const CSpaceGrid& grid, const GridHole& hole, std::span<const int> cells);
 
 }  // namespace cyber::planner

@@ -20,9 +20,10 @@ class BandedCholesky {
   // replaced by that floor, so the result is always a usable preconditioner; returns the number
   // of pivots replaced.
   int factor(double min_pivot = 1e-12);
-  // x <- L^{-1} x and x <- L^{-T} x with the factor.
-  void solveLower(Eigen::VectorXd& x) const;
-  void solveUpper(Eigen::VectorXd& x) const;
+  // x <- L^{-1} x and x <- L^{-T} x with the factor (x of size(); a vector or a contiguous
+  // segment of one).
+  void solveLower(Eigen::Ref<Eigen::VectorXd> x) const;
+  void solveUpper(Eigen::Ref<Eigen::VectorXd> x) const;
 
  private:
   double& at(Eigen::Index i, Eigen::Index j) { return band_(i, j - i + w_); }

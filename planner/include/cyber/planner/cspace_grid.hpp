@@ -3,6 +3,7 @@
 // where the robot is too close to an obstacle (blocked), and a potential that decays with the
 // weighted distance from blocked nodes (a dynamic-programming distance transform).
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -26,6 +27,17 @@ struct GridAxis {
 // Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
 // a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
 inline constexpr double kJointLimitMargin = 0.005;
+
+// A blocked region that touches no edge of the grid: an obstacle of C-space a path can pass on
+// either side. Its ray runs up (increasing arm index) from between nodes (i, j) and (i + 1, j),
+// both in the region (a region with no two such nodes is left out), to the grid's edge; a path's
+// side of the hole is the parity of its crossings of the ray (two paths with the same ends and
+// different parities cannot be deformed into each other without crossing the hole).
+struct GridHole {
+  int i = 0;
+  int j = 0;
+  int cells = 0;  // blocked nodes in the region
+};
 
 class CSpaceGrid {
  public:
@@ -67,6 +79,14 @@ class CSpaceGrid {
   [[nodiscard]] const JointVector& metric() const { return metric_; }
   [[nodiscard]] double potentialWeight() const { return potential_weight_; }
   [[nodiscard]] double clearance_m() const { return clearance_m_; }
+  // The holes, largest first.
+  [[nodiscard]] const std::vector<GridHole>& holes() const { return holes_; }
+  // Whether the step from cell by (di, dj) crosses the hole's ray.
+  [[nodiscard]] bool crossesRay(const GridHole& hole, int cell, int di, int dj) const {
+    const int i = elevatorIndex(cell);
+    if (std::min(i, i + di) != hole.i || std::max(i, i + di) != hole.i + 1) return false;
+    return 2 * armIndex(cell) + dj > 2 * hole.j;
+  }
   // Steps that needed a continuous check when the grid was built.
   [[nodiscard]] int checkedStepCount() const { return checked_steps_; }
   [[nodiscard]] int blockedCount() const;
@@ -78,6 +98,7 @@ class CSpaceGrid {
  private:
   void computePotential(double range);
   void allowAllStepsBetweenFreeNodes();
+  void findHoles();
 
   // kStepBit[di + 1][dj + 1]: bit of a forward step, -1 for the backward ones.
   static constexpr int kStepBit[3][3] = {{-1, -1, -1}, {-1, -1, 3}, {0, 1, 2}};
@@ -87,6 +108,7 @@ class CSpaceGrid {
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> steps_;  // bit per forward step, see stepFree
   std::vector<float> potential_;
+  std::vector<GridHole> holes_;
   JointVector metric_ = JointVector(1.0, 1.0);
   double potential_weight_ = 0.0;
   double clearance_m_ = 0.0;

@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include "cyber/planner/banded_cholesky.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/cspace_grid.hpp"
 #include "cyber/planner/lbfgs.hpp"
@@ -48,9 +49,9 @@ class SmoothingObjective {
   [[nodiscard]] std::vector<JointVector> waypoints(const Eigen::VectorXd& x) const;
   // Cost and gradient (gradient sized like x).
   double evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const;
-  // Hessian of the quadratic terms (prior, length, smoothness) for one joint: banded, as
-  // (diagonal, first and second superdiagonal) over the free waypoints.
-  void quadraticHessian(int joint, Eigen::VectorXd& diag0, Eigen::VectorXd& diag1, Eigen::VectorXd& diag2) const;
+  // Hessian of the quadratic terms (prior, length, smoothness) for one joint over the free
+  // waypoints: pentadiagonal (lower bandwidth 2), unfactored.
+  void quadraticHessian(int joint, BandedCholesky& hessian) const;
 
  private:
   const CollisionWorld& world_;

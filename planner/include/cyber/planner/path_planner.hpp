@@ -47,7 +47,8 @@ class PathPlanner {
   [[nodiscard]] Result<PlannedPath> plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
                                          const JointVector& start_velocity = JointVector::Zero()) const;
   // Every path that passed the clearance check, the one a reachability pass times fastest first
-  // (the search's smoothed polyline and its shortcut; docs/performance.md). plan() is the first.
+  // (the search's smoothed polyline, its shortcut, the other side of each hole of C-space, and the
+  // fastest of these shaped against its time; docs/performance.md). plan() is the first.
   // Without alternatives, the search's smoothed polyline alone (a quick first look at a move).
   [[nodiscard]] Result<std::vector<PlannedPath>> candidates(
       const JointVector& start, const JointVector& goal, HeldPieces pieces,

@@ -1,0 +1,80 @@
+// The shape search against the reachability time (path_shaping.hpp) on the public moves: it never
+// returns a slower or less clear path, keeps the fixed knots, and finds a faster shape where the
+// smoothed search path keeps needlessly far from the obstacles.
+
+#include "cyber/planner/path_shaping.hpp"
+
+#include <array>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "cyber/planner/path_clearance.hpp"
+#include "cyber/planner/path_planner.hpp"
+#include "cyber/planner/path_timing.hpp"
+#include "public_moves.hpp"
+#include "reference_model.hpp"
+
+namespace cyber::planner {
+namespace {
+
+const RobotModel& model() { return test::referenceModel(); }
+
+const PathPlanner& planner() {
+  static const PathPlanner p(model(), model().scenes.front());
+  return p;
+}
+
+TEST(ShapeForTime, NeverSlowerNorCloserAndKeepsTheEnds) {
+  const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
+  const ShapeSearchSettings settings;
+  int shaped = 0, much_faster = 0, checked = 0;
+  for (const test::PublicMove& move : test::publicMoves()) {
+    // The search's own smoothed path alone, not yet chosen for time.
+    auto found = planner().candidates(move.from, move.to, move.pieces, JointVector::Zero(), PathAlternatives::kNone);
+    if (!found || found.value().front().direct) continue;
+    const PlannedPath& path = found.value().front();
+    const CollisionWorld& world = planner().world(move.pieces);
+    const ShapedPath result = shapeForTime(path.waypoints, 1, JointVector::Zero(), world, model(), 0.0, settings);
+    ++checked;
+    const double before_s = estimateDuration(*path.path, drives, 0.0, settings.grid_points);
+    EXPECT_LE(result.evaluations, settings.max_evaluations) << move.label;
+    ASSERT_EQ(result.waypoints.size(), path.waypoints.size()) << move.label;
+    EXPECT_EQ(result.waypoints.front(), path.waypoints.front()) << move.label;
+    EXPECT_EQ(result.waypoints.back(), path.waypoints.back()) << move.label;
+    EXPECT_NEAR(result.estimate_s, estimateDuration(result.path, drives, 0.0, settings.grid_points), 1e-12);
+    if (result.improvements == 0) {
+      EXPECT_EQ(result.waypoints, path.waypoints) << move.label;
+      EXPECT_DOUBLE_EQ(result.estimate_s, before_s) << move.label;
+      continue;
+    }
+    ++shaped;
+    EXPECT_LT(result.estimate_s, before_s) << move.label;
+    if (result.estimate_s < 0.97 * before_s) ++much_faster;
+    // Clear and inside the limits, checked again here at a finer spacing than the planner's.
+    const ClearanceCheck check = checkPath(result.path, world, model(), model().clearance_m, 0.25 * kDenseCheckStep);
+    EXPECT_TRUE(check.ok()) << move.label << ": " << check.min_distance_m << " m at s = " << check.at_s;
+    EXPECT_NEAR(result.min_clearance_m, check.min_distance_m, 1e-3) << move.label;
+  }
+  EXPECT_GT(checked, 60);
+  EXPECT_GT(shaped, checked / 3) << "the search finds faster shapes on many moves";
+  EXPECT_GT(much_faster, 5);
+}
+
+TEST(ShapeForTime, WithoutFreeKnotsOrBumpsReturnsTheInput) {
+  const CollisionWorld& world = planner().world(HeldPieces{});
+  const std::vector<JointVector> segment{JointVector(0.2, 1.57), JointVector(0.3, 1.7)};
+  const ShapedPath two = shapeForTime(segment, 1, JointVector::Zero(), world, model(), 0.0, ShapeSearchSettings{});
+  EXPECT_EQ(two.improvements, 0);
+  EXPECT_EQ(two.evaluations, 0);
+  EXPECT_EQ(two.waypoints, segment);
+  const std::vector<JointVector> bent{JointVector(0.2, 1.57), JointVector(0.5, 1.9), JointVector(0.6, 2.9)};
+  ShapeSearchSettings none;
+  none.bumps = 0;
+  const ShapedPath unchanged = shapeForTime(bent, 1, JointVector::Zero(), world, model(), 0.0, none);
+  EXPECT_EQ(unchanged.improvements, 0);
+  EXPECT_EQ(unchanged.waypoints, bent);
+}
+
+}  // namespace
+}  // namespace cyber::planner
