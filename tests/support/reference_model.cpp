@@ -19,4 +19,9 @@ const planner::RobotModel& referenceModel() {
   return model;
 }
 
+const planner::PathPlanner& referencePathPlanner() {
+  static const planner::PathPlanner planner(referenceModel(), referenceModel().scenes.front());
+  return planner;
+}
+
 }  // namespace cyber::test

@@ -21,11 +21,7 @@ namespace {
 
 const RobotModel& model() { return test::referenceModel(); }
 
-// Grids are built once per test binary.
-const PathPlanner& planner() {
-  static const PathPlanner p(model(), model().scenes.front());
-  return p;
-}
+const PathPlanner& planner() { return test::referencePathPlanner(); }
 
 // The reference robot with the code's default smoothing settings (the tuned values recommended
 // for the configuration file).

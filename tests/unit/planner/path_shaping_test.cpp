@@ -20,10 +20,7 @@ namespace {
 
 const RobotModel& model() { return test::referenceModel(); }
 
-const PathPlanner& planner() {
-  static const PathPlanner p(model(), model().scenes.front());
-  return p;
-}
+const PathPlanner& planner() { return test::referencePathPlanner(); }
 
 TEST(ShapeForTime, NeverSlowerNorCloserAndKeepsTheEnds) {
   const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
