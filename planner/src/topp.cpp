@@ -186,7 +186,8 @@ enum class ToppSolver::RowLimits { kAsGiven, kTightened };
 // Samples the path on `grid_points` points and builds the rows without margins.
 bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
   report.grid_points = grid_points;
-  topp::sampleGrid(*move.path, grid_points, problem_);
+  topp::sampleGrid(*move.path, grid_points, problem_,
+                   timed_ ? topp::ProfileView{&timing_s_, &timing_b_} : topp::ProfileView{});
   for (const PathPoint& p : problem_.points) {
     if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
       *error = "the path returns non-finite values";
@@ -195,6 +196,21 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
   }
   margins_.reset(problem_.intervals());
   return topp::buildRows(move.drives, margins_, problem_, error);
+}
+
+// Samples the grid again, partly evenly in the time of the reachability profile of the first
+// grid: the time lost to one constant a per interval grows with the interval's duration, which
+// on a grid even in s is largest at the slow ends of the move. Leaves the first grid when it has
+// no profile (the warm start then reports why).
+bool ToppSolver::retimeGrid(const Move& move, ToppReport& report, std::string* error) {
+  problem_.b_start = move.unit_b_start;
+  const topp::ReachabilityResult reach =
+      topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
+  if (reach.status != topp::ReachabilityStatus::kOk) return true;
+  timing_s_ = problem_.s;
+  timing_b_ = profile_;
+  timed_ = true;
+  return sampleRows(move, problem_.gridPoints(), report, error);
 }
 
 // Halves every interval, up to finestGridPoints(): between closer grid points the trajectory
@@ -310,7 +326,10 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   problem_.cost_scale = 1.0;
   problem_.speed_bound = kSpeedBound / length;
   std::string error;
-  if (!sampleRows(move, initialGridPoints(settings_), report, &error)) return fail(PlanStatus::kInvalidInput, error);
+  timed_ = false;
+  if (!sampleRows(move, initialGridPoints(settings_), report, &error) || !retimeGrid(move, report, &error)) {
+    return fail(PlanStatus::kInvalidInput, error);
+  }
 
   // Attempts until one passes the continuous check (algorithm.md section 3, "Stopping rules").
   const topp::AlSettings& al = settings_.solver;
