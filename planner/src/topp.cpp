@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "cyber/planner/topp_reachability.hpp"
 
@@ -37,10 +38,8 @@ bool validDrive(const DriveParams& d, const char* name, std::string* error) {
 }
 
 std::string residualText(const topp::AlReport& r) {
-  char text[200];
-  std::snprintf(text, sizeof text, "primal residual %.3g, dual residual %.3g after %d outer / %d inner iterations",
-                r.primal_residual, r.dual_residual, r.outer_iterations, r.inner_iterations);
-  return text;
+  return fmt::format("primal residual {:.3g}, dual residual {:.3g} after {} outer / {} inner iterations",
+                     r.primal_residual, r.dual_residual, r.outer_iterations, r.inner_iterations);
 }
 
 void accumulate(ToppReport& report, const topp::AlReport& r) {
@@ -146,12 +145,10 @@ double peakOvershoot(const ToppReport& report) {
 }
 
 std::string overLimitsText(int refinements, const ToppReport& report) {
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "limits still exceeded between grid points after %d refinements (peak voltage %.4f, current "
-                "%.4f of the limit)",
-                refinements, report.peak_voltage_ratio, report.peak_current_ratio);
-  return text;
+  return fmt::format(
+      "limits still exceeded between grid points after {} refinements (peak voltage {:.4f}, current {:.4f} of the "
+      "limit)",
+      refinements, report.peak_voltage_ratio, report.peak_current_ratio);
 }
 
 }  // namespace

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include <fmt/format.h>
 
 namespace cyber::planner::topp {
 namespace {
@@ -15,10 +16,8 @@ int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); 
 
 std::string describe(LimitKind kind, int joint, double s) {
   static constexpr const char* kKinds[] = {"voltage", "current", "acceleration", "velocity"};
-  char text[160];
-  std::snprintf(text, sizeof text, "the %s limit of the %s cannot hold at s = %.4f whatever the motion",
-                kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
-  return text;
+  return fmt::format("the {} limit of the {} cannot hold at s = {:.4f} whatever the motion",
+                     kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
 }
 
 // Appends lo <= alpha a + beta b + gamma c <= hi scaled by 1/scale; a row without coefficients
@@ -46,6 +45,7 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
 
 // The share of the grid placed evenly in time when a speed profile is given (sampleGrid).
 constexpr double kTimeShare = 0.5;
+constexpr double kMaxTimeDensity = 8.0;
 
 // Adds the profile's time to the density: cumulative[i] (density integrated up to fine point i,
 // total > 0) becomes (1 - kTimeShare) of it plus kTimeShare of the profile's time up to u = i/fine,
@@ -67,12 +67,19 @@ void addTimeDensity(const std::vector<double>& s, const std::vector<double>& b, 
   for (size_t i = 1; i <= fine; ++i) {
     const double speed = speed_at(static_cast<double>(i) / static_cast<double>(fine));
     const double sum = previous + speed;
-    time[i] = time[i - 1] + (sum > 0.0 ? 2.0 / (static_cast<double>(fine) * sum) : 0.0);
+    time[i] = sum > 0.0 ? 2.0 / (static_cast<double>(fine) * sum) : 0.0;
     previous = speed;
   }
+  // No cell takes more than kMaxTimeDensity times the mean time: the ends from rest would
+  // otherwise shrink the first intervals without bound (time ~ sqrt(s)) and the solver's
+  // conditioning with them.
+  double mean_time = 0.0;
+  for (size_t i = 1; i <= fine; ++i) mean_time += time[i];
+  mean_time /= static_cast<double>(fine);
+  if (!(mean_time > 0.0) || !std::isfinite(mean_time)) return;
+  for (size_t i = 1; i <= fine; ++i) time[i] = time[i - 1] + std::min(time[i], kMaxTimeDensity * mean_time);
   const double total_time = time.back();
   const double total = cumulative.back();
-  if (!(total_time > 0.0) || !std::isfinite(total_time)) return;
   for (size_t i = 0; i <= fine; ++i) {
     cumulative[i] = (1.0 - kTimeShare) * cumulative[i] + kTimeShare * total * time[i] / total_time;
   }
