@@ -21,6 +21,7 @@ constexpr double kCheckShare = 0.6;    // of limit_check_tolerance accepted at t
 constexpr double kMaxMargin = 0.05;    // limits are lowered by at most this fraction
 constexpr double kRefineAbove = 0.02;  // overshoots beyond this fraction refine the grid instead
 constexpr int kMaxGridFactor = 8;      // the grid may grow to this multiple of grid_points
+constexpr int kTimingGridPoints = 50;  // of the coarse grid whose profile places the real one
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -195,19 +196,26 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
   return topp::buildRows(move.drives, margins_, problem_, error);
 }
 
-// Samples the grid again, partly evenly in the time of the reachability profile of the first
-// grid: the time lost to one constant a per interval grows with the interval's duration, which
-// on a grid even in s is largest at the slow ends of the move. Leaves the first grid when it has
-// no profile (the warm start then reports why).
-bool ToppSolver::retimeGrid(const Move& move, ToppReport& report, std::string* error) {
+// Samples the grid again, partly evenly in the time of the reachability profile of a coarse
+// first grid: the time lost to one constant a per interval grows with the interval's duration,
+// which on a grid even in s is largest at the slow ends of the move. The coarse profile's time
+// is close enough to place points and costs a fraction of a pass on the full grid. Without a
+// profile the grid stays even in s (the warm start then reports why).
+bool ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
+  timed_ = false;
+  std::string coarse_error;
+  if (!sampleRows(move, std::min(grid_points, kTimingGridPoints), report, &coarse_error)) {
+    return sampleRows(move, grid_points, report, error);
+  }
   problem_.b_start = move.unit_b_start;
   const topp::ReachabilityResult reach =
       topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
-  if (reach.status != topp::ReachabilityStatus::kOk) return true;
-  timing_s_ = problem_.s;
-  timing_b_ = profile_;
-  timed_ = true;
-  return sampleRows(move, problem_.gridPoints(), report, error);
+  if (reach.status == topp::ReachabilityStatus::kOk) {
+    timing_s_ = problem_.s;
+    timing_b_ = profile_;
+    timed_ = true;
+  }
+  return sampleRows(move, grid_points, report, error);
 }
 
 // Halves every interval, up to finestGridPoints(): between closer grid points the trajectory
@@ -323,8 +331,7 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   problem_.cost_scale = 1.0;
   problem_.speed_bound = kSpeedBound / length;
   std::string error;
-  timed_ = false;
-  if (!sampleRows(move, initialGridPoints(settings_), report, &error) || !retimeGrid(move, report, &error)) {
+  if (!sampleTimedRows(move, initialGridPoints(settings_), report, &error)) {
     return fail(PlanStatus::kInvalidInput, error);
   }
 
