@@ -21,7 +21,7 @@ constexpr double kCheckShare = 0.6;    // of limit_check_tolerance accepted at t
 constexpr double kMaxMargin = 0.05;    // limits are lowered by at most this fraction
 constexpr double kRefineAbove = 0.02;  // overshoots beyond this fraction refine the grid instead
 constexpr int kMaxGridFactor = 8;      // the grid may grow to this multiple of grid_points
-constexpr int kTimingGridPoints = 50;  // of the coarse grid whose profile places the real one
+constexpr int kTimingGridPoints = 64;  // of the coarse grid whose profile places the real one
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
