@@ -44,7 +44,7 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
 }
 
 // The share of the grid placed evenly in time when a speed profile is given (sampleGrid).
-constexpr double kTimeShare = 0.5;
+constexpr double kTimeShare = 0.4;
 constexpr double kMaxTimeDensity = 8.0;
 
 // Adds the profile's time to the density: cumulative[i] (density integrated up to fine point i,

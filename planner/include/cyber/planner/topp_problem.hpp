@@ -91,9 +91,10 @@ struct ProfileView {
 
 // Samples the path (length > 0) on `grid_points` (>= 2) points, denser where the path bends,
 // normalised to unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
-// With a speed profile (a first pass over the same path), half the points are placed evenly in
+// With a speed profile (a first pass over the same path), 40 % of the points are placed evenly in
 // the profile's time instead: the slow ends of a rest-to-rest move, where the limits change
-// fastest in time, get as many points as the fast middle (algorithm.md section 3, "Grid").
+// fastest in time, get more of the points than a grid even in s gives them (algorithm.md
+// section 3, "Grid").
 void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem, ProfileView timing = {});
 
 // `out` = `in` with time measured in units of time_scale_s: b and c^2 scale by T^2, a by T^2.
