@@ -134,8 +134,8 @@ TEST(ToppProblem, GridIsDenserWhereThePathBends) {
 double profileTime(const std::vector<double>& s, const std::vector<double>& b, double u0, double u1) {
   constexpr int kSteps = 64;
   auto speed = [&](double u) {
-    const size_t k = std::min<size_t>(static_cast<size_t>(std::upper_bound(s.begin(), s.end(), u) - s.begin()),
-                                      s.size() - 1);
+    const size_t k =
+        std::min<size_t>(static_cast<size_t>(std::upper_bound(s.begin(), s.end(), u) - s.begin()), s.size() - 1);
     const size_t i = k == 0 ? 0 : k - 1;
     const double f = std::clamp((u - s[i]) / (s[i + 1] - s[i]), 0.0, 1.0);
     return std::sqrt((1.0 - f) * b[i] + f * b[i + 1]);

@@ -68,8 +68,8 @@ struct Problem {
   std::vector<PathPoint> midpoints;       // path samples halfway between consecutive grid points
   std::vector<double> density_workspace;  // sampleGrid's buffers
   std::vector<double> time_workspace;
-  std::vector<LinearRow> rows;            // sorted by interval
-  std::vector<int> row_begin;             // rows of interval k: [row_begin[k], row_begin[k+1])
+  std::vector<LinearRow> rows;  // sorted by interval
+  std::vector<int> row_begin;   // rows of interval k: [row_begin[k], row_begin[k+1])
   double b_start = 0.0;
   double b_end = 0.0;
   // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
