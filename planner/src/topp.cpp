@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "cyber/planner/topp_reachability.hpp"
 
@@ -20,6 +21,7 @@ constexpr double kCheckShare = 0.6;    // of limit_check_tolerance accepted at t
 constexpr double kMaxMargin = 0.05;    // limits are lowered by at most this fraction
 constexpr double kRefineAbove = 0.02;  // overshoots beyond this fraction refine the grid instead
 constexpr int kMaxGridFactor = 8;      // the grid may grow to this multiple of grid_points
+constexpr int kTimingGridPoints = 64;  // of the coarse grid whose profile places the real one
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -37,10 +39,8 @@ bool validDrive(const DriveParams& d, const char* name, std::string* error) {
 }
 
 std::string residualText(const topp::AlReport& r) {
-  char text[200];
-  std::snprintf(text, sizeof text, "primal residual %.3g, dual residual %.3g after %d outer / %d inner iterations",
-                r.primal_residual, r.dual_residual, r.outer_iterations, r.inner_iterations);
-  return text;
+  return fmt::format("primal residual {:.3g}, dual residual {:.3g} after {} outer / {} inner iterations",
+                     r.primal_residual, r.dual_residual, r.outer_iterations, r.inner_iterations);
 }
 
 void accumulate(ToppReport& report, const topp::AlReport& r) {
@@ -146,12 +146,10 @@ double peakOvershoot(const ToppReport& report) {
 }
 
 std::string overLimitsText(int refinements, const ToppReport& report) {
-  char text[200];
-  std::snprintf(text, sizeof text,
-                "limits still exceeded between grid points after %d refinements (peak voltage %.4f, current "
-                "%.4f of the limit)",
-                refinements, report.peak_voltage_ratio, report.peak_current_ratio);
-  return text;
+  return fmt::format(
+      "limits still exceeded between grid points after {} refinements (peak voltage {:.4f}, current {:.4f} of the "
+      "limit)",
+      refinements, report.peak_voltage_ratio, report.peak_current_ratio);
 }
 
 }  // namespace
@@ -186,7 +184,8 @@ enum class ToppSolver::RowLimits { kAsGiven, kTightened };
 // Samples the path on `grid_points` points and builds the rows without margins.
 bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
   report.grid_points = grid_points;
-  topp::sampleGrid(*move.path, grid_points, problem_);
+  topp::sampleGrid(*move.path, grid_points, problem_,
+                   timed_ ? topp::ProfileView{&timing_s_, &timing_b_} : topp::ProfileView{});
   for (const PathPoint& p : problem_.points) {
     if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
       *error = "the path returns non-finite values";
@@ -195,6 +194,28 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
   }
   margins_.reset(problem_.intervals());
   return topp::buildRows(move.drives, margins_, problem_, error);
+}
+
+// Samples the grid again, partly evenly in the time of the reachability profile of a coarse
+// first grid: the time lost to one constant a per interval grows with the interval's duration,
+// which on a grid even in s is largest at the slow ends of the move. The coarse profile's time
+// is close enough to place points and costs a fraction of a pass on the full grid. Without a
+// profile the grid stays even in s (the warm start then reports why).
+bool ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
+  timed_ = false;
+  std::string coarse_error;
+  if (!sampleRows(move, std::min(grid_points, kTimingGridPoints), report, &coarse_error)) {
+    return sampleRows(move, grid_points, report, error);
+  }
+  problem_.b_start = move.unit_b_start;
+  const topp::ReachabilityResult reach =
+      topp::forwardBackward(problem_, profile_, controllable_, settings_.limit_check_tolerance);
+  if (reach.status == topp::ReachabilityStatus::kOk) {
+    timing_s_ = problem_.s;
+    timing_b_ = profile_;
+    timed_ = true;
+  }
+  return sampleRows(move, grid_points, report, error);
 }
 
 // Halves every interval, up to finestGridPoints(): between closer grid points the trajectory
@@ -310,7 +331,9 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   problem_.cost_scale = 1.0;
   problem_.speed_bound = kSpeedBound / length;
   std::string error;
-  if (!sampleRows(move, initialGridPoints(settings_), report, &error)) return fail(PlanStatus::kInvalidInput, error);
+  if (!sampleTimedRows(move, initialGridPoints(settings_), report, &error)) {
+    return fail(PlanStatus::kInvalidInput, error);
+  }
 
   // Attempts until one passes the continuous check (algorithm.md section 3, "Stopping rules").
   const topp::AlSettings& al = settings_.solver;

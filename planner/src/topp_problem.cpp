@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include <fmt/format.h>
 
 namespace cyber::planner::topp {
 namespace {
@@ -15,10 +16,8 @@ int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); 
 
 std::string describe(LimitKind kind, int joint, double s) {
   static constexpr const char* kKinds[] = {"voltage", "current", "acceleration", "velocity"};
-  char text[160];
-  std::snprintf(text, sizeof text, "the %s limit of the %s cannot hold at s = %.4f whatever the motion",
-                kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
-  return text;
+  return fmt::format("the {} limit of the {} cannot hold at s = {:.4f} whatever the motion",
+                     kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
 }
 
 // Appends lo <= alpha a + beta b + gamma c <= hi scaled by 1/scale; a row without coefficients
@@ -44,9 +43,51 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
   return true;
 }
 
+// The share of the grid placed evenly in time when a speed profile is given (sampleGrid).
+constexpr double kTimeShare = 0.4;
+constexpr double kMaxTimeDensity = 8.0;
+
+// Adds the profile's time to the density: cumulative[i] (density integrated up to fine point i,
+// total > 0) becomes (1 - kTimeShare) of it plus kTimeShare of the profile's time up to u = i/fine,
+// both normalised to the same total. b is linear in s between the profile's nodes, so the time of
+// a fine cell is exact: 2 du / (sqrt(b_i) + sqrt(b_{i+1})). Cells at rest (b = 0 at both ends) add
+// no time. Leaves cumulative unchanged when the profile takes no time.
+void addTimeDensity(const std::vector<double>& s, const std::vector<double>& b, std::vector<double>& cumulative,
+                    std::vector<double>& time) {
+  const size_t fine = cumulative.size() - 1;
+  time.assign(cumulative.size(), 0.0);
+  size_t node = 0;
+  auto speed_at = [&](double u) {
+    while (node + 2 < s.size() && s[node + 1] < u) ++node;
+    const double span = s[node + 1] - s[node];
+    const double f = span > 0.0 ? std::clamp((u - s[node]) / span, 0.0, 1.0) : 0.0;
+    return std::sqrt(std::max(0.0, (1.0 - f) * b[node] + f * b[node + 1]));
+  };
+  double previous = speed_at(0.0);
+  for (size_t i = 1; i <= fine; ++i) {
+    const double speed = speed_at(static_cast<double>(i) / static_cast<double>(fine));
+    const double sum = previous + speed;
+    time[i] = sum > 0.0 ? 2.0 / (static_cast<double>(fine) * sum) : 0.0;
+    previous = speed;
+  }
+  // No cell takes more than kMaxTimeDensity times the mean time: the ends from rest would
+  // otherwise shrink the first intervals without bound (time ~ sqrt(s)) and the solver's
+  // conditioning with them.
+  double mean_time = 0.0;
+  for (size_t i = 1; i <= fine; ++i) mean_time += time[i];
+  mean_time /= static_cast<double>(fine);
+  if (!(mean_time > 0.0) || !std::isfinite(mean_time)) return;
+  for (size_t i = 1; i <= fine; ++i) time[i] = time[i - 1] + std::min(time[i], kMaxTimeDensity * mean_time);
+  const double total_time = time.back();
+  const double total = cumulative.back();
+  for (size_t i = 0; i <= fine; ++i) {
+    cumulative[i] = (1.0 - kTimeShare) * cumulative[i] + kTimeShare * total * time[i] / total_time;
+  }
+}
+
 }  // namespace
 
-void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem) {
+void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem, ProfileView timing) {
   const int k_points = std::max(2, grid_points);
   const double length = path.length();
   auto sample = [&](double u) {
@@ -67,6 +108,9 @@ void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem) {
     const double density = 1.0 + std::sqrt(std::min(p.d2q_ds2.norm(), kMaxCurvatureWeight));
     if (i > 0) cumulative[static_cast<size_t>(i)] = cumulative[static_cast<size_t>(i) - 1] + 0.5 * (density + previous);
     previous = density;
+  }
+  if (timing.s && timing.b && timing.s->size() >= 2 && timing.s->size() == timing.b->size()) {
+    addTimeDensity(*timing.s, *timing.b, cumulative, problem.time_workspace);
   }
   const double total = cumulative.back();
   problem.s.resize(static_cast<size_t>(k_points));

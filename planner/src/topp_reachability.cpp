@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+
+#include <fmt/format.h>
 
 namespace cyber::planner::topp {
 namespace {
@@ -103,11 +104,11 @@ bool reachable(const Problem& problem, int interval, double c_now, double c_next
   return largestFeasible(q, rows, c_next_max, true) >= 0.0;
 }
 
-// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-8: C_k is a cap
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-6: C_k is a cap
 // for the forward pass, and the optimiser absorbs anything below that.
 template <class Pred>
 double bisect(Pred pred, double lo, double hi) {
-  while (hi - lo > 1e-8 * hi) {
+  while (hi - lo > 1e-6 * hi) {
     const double mid = 0.5 * (lo + hi);
     (pred(mid) ? lo : hi) = mid;
   }
@@ -187,11 +188,9 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     double c = largestFeasible(q, rows, problem.speed_bound);
     if (c < 0.0) {
       if (!stoppable(0.0)) {
-        char text[160];
-        std::snprintf(text, sizeof text, "the path cannot be followed even slowly near s = %.4f",
-                      problem.s[static_cast<size_t>(k)]);
         result.status = ReachabilityStatus::kNotControllable;
-        result.reason = text;
+        result.reason =
+            fmt::format("the path cannot be followed even slowly near s = {:.4f}", problem.s[static_cast<size_t>(k)]);
         return result;
       }
       c = 0.0;
@@ -217,13 +216,11 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
   const double slack = 1.0 + std::max(0.0, start_speed_tolerance);
   const bool beyond = problem.b_start > controllable[0] * (1.0 + 1e-9) + 1e-12;
   if (beyond && problem.b_start > controllable[0] * slack * slack * (1.0 + 1e-9) + 1e-12) {
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "start speed^2 b = %.6g along the path cannot be brought to rest within the limits "
-                  "(largest controllable b = %.6g)",
-                  problem.b_start, controllable[0]);
     result.status = ReachabilityStatus::kStartNotControllable;
-    result.reason = text;
+    result.reason = fmt::format(
+        "start speed^2 b = {:.6g} along the path cannot be brought to rest within the limits "
+        "(largest controllable b = {:.6g})",
+        problem.b_start, controllable[0]);
     return result;
   }
   result.start_b = beyond ? controllable[0] : problem.b_start;

@@ -9,13 +9,19 @@
 namespace cyber::tools {
 namespace {
 
+constexpr double kPrintedTimeS = 1e-6;  // t is printed with six decimals (writeTrajectoryCsv)
+
 // Sample times 0, 1 ms, 2 ms, ... and the exact end, so the last row is the goal at rest.
 template <class F>
 void forEachSample(const planner::Trajectory& trajectory, F&& f) {
   const double duration = trajectory.duration_s();
   const long steps = static_cast<long>(std::floor(duration / kCsvStepS + 1e-9));
-  for (long k = 0; k <= steps; ++k) f(trajectory.sample(static_cast<double>(k) * kCsvStepS));
-  if (duration - static_cast<double>(steps) * kCsvStepS > 1e-9) f(trajectory.sample(duration));
+  const double remainder = duration - static_cast<double>(steps) * kCsvStepS;
+  // An end less than the printed microsecond past the last step would print that step's time
+  // again (times must increase): the end then takes that step's place.
+  const long last = remainder > 1e-9 && remainder < kPrintedTimeS && steps > 0 ? steps - 1 : steps;
+  for (long k = 0; k <= last; ++k) f(trajectory.sample(static_cast<double>(k) * kCsvStepS));
+  if (remainder > 1e-9) f(trajectory.sample(duration));
 }
 
 }  // namespace

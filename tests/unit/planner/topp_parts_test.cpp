@@ -130,6 +130,62 @@ TEST(ToppProblem, GridIsDenserWhereThePathBends) {
   for (int k = 0; k < line.intervals(); ++k) EXPECT_NEAR(line.ds(k), 1.0 / 49.0, 1e-12);
 }
 
+// The time the profile (s, b linear in s between its nodes) takes from u0 to u1 on the grid.
+double profileTime(const std::vector<double>& s, const std::vector<double>& b, double u0, double u1) {
+  constexpr int kSteps = 64;
+  auto speed = [&](double u) {
+    const size_t k =
+        std::min<size_t>(static_cast<size_t>(std::upper_bound(s.begin(), s.end(), u) - s.begin()), s.size() - 1);
+    const size_t i = k == 0 ? 0 : k - 1;
+    const double f = std::clamp((u - s[i]) / (s[i + 1] - s[i]), 0.0, 1.0);
+    return std::sqrt((1.0 - f) * b[i] + f * b[i + 1]);
+  };
+  double t = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double a = u0 + (u1 - u0) * i / kSteps, c = u0 + (u1 - u0) * (i + 1) / kSteps;
+    t += 2.0 * (c - a) / (speed(a) + speed(c));
+  }
+  return t;
+}
+
+TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
+  // Rest to rest on a line: even in s, the first and last intervals take far longer than the
+  // middle ones; with the profile, 40 % of the points are even in time and the longest interval
+  // shrinks, while the grid still spans [0, 1] in increasing order.
+  const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.5, 4.0));
+  topp::Problem even;
+  even.speed_bound = 1e3 / path.length();
+  topp::sampleGrid(path, 100, even);
+  topp::LimitMargins margins;
+  margins.reset(even.intervals());
+  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
+  ASSERT_TRUE(topp::buildRows(drives, margins, even, nullptr));
+  std::vector<double> b, controllable;
+  ASSERT_EQ(topp::forwardBackward(even, b, controllable).status, topp::ReachabilityStatus::kOk);
+  topp::Problem timed;
+  topp::sampleGrid(path, 100, timed, topp::ProfileView{&even.s, &b});
+  ASSERT_EQ(timed.gridPoints(), 100);
+  EXPECT_EQ(timed.s.front(), 0.0);
+  EXPECT_EQ(timed.s.back(), 1.0);
+  auto longest = [&](const topp::Problem& p) {
+    double t = 0.0;
+    for (int k = 0; k < p.intervals(); ++k) {
+      EXPECT_GT(p.ds(k), 0.0);
+      t = std::max(t, profileTime(even.s, b, p.s[static_cast<size_t>(k)], p.s[static_cast<size_t>(k) + 1]));
+    }
+    return t;
+  };
+  EXPECT_LT(longest(timed), 0.6 * longest(even));
+  EXPECT_LT(timed.ds(0), 0.5 * even.ds(0));
+  EXPECT_LT(timed.ds(timed.intervals() - 1), 0.5 * even.ds(even.intervals() - 1));
+
+  // A profile at constant speed takes equal time on equal lengths: the line's grid stays even.
+  const std::vector<double> constant(even.s.size(), 1.0);
+  topp::Problem steady;
+  topp::sampleGrid(path, 50, steady, topp::ProfileView{&even.s, &constant});
+  for (int k = 0; k < steady.intervals(); ++k) EXPECT_NEAR(steady.ds(k), 1.0 / 49.0, 1e-9);
+}
+
 TEST(ToppProblem, RowsAreTheDriveModelAtTheirSamplePoints) {
   // On a line whose joints never change direction each row is the drive's own volts or amps.
   const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.8, 4.0));

@@ -63,6 +63,7 @@ class ToppSolver {
   enum class GridChange;
   enum class RowLimits;
   bool sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error);
+  bool sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error);
   GridChange refineGrid(const Move& move, ToppReport& report, std::string* error);
   Result<double> warmStart(const Move& move, bool first, ToppReport& report);
   Result<Trajectory> solvedTrajectory(const Move& move, double time_scale) const;
@@ -75,6 +76,11 @@ class ToppSolver {
   topp::LimitMargins margins_;
   std::vector<double> profile_;
   std::vector<double> controllable_;
+  // A coarse grid's reachability profile, which places the move's grids partly evenly in time
+  // (topp::sampleGrid); timed_ is false until it exists for the current move.
+  std::vector<double> timing_s_;
+  std::vector<double> timing_b_;
+  bool timed_ = false;
   topp::AlState state_;
   topp::AlWorkspace workspace_;
 };

@@ -66,9 +66,10 @@ struct Problem {
   std::vector<double> s;                  // K grid points, s[0] = 0, s[K-1] = 1
   std::vector<PathPoint> points;          // path samples at s
   std::vector<PathPoint> midpoints;       // path samples halfway between consecutive grid points
-  std::vector<double> density_workspace;  // sampleGrid's buffer
-  std::vector<LinearRow> rows;            // sorted by interval
-  std::vector<int> row_begin;             // rows of interval k: [row_begin[k], row_begin[k+1])
+  std::vector<double> density_workspace;  // sampleGrid's buffers
+  std::vector<double> time_workspace;
+  std::vector<LinearRow> rows;  // sorted by interval
+  std::vector<int> row_begin;   // rows of interval k: [row_begin[k], row_begin[k+1])
   double b_start = 0.0;
   double b_end = 0.0;
   // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
@@ -82,9 +83,19 @@ struct Problem {
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
 };
 
+// A speed profile on the unit-length path: b (K values, b linear in s between the nodes s).
+struct ProfileView {
+  const std::vector<double>* s = nullptr;
+  const std::vector<double>* b = nullptr;
+};
+
 // Samples the path (length > 0) on `grid_points` (>= 2) points, denser where the path bends,
 // normalised to unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
-void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem);
+// With a speed profile (a first pass over the same path), 40 % of the points are placed evenly in
+// the profile's time instead: the slow ends of a rest-to-rest move, where the limits change
+// fastest in time, get more of the points than a grid even in s gives them (algorithm.md
+// section 3, "Grid").
+void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem, ProfileView timing = {});
 
 // `out` = `in` with time measured in units of time_scale_s: b and c^2 scale by T^2, a by T^2.
 // Copies grid and rows (no path samples); the cost sum 2 ds d becomes the duration divided by T.
