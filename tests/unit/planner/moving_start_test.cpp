@@ -113,6 +113,9 @@ TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
   const Trajectory& t = stop.value();
   EXPECT_LT((t.sample(0.0).qdot - velocity).norm(), 1e-9);
   EXPECT_LT(t.sample(t.duration_s()).qdot.norm(), 1e-9);
+  // Taken from the reachability profile, checked at the solver's step like the solver's results.
+  EXPECT_TRUE(
+      withinDriveLimits(t, reef.model.planner.topp.limit_check_step_s, reef.model.planner.topp.limit_check_tolerance));
   // Braking all the way: the speed only falls.
   double previous = t.bGrid().front();
   for (double b : t.bGrid()) {

@@ -61,4 +61,8 @@ class Trajectory {
   std::vector<double> t_grid_;
 };
 
+// Whether every sample `step_s` apart (and the last) keeps each joint's voltage, current and
+// optional velocity and acceleration within its limit times (1 + tolerance).
+[[nodiscard]] bool withinDriveLimits(const Trajectory& trajectory, double step_s, double tolerance);
+
 }  // namespace cyber::planner
