@@ -23,9 +23,6 @@ constexpr int kBracketSteps = 12;
 constexpr double kLengthTolerance = 1e-4;  // relative: the line is at most this much longer than needed
 constexpr double kRetryGrowth = 1.002;     // when the solver (with refined limits) still cannot stop
 constexpr int kMaxRetries = 8;
-// Of limit_check_tolerance accepted at the samples of the braking profile's check: less than the
-// optimiser accepts at its own, so that other sampling instants stay within the tolerance.
-constexpr double kProfileCheckShare = 0.5;
 
 // Weighted distance from `start` along `direction` to the first joint limit.
 double distanceToLimits(const RobotModel& model, const JointVector& start, const JointVector& direction) {
@@ -89,9 +86,7 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
   b_grid.back() = 0.0;
   R trajectory = Trajectory::create(line, model.elevator_drive, model.arm_drive, std::move(s_grid), std::move(b_grid));
   if (!trajectory) return trajectory;
-  const ToppSettings& topp = model.planner.topp;
-  if (!withinDriveLimits(trajectory.value(), topp.limit_check_step_s,
-                         kProfileCheckShare * topp.limit_check_tolerance)) {
+  if (!withinDriveLimits(trajectory.value(), model.planner.topp)) {
     return R::failure(PlanStatus::kSolverNotConverged, "the braking profile exceeds a limit between its rows");
   }
   return trajectory;

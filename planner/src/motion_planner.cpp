@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -24,6 +25,10 @@ constexpr double kMaxVelocityError = 0.019;
 constexpr double kGentlerStep = 0.125;
 constexpr int kGentlerSteps = 12;
 constexpr int kGentlerTries = 6;
+// A rest-to-rest trajectory whose columns disagree is slowed down until its duration has grown by
+// a multiple of this fraction of a step, up to kSlowerSteps of them (two steps).
+constexpr double kSlowerStep = 0.125;
+constexpr int kSlowerSteps = 16;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -38,6 +43,22 @@ Result<Plan> inconsistent() {
 bool consistent(const Trajectory& trajectory) {
   const ColumnConsistency c = columnConsistency(trajectory, kConsistencyStepS);
   return c.position_error <= kMaxPositionError && c.velocity_error <= kMaxVelocityError;
+}
+
+// A very short move from rest (tens of milliseconds) whose columns disagree at 1 ms: its switch
+// from full acceleration to full braking is a large share of its peak speed, and the trapezoid
+// across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
+// uniformly moves the switch between the samples (by about half the added time), so the shortest
+// slowdown that puts it where the columns agree, within the limits, is taken.
+std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
+  const double duration = trajectory.duration_s();
+  for (int i = 1; i <= kSlowerSteps && duration > 0.0; ++i) {
+    Result<Trajectory> slower = slowedDown(trajectory, 1.0 + i * kSlowerStep * kConsistencyStepS / duration);
+    if (slower && consistent(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {
+      return std::move(slower).value();
+    }
+  }
+  return std::nullopt;
 }
 
 // The path stage from `start` leaving along v0, then TOPP along its candidates in the order of
@@ -78,9 +99,16 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
       have_fallback = true;
     }
   }
-  // A very short move can be too brief for any path to agree at 1 ms (its bang-bang switches are
-  // a large share of its peak speed): it is still planned rather than refused.
-  if (have_fallback) fallback.value().times_ms.topp = topp_ms;
+  if (!have_fallback) return fallback;
+  Plan& plan = fallback.value();
+  plan.times_ms.topp = topp_ms;
+  if (speed == 0.0) {
+    if (std::optional<Trajectory> slower = consistentSlowdown(model, *plan.trajectory)) {
+      plan.trajectory = std::make_shared<const Trajectory>(std::move(*slower));
+      plan.path_method += ", slowed to agree at 1 ms";
+    }
+  }
+  // A moving start that agrees nowhere is left to the candidate that stops first.
   return fallback;
 }
 

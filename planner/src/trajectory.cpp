@@ -5,6 +5,12 @@
 #include <string>
 
 namespace cyber::planner {
+namespace {
+
+// Of ToppSettings::limit_check_tolerance accepted by withinDriveLimits(trajectory, settings).
+constexpr double kOwnCheckShare = 0.5;
+
+}  // namespace
 
 Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
                                       const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid) {
@@ -128,6 +134,20 @@ bool withinDriveLimits(const Trajectory& trajectory, double step_s, double toler
     }
   }
   return true;
+}
+
+bool withinDriveLimits(const Trajectory& trajectory, const ToppSettings& settings) {
+  return withinDriveLimits(trajectory, settings.limit_check_step_s, kOwnCheckShare * settings.limit_check_tolerance);
+}
+
+Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor) {
+  if (!(factor >= 1.0) || !std::isfinite(factor)) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "a trajectory is slowed down by a factor >= 1");
+  }
+  std::vector<double> b_grid = trajectory.bGrid();
+  for (double& b : b_grid) b /= factor * factor;
+  return Trajectory::create(trajectory.sharedPath(), trajectory.drive(kElevator), trajectory.drive(kArm),
+                            trajectory.sGrid(), std::move(b_grid));
 }
 
 }  // namespace cyber::planner

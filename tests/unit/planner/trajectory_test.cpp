@@ -178,6 +178,22 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
       Trajectory::create(path, elevatorDrive(), capped, reference.sGrid(), reference.bGrid()).value(), step, 0.0));
 }
 
+TEST(Trajectory, SlowedDownFollowsTheSamePathWithVelocitiesOverTheFactor) {
+  const Trajectory t = makeTrajectory(wiggle());
+  const double factor = 1.03;
+  const auto slower = slowedDown(t, factor);
+  ASSERT_TRUE(slower.ok());
+  EXPECT_NEAR(slower.value().duration_s(), factor * t.duration_s(), 1e-12);
+  for (int i = 0; i <= 20; ++i) {
+    const TrajectorySample a = t.sample(t.duration_s() * i / 20.0);
+    const TrajectorySample b = slower.value().sample(factor * a.t);
+    EXPECT_NEAR((b.q - a.q).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((factor * b.qdot - a.qdot).norm(), 0.0, 1e-9);
+  }
+  EXPECT_EQ(slowedDown(t, 0.9).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(slowedDown(t, NAN).status(), PlanStatus::kInvalidInput);
+}
+
 TEST(Trajectory, SampleDoesNotAllocate) {
   const Trajectory t = makeTrajectory(wiggle());
   const long before = cyber::test::allocationCount();
