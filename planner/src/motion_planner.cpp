@@ -89,11 +89,19 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
       if (i == 0) fallback = trajectory.error();
       continue;
     }
-    const bool agree = consistent(trajectory.value());
+    bool agree = consistent(trajectory.value());
+    plan.path_method = path.method;
+    // From rest, slowing this path by at most two steps costs less than a slower path would.
+    if (!agree && speed == 0.0) {
+      if (std::optional<Trajectory> slower = consistentSlowdown(model, trajectory.value())) {
+        trajectory = std::move(*slower);
+        plan.path_method += ", slowed to agree at 1 ms";
+        agree = true;
+      }
+    }
     plan.trajectory = std::make_shared<const Trajectory>(std::move(trajectory).value());
     plan.waypoints = path.waypoints;
     plan.min_clearance_m = path.min_clearance_m;
-    plan.path_method = path.method;
     plan.times_ms.search = path.search_ms;
     plan.times_ms.smooth = path.smooth_ms;
     plan.times_ms.topp = topp_ms;
@@ -103,16 +111,8 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
       have_fallback = true;
     }
   }
-  if (!have_fallback) return fallback;
-  Plan& plan = fallback.value();
-  plan.times_ms.topp = topp_ms;
-  if (speed == 0.0) {
-    if (std::optional<Trajectory> slower = consistentSlowdown(model, *plan.trajectory)) {
-      plan.trajectory = std::make_shared<const Trajectory>(std::move(*slower));
-      plan.path_method += ", slowed to agree at 1 ms";
-    }
-  }
-  // A moving start that agrees nowhere is left to the candidate that stops first.
+  // None agrees (a moving start's are left to the candidate that stops first): the first.
+  if (have_fallback) fallback.value().times_ms.topp = topp_ms;
   return fallback;
 }
 
