@@ -70,8 +70,11 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAtOneMillisecond) {
     PlanRequest request;
     request.pieces = HeldPieces{coin(rng), false};
     const CollisionWorld& world = paths.world(request.pieces);
-    request.start = JointVector(t(rng), theta(rng));
-    request.goal = request.start + JointVector(dt(rng), dtheta(rng));
+    // One draw a statement: a call's arguments are evaluated in an order the target chooses.
+    const double start_t = t(rng), start_theta = theta(rng);
+    const double step_t = dt(rng), step_theta = dtheta(rng);
+    request.start = JointVector(start_t, start_theta);
+    request.goal = request.start + JointVector(step_t, step_theta);
     if (!model.withinLimits(request.goal) || world.distance(request.start).value < model.clearance_m ||
         world.distance(request.goal).value < model.clearance_m) {
       continue;
