@@ -86,15 +86,20 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
   EXPECT_LT(stopped_first, compared);
 }
 
-TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
-  const RobotModel& model = test::referenceModel();
-  const auto planner = MotionPlanner::create(model);
-  ASSERT_TRUE(planner.ok());
+// One moving start in the reef scene without game pieces.
+Result<Plan> planMovingStart(const JointVector& start, const JointVector& goal, const JointVector& velocity) {
+  const auto planner = MotionPlanner::create(test::referenceModel());
+  if (!planner) return planner.error();
   PlanRequest request;
-  request.start = JointVector(0.5441, 4.4945);
-  request.goal = JointVector(0.4446, 5.9159);
-  request.start_velocity = JointVector(-0.243, -1.828);
-  const auto plan = planner.value().plan(request);
+  request.start = start;
+  request.goal = goal;
+  request.start_velocity = velocity;
+  return planner.value().plan(request);
+}
+
+TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
+  const auto plan =
+      planMovingStart(JointVector(0.5441, 4.4945), JointVector(0.4446, 5.9159), JointVector(-0.243, -1.828));
   ASSERT_TRUE(plan.ok()) << plan.error().reason;
   // Looping round along the velocity took 0.255 s; braking first takes 0.186 s.
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.19);
@@ -106,14 +111,9 @@ TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
 // rest whose columns disagreed at 1 ms, so the joined plan disagreed too and leaving along the
 // velocity (0.159 s) won over stopping first (0.068 s).
 TEST(MovingStart, AShortMoveAfterTheStopIsSlowedRatherThanLosingToTheSlowerCandidate) {
-  const RobotModel& model = test::referenceModel();
-  const auto planner = MotionPlanner::create(model);
-  ASSERT_TRUE(planner.ok());
-  PlanRequest request;
-  request.start = JointVector(0.79572848625775672, 2.9642388715108963);
-  request.goal = JointVector(0.80615715896675055, 2.7645670388188806);
-  request.start_velocity = JointVector(0.7081390749417088, -4.7212700707904016);
-  const auto plan = planner.value().plan(request);
+  const auto plan = planMovingStart(JointVector(0.79572848625775672, 2.9642388715108963),
+                                    JointVector(0.80615715896675055, 2.7645670388188806),
+                                    JointVector(0.7081390749417088, -4.7212700707904016));
   ASSERT_TRUE(plan.ok()) << plan.error().reason;
   EXPECT_EQ(plan.value().path_method.rfind("stop", 0), 0u) << plan.value().path_method;
   // Stopping first took 0.0675 s before the short move was slowed (by at most two steps).
