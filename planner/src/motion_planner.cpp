@@ -8,6 +8,8 @@
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_timing.hpp"
@@ -144,7 +146,7 @@ Result<Plan> joinAfterStop(const PlanRequest& request, const Trajectory& stop, R
   Plan plan = std::move(onward).value();
   plan.trajectory = std::make_shared<const Trajectory>(std::move(joined).value());
   plan.waypoints.insert(plan.waypoints.begin(), request.start);
-  plan.path_method = "stop, then " + plan.path_method;
+  plan.path_method = fmt::format("stop, then {}", plan.path_method);
   return plan;
 }
 
@@ -229,7 +231,7 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
 Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const auto start_time = std::chrono::steady_clock::now();
   if (request.scene < 0 || request.scene >= static_cast<int>(path_planners_.size())) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput, "unknown scene index " + std::to_string(request.scene));
+    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
   }
   if (!request.start_velocity.allFinite()) {
     return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace cyber::planner {
 namespace {
 
@@ -33,7 +35,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
   for (size_t k = 0; k < n; ++k) {
     if (!std::isfinite(s_grid[k]) || !std::isfinite(b_grid[k]) || b_grid[k] < 0.0) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
-                                         "profile value " + std::to_string(k) + " is negative or not finite");
+                                         fmt::format("profile value {} is negative or not finite", k));
     }
     if (k > 0 && !(s_grid[k] > s_grid[k - 1])) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid is not strictly increasing");
@@ -50,7 +52,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
     const double speed_sum = std::sqrt(b_grid[k]) + std::sqrt(b_grid[k + 1]);
     if (!(speed_sum > 0.0)) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
-                                         "profile is at rest over interval " + std::to_string(k));
+                                         fmt::format("profile is at rest over interval {}", k));
     }
     trajectory.a_grid_[k] = (b_grid[k + 1] - b_grid[k]) / (2.0 * ds);
     trajectory.t_grid_[k + 1] = trajectory.t_grid_[k] + 2.0 * ds / speed_sum;  // exact for constant a
