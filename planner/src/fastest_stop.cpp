@@ -55,6 +55,43 @@ double stopDistanceEstimate(const StraightPath& line, const std::array<DrivePara
   return kNoStop;
 }
 
+// The shortest stop's time-optimal profile is its reachability profile (it brakes from the first
+// instant, so there is nothing for the optimiser to gain): rows at both ends and the middle of
+// every interval, checked at the solver's step like the optimiser's result. kInfeasibleStart when
+// b_start cannot be stopped on `line` as asked, kSolverNotConverged when the check fails.
+Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& line, const RobotModel& model,
+                                  double b_start, int points, topp::Problem& problem, topp::LimitMargins& margins,
+                                  std::vector<double>& profile, std::vector<double>& controllable) {
+  using R = Result<Trajectory>;
+  const double length = line->length();
+  const std::array<DriveParams, kJointCount> drives{model.elevator_drive, model.arm_drive};
+  topp::sampleGrid(*line, points, problem);
+  margins.reset(problem.intervals());
+  std::string error;
+  if (!topp::buildRows(drives, margins, problem, &error)) return R::failure(PlanStatus::kInvalidInput, error);
+  problem.b_start = b_start / (length * length);
+  problem.b_end = 0.0;
+  problem.speed_bound = 1e3 / length;
+  const topp::ReachabilityResult r = topp::forwardBackward(problem, profile, controllable);
+  if (r.status != topp::ReachabilityStatus::kOk || r.start_b != problem.b_start) {
+    return R::failure(PlanStatus::kInfeasibleStart, "the start speed cannot be braked to rest on this line");
+  }
+  std::vector<double> s_grid(problem.s.size()), b_grid(problem.s.size());
+  for (size_t k = 0; k < s_grid.size(); ++k) {
+    s_grid[k] = problem.s[k] * length;
+    b_grid[k] = profile[k] * length * length;
+  }
+  s_grid.back() = length;
+  b_grid.front() = b_start;
+  b_grid.back() = 0.0;
+  R trajectory = Trajectory::create(line, model.elevator_drive, model.arm_drive, std::move(s_grid), std::move(b_grid));
+  if (!trajectory) return trajectory;
+  if (!withinDriveLimits(trajectory.value(), model.planner.topp)) {
+    return R::failure(PlanStatus::kSolverNotConverged, "the braking profile exceeds a limit between its rows");
+  }
+  return trajectory;
+}
+
 }  // namespace
 
 Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& world, const JointVector& start,
@@ -133,27 +170,27 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   }
 
   double length = hi;
-  R last = cannot_stop();
   for (int attempt = 0; attempt <= kMaxRetries; ++attempt, length = std::min(reach, kRetryGrowth * length)) {
     auto line = std::make_shared<const StraightPath>(start, direction, length);
-    ToppReport report;
-    last = solver.solve(line, model.elevator_drive, model.arm_drive, b_start, &report);
-    // A start clamped into the controllable set would not begin at v0: lengthen instead.
-    const bool full_speed = report.start_speed_ratio == 1.0;
-    if (last.ok() && full_speed) {
+    R braking = brakingProfile(line, model, b_start, points, problem, margins, profile, controllable);
+    // The optimiser's refined limits when the profile's own check fails (docs/moving-starts.md).
+    if (!braking.ok() && braking.status() == PlanStatus::kSolverNotConverged) {
+      ToppReport report;
+      braking = solver.solve(line, model.elevator_drive, model.arm_drive, b_start, &report);
+      // A start clamped into the controllable set would not begin at v0: lengthen instead.
+      if (braking.ok() && report.start_speed_ratio != 1.0) braking = cannot_stop();
+    }
+    if (braking.ok()) {
       if (!checkSegment(world, start, line->at(length).q, model.clearance_m).clear) {
         return R::failure(PlanStatus::kClearanceNotMet,
                           "braking along the start velocity comes closer than the clearance");
       }
-      return last;
+      return braking;
     }
-    if (last.ok() || last.status() == PlanStatus::kInfeasibleStart) {
-      if (length >= reach) break;
-      continue;
-    }
-    return last;
+    if (braking.status() != PlanStatus::kInfeasibleStart) return braking;
+    if (length >= reach) break;
   }
-  return last.ok() ? cannot_stop() : last;
+  return cannot_stop();
 }
 
 }  // namespace cyber::planner

@@ -3,11 +3,16 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/joined_path.hpp"
+#include "cyber/planner/path_timing.hpp"
 #include "cyber/planner/trajectory_consistency.hpp"
 #include "cyber/planner/weighted_norm.hpp"
 
@@ -24,6 +29,16 @@ constexpr double kMaxVelocityError = 0.019;
 constexpr double kGentlerStep = 0.125;
 constexpr int kGentlerSteps = 12;
 constexpr int kGentlerTries = 6;
+// A rest-to-rest trajectory whose columns disagree is slowed down until its duration has grown by
+// a multiple of this fraction of a step, up to kSlowerSteps of them (two steps).
+constexpr double kSlowerStep = 0.125;
+constexpr int kSlowerSteps = 16;
+// The reachability pass's estimate (path_timing.hpp, on this many points) is never below the
+// optimiser's duration on the public moves and their splices, and at most this much above it:
+// 10 % from a moving start, 2.5 % from rest (docs/moving-starts.md, "Planning time").
+constexpr int kEstimateGridPoints = 60;
+constexpr double kMovingEstimateLow = 0.85;
+constexpr double kRestEstimateLow = 0.95;
 
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -40,21 +55,33 @@ bool consistent(const Trajectory& trajectory) {
   return c.position_error <= kMaxPositionError && c.velocity_error <= kMaxVelocityError;
 }
 
-// The path stage from `start` leaving along v0, then TOPP along its candidates in the order of
-// their estimated time, until one gives a trajectory whose columns agree.
-Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const JointVector& start,
-                       const JointVector& goal, HeldPieces pieces, const JointVector& v0,
-                       PathAlternatives alternatives = PathAlternatives::kSearch) {
-  Result<std::vector<PlannedPath>> found = paths.candidates(start, goal, pieces, v0, alternatives);
-  if (!found) return found.error();
+// A very short move from rest (tens of milliseconds) whose columns disagree at 1 ms: its switch
+// from full acceleration to full braking is a large share of its peak speed, and the trapezoid
+// across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
+// uniformly moves the switch between the samples (by about half the added time), so the shortest
+// slowdown that puts it where the columns agree, within the limits, is taken.
+std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
+  const double duration = trajectory.duration_s();
+  for (int i = 1; i <= kSlowerSteps && duration > 0.0; ++i) {
+    Result<Trajectory> slower = slowedDown(trajectory, 1.0 + i * kSlowerStep * kConsistencyStepS / duration);
+    if (slower && consistent(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {
+      return std::move(slower).value();
+    }
+  }
+  return std::nullopt;
+}
+
+// TOPP along the path stage's candidates from a start with velocity v0, in the order of their
+// estimated time, until one gives a trajectory whose columns agree.
+Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& found, const JointVector& v0) {
   // The spline leaves along v0 with unit speed in the metric Sigma, so sqrt(b_start) = |v0|_Sigma.
   const double speed = weightedNorm(v0, model.planner.metric);
   ToppSolver solver(model.planner.topp);
   Result<Plan> fallback = inconsistent();  // the first trajectory, when no candidate's columns agree
   bool have_fallback = false;
   double topp_ms = 0.0;
-  for (size_t i = 0; i < found.value().size(); ++i) {
-    const PlannedPath& path = found.value()[i];
+  for (size_t i = 0; i < found.size(); ++i) {
+    const PlannedPath& path = found[i];
     const auto topp_start = std::chrono::steady_clock::now();
     Plan plan;
     Result<Trajectory> trajectory =
@@ -64,11 +91,19 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
       if (i == 0) fallback = trajectory.error();
       continue;
     }
-    const bool agree = consistent(trajectory.value());
+    bool agree = consistent(trajectory.value());
+    plan.path_method = path.method;
+    // From rest, slowing this path by at most two steps costs less than a slower path would.
+    if (!agree && speed == 0.0) {
+      if (std::optional<Trajectory> slower = consistentSlowdown(model, trajectory.value())) {
+        trajectory = std::move(*slower);
+        plan.path_method += ", slowed to agree at 1 ms";
+        agree = true;
+      }
+    }
     plan.trajectory = std::make_shared<const Trajectory>(std::move(trajectory).value());
     plan.waypoints = path.waypoints;
     plan.min_clearance_m = path.min_clearance_m;
-    plan.path_method = path.method;
     plan.times_ms.search = path.search_ms;
     plan.times_ms.smooth = path.smooth_ms;
     plan.times_ms.topp = topp_ms;
@@ -78,42 +113,87 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
       have_fallback = true;
     }
   }
-  // A very short move can be too brief for any path to agree at 1 ms (its bang-bang switches are
-  // a large share of its peak speed): it is still planned rather than refused.
+  // None agrees (a moving start's are left to the candidate that stops first): the first.
   if (have_fallback) fallback.value().times_ms.topp = topp_ms;
   return fallback;
 }
 
-// The rest-to-rest plan from where `stop` ends, after it.
-Result<Plan> planAfterStop(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
-                           const Trajectory& stop) {
-  const JointVector rest = stop.path().at(stop.path().length()).q;
-  Result<Plan> onward = timedPath(model, paths, rest, request.goal, request.pieces, JointVector::Zero());
+// The path stage from `start` leaving along v0, then timePaths.
+Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const JointVector& start,
+                       const JointVector& goal, HeldPieces pieces, const JointVector& v0,
+                       PathAlternatives alternatives = PathAlternatives::kSearch) {
+  Result<std::vector<PlannedPath>> found = paths.candidates(start, goal, pieces, v0, alternatives);
+  if (!found) return found.error();
+  return timePaths(model, found.value(), v0);
+}
+
+// The reachability pass's estimate of the first candidate's duration (path_timing.hpp), infinity
+// when there is none.
+double estimatedSeconds(const RobotModel& model, const Result<std::vector<PlannedPath>>& found, const JointVector& v0) {
+  if (!found || found.value().empty()) return std::numeric_limits<double>::infinity();
+  const double speed = weightedNorm(v0, model.planner.metric);
+  return estimateDuration(*found.value().front().path, {model.elevator_drive, model.arm_drive}, speed * speed,
+                          kEstimateGridPoints);
+}
+
+JointVector restOf(const Trajectory& stop) { return stop.path().at(stop.path().length()).q; }
+
+// `stop`, then the rest-to-rest plan `onward` from where it ends.
+Result<Plan> joinAfterStop(const PlanRequest& request, const Trajectory& stop, Result<Plan> onward) {
   if (!onward) return onward;
   Result<Trajectory> joined = joinAtRest(stop, *onward.value().trajectory);
   if (!joined) return joined.error();
   Plan plan = std::move(onward).value();
   plan.trajectory = std::make_shared<const Trajectory>(std::move(joined).value());
   plan.waypoints.insert(plan.waypoints.begin(), request.start);
-  plan.path_method = "stop, then " + plan.path_method;
+  plan.path_method = fmt::format("stop, then {}", plan.path_method);
   return plan;
 }
 
+// The rest-to-rest plan from where `stop` ends, after it.
+Result<Plan> planAfterStop(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
+                           const Trajectory& stop) {
+  return joinAfterStop(request, stop,
+                       timedPath(model, paths, restOf(stop), request.goal, request.pieces, JointVector::Zero()));
+}
+
 // The candidate that is always there for a moving start (docs/moving-starts.md): the fastest
-// stop along v0, then the rest-to-rest plan from where it stops. At the instant of rest the
-// acceleration jumps (braking, then leaving along another direction); sampled every 1 ms, the
-// columns then agree only when the jump falls near the middle between samples (the trapezoid of
-// the two samples around it is then close to the true change of velocity), so when they do not,
-// the stop is made gentle enough to move the junction later (docs/moving-starts.md).
-Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request) {
+// stop along v0, then the rest-to-rest plan from where it stops. Its path stage comes first, so
+// that both candidates' estimates decide which are timed (MotionPlanner::plan).
+struct StopFirst {
+  Result<Trajectory> stop = Result<Trajectory>::failure(PlanStatus::kInvalidInput, "no stop");
+  Result<std::vector<PlannedPath>> onward =
+      Result<std::vector<PlannedPath>>::failure(PlanStatus::kInvalidInput, "no stop");
+  double stop_ms = 0.0;
+  double estimate_s = std::numeric_limits<double>::infinity();  // stop + the onward estimate
+  double onward_estimate_s = std::numeric_limits<double>::infinity();
+};
+
+StopFirst stopFirstPaths(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request) {
+  StopFirst out;
   const auto stop_start = std::chrono::steady_clock::now();
   ToppSolver solver(model.planner.topp);
-  const CollisionWorld& world = paths.world(request.pieces);
-  Result<Trajectory> stop = fastestStop(model, world, request.start, request.start_velocity, solver);
-  const double stop_ms = msSince(stop_start);
-  if (!stop) return stop.error();
-  Result<Plan> plan = planAfterStop(model, paths, request, stop.value());
-  const double steps = stop.value().duration_s() / kConsistencyStepS;
+  out.stop = fastestStop(model, paths.world(request.pieces), request.start, request.start_velocity, solver);
+  out.stop_ms = msSince(stop_start);
+  if (!out.stop) return out;
+  out.onward = paths.candidates(restOf(out.stop.value()), request.goal, request.pieces);
+  out.onward_estimate_s = estimatedSeconds(model, out.onward, JointVector::Zero());
+  out.estimate_s = out.stop.value().duration_s() + out.onward_estimate_s;
+  return out;
+}
+
+// The stop-first candidate timed. At the instant of rest the acceleration jumps (braking, then
+// leaving along another direction); sampled every 1 ms, the columns then agree only when the jump
+// falls near the middle between samples (the trapezoid of the two samples around it is then close
+// to the true change of velocity), so when they do not, the stop is made gentle enough to move
+// the junction later (docs/moving-starts.md).
+Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
+                          const StopFirst& candidate) {
+  if (!candidate.stop) return candidate.stop.error();
+  if (!candidate.onward) return candidate.onward.error();
+  const Trajectory& stop = candidate.stop.value();
+  Result<Plan> plan = joinAfterStop(request, stop, timePaths(model, candidate.onward.value(), JointVector::Zero()));
+  const double steps = stop.duration_s() / kConsistencyStepS;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
   // the jump errs by at most a quarter of it), earliest first.
   int tries = 0;
@@ -121,11 +201,17 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
     const double target = steps + kGentlerStep * i;
     if (std::abs(target - std::floor(target) - 0.5) > 0.25) continue;
     ++tries;
-    Result<Trajectory> gentler = stretchedStop(model, world, stop.value(), target / steps);
+    Result<Trajectory> gentler = stretchedStop(model, paths.world(request.pieces), stop, target / steps);
     plan = gentler ? planAfterStop(model, paths, request, gentler.value()) : gentler.error();
   }
-  if (plan) plan.value().times_ms.topp += stop_ms;
+  if (plan) plan.value().times_ms.topp += candidate.stop_ms;
   return plan;
+}
+
+bool requestError(PlanStatus status) {
+  return status == PlanStatus::kInvalidInput || status == PlanStatus::kStartOutOfRange ||
+         status == PlanStatus::kGoalOutOfRange || status == PlanStatus::kStartInCollision ||
+         status == PlanStatus::kGoalInCollision;
 }
 
 }  // namespace
@@ -145,31 +231,46 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
 Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const auto start_time = std::chrono::steady_clock::now();
   if (request.scene < 0 || request.scene >= static_cast<int>(path_planners_.size())) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput, "unknown scene index " + std::to_string(request.scene));
+    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
   }
   if (!request.start_velocity.allFinite()) {
     return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
   }
   const PathPlanner& paths = path_planners_[static_cast<size_t>(request.scene)];
   const bool moving = weightedNorm(request.start_velocity, model_.planner.metric) > 0.0;
-  // A moving start leaving along its velocity is timed on the search's path alone: its candidate
-  // that stops first searches the alternatives (docs/moving-starts.md, "Planning time").
-  Result<Plan> direct = timedPath(model_, paths, request.start, request.goal, request.pieces, request.start_velocity,
-                                  moving ? PathAlternatives::kNone : PathAlternatives::kSearch);
-  // Errors of the request itself (bad poses, a goal in collision) are the same for both.
-  const bool request_error =
-      !direct && (direct.status() == PlanStatus::kInvalidInput || direct.status() == PlanStatus::kStartOutOfRange ||
-                  direct.status() == PlanStatus::kGoalOutOfRange || direct.status() == PlanStatus::kStartInCollision ||
-                  direct.status() == PlanStatus::kGoalInCollision);
-  Result<Plan> chosen = std::move(direct);
-  if (moving && !request_error) {
-    Result<Plan> stopped = stopThenPlan(model_, paths, request);
+  Result<Plan> chosen = inconsistent();
+  if (!moving) {
+    chosen = timedPath(model_, paths, request.start, request.goal, request.pieces, JointVector::Zero());
+  } else {
+    // Leaving along the velocity is timed on the search's path alone: the candidate that stops
+    // first searches the alternatives (docs/moving-starts.md, "Planning time").
+    Result<std::vector<PlannedPath>> direct_paths =
+        paths.candidates(request.start, request.goal, request.pieces, request.start_velocity, PathAlternatives::kNone);
+    // Errors of the request itself (bad poses, a goal in collision) are the same for both.
+    if (!direct_paths && requestError(direct_paths.status())) return direct_paths.error();
+    const StopFirst stop_first = stopFirstPaths(model_, paths, request);
+    // Each candidate is timed only when its estimate leaves it a chance to win (docs/moving-starts.md).
+    const double direct_estimate_s = estimatedSeconds(model_, direct_paths, request.start_velocity);
+    const bool time_direct = direct_paths && kMovingEstimateLow * direct_estimate_s <= stop_first.estimate_s;
+    Result<Plan> direct =
+        time_direct ? timePaths(model_, direct_paths.value(), request.start_velocity) : Result<Plan>(inconsistent());
+    const double stop_first_low_s =
+        stop_first.stop ? stop_first.stop.value().duration_s() + kRestEstimateLow * stop_first.onward_estimate_s : 0.0;
+    const bool direct_wins =
+        direct && consistent(*direct.value().trajectory) && direct.value().trajectory->duration_s() < stop_first_low_s;
+    Result<Plan> stopped =
+        direct_wins ? Result<Plan>(inconsistent()) : stopThenPlan(model_, paths, request, stop_first);
+    const bool stopped_agrees = stopped && consistent(*stopped.value().trajectory);
+    if (!stopped_agrees && !time_direct && direct_paths) {
+      direct = timePaths(model_, direct_paths.value(), request.start_velocity);
+    }
     // Columns that agree first, then the faster.
     auto rank = [](const Result<Plan>& p) {
-      return std::pair{p && consistent(*p.value().trajectory) ? 0 : 1, p.value().trajectory->duration_s()};
+      return std::pair{p && consistent(*p.value().trajectory) ? 0 : 1,
+                       p ? p.value().trajectory->duration_s() : std::numeric_limits<double>::infinity()};
     };
-    const bool stopped_faster = stopped && (!chosen || rank(stopped) < rank(chosen));
-    if (stopped_faster) chosen = std::move(stopped);
+    if (!direct && !direct_paths) direct = direct_paths.error();
+    chosen = stopped && (!direct || rank(stopped) < rank(direct)) ? std::move(stopped) : std::move(direct);
   }
   if (!chosen) return chosen;
   Plan plan = std::move(chosen).value();

@@ -4,7 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace cyber::planner {
+namespace {
+
+// Of ToppSettings::limit_check_tolerance accepted by withinDriveLimits(trajectory, settings).
+constexpr double kOwnCheckShare = 0.5;
+
+}  // namespace
 
 Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
                                       const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid) {
@@ -27,7 +35,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
   for (size_t k = 0; k < n; ++k) {
     if (!std::isfinite(s_grid[k]) || !std::isfinite(b_grid[k]) || b_grid[k] < 0.0) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
-                                         "profile value " + std::to_string(k) + " is negative or not finite");
+                                         fmt::format("profile value {} is negative or not finite", k));
     }
     if (k > 0 && !(s_grid[k] > s_grid[k - 1])) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid is not strictly increasing");
@@ -44,7 +52,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
     const double speed_sum = std::sqrt(b_grid[k]) + std::sqrt(b_grid[k + 1]);
     if (!(speed_sum > 0.0)) {
       return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
-                                         "profile is at rest over interval " + std::to_string(k));
+                                         fmt::format("profile is at rest over interval {}", k));
     }
     trajectory.a_grid_[k] = (b_grid[k + 1] - b_grid[k]) / (2.0 * ds);
     trajectory.t_grid_[k + 1] = trajectory.t_grid_[k] + 2.0 * ds / speed_sum;  // exact for constant a
@@ -111,6 +119,37 @@ double Trajectory::pathParameterAt(double t) const {
   const double tau = t - t_grid_[k];
   return std::clamp(s_grid_[k] + std::sqrt(b_grid_[k]) * tau + 0.5 * a_grid_[k] * tau * tau, s_grid_[k],
                     s_grid_[k + 1]);
+}
+
+bool withinDriveLimits(const Trajectory& trajectory, double step_s, double tolerance) {
+  const double duration = trajectory.duration_s();
+  const long samples = static_cast<long>(std::floor(duration / step_s)) + 1;
+  for (long i = 0; i <= samples; ++i) {
+    const TrajectorySample s =
+        trajectory.sample(i == samples ? duration : std::min(duration, static_cast<double>(i) * step_s));
+    for (int j = 0; j < kJointCount; ++j) {
+      const DriveParams& d = trajectory.drive(j);
+      auto over = [&](double value, double limit) { return std::abs(value) > limit * (1.0 + tolerance); };
+      if (over(s.volts[j], d.voltage_limit_volts) || over(s.amps[j], d.current_limit_amps)) return false;
+      if (d.velocity_limit && over(s.qdot[j], *d.velocity_limit)) return false;
+      if (d.acceleration_limit && over(s.qddot[j], *d.acceleration_limit)) return false;
+    }
+  }
+  return true;
+}
+
+bool withinDriveLimits(const Trajectory& trajectory, const ToppSettings& settings) {
+  return withinDriveLimits(trajectory, settings.limit_check_step_s, kOwnCheckShare * settings.limit_check_tolerance);
+}
+
+Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor) {
+  if (!(factor >= 1.0) || !std::isfinite(factor)) {
+    return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "a trajectory is slowed down by a factor >= 1");
+  }
+  std::vector<double> b_grid = trajectory.bGrid();
+  for (double& b : b_grid) b /= factor * factor;
+  return Trajectory::create(trajectory.sharedPath(), trajectory.drive(kElevator), trajectory.drive(kArm),
+                            trajectory.sGrid(), std::move(b_grid));
 }
 
 }  // namespace cyber::planner

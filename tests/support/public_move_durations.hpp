@@ -30,7 +30,7 @@ inline constexpr std::array<StoredDuration, 144> kStoredDurations{{
     {"algae:STOW->NET", 0.652732, 0.654482},
     {"coral:INTAKE->L1", 0.308059, 0.311930},
     {"coral:INTAKE->L2", 0.375493, 0.393389},
-    {"coral:INTAKE->L3", 0.486750, 0.531120},
+    {"coral:INTAKE->L3", 0.486750, 0.490887},
     {"coral:INTAKE->L4", 0.0, 0.0},
     {"coral:INTAKE->NET", 0.522647, 0.524356},
     {"coral:INTAKE->STOW", 0.185024, 0.195767},

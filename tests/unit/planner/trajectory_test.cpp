@@ -3,6 +3,7 @@
 
 #include "cyber/planner/trajectory.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstdlib>
@@ -139,6 +140,58 @@ TEST(Trajectory, VoltsAndAmpsFollowTheDriveModel) {
     EXPECT_DOUBLE_EQ(s.amps[kArm], armDrive().amps(s.volts[kArm], s.qdot[kArm]));
     EXPECT_DOUBLE_EQ(s.volts[kElevator], elevatorDrive().volts(s.q[kElevator], s.qdot[kElevator], s.qddot[kElevator]));
   }
+}
+
+// The largest |volts| / limit of a joint over samples `step` apart and the last, by brute force.
+double peakVoltageRatio(const Trajectory& t, int joint, double step) {
+  double peak = 0.0;
+  for (double time = 0.0;; time += step) {
+    const TrajectorySample s = t.sample(std::min(time, t.duration_s()));
+    peak = std::max(peak, std::abs(s.volts[joint]) / t.drive(joint).voltage_limit_volts);
+    if (time >= t.duration_s()) return peak;
+  }
+}
+
+TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
+  const auto path = wiggle();
+  const Trajectory reference = makeTrajectory(path);
+  const double step = 0.001;
+  const double peak = peakVoltageRatio(reference, kArm, step);
+  ASSERT_GT(peak, 0.0);
+  // The same profile with the arm's voltage limit just above and just below its peak.
+  auto withArmLimit = [&](double volts) {
+    DriveParams arm = armDrive();
+    arm.voltage_limit_volts = volts;
+    arm.current_limit_amps = 1e6;
+    DriveParams elevator = elevatorDrive();
+    elevator.voltage_limit_volts = elevator.current_limit_amps = 1e6;
+    return Trajectory::create(path, elevator, arm, reference.sGrid(), reference.bGrid()).value();
+  };
+  const double limit = armDrive().voltage_limit_volts * peak;
+  EXPECT_TRUE(withinDriveLimits(withArmLimit(1.001 * limit), step, 0.0));
+  EXPECT_FALSE(withinDriveLimits(withArmLimit(0.99 * limit), step, 0.0));
+  EXPECT_TRUE(withinDriveLimits(withArmLimit(0.99 * limit), step, 0.02));
+  DriveParams capped = armDrive();
+  capped.voltage_limit_volts = capped.current_limit_amps = 1e6;
+  capped.acceleration_limit = 1e-3;
+  EXPECT_FALSE(withinDriveLimits(
+      Trajectory::create(path, elevatorDrive(), capped, reference.sGrid(), reference.bGrid()).value(), step, 0.0));
+}
+
+TEST(Trajectory, SlowedDownFollowsTheSamePathWithVelocitiesOverTheFactor) {
+  const Trajectory t = makeTrajectory(wiggle());
+  const double factor = 1.03;
+  const auto slower = slowedDown(t, factor);
+  ASSERT_TRUE(slower.ok());
+  EXPECT_NEAR(slower.value().duration_s(), factor * t.duration_s(), 1e-12);
+  for (int i = 0; i <= 20; ++i) {
+    const TrajectorySample a = t.sample(t.duration_s() * i / 20.0);
+    const TrajectorySample b = slower.value().sample(factor * a.t);
+    EXPECT_NEAR((b.q - a.q).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((factor * b.qdot - a.qdot).norm(), 0.0, 1e-9);
+  }
+  EXPECT_EQ(slowedDown(t, 0.9).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(slowedDown(t, NAN).status(), PlanStatus::kInvalidInput);
 }
 
 TEST(Trajectory, SampleDoesNotAllocate) {

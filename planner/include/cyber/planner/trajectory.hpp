@@ -61,4 +61,18 @@ class Trajectory {
   std::vector<double> t_grid_;
 };
 
+// Whether every sample `step_s` apart (and the last) keeps each joint's voltage, current and
+// optional velocity and acceleration within its limit times (1 + tolerance).
+[[nodiscard]] bool withinDriveLimits(const Trajectory& trajectory, double step_s, double tolerance);
+
+// The same check for a profile made outside the optimiser (a stop's reachability profile, a
+// slowed trajectory) at the optimiser's step, accepting half its tolerance: less than the
+// optimiser accepts at its own samples, so that other sampling instants stay within it.
+[[nodiscard]] bool withinDriveLimits(const Trajectory& trajectory, const ToppSettings& settings);
+
+// The same path `factor` (>= 1) times slower: b / factor^2, so velocities shrink by 1 / factor and
+// path accelerations by 1 / factor^2 (a start at rest stays at rest). Drive limits are not
+// checked here: withinDriveLimits.
+[[nodiscard]] Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor);
+
 }  // namespace cyber::planner
