@@ -22,7 +22,8 @@ const Scene& scene() { return model().scenes.front(); }
 JointVector randomPose(std::mt19937& rng) {
   std::uniform_real_distribution<double> t(model().elevator_range_m.min, model().elevator_range_m.max);
   std::uniform_real_distribution<double> th(model().arm_range_rad.min, model().arm_range_rad.max);
-  return JointVector(t(rng), th(rng));
+  const double t_m = t(rng);  // drawn in sequence: argument order is unspecified
+  return JointVector(t_m, th(rng));
 }
 
 std::vector<Point2> normalsOf(const std::vector<Point2>& v) {

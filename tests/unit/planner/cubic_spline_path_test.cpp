@@ -25,7 +25,10 @@ double weightedNorm(const JointVector& v) { return std::sqrt(kMetric[0] * v[0] *
 std::vector<JointVector> randomWaypoints(std::mt19937& rng, int count) {
   std::uniform_real_distribution<double> step_t(-0.1, 0.1), step_th(-0.4, 0.4);
   std::vector<JointVector> w{JointVector(1.0, 3.0)};
-  for (int k = 1; k < count; ++k) w.push_back(w.back() + JointVector(step_t(rng), step_th(rng)));
+  for (int k = 1; k < count; ++k) {
+    const double dt = step_t(rng);  // drawn in sequence: argument order is unspecified
+    w.push_back(w.back() + JointVector(dt, step_th(rng)));
+  }
   return w;
 }
 

@@ -320,7 +320,7 @@ TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
     const JointVector start(t(rng), th(rng)), goal(t(rng), th(rng));
     const CollisionWorld& world = planner().world(pieces);
     if (world.distance(start).value < model().clearance_m || world.distance(goal).value < model().clearance_m) continue;
-    const JointVector v0 = (ok + refused) % 2 == 0 ? JointVector::Zero() : JointVector(v(rng), 3.0 * v(rng));
+    const JointVector v0 = (ok + refused) % 2 == 0 ? JointVector::Zero() : JointVector{v(rng), 3.0 * v(rng)};
     const auto result = planner().plan(start, goal, pieces, v0);
     if (!result.ok()) {
       ++refused;
