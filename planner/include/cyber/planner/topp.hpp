@@ -40,7 +40,9 @@ struct ToppReport {
   double peak_acceleration_ratio = 0.0;  // 0 when no joint has an acceleration limit
 };
 
-// Reusable solver: keeps its buffers between calls (a planning daemon holds one).
+// Reusable solver: keeps its buffers between calls. MotionPlanner makes one for a plan's candidate
+// paths and one for its stop (a plan is not on the streaming path, so it may allocate), which keeps
+// MotionPlanner::plan const and free of shared state.
 class ToppSolver {
  public:
   explicit ToppSolver(ToppSettings settings = {}) : settings_(settings) {}
