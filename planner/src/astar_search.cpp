@@ -50,11 +50,40 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     goal_j_hi = std::max(goal_j_hi, grid.armIndex(goal.cell));
   }
   if (goal_i_hi < 0) return std::nullopt;
+  // No goal in a source's region: nothing to search (the refused moves would otherwise expand
+  // their whole region).
+  bool reachable = false;
+  for (const SearchEndpoint& source : sources) {
+    if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
+    for (const SearchEndpoint& goal : goals) {
+      if (goal.cell >= 0 && goal.cell < n && grid.region(goal.cell) == grid.region(source.cell)) reachable = true;
+    }
+  }
+  if (!reachable) return std::nullopt;
 
+  // In coordinates scaled by sqrt(metric), where |.|_Sigma is Euclidean.
+  const double scale_e = std::sqrt(metric[kElevator]), scale_a = std::sqrt(metric[kArm]);
+  const double target_x = scale_e * target[kElevator], target_y = scale_a * target[kArm];
+  // The hole's ray: x = ray_x, y >= ray_y (crossesRay).
+  const double ray_x =
+      side ? scale_e * 0.5 * (grid.elevatorAxis().at(side->hole.i) + grid.elevatorAxis().at(side->hole.i + 1)) : 0.0;
+  const double ray_y = side ? scale_a * grid.armAxis().at(side->hole.j) : 0.0;
+  auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };  // std::hypot is slower
   auto heuristic = [&](int node) {
     if (!use_heuristic || node == goal_node) return 0.0;
-    const JointVector d = grid.node(node % n) - target;
-    return std::sqrt(metric[kElevator] * d[0] * d[0] + metric[kArm] * d[1] * d[1]);
+    const JointVector q = grid.node(node % n);
+    const double x = scale_e * q[kElevator], y = scale_a * q[kArm];
+    if (node / n == goal_layer) return length(x - target_x, y - target_y);
+    // On the wrong side a path must still cross the ray: the shortest way to the target through a
+    // point of the ray. Its length is convex along the ray, so the unconstrained best point (the
+    // straight line to the target or its mirror image) clamped to the ray. Consistent: a step
+    // that crosses the ray is at least as long as the way through its crossing point.
+    const double dx = x - ray_x, dx_target = target_x - ray_x;
+    const double dx_far = dx * dx_target > 0.0 ? -dx_target : dx_target;
+    const double denominator = dx - dx_far;
+    const double y_best = std::abs(denominator) > 1e-12 ? y + (target_y - y) * dx / denominator : 0.5 * (y + target_y);
+    const double y_ray = std::max(ray_y, y_best);
+    return length(dx, y - y_ray) + length(dx_target, target_y - y_ray);
   };
 
   const auto nodes = static_cast<size_t>(goal_node) + 1;
