@@ -148,7 +148,8 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         const int next = next_cell + next_layer * n;
         if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(here, di, dj)) continue;
         if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
-        const double cost = top.g + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
+        const double cost =
+            top.g + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
         if (cost >= g[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
         push(next, cost, top.node, heuristic(a, b, next_layer));
       }

@@ -29,7 +29,8 @@ ShapedPath shapeForTime(std::span<const JointVector> waypoints, int fixed_head, 
   std::vector<double> u(static_cast<size_t>(n), 0.0);
   for (int k = 1; k < n; ++k) {
     u[static_cast<size_t>(k)] =
-        u[static_cast<size_t>(k) - 1] + weightedNorm(waypoints[static_cast<size_t>(k)] - waypoints[static_cast<size_t>(k) - 1], metric);
+        u[static_cast<size_t>(k) - 1] +
+        weightedNorm(waypoints[static_cast<size_t>(k)] - waypoints[static_cast<size_t>(k) - 1], metric);
   }
   const double total = u.back();
   if (!(total > 0.0)) return best;

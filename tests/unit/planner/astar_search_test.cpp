@@ -199,7 +199,8 @@ TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
     const auto free = astarSearch(grid, sources, goals, grid.node(goal));
     std::optional<SearchPath> side[2];
     for (int parity : {0, 1}) {
-      side[parity] = astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.side = SideOfHole{*square, parity}});
+      side[parity] =
+          astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.side = SideOfHole{*square, parity}});
       if (!side[parity]) continue;
       EXPECT_EQ(rayCrossingParity(grid, *square, side[parity]->cells), parity) << "trial " << trial;
       EXPECT_EQ(side[parity]->cells.front(), source);
@@ -298,9 +299,9 @@ TEST(CSpaceGrid, HolesAreTheBlockedRegionsAwayFromTheEdges) {
   std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj), 0);
   auto block = [&](int i, int j) { blocked[static_cast<size_t>(i * nj + j)] = 1; };
   block(2, 2), block(3, 2), block(3, 3), block(4, 4);  // a hole of 4 nodes, diagonally joined
-  for (int j = 0; j < 4; ++j) block(8, j);                // touches the edge: not a hole
-  block(8, 7), block(9, 7), block(8, 6);                  // a hole of 3 nodes
-  block(5, 8);                                            // one node wide: no ray foot, left out
+  for (int j = 0; j < 4; ++j) block(8, j);             // touches the edge: not a hole
+  block(8, 7), block(9, 7), block(8, 6);               // a hole of 3 nodes
+  block(5, 8);                                         // one node wide: no ray foot, left out
   const CSpaceGrid grid(GridAxis{0.0, 0.1, ni}, GridAxis{0.0, 0.1, nj}, blocked, JointVector(1.0, 1.0),
                         SearchSettings{});
   ASSERT_EQ(grid.holes().size(), 2U);

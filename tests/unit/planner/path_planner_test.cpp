@@ -195,7 +195,8 @@ TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
     ++shaped;
     ASSERT_EQ(all.size(), 2U) << move.label;
     EXPECT_EQ(all.front().method, "shaped for time, straight") << move.label;
-    EXPECT_LT(estimateDuration(*all.front().path, drives, 0.0, 100), estimateDuration(*all.back().path, drives, 0.0, 100))
+    EXPECT_LT(estimateDuration(*all.front().path, drives, 0.0, 100),
+              estimateDuration(*all.back().path, drives, 0.0, 100))
         << move.label;
     EXPECT_GE(all.front().min_clearance_m, model().clearance_m) << move.label;
   }

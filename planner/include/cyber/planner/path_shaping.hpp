@@ -18,11 +18,11 @@
 namespace cyber::planner {
 
 struct ShapeSearchSettings {
-  int bumps = 2;              // per joint
-  int max_evaluations = 16;   // spline + reachability estimates
-  int grid_points = 40;       // of each estimate
+  int bumps = 2;                         // per joint
+  int max_evaluations = 16;              // spline + reachability estimates
+  int grid_points = 40;                  // of each estimate
   JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]; about 10 ms of top speed each
-  double min_step_fraction = 0.125;   // stop when the steps have shrunk to this share
+  double min_step_fraction = 0.125;      // stop when the steps have shrunk to this share
 };
 
 struct ShapedPath {
