@@ -50,11 +50,47 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     goal_j_hi = std::max(goal_j_hi, grid.armIndex(goal.cell));
   }
   if (goal_i_hi < 0) return std::nullopt;
+  // No goal in a source's region: nothing to search (the refused moves would otherwise expand
+  // their whole region).
+  bool reachable = false;
+  for (const SearchEndpoint& source : sources) {
+    if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
+    for (const SearchEndpoint& goal : goals) {
+      if (goal.cell >= 0 && goal.cell < n && grid.region(goal.cell) == grid.region(source.cell)) reachable = true;
+    }
+  }
+  if (!reachable) return std::nullopt;
 
-  auto heuristic = [&](int node) {
-    if (!use_heuristic || node == goal_node) return 0.0;
-    const JointVector d = grid.node(node % n) - target;
-    return std::sqrt(metric[kElevator] * d[0] * d[0] + metric[kArm] * d[1] * d[1]);
+  // In coordinates scaled by sqrt(metric), where |.|_Sigma is Euclidean.
+  const double scale_e = std::sqrt(metric[kElevator]), scale_a = std::sqrt(metric[kArm]);
+  const double target_x = scale_e * target[kElevator], target_y = scale_a * target[kArm];
+  // The hole's ray: x = ray_x, y >= ray_y (crossesRay).
+  const double ray_x =
+      side ? scale_e * 0.5 * (grid.elevatorAxis().at(side->hole.i) + grid.elevatorAxis().at(side->hole.i + 1)) : 0.0;
+  const double ray_y = side ? scale_a * grid.armAxis().at(side->hole.j) : 0.0;
+  auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };  // std::hypot is slower
+  // Of the node at indices (i, j) in `layer` (its cell's indices are known where it is pushed:
+  // no divisions on the hot path).
+  const GridAxis& elevator_axis = grid.elevatorAxis();
+  const GridAxis& arm_axis = grid.armAxis();
+  auto heuristic = [&](int i, int j, int layer) {
+    if (!use_heuristic) return 0.0;
+    const double q_e = elevator_axis.at(i), q_a = arm_axis.at(j);
+    if (layer == goal_layer) {
+      const double d_e = q_e - target[kElevator], d_a = q_a - target[kArm];
+      return std::sqrt(metric[kElevator] * d_e * d_e + metric[kArm] * d_a * d_a);
+    }
+    const double x = scale_e * q_e, y = scale_a * q_a;
+    // On the wrong side a path must still cross the ray: the shortest way to the target through a
+    // point of the ray. Its length is convex along the ray, so the unconstrained best point (the
+    // straight line to the target or its mirror image) clamped to the ray. Consistent: a step
+    // that crosses the ray is at least as long as the way through its crossing point.
+    const double dx = x - ray_x, dx_target = target_x - ray_x;
+    const double dx_far = dx * dx_target > 0.0 ? -dx_target : dx_target;
+    const double denominator = dx - dx_far;
+    const double y_best = std::abs(denominator) > 1e-12 ? y + (target_y - y) * dx / denominator : 0.5 * (y + target_y);
+    const double y_ray = std::max(ray_y, y_best);
+    return length(dx, y - y_ray) + length(dx_target, target_y - y_ray);
   };
 
   const auto nodes = static_cast<size_t>(goal_node) + 1;
@@ -63,16 +99,16 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   std::vector<std::uint8_t> closed(nodes, 0);
   std::vector<OpenEntry> open;
   open.reserve(1024);
-  auto push = [&](int node, double cost, int from) {
+  auto push = [&](int node, double cost, int from, double h) {
     if (cost >= g[static_cast<size_t>(node)]) return;
     g[static_cast<size_t>(node)] = cost;
     parent[static_cast<size_t>(node)] = from;
-    open.push_back({cost + heuristic(node), cost, node});
+    open.push_back({cost + h, cost, node});
     std::push_heap(open.begin(), open.end(), LaterEntry{});
   };
   for (const SearchEndpoint& source : sources) {
     if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
-    push(source.cell, source.cost, -1);
+    push(source.cell, source.cost, -1, heuristic(grid.elevatorIndex(source.cell), grid.armIndex(source.cell), 0));
   }
 
   const double step_length[3][3] = {
@@ -91,13 +127,13 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     ++expanded;
     if (top.node == goal_node) break;
 
-    const int here = top.node % n;
-    const int layer = top.node / n;
+    const int layer = top.node >= n ? 1 : 0;
+    const int here = top.node - layer * n;
     const int i = grid.elevatorIndex(here);
     const int j = grid.armIndex(here);
     if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
       for (const SearchEndpoint& goal : goals) {
-        if (goal.cell == here) push(goal_node, top.g + goal.cost, top.node);
+        if (goal.cell == here) push(goal_node, top.g + goal.cost, top.node, 0.0);
       }
     }
     const double p_here = grid.potential(here);
@@ -112,8 +148,10 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         const int next = next_cell + next_layer * n;
         if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(here, di, dj)) continue;
         if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
-        const double step = step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
-        push(next, top.g + step, top.node);
+        const double cost =
+            top.g + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
+        if (cost >= g[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
+        push(next, cost, top.node, heuristic(a, b, next_layer));
       }
     }
   }

@@ -35,6 +35,34 @@ CSpaceGrid::CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t
   allowAllStepsBetweenFreeNodes();
   computePotential(search.potential_range);
   findHoles();
+  labelRegions();
+}
+
+void CSpaceGrid::labelRegions() {
+  // A flood fill over free steps from each unlabelled free node; steps are symmetric (stepFree).
+  region_.assign(static_cast<size_t>(cellCount()), -1);
+  std::vector<int> stack;
+  const int ni = elevator_.count, nj = arm_.count;
+  for (int start = 0; start < cellCount(); ++start) {
+    if (blocked(start) || region_[static_cast<size_t>(start)] >= 0) continue;
+    region_[static_cast<size_t>(start)] = start;
+    stack.assign(1, start);
+    while (!stack.empty()) {
+      const int c = stack.back();
+      stack.pop_back();
+      const int i = elevatorIndex(c), j = armIndex(c);
+      for (int di = -1; di <= 1; ++di) {
+        for (int dj = -1; dj <= 1; ++dj) {
+          const int a = i + di, b = j + dj;
+          if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= ni || b >= nj) continue;
+          const int next = cell(a, b);
+          if (region_[static_cast<size_t>(next)] >= 0 || !stepFree(c, di, dj)) continue;
+          region_[static_cast<size_t>(next)] = start;
+          stack.push_back(next);
+        }
+      }
+    }
+  }
 }
 
 void CSpaceGrid::findHoles() {
@@ -133,6 +161,7 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
       }
     }
   }
+  grid.labelRegions();  // the checks above may have split regions
   return grid;
 }
 

@@ -81,12 +81,40 @@ constexpr int kBandRadius = 6;
 constexpr double kShapeRatio = 1.02;
 constexpr double kShapeGain = 0.002;
 constexpr int kShapeCheckGridPoints = 100;
+// A direct path is shaped from this many knots along its straight segment, when its estimate (on
+// this many grid points) is this much above its slower joint's alone: on the public moves those
+// that gained were 1.006-1.06 above, the others equal (one joint's limits bind all along).
+constexpr int kDirectShapeKnots = 6;
+constexpr int kGateGridPoints = 20;
+constexpr double kDirectShapeRatio = 1.003;
 // The other side of this many holes of C-space (the largest) is searched for as well.
 // Only when it costs at most this much more than the first path in the search's own metric (the
 // other sides that were faster on the public moves cost 1.03-1.06 times as much; most that were
 // not, 1.1 to 4.5 times): the search gives up early on a far detour, and it is not smoothed.
 constexpr size_t kMaxHoleSides = 2;
 constexpr double kMaxSideCost = 1.08;
+
+// The reachability estimate from rest of the straight segment from `from` to `to` (obstacles
+// ignored); 0 when they are the same pose.
+double straightEstimate(const JointVector& from, const JointVector& to, const JointVector& metric,
+                        const std::array<DriveParams, kJointCount>& drives, int grid_points = kTimingGridPoints) {
+  const double length = weightedNorm(to - from, metric);
+  if (!(length > kSamePose)) return 0.0;
+  return estimateDuration(StraightPath(from, (to - from) / length, length), drives, 0.0, grid_points);
+}
+
+// The larger of the joints' straightEstimate moving alone (the other one staying at `from`), on
+// kGateGridPoints.
+double slowerJointAlone(const JointVector& from, const JointVector& to, const JointVector& metric,
+                        const std::array<DriveParams, kJointCount>& drives) {
+  double slower = 0.0;
+  for (int joint = 0; joint < kJointCount; ++joint) {
+    JointVector alone = from;
+    alone[joint] = to[joint];
+    slower = std::max(slower, straightEstimate(from, alone, metric, drives, kGateGridPoints));
+  }
+  return slower;
+}
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
 // can replace replaced by it: the search's grid and potential bend the path toward the middle of
@@ -293,9 +321,39 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const bool done = smooth(polyline, "", out);
   std::vector<PlannedPath> candidates;
   if (done) candidates.push_back(out);
+  const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
+  const double b_start = start_speed * start_speed;
+  // The shape search from `knots` (through which `fastest` runs), put first when it is faster.
+  auto add_shaped = [&](const PlannedPath& fastest, const std::vector<JointVector>& knots) {
+    ShapedPath shaped = shapeForTime(knots, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
+    // The search's estimate is coarse: the shaped path must also be faster on a finer grid.
+    if (shaped.improvements == 0 ||
+        !(estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
+          (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints))) {
+      return;
+    }
+    PlannedPath better = fastest;
+    better.path = std::make_shared<const CubicSplinePath>(std::move(shaped.path));
+    better.waypoints = std::move(shaped.waypoints);
+    better.min_clearance_m = shaped.min_clearance_m;
+    better.method = "shaped for time, " + fastest.method;
+    candidates.insert(candidates.begin(), std::move(better));
+  };
+  if (out.direct && done && alternatives == PathAlternatives::kSearch) {
+    // A straight segment is not the fastest path when the joints' limits differ (gravity, voltage
+    // limits): the shape search bends it, from knots spread evenly along it.
+    const std::vector<JointVector> tail(polyline.begin() + fixed_head - 1, polyline.end());
+    std::vector<JointVector> knots(polyline.begin(), polyline.begin() + fixed_head - 1);
+    const double tail_length = weightedNorm(tail.back() - tail.front(), metric);
+    const std::vector<JointVector> spread = resamplePolyline(tail, metric, tail_length / (kDirectShapeKnots - 1));
+    knots.insert(knots.end(), spread.begin(), spread.end());
+    // Only when the segment is estimated slower than its slower joint moving alone: otherwise that
+    // joint's limits bind all along and no shape can be faster.
+    if (straightEstimate(from, goal, metric, drives, kGateGridPoints) >
+        kDirectShapeRatio * slowerJointAlone(from, goal, metric, drives))
+      add_shaped(candidates.front(), knots);
+  }
   if (!out.direct && alternatives == PathAlternatives::kSearch) {
-    const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
-    const double b_start = start_speed * start_speed;
     std::vector<double> estimates;
     for (const PlannedPath& c : candidates)
       estimates.push_back(estimateDuration(*c.path, drives, b_start, kTimingGridPoints));
@@ -312,9 +370,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     const std::vector<JointVector> shortcut =
         shortcutPolyline(world, polyline, fixed_head, clearance + kShortcutMargin_m);
     if (shortcut.size() < polyline.size()) add(shortcut, "shortcut, ");
-    const double direction_norm = weightedNorm(goal - from, metric);
-    const StraightPath straight(from, (goal - from) / direction_norm, direction_norm);
-    const double straight_s = estimateDuration(straight, drives, 0.0, kTimingGridPoints);
+    const double straight_s = straightEstimate(from, goal, metric, drives);
     if (!estimates.empty() && estimates.front() > kDetourRatio * straight_s) {
       auto add_search = [&](const std::optional<SearchPath>& found, const char* label) {
         if (!found) return;
@@ -340,20 +396,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
       }
     }
     if (!estimates.empty() && estimates.front() > kShapeRatio * straight_s) {
-      const PlannedPath& fastest = candidates.front();
-      ShapedPath shaped =
-          shapeForTime(fastest.waypoints, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
-      // The search's estimate is coarse: the shaped path must also be faster on a finer grid.
-      if (shaped.improvements > 0 &&
-          estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
-              (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints)) {
-        PlannedPath better = fastest;
-        better.path = std::make_shared<const CubicSplinePath>(std::move(shaped.path));
-        better.waypoints = std::move(shaped.waypoints);
-        better.min_clearance_m = shaped.min_clearance_m;
-        better.method = "shaped for time, " + fastest.method;
-        candidates.insert(candidates.begin(), std::move(better));
-      }
+      const PlannedPath fastest = candidates.front();
+      add_shaped(fastest, fastest.waypoints);
     }
   }
   const double smooth_ms = millisecondsSince(t_smooth);

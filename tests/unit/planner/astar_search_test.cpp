@@ -231,6 +231,69 @@ TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
   EXPECT_GT(both_sides, 50);
 }
 
+// The side-of-hole search's heuristic (the way through the ray on the wrong side) must keep the
+// search exact: its cost equals the search's without a heuristic, from random sources to random
+// goals (either side of the ray, above and below the hole), and max_cost cuts exactly there.
+TEST(AstarSearch, SideOfHoleHeuristicKeepsTheCost) {
+  std::mt19937 rng(23);
+  int compared = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const int ni = 15, nj = 13;
+    std::bernoulli_distribution is_blocked(0.12);
+    std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj));
+    for (auto& b : blocked) b = is_blocked(rng) ? 1 : 0;
+    for (int i = 6; i <= 8; ++i) {
+      for (int j = 5; j <= 7; ++j) blocked[static_cast<size_t>(i * nj + j)] = 1;
+    }
+    SearchSettings search;
+    search.potential_weight = trial % 2 == 0 ? 0.0 : 2.0;
+    search.potential_range = 0.1;
+    const CSpaceGrid grid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, blocked, JointVector(1.0, 0.1), search);
+    if (grid.holes().empty()) continue;
+    std::uniform_int_distribution<int> any_cell(0, grid.cellCount() - 1);
+    const int source = any_cell(rng), goal = any_cell(rng);
+    if (grid.blocked(source) || grid.blocked(goal)) continue;
+    const std::vector<SearchEndpoint> sources{{source, 0.0}}, goals{{goal, 0.0}};
+    for (int parity : {0, 1}) {
+      const SideOfHole side{grid.holes().front(), parity};
+      const auto with = astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.side = side});
+      const auto without =
+          astarSearch(grid, sources, goals, grid.node(goal), SearchOptions{.use_heuristic = false, .side = side});
+      ASSERT_EQ(with.has_value(), without.has_value()) << "trial " << trial;
+      if (!with) continue;
+      ++compared;
+      EXPECT_NEAR(with->cost, without->cost, 1e-9) << "trial " << trial;
+      EXPECT_FALSE(astarSearch(grid, sources, goals, grid.node(goal),
+                               SearchOptions{.side = side, .max_cost = with->cost * (1.0 - 1e-6)})
+                       .has_value());
+      EXPECT_TRUE(astarSearch(grid, sources, goals, grid.node(goal),
+                              SearchOptions{.side = side, .max_cost = with->cost * (1.0 + 1e-6)})
+                      .has_value());
+    }
+  }
+  EXPECT_GT(compared, 100);
+}
+
+// Free nodes share a region exactly when a path joins them (the textbook Dijkstra reaches one
+// from the other); blocked nodes have none.
+TEST(CSpaceGrid, RegionsAreTheConnectedFreeNodes) {
+  std::mt19937 rng(5);
+  for (int trial = 0; trial < 40; ++trial) {
+    const CSpaceGrid grid = randomGrid(rng, 9, 8, 0.3 + 0.01 * trial, 0.0);
+    std::uniform_int_distribution<int> any_cell(0, grid.cellCount() - 1);
+    for (int pair = 0; pair < 10; ++pair) {
+      const int a = any_cell(rng), b = any_cell(rng);
+      if (grid.blocked(a)) {
+        EXPECT_EQ(grid.region(a), -1);
+        continue;
+      }
+      if (grid.blocked(b)) continue;
+      const bool joined = std::isfinite(dijkstraCost(grid, {{a, 0.0}}, {{b, 0.0}}));
+      EXPECT_EQ(grid.region(a) == grid.region(b), joined) << "trial " << trial;
+    }
+  }
+}
+
 TEST(CSpaceGrid, HolesAreTheBlockedRegionsAwayFromTheEdges) {
   const int ni = 12, nj = 10;
   std::vector<std::uint8_t> blocked(static_cast<size_t>(ni * nj), 0);

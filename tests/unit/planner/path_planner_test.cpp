@@ -4,6 +4,8 @@
 
 #include "cyber/planner/path_planner.hpp"
 
+#include <array>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -12,6 +14,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "cyber/planner/path_timing.hpp"
 
 #include "public_moves.hpp"
 #include "reference_model.hpp"
@@ -173,6 +177,32 @@ void checkEveryPublicMove(const PathPlanner& planner) {
 TEST(PathPlanner, EveryPublicMoveKeepsTheClearanceOrProvablyHasNoPath) { checkEveryPublicMove(planner()); }
 
 TEST(PathPlanner, EveryPublicMoveWithTheDefaultSmoothingSettings) { checkEveryPublicMove(defaultSmoothingPlanner()); }
+
+// A direct path gets a shaped candidate first when that is estimated faster and clear (on the
+// public moves between INTAKE and STOW, for one); the others keep their one straight candidate.
+TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
+  const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
+  int shaped = 0, straight = 0;
+  for (const test::PublicMove& move : test::publicMoves()) {
+    const auto found = planner().candidates(move.from, move.to, move.pieces);
+    if (!found.ok() || !found.value().back().direct) continue;
+    const std::vector<PlannedPath>& all = found.value();
+    if (all.size() == 1) {
+      ++straight;
+      EXPECT_EQ(all.front().method, "straight") << move.label;
+      continue;
+    }
+    ++shaped;
+    ASSERT_EQ(all.size(), 2U) << move.label;
+    EXPECT_EQ(all.front().method, "shaped for time, straight") << move.label;
+    EXPECT_LT(estimateDuration(*all.front().path, drives, 0.0, 100),
+              estimateDuration(*all.back().path, drives, 0.0, 100))
+        << move.label;
+    EXPECT_GE(all.front().min_clearance_m, model().clearance_m) << move.label;
+  }
+  EXPECT_GE(shaped, 6);
+  EXPECT_GT(straight, 30);
+}
 
 TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
   // Poses between grid nodes: the path starts and ends exactly there.

@@ -87,6 +87,9 @@ class CSpaceGrid {
     if (std::min(i, i + di) != hole.i || std::max(i, i + di) != hole.i + 1) return false;
     return 2 * armIndex(cell) + dj > 2 * hole.j;
   }
+  // The connected region of free nodes (through free steps) a free node belongs to; -1 when
+  // blocked. Nodes of different regions have no path between them.
+  [[nodiscard]] int region(int cell) const { return region_[static_cast<size_t>(cell)]; }
   // Steps that needed a continuous check when the grid was built.
   [[nodiscard]] int checkedStepCount() const { return checked_steps_; }
   [[nodiscard]] int blockedCount() const;
@@ -99,6 +102,7 @@ class CSpaceGrid {
   void computePotential(double range);
   void allowAllStepsBetweenFreeNodes();
   void findHoles();
+  void labelRegions();
 
   // kStepBit[di + 1][dj + 1]: bit of a forward step, -1 for the backward ones.
   static constexpr int kStepBit[3][3] = {{-1, -1, -1}, {-1, -1, 3}, {0, 1, 2}};
@@ -108,6 +112,7 @@ class CSpaceGrid {
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> steps_;  // bit per forward step, see stepFree
   std::vector<float> potential_;
+  std::vector<int> region_;  // see region()
   std::vector<GridHole> holes_;
   JointVector metric_ = JointVector(1.0, 1.0);
   double potential_weight_ = 0.0;
