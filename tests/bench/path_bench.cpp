@@ -2,13 +2,12 @@
 // + spline + clearance check per public move (median, p90 and max over the moves).
 // Targets (docs/performance.md): grid build <= 200 ms per set, path median <= 3 ms per move.
 
-#include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
+#include "bench_measures.hpp"
 #include "cyber/planner/cspace_grid.hpp"
 #include "cyber/planner/path_planner.hpp"
 #include "public_moves.hpp"
@@ -37,19 +36,6 @@ void BM_GridBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_GridBuild)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5)];
-}
-
-// CPU time of this thread: on a shared machine wall-clock medians drift with the load.
-double threadCpuMs() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
-}
-
 // One iteration plans every public move once; counters report per-move statistics over all
 // iterations (wall clock and thread CPU time per plan() call, and the planner's own stage times).
 // Argument 0: the reference configuration as loaded; 1: the code's default smoothing settings.
@@ -67,11 +53,11 @@ void BM_PathPublicMoves(benchmark::State& state) {
   for (auto _ : state) {
     planned = refused = 0;
     for (const auto& move : moves) {
-      const double c0 = threadCpuMs();
+      const double c0 = cyber::bench::threadCpuMs();
       const auto t0 = std::chrono::steady_clock::now();
       const auto result = planner.plan(move.from, move.to, move.pieces);
       total_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
-      cpu_ms.push_back(threadCpuMs() - c0);
+      cpu_ms.push_back(cyber::bench::threadCpuMs() - c0);
       if (result.ok()) {
         ++planned;
         search_ms.push_back(result.value().search_ms);
@@ -82,14 +68,10 @@ void BM_PathPublicMoves(benchmark::State& state) {
       benchmark::DoNotOptimize(result);
     }
   }
-  state.counters["move_median_ms"] = percentile(total_ms, 0.5);
-  state.counters["move_p90_ms"] = percentile(total_ms, 0.9);
-  state.counters["move_max_ms"] = percentile(total_ms, 1.0);
-  state.counters["cpu_median_ms"] = percentile(cpu_ms, 0.5);
-  state.counters["cpu_p90_ms"] = percentile(cpu_ms, 0.9);
-  state.counters["cpu_max_ms"] = percentile(cpu_ms, 1.0);
-  state.counters["search_median_ms"] = percentile(search_ms, 0.5);
-  state.counters["smooth_median_ms"] = percentile(smooth_ms, 0.5);
+  cyber::bench::reportMs(state, "move", total_ms);
+  cyber::bench::reportMs(state, "cpu", cpu_ms);
+  state.counters["search_median_ms"] = cyber::bench::percentile(search_ms, 0.5);
+  state.counters["smooth_median_ms"] = cyber::bench::percentile(smooth_ms, 0.5);
   state.counters["planned"] = planned;
   state.counters["no_path"] = refused;
 }

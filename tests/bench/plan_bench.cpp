@@ -4,38 +4,16 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
-#include <ctime>
 #include <vector>
 
+#include "bench_measures.hpp"
 #include "cyber/planner/motion_planner.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 
 namespace cyber::planner {
 namespace {
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t i = std::min(v.size() - 1, static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5));
-  return v[i];
-}
-
-void report(benchmark::State& state, const char* name, const std::vector<double>& v) {
-  state.counters[std::string(name) + "_median_ms"] = percentile(v, 0.5);
-  state.counters[std::string(name) + "_p90_ms"] = percentile(v, 0.9);
-  state.counters[std::string(name) + "_p99_ms"] = percentile(v, 0.99);
-  state.counters[std::string(name) + "_max_ms"] = percentile(v, 1.0);
-}
-
-// CPU time of the calling thread: on a loaded machine the wall time measures the other programs.
-double threadCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
 
 void BM_PlannerCreate(benchmark::State& state) {
   for (auto _ : state) {
@@ -59,9 +37,9 @@ void BM_PublicMoves(benchmark::State& state) {
         request.goal = move.to;
         request.pieces = move.pieces;
         const auto t0 = std::chrono::steady_clock::now();
-        const double cpu0 = threadCpuMs();
+        const double cpu0 = bench::threadCpuMs();
         const auto plan = planner.value().plan(request);
-        cpu_ms.push_back(threadCpuMs() - cpu0);
+        cpu_ms.push_back(bench::threadCpuMs() - cpu0);
         const double wall = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
         if (!plan) {
           (plan.status() == PlanStatus::kNoPath ? no_path : failed) += r == 0 ? 1 : 0;
@@ -76,10 +54,10 @@ void BM_PublicMoves(benchmark::State& state) {
       }
     }
   }
-  report(state, "path", path_ms);
-  report(state, "topp", topp_ms);
-  report(state, "total", total_ms);
-  report(state, "cpu", cpu_ms);
+  bench::reportMs(state, "path", path_ms);
+  bench::reportMs(state, "topp", topp_ms);
+  bench::reportMs(state, "total", total_ms);
+  bench::reportMs(state, "cpu", cpu_ms);
   state.counters["planned_moves"] = planned;
   state.counters["no_path_moves"] = no_path;
   state.counters["failed_moves"] = failed;
@@ -112,9 +90,9 @@ void BM_SpliceMoves(benchmark::State& state) {
       request.start_velocity = now.qdot;
       request.goal = moves[(i + 1) % moves.size()].to;
       request.pieces = moves[i].pieces;
-      const double cpu0 = threadCpuMs();
+      const double cpu0 = bench::threadCpuMs();
       const auto plan = planner.value().plan(request);
-      cpu_ms.push_back(threadCpuMs() - cpu0);
+      cpu_ms.push_back(bench::threadCpuMs() - cpu0);
       if (!plan) {
         failed += plan.status() == PlanStatus::kNoPath ? 0 : 1;
         continue;
@@ -123,8 +101,8 @@ void BM_SpliceMoves(benchmark::State& state) {
       total_ms.push_back(plan.value().times_ms.total);
     }
   }
-  report(state, "total", total_ms);
-  report(state, "cpu", cpu_ms);
+  bench::reportMs(state, "total", total_ms);
+  bench::reportMs(state, "cpu", cpu_ms);
   state.counters["planned_moves"] = planned;
   state.counters["failed_moves"] = failed;
 }

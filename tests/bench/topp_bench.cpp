@@ -12,11 +12,10 @@
 #include <memory>
 #include <vector>
 
-#include <time.h>
-
 #include <benchmark/benchmark.h>
 
 #include "../unit/planner/topp_fixtures.hpp"
+#include "bench_measures.hpp"
 #include "cyber/planner/path_planner.hpp"
 #include "cyber/planner/topp.hpp"
 #include "cyber/planner/topp_augmented_lagrangian.hpp"
@@ -26,20 +25,6 @@
 
 namespace cyber::planner {
 namespace {
-
-// CPU time of this thread [ms]: the machine is shared, so wall-clock medians also measure the
-// neighbours; both are reported.
-double threadCpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
-}
-
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  return v[static_cast<size_t>(p * static_cast<double>(v.size() - 1) + 0.5)];
-}
 
 const std::vector<std::shared_ptr<const GeometricPath>>& publicPaths() {
   static const std::vector<std::shared_ptr<const GeometricPath>> paths = [] {
@@ -66,9 +51,9 @@ void BM_ToppPublicMoves(benchmark::State& state) {
     for (const auto& path : paths) {
       ToppReport report;
       const auto t0 = std::chrono::steady_clock::now();
-      const double c0 = threadCpuMs();
+      const double c0 = bench::threadCpuMs();
       const auto result = solver.solve(path, model.elevator_drive, model.arm_drive, 0.0, &report);
-      cpu_ms.push_back(threadCpuMs() - c0);
+      cpu_ms.push_back(bench::threadCpuMs() - c0);
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
       refinements.push_back(report.refinements);
       if (!result.ok()) ++failed;
@@ -77,12 +62,8 @@ void BM_ToppPublicMoves(benchmark::State& state) {
   }
   state.counters["moves"] = static_cast<double>(paths.size());
   state.counters["failed"] = failed;
-  state.counters["median_ms"] = percentile(ms, 0.5);
-  state.counters["p90_ms"] = percentile(ms, 0.9);
-  state.counters["max_ms"] = percentile(ms, 1.0);
-  state.counters["cpu_median_ms"] = percentile(cpu_ms, 0.5);
-  state.counters["cpu_p90_ms"] = percentile(cpu_ms, 0.9);
-  state.counters["cpu_max_ms"] = percentile(cpu_ms, 1.0);
+  bench::reportMs(state, "", ms);
+  bench::reportMs(state, "cpu", cpu_ms);
   state.counters["refined_share"] =
       static_cast<double>(std::count_if(refinements.begin(), refinements.end(), [](double r) { return r > 0; })) /
       static_cast<double>(std::max<size_t>(1, refinements.size()));

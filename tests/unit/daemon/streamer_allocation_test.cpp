@@ -63,16 +63,6 @@ struct BusSource final : RobotFrameSource {
   }
 };
 
-class NanAfter final : public SetpointSource {
- public:
-  double durationS() const override { return 1.0; }
-  JointSetpoints at(double t) const override {
-    JointSetpoints s;
-    s.position = JointVector(t > 0.05 ? std::numeric_limits<double>::quiet_NaN() : 0.2, 1.57);
-    return s;
-  }
-};
-
 TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   const auto& robot = cyber::test::referenceModel();
   StreamerSettings settings;
@@ -133,8 +123,10 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   run(300, splice, true, true);    // splice and run to the end, every CAN write failing
   run(40, nullptr, false, false);  // heartbeat lost: stop
   run(10, nullptr, true, false);   // re-enabled: hold measured
-  ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
-                               {now, Segment{std::make_shared<NanAfter>(), 3, 0}, true, 3}, *faulty, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      Program::holdAt(streamer.epoch(), a),
+      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.05, JointVector(0.2, 1.57)), 3, 0}, true, 3}, *faulty,
+      dropped));
   run(40, faulty, true, false);  // fault
   EXPECT_EQ(allocations, 0);
   EXPECT_GT(writer.framesSent(), 0);

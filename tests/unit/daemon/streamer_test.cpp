@@ -273,24 +273,16 @@ TEST_F(StreamerTest, StopRequestHoldsTheCommandedPositionAndRefusesNewPrograms) 
   EXPECT_EQ(events.back().kind, StreamEventKind::kRejected);
 }
 
-class NanTrajectory final : public SetpointSource {
- public:
-  double durationS() const override { return 1.0; }
-  JointSetpoints at(double t_s) const override {
-    JointSetpoints s;
-    s.position = JointVector(t_s > 0.02 ? std::numeric_limits<double>::quiet_NaN() : 0.2, 1.0);
-    return s;
-  }
-};
-
 TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPositionIsHeld) {
   const JointVector a(0.2, 1.0);
   feed(a);
   tick();
   auto* p = new Program();
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
-                               {now, Segment{std::make_shared<NanTrajectory>(), 5, 0}, true, 1}, *p, dropped));
+  ASSERT_TRUE(test::spliceInto(
+      Program::holdAt(streamer.epoch(), a),
+      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.02, JointVector(0.2, 1.0)), 5, 0}, true, 1}, *p,
+      dropped));
   int sent = 0, faulted = 0;
   TickOutput out;
   const MonoNs begin = now;

@@ -4,6 +4,7 @@
 // and exact, so continuity tests have something to compare against.
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "cyber/daemon/setpoint_source.hpp"
@@ -49,6 +50,24 @@ class HermiteTrajectory final : public SetpointSource {
   JointVector p0_, v0_, p1_;
   double duration_s_;
   planner::DriveParams elevator_, arm_;
+};
+
+// A trajectory that holds `position` and turns its elevator setpoint to NaN after nan_after_s: a
+// setpoint no frame can carry.
+class NanAfterTrajectory final : public SetpointSource {
+ public:
+  NanAfterTrajectory(double nan_after_s, JointVector position) : nan_after_s_(nan_after_s), position_(position) {}
+  [[nodiscard]] double durationS() const override { return 1.0; }
+  [[nodiscard]] JointSetpoints at(double t_s) const override {
+    JointSetpoints s;
+    s.position = position_;
+    if (t_s > nan_after_s_) s.position[0] = std::numeric_limits<double>::quiet_NaN();
+    return s;
+  }
+
+ private:
+  double nan_after_s_;
+  JointVector position_;
 };
 
 inline SharedSetpointSource makeHermite(const JointVector& start, const JointVector& start_velocity,
