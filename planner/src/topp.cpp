@@ -60,7 +60,22 @@ double profileDuration(const topp::Problem& problem, const std::vector<double>& 
   return t;
 }
 
-// Samples the trajectory every `step` seconds (and at its end) and raises the margins of every
+// The optimiser's row kind of a drive limit, and the report's peak ratio it raises.
+struct KindAndPeak {
+  LimitKind kind;
+  double& peak;
+};
+KindAndPeak kindAndPeak(DriveLimit limit, ToppReport& report) {
+  switch (limit) {
+    case DriveLimit::kVoltage: return {LimitKind::kVoltage, report.peak_voltage_ratio};
+    case DriveLimit::kCurrent: return {LimitKind::kCurrent, report.peak_current_ratio};
+    case DriveLimit::kVelocity: return {LimitKind::kVelocity, report.peak_velocity_ratio};
+    case DriveLimit::kAcceleration: break;
+  }
+  return {LimitKind::kAcceleration, report.peak_acceleration_ratio};
+}
+
+// Samples the trajectory every limit_check_step_s (and at its end) and raises the margins of every
 // interval where a limit is exceeded by more than half the accepted overshoot. Returns true when
 // no sample exceeds a limit by more than that. Fills the peak ratios of the report.
 bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, topp::LimitMargins& margins,
@@ -68,10 +83,7 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
   // Accept only up to 60 % of the tolerance at the check's own sample times, so that sampling at
   // other instants (the streamer's, a verifier's) stays within the whole tolerance.
   const double tolerance = kCheckShare * settings.limit_check_tolerance;
-  const double duration = trajectory.duration_s();
-  const double step = settings.limit_check_step_s;
   const std::vector<double>& t_grid = trajectory.tGrid();
-  const long samples = static_cast<long>(std::floor(duration / step)) + 1;
   report.peak_voltage_ratio = report.peak_current_ratio = 0.0;
   report.peak_velocity_ratio = report.peak_acceleration_ratio = 0.0;
 
@@ -85,28 +97,17 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
   // Few intervals exceed at once; a small fixed buffer would do, but the count is unbounded.
   std::vector<Excess> excesses;
   size_t k = 0;
-  for (long i = 0; i <= samples; ++i) {
-    const double t = i == samples ? duration : std::min(duration, static_cast<double>(i) * step);
-    while (k + 2 < t_grid.size() && t_grid[k + 1] <= t) ++k;
-    const TrajectorySample sample = trajectory.sample(t);
-    for (int j = 0; j < kJointCount; ++j) {
-      const DriveParams& d = trajectory.drive(j);
-      auto judge = [&](double value, double limit, LimitKind kind, double& peak) {
-        const double ratio = std::abs(value) / limit;
-        peak = std::max(peak, ratio);
-        if (ratio > 1.0 + tolerance) within = false;
-        if (ratio > 1.0 + 0.5 * tolerance) {
-          excesses.push_back({static_cast<int>(k), j, kind, std::abs(value) - limit, limit});
-        }
-      };
-      judge(sample.volts[j], d.voltage_limit_volts, LimitKind::kVoltage, report.peak_voltage_ratio);
-      judge(sample.amps[j], d.current_limit_amps, LimitKind::kCurrent, report.peak_current_ratio);
-      if (d.velocity_limit) judge(sample.qdot[j], *d.velocity_limit, LimitKind::kVelocity, report.peak_velocity_ratio);
-      if (d.acceleration_limit) {
-        judge(sample.qddot[j], *d.acceleration_limit, LimitKind::kAcceleration, report.peak_acceleration_ratio);
-      }
-    }
-  }
+  forEachLimitSample(trajectory, settings.limit_check_step_s,
+                     [&](double t, int j, DriveLimit which, double value, double limit) {
+                       while (k + 2 < t_grid.size() && t_grid[k + 1] <= t) ++k;
+                       const auto [kind, peak] = kindAndPeak(which, report);
+                       const double ratio = std::abs(value) / limit;
+                       peak = std::max(peak, ratio);
+                       if (ratio > 1.0 + tolerance) within = false;
+                       if (ratio > 1.0 + 0.5 * tolerance) {
+                         excesses.push_back({static_cast<int>(k), j, kind, std::abs(value) - limit, limit});
+                       }
+                     });
   if (!within) {
     // The bulge between the grid points stays about the same when the limits at the ends move,
     // so lowering the end limits by the excess (plus a little) brings the peak to the limit.

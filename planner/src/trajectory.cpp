@@ -122,20 +122,11 @@ double Trajectory::pathParameterAt(double t) const {
 }
 
 bool withinDriveLimits(const Trajectory& trajectory, double step_s, double tolerance) {
-  const double duration = trajectory.duration_s();
-  const long samples = static_cast<long>(std::floor(duration / step_s)) + 1;
-  for (long i = 0; i <= samples; ++i) {
-    const TrajectorySample s =
-        trajectory.sample(i == samples ? duration : std::min(duration, static_cast<double>(i) * step_s));
-    for (int j = 0; j < kJointCount; ++j) {
-      const DriveParams& d = trajectory.drive(j);
-      auto over = [&](double value, double limit) { return std::abs(value) > limit * (1.0 + tolerance); };
-      if (over(s.volts[j], d.voltage_limit_volts) || over(s.amps[j], d.current_limit_amps)) return false;
-      if (d.velocity_limit && over(s.qdot[j], *d.velocity_limit)) return false;
-      if (d.acceleration_limit && over(s.qddot[j], *d.acceleration_limit)) return false;
-    }
-  }
-  return true;
+  bool within = true;
+  forEachLimitSample(trajectory, step_s, [&](double, int, DriveLimit, double value, double limit) {
+    if (std::abs(value) > limit * (1.0 + tolerance)) within = false;
+  });
+  return within;
 }
 
 bool withinDriveLimits(const Trajectory& trajectory, const ToppSettings& settings) {

@@ -3,7 +3,9 @@
 // section 3. Between grid points the path acceleration a = s'' is constant (b = s'^2 linear in s),
 // so positions, velocities and accelerations follow exactly from the grid values (b_k, a_k).
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -60,6 +62,30 @@ class Trajectory {
   std::vector<double> a_grid_;  // per interval: (b_{k+1} - b_k) / (2 ds_k)
   std::vector<double> t_grid_;
 };
+
+// The drive limits a trajectory is held to (DriveParams): voltage and current always, velocity and
+// acceleration where the drive sets them.
+enum class DriveLimit { kVoltage, kCurrent, kVelocity, kAcceleration };
+
+// Calls visit(t_s, joint, limit, value, bound) for every drive limit of every joint at every
+// sample `step_s` apart and at the last instant: the one definition of what the 1 ms limit check
+// samples (algorithm.md section 3), for the optimiser's check and for profiles made outside it.
+template <class Visit>
+void forEachLimitSample(const Trajectory& trajectory, double step_s, Visit&& visit) {
+  const double duration = trajectory.duration_s();
+  const long samples = static_cast<long>(std::floor(duration / step_s)) + 1;
+  for (long i = 0; i <= samples; ++i) {
+    const double t = i == samples ? duration : std::min(duration, static_cast<double>(i) * step_s);
+    const TrajectorySample s = trajectory.sample(t);
+    for (int j = 0; j < kJointCount; ++j) {
+      const DriveParams& d = trajectory.drive(j);
+      visit(t, j, DriveLimit::kVoltage, s.volts[j], d.voltage_limit_volts);
+      visit(t, j, DriveLimit::kCurrent, s.amps[j], d.current_limit_amps);
+      if (d.velocity_limit) visit(t, j, DriveLimit::kVelocity, s.qdot[j], *d.velocity_limit);
+      if (d.acceleration_limit) visit(t, j, DriveLimit::kAcceleration, s.qddot[j], *d.acceleration_limit);
+    }
+  }
+}
 
 // Whether every sample `step_s` apart (and the last) keeps each joint's voltage, current and
 // optional velocity and acceleration within its limit times (1 + tolerance).
