@@ -76,15 +76,8 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
   if (r.status != topp::ReachabilityStatus::kOk || r.start_b != problem.b_start) {
     return R::failure(PlanStatus::kInfeasibleStart, "the start speed cannot be braked to rest on this line");
   }
-  std::vector<double> s_grid(problem.s.size()), b_grid(problem.s.size());
-  for (size_t k = 0; k < s_grid.size(); ++k) {
-    s_grid[k] = problem.s[k] * length;
-    b_grid[k] = profile[k] * length * length;
-  }
-  s_grid.back() = length;
-  b_grid.front() = b_start;
-  b_grid.back() = 0.0;
-  R trajectory = Trajectory::create(line, model.elevator_drive, model.arm_drive, std::move(s_grid), std::move(b_grid));
+  R trajectory = topp::unitProfileTrajectory(
+      line, drives, problem, [&](size_t k) { return profile[k]; }, length * length, b_start);
   if (!trajectory) return trajectory;
   if (!withinDriveLimits(trajectory.value(), model.planner.topp)) {
     return R::failure(PlanStatus::kSolverNotConverged, "the braking profile exceeds a limit between its rows");

@@ -55,6 +55,21 @@ bool consistent(const Trajectory& trajectory) {
   return c.position_error <= kMaxPositionError && c.velocity_error <= kMaxVelocityError;
 }
 
+// A timed candidate with its columns' verdict, judged once. Candidates rank by agreeing columns
+// first, then by duration.
+struct Judged {
+  Result<Plan> plan;
+  bool consistent = false;
+  [[nodiscard]] std::pair<int, double> rank() const {
+    return {consistent ? 0 : 1, plan ? plan.value().trajectory->duration_s() : std::numeric_limits<double>::infinity()};
+  }
+};
+
+Judged judged(Result<Plan> plan) {
+  const bool agrees = plan && consistent(*plan.value().trajectory);
+  return {std::move(plan), agrees};
+}
+
 // A very short move from rest (tens of milliseconds) whose columns disagree at 1 ms: its switch
 // from full acceleration to full braking is a large share of its peak speed, and the trapezoid
 // across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
@@ -252,25 +267,19 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
     // Each candidate is timed only when its estimate leaves it a chance to win (docs/moving-starts.md).
     const double direct_estimate_s = estimatedSeconds(model_, direct_paths, request.start_velocity);
     const bool time_direct = direct_paths && kMovingEstimateLow * direct_estimate_s <= stop_first.estimate_s;
-    Result<Plan> direct =
-        time_direct ? timePaths(model_, direct_paths.value(), request.start_velocity) : Result<Plan>(inconsistent());
+    Judged direct = judged(time_direct ? timePaths(model_, direct_paths.value(), request.start_velocity)
+                                       : Result<Plan>(inconsistent()));
     const double stop_first_low_s =
         stop_first.stop ? stop_first.stop.value().duration_s() + kRestEstimateLow * stop_first.onward_estimate_s : 0.0;
-    const bool direct_wins =
-        direct && consistent(*direct.value().trajectory) && direct.value().trajectory->duration_s() < stop_first_low_s;
-    Result<Plan> stopped =
-        direct_wins ? Result<Plan>(inconsistent()) : stopThenPlan(model_, paths, request, stop_first);
-    const bool stopped_agrees = stopped && consistent(*stopped.value().trajectory);
-    if (!stopped_agrees && !time_direct && direct_paths) {
-      direct = timePaths(model_, direct_paths.value(), request.start_velocity);
+    const bool direct_wins = direct.consistent && direct.plan.value().trajectory->duration_s() < stop_first_low_s;
+    Judged stopped =
+        judged(direct_wins ? Result<Plan>(inconsistent()) : stopThenPlan(model_, paths, request, stop_first));
+    if (!stopped.consistent && !time_direct && direct_paths) {
+      direct = judged(timePaths(model_, direct_paths.value(), request.start_velocity));
     }
-    // Columns that agree first, then the faster.
-    auto rank = [](const Result<Plan>& p) {
-      return std::pair{p && consistent(*p.value().trajectory) ? 0 : 1,
-                       p ? p.value().trajectory->duration_s() : std::numeric_limits<double>::infinity()};
-    };
-    if (!direct && !direct_paths) direct = direct_paths.error();
-    chosen = stopped && (!direct || rank(stopped) < rank(direct)) ? std::move(stopped) : std::move(direct);
+    if (!direct.plan && !direct_paths) direct.plan = direct_paths.error();
+    chosen = stopped.plan && (!direct.plan || stopped.rank() < direct.rank()) ? std::move(stopped.plan)
+                                                                              : std::move(direct.plan);
   }
   if (!chosen) return chosen;
   Plan plan = std::move(chosen).value();

@@ -258,17 +258,10 @@ Result<double> ToppSolver::warmStart(const Move& move, bool first, ToppReport& r
 // The solution in state_ back in path units: b = (ds/dt)^2 = b_scaled length^2 / T^2.
 Result<Trajectory> ToppSolver::solvedTrajectory(const Move& move, double time_scale) const {
   const topp::VariableLayout layout{problem_.gridPoints()};
-  const double to_path_units = move.length_squared / (time_scale * time_scale);
-  std::vector<double> s_grid(problem_.s.size());
-  std::vector<double> b_grid(problem_.s.size());
-  for (int k = 0; k < problem_.gridPoints(); ++k) {
-    s_grid[static_cast<size_t>(k)] = problem_.s[static_cast<size_t>(k)] * move.length;
-    b_grid[static_cast<size_t>(k)] = std::max(0.0, state_.x[layout.b(k)]) * to_path_units;
-  }
-  s_grid.back() = move.length;
-  b_grid.front() = problem_.b_start == move.unit_b_start ? move.b_start : problem_.b_start * move.length_squared;
-  b_grid.back() = 0.0;
-  return Trajectory::create(move.path, move.drives[kElevator], move.drives[kArm], std::move(s_grid), std::move(b_grid));
+  const double b_start = problem_.b_start == move.unit_b_start ? move.b_start : problem_.b_start * move.length_squared;
+  return topp::unitProfileTrajectory(
+      move.path, move.drives, problem_, [&](size_t k) { return state_.x[layout.b(static_cast<int>(k))]; },
+      move.length_squared / (time_scale * time_scale), b_start);
 }
 
 // One attempt on the current rows: warm start, augmented Lagrangian, continuous check.

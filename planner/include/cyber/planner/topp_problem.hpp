@@ -7,13 +7,16 @@
 // limit is imposed at BOTH ends of the interval with that interval's a_k: the trajectory between
 // grid points then only deviates from the limits by the curvature of the path and of sqrt(b).
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cyber/planner/geometric_path.hpp"
 #include "cyber/planner/robot_model.hpp"
+#include "cyber/planner/trajectory.hpp"
 
 namespace cyber::planner::topp {
 
@@ -107,5 +110,25 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 // `error` set when a limit cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
 bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
                std::string* error);
+
+// The trajectory along `path` of a speed profile on `problem`'s unit-length grid: s scales by the
+// path's length and b by b_scale (the length squared, over the time scale squared when time was
+// scaled). unit_b(k) is the profile at node k, clamped at 0. The ends are set exactly: to b_start,
+// the move's own (scaling it there and back would round it), and to rest.
+template <class UnitB>
+Result<Trajectory> unitProfileTrajectory(std::shared_ptr<const GeometricPath> path,
+                                         const std::array<DriveParams, kJointCount>& drives, const Problem& problem,
+                                         UnitB&& unit_b, double b_scale, double b_start) {
+  const double length = path->length();
+  std::vector<double> s_grid(problem.s.size()), b_grid(problem.s.size());
+  for (size_t k = 0; k < s_grid.size(); ++k) {
+    s_grid[k] = problem.s[k] * length;
+    b_grid[k] = std::max(0.0, unit_b(k)) * b_scale;
+  }
+  s_grid.back() = length;
+  b_grid.front() = b_start;
+  b_grid.back() = 0.0;
+  return Trajectory::create(std::move(path), drives[kElevator], drives[kArm], std::move(s_grid), std::move(b_grid));
+}
 
 }  // namespace cyber::planner::topp
