@@ -99,6 +99,47 @@ class Gaps(unittest.TestCase):
         self.assertEqual(hil.longest_gap([1.0], 0.0, 2.0, default=0.0), 0.0)
 
 
+class HoldFit(unittest.TestCase):
+    """daemon_check's hold_fit: a hold fits a logged state, or the newest one carried along its
+    velocity across states the logger missed; an old command or a stale state does not fit."""
+
+    @staticmethod
+    def state(t_s, elevator_m, arm_rad, elevator_mps=0.0, arm_radps=0.0):
+        return dict(utime=int(round(t_s * 1e6)), elevator_m=elevator_m, elevator_mps=elevator_mps, arm_rad=arm_rad,
+                    arm_radps=arm_radps)
+
+    def setUp(self):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import daemon_check
+        self.dc = daemon_check
+        # Sliding down at 0.6 m/s and 1.5 rad/s; the logger kept a state every 25 ms up to 10.0 s.
+        self.states = [self.state(10.0 - 0.025 * k, 0.40 + 0.015 * k, 2.0 + 0.0375 * k, -0.6, -1.5) for k in range(6)]
+
+    def fit(self, hold, t_s):
+        return self.dc.hold_fit(hold, self.states, t_s, 0.15)
+
+    def test_a_logged_state_fits(self):
+        score, m, carried_s = self.fit((0.415, 2.0375), 10.01)
+        self.assertLessEqual(score, 1.0)
+        self.assertEqual((m["utime"], carried_s), (self.states[1]["utime"], 0.0))
+
+    def test_the_newest_state_carried_across_a_logging_gap_fits(self):
+        # The daemon held the plant 20 ms past the last logged state: 12 mm and 30 mrad further on.
+        score, m, carried_s = self.fit((0.388, 1.970), 10.024)
+        self.assertLessEqual(score, 1.0)
+        self.assertEqual(m["utime"], self.states[0]["utime"])
+        self.assertAlmostEqual(carried_s, 0.020, delta=0.002)
+
+    def test_holds_off_the_line_or_beyond_the_carry_do_not_fit(self):
+        self.assertGreater(self.fit((0.388 + 0.17, 1.970), 10.024)[0], 1.0)  # the last command
+        self.assertGreater(self.fit((0.388, 2.0), 10.024)[0], 1.0)  # the joints from different times
+        far_s = self.dc.MAX_CARRY_S + 0.02
+        self.assertGreater(self.fit((0.40 - 0.6 * far_s, 2.0 - 1.5 * far_s), 10.0 + far_s)[0], 1.0)
+
+    def test_no_state_in_the_window(self):
+        self.assertEqual(self.fit((0.4, 2.0), 11.0)[1], None)
+
+
 class StallVerdict(unittest.TestCase):
     """daemon_check.py stalled: a silence counts only once the simulator's heartbeat has begun."""
 
