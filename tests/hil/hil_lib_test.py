@@ -140,6 +140,40 @@ class HoldFit(unittest.TestCase):
         self.assertEqual(self.fit((0.4, 2.0), 11.0)[1], None)
 
 
+class SpliceVoid(unittest.TestCase):
+    """daemon_check's splice_outlasted: a motion run is void when goal 2 ended while goal 3 was
+    still being planned, not when goal 2 had ended before goal 3's planning began."""
+
+    def outlasted(self, lines):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import daemon_check
+        with tempfile.TemporaryDirectory() as out:
+            with open(os.path.join(out, "daemon.log"), "w") as f:
+                f.write("".join(f"2026-12-02 13:12:{line}\n" for line in lines))
+            return daemon_check.splice_outlasted(out)
+
+    def test_goal_2_ending_while_goal_3_is_planned_is_void(self):
+        self.assertTrue(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
+                                        "12.917 info request 2 done",
+                                        "12.922 info request 3 executing (0.987 s, planned in 2089.5 ms)"]))
+
+    def test_a_plan_past_its_splice_point_is_void(self):
+        self.assertTrue(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
+                                        "11.000 warning request 3: plan took 3874.1 ms, missing its splice point",
+                                        "12.917 info request 2 done",
+                                        "13.800 info request 3 executing (0.987 s, planned in 850.7 ms)"]))
+
+    def test_goal_3_planned_only_after_goal_2_ended_is_not_void(self):
+        self.assertFalse(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
+                                         "12.917 info request 2 done",
+                                         "14.000 info request 3 executing (0.987 s, planned in 900.0 ms)"]))
+
+    def test_a_splice_is_not_void(self):
+        self.assertFalse(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
+                                         "11.500 info request 3 executing (0.987 s, planned in 2089.5 ms)",
+                                         "11.501 info request 2 cancelled: replaced by request 3"]))
+
+
 class StallVerdict(unittest.TestCase):
     """daemon_check.py stalled: a silence counts only once the simulator's heartbeat has begun."""
 
