@@ -497,15 +497,13 @@ def hold_fit(hold, states, t, window_s, step_s=0.001):
     recent = [m for m in states if t - window_s <= m["utime"] * 1e-6 <= t]
     if not recent:
         return math.inf, None, 0.0
-    fits = [(score(m["elevator_m"], m["arm_rad"]), i, 0.0) for i, m in enumerate(recent)]
-    newest = max(range(len(recent)), key=lambda i: recent[i]["utime"])
-    m = recent[newest]
+    fits = [(score(m["elevator_m"], m["arm_rad"]), m, 0.0) for m in recent]
+    m = max(recent, key=lambda m: m["utime"])
     carry_s = min(t - m["utime"] * 1e-6, MAX_CARRY_S)
     for k in range(1, int(carry_s / step_s) + 1):
         dt = k * step_s
-        fits.append((score(m["elevator_m"] + m["elevator_mps"] * dt, m["arm_rad"] + m["arm_radps"] * dt), newest, dt))
-    best, i, carried_s = min(fits, key=lambda x: x[0])
-    return best, recent[i], carried_s
+        fits.append((score(m["elevator_m"] + m["elevator_mps"] * dt, m["arm_rad"] + m["arm_radps"] * dt), m, dt))
+    return min(fits, key=lambda fit: fit[0])
 
 
 def check_holds_measured(c, run, t_from, what, must_differ_from=None):
