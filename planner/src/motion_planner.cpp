@@ -33,6 +33,10 @@ constexpr int kGentlerTries = 6;
 // a multiple of this fraction of a step, up to kSlowerSteps of them (two steps).
 constexpr double kSlowerStep = 0.125;
 constexpr int kSlowerSteps = 16;
+// Beyond this duration a move has many acceleration jumps, spread in time, and a uniform slowdown
+// of at most two steps moves each by a different fraction of a step: it cannot place them all,
+// and trying costs kSlowerSteps full checks (docs/moving-starts.md, "Consistent columns").
+constexpr double kSlowerMaxDurationS = 1.0;
 // The reachability pass's estimate (path_timing.hpp, on this many points) is never below the
 // optimiser's duration on the public moves and their splices, and at most this much above it:
 // 10 % from a moving start, 2.5 % from rest (docs/moving-starts.md, "Planning time").
@@ -77,6 +81,7 @@ Judged judged(Result<Plan> plan) {
 // slowdown that puts it where the columns agree, within the limits, is taken.
 std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
   const double duration = trajectory.duration_s();
+  if (duration > kSlowerMaxDurationS) return std::nullopt;
   for (int i = 1; i <= kSlowerSteps && duration > 0.0; ++i) {
     Result<Trajectory> slower = slowedDown(trajectory, 1.0 + i * kSlowerStep * kConsistencyStepS / duration);
     if (slower && consistent(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {

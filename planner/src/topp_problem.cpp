@@ -43,6 +43,17 @@ bool addRow(Problem& problem, LinearRow row, double scale, std::string* error) {
   return true;
 }
 
+// The velocity margin of node n: the larger of those of the two intervals that share it.
+double nodeMargin(const Problem& problem, const LimitMargins& margins, int n, int j) {
+  double margin = 0.0;
+  for (const int interval : {n - 1, n}) {
+    if (interval >= 0 && interval < problem.intervals()) {
+      margin = std::max(margin, margins.get(interval, j, LimitKind::kVelocity));
+    }
+  }
+  return margin;
+}
+
 // The share of the grid placed evenly in time when a speed profile is given (sampleGrid).
 constexpr double kTimeShare = 0.4;
 constexpr double kMaxTimeDensity = 8.0;
@@ -229,9 +240,12 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
           LinearRow accel{k, at, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
           if (!addRow(problem, accel, *d.acceleration_limit, error)) return false;
         }
-        // The velocity limit involves b only: once per node (and at the midpoints).
-        if (d.velocity_limit && (place != 1 || k + 1 == intervals)) {
-          const double v_max = std::max(0.0, *d.velocity_limit - margins.get(k, j, LimitKind::kVelocity));
+        // The velocity limit involves b only: one row per node; between nodes the continuous
+        // check holds it, as it does every limit. Rows at the midpoints as well would make three
+        // rows bound two b's along a stretch at the limit: the multipliers are then not unique and
+        // the solver needs 20-50 times more iterations (docs/algorithm.md section 3).
+        if (d.velocity_limit && place != 2 && (place == 0 || k + 1 == intervals)) {
+          const double v_max = std::max(0.0, *d.velocity_limit - nodeMargin(problem, margins, k + place, j));
           LinearRow velocity{k, at, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
           if (!addRow(problem, velocity, *d.velocity_limit * *d.velocity_limit, error)) return false;
         }

@@ -75,6 +75,16 @@ size_t Trajectory::intervalAtS(double s) const {
 }
 
 TrajectorySample Trajectory::sample(double t) const {
+  TrajectorySample out = sampleMotion(t);
+  for (int j = 0; j < kJointCount; ++j) {
+    const DriveParams& d = drives_[static_cast<size_t>(j)];
+    out.volts[j] = d.volts(out.q[j], out.qdot[j], out.qddot[j]);
+    out.amps[j] = d.amps(out.volts[j], out.qdot[j]);
+  }
+  return out;
+}
+
+TrajectorySample Trajectory::sampleMotion(double t) const {
   TrajectorySample out;
   const double duration = duration_s();
   const bool holding = !(t <= duration);  // after the end (or NaN): hold the goal at rest
@@ -94,11 +104,6 @@ TrajectorySample Trajectory::sample(double t) const {
   out.q = p.q;
   out.qdot = p.dq_ds * out.sdot;
   out.qddot = p.d2q_ds2 * (out.sdot * out.sdot) + p.dq_ds * out.sddot;  // eq. 11: q'' b + q' a
-  for (int j = 0; j < kJointCount; ++j) {
-    const DriveParams& d = drives_[static_cast<size_t>(j)];
-    out.volts[j] = d.volts(out.q[j], out.qdot[j], out.qddot[j]);
-    out.amps[j] = d.amps(out.volts[j], out.qdot[j]);
-  }
   return out;
 }
 

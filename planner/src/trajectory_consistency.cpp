@@ -19,32 +19,30 @@ ColumnConsistency columnConsistency(const Trajectory& trajectory, double step_s)
   const long count = steps + 1 + (tail ? 1 : 0);
   auto time_of = [&](long i) { return i > steps ? duration : static_cast<double>(i) * step_s; };
 
-  // First pass: each joint's scale; second: the integrals against it.
-  JointVector low = trajectory.sample(0.0).q, high = low, peak = JointVector::Zero();
-  for (long i = 0; i < count; ++i) {
-    const TrajectorySample s = trajectory.sample(time_of(i));
+  // One pass: the largest raw errors, then each joint's scale (travel and peak speed over the
+  // same samples) divides them, as the scale is the same for every sample.
+  TrajectorySample previous = trajectory.sampleMotion(0.0);
+  const TrajectorySample first = previous;
+  JointVector low = first.q, high = first.q, peak = first.qdot.cwiseAbs();
+  JointVector integral_q = JointVector::Zero(), integral_v = JointVector::Zero();
+  JointVector position_error = JointVector::Zero(), velocity_error = JointVector::Zero();
+  for (long i = 1; i < count; ++i) {
+    const TrajectorySample s = trajectory.sampleMotion(time_of(i));
     low = low.cwiseMin(s.q);
     high = high.cwiseMax(s.q);
     peak = peak.cwiseMax(s.qdot.cwiseAbs());
-  }
-  const JointVector travel = (high - low).cwiseMax(JointVector::Constant(kTravelFloor));
-  const JointVector speed = peak.cwiseMax(JointVector::Constant(kSpeedFloor));
-
-  ColumnConsistency out;
-  TrajectorySample previous = trajectory.sample(0.0);
-  const TrajectorySample first = previous;
-  JointVector integral_q = JointVector::Zero(), integral_v = JointVector::Zero();
-  for (long i = 1; i < count; ++i) {
-    const TrajectorySample s = trajectory.sample(time_of(i));
     const double h = s.t - previous.t;
     integral_q += 0.5 * h * (s.qdot + previous.qdot);
     integral_v += 0.5 * h * (s.qddot + previous.qddot);
-    for (int j = 0; j < kJointCount; ++j) {
-      out.position_error = std::max(out.position_error, std::abs(s.q[j] - first.q[j] - integral_q[j]) / travel[j]);
-      out.velocity_error = std::max(out.velocity_error, std::abs(s.qdot[j] - first.qdot[j] - integral_v[j]) / speed[j]);
-    }
+    position_error = position_error.cwiseMax((s.q - first.q - integral_q).cwiseAbs());
+    velocity_error = velocity_error.cwiseMax((s.qdot - first.qdot - integral_v).cwiseAbs());
     previous = s;
   }
+  const JointVector travel = (high - low).cwiseMax(JointVector::Constant(kTravelFloor));
+  const JointVector speed = peak.cwiseMax(JointVector::Constant(kSpeedFloor));
+  ColumnConsistency out;
+  out.position_error = position_error.cwiseQuotient(travel).maxCoeff();
+  out.velocity_error = velocity_error.cwiseQuotient(speed).maxCoeff();
   return out;
 }
 

@@ -54,8 +54,8 @@ HIL_MAX_PLANNING_BUDGET_S = 3.0
 
 def hil_config(src, dst, relaxed_gates):
     """The config the daemon HIL tests run with: the reference robot with joint velocities capped
-    at 0.6 m/s and 1.5 rad/s. Planning in the emulated guest takes 0.2-1.1 s and the daemon's
-    splice budget follows it, so the reference robot's sub-second moves would end before a goal
+    at 0.6 m/s and 1.5 rad/s. Planning in the emulated guest takes 0.1-1.5 s (docs/testing.md)
+    and the daemon's splice budget follows it, so the reference robot's sub-second moves would end before a goal
     sent mid-motion could be spliced in, or before a fault 0.3 s in could act; capped, the moves
     last 2-4 s. (Capping the acceleration instead makes the spliced goal infeasible: the lowered
     limits cannot stop the mechanism along the new path's lead-in.) The simulated plant keeps the
@@ -75,7 +75,7 @@ def hil_config(src, dst, relaxed_gates):
             if line not in text:
                 raise SystemExit(f"hil-config: '{line.strip()}' not in {src}")
             text = text.replace(line, f"{key} = 0.5\n")
-    # The guest plans 10-30 times slower than the host (more when the host is busy), so goal 3's
+    # The guest plans 10-60 times slower than the host (more when the host is busy), so goal 3's
     # plan into goal 2 needs a longer budget than the reference robot's 1 s cap; goal 2's capped
     # motion (3-4.5 s) leaves room for it.
     budget_line = "planning_budget_s = 0.03\n"

@@ -1,5 +1,7 @@
 #include "cyber/daemon/motion_planner_service.hpp"
 
+#include <algorithm>
+
 #include "cyber/planner/motion_planner.hpp"
 
 namespace cyber::daemon {
@@ -16,7 +18,13 @@ class TrajectorySource final : public SetpointSource {
     JointSetpoints out;
     out.position = sample.q;
     out.velocity = sample.qdot;
-    out.volts = sample.volts;
+    // The optimiser holds each voltage to its limit within its tolerance between grid points
+    // (docs/algorithm.md section 3, "Stopping rules"), so a sample may ask for a few millivolts
+    // more; a motor controller gives the drive no more than its limit, and neither does the stream.
+    for (int j = 0; j < planner::kJointCount; ++j) {
+      const double limit = trajectory_->drive(j).voltage_limit_volts;
+      out.volts[j] = std::clamp(sample.volts[j], -limit, limit);
+    }
     return out;
   }
 

@@ -38,6 +38,8 @@ class Trajectory {
   [[nodiscard]] double duration_s() const { return t_grid_.empty() ? 0.0 : t_grid_.back(); }
   // The state at time t (clamped to [0, duration]). Does not allocate.
   [[nodiscard]] TrajectorySample sample(double t) const;
+  // The same without volts and amps (left zero): for checks that need the motion alone.
+  [[nodiscard]] TrajectorySample sampleMotion(double t) const;
   // t(s) and its inverse s(t); both clamp their argument.
   [[nodiscard]] double timeAt(double s) const;
   [[nodiscard]] double pathParameterAt(double t) const;
