@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "cyber/planner/clearance_escape.hpp"
 #include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/joined_path.hpp"
 #include "cyber/planner/path_timing.hpp"
@@ -158,23 +159,24 @@ double estimatedSeconds(const RobotModel& model, const Result<std::vector<Planne
 
 JointVector restOf(const Trajectory& stop) { return stop.path().at(stop.path().length()).q; }
 
-// `stop`, then the rest-to-rest plan `onward` from where it ends.
-Result<Plan> joinAfterStop(const PlanRequest& request, const Trajectory& stop, Result<Plan> onward) {
+// `first` (a stop, or a way out of the clearance, named by `what`), then the rest-to-rest plan
+// `onward` from where it ends.
+Result<Plan> joinAfter(const char* what, const PlanRequest& request, const Trajectory& first, Result<Plan> onward) {
   if (!onward) return onward;
-  Result<Trajectory> joined = joinAtRest(stop, *onward.value().trajectory);
+  Result<Trajectory> joined = joinAtRest(first, *onward.value().trajectory);
   if (!joined) return joined.error();
   Plan plan = std::move(onward).value();
   plan.trajectory = std::make_shared<const Trajectory>(std::move(joined).value());
   plan.waypoints.insert(plan.waypoints.begin(), request.start);
-  plan.path_method = fmt::format("stop, then {}", plan.path_method);
+  plan.path_method = fmt::format("{}, then {}", what, plan.path_method);
   return plan;
 }
 
 // The rest-to-rest plan from where `stop` ends, after it.
 Result<Plan> planAfterStop(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
                            const Trajectory& stop) {
-  return joinAfterStop(request, stop,
-                       timedPath(model, paths, restOf(stop), request.goal, request.pieces, JointVector::Zero()));
+  return joinAfter("stop", request, stop,
+                   timedPath(model, paths, restOf(stop), request.goal, request.pieces, JointVector::Zero()));
 }
 
 // The candidate that is always there for a moving start (docs/moving-starts.md): the fastest
@@ -212,7 +214,7 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
   if (!candidate.stop) return candidate.stop.error();
   if (!candidate.onward) return candidate.onward.error();
   const Trajectory& stop = candidate.stop.value();
-  Result<Plan> plan = joinAfterStop(request, stop, timePaths(model, candidate.onward.value(), JointVector::Zero()));
+  Result<Plan> plan = joinAfter("stop", request, stop, timePaths(model, candidate.onward.value(), JointVector::Zero()));
   const double steps = stop.duration_s() / kConsistencyStepS;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
   // the jump errs by at most a quarter of it), earliest first.
@@ -225,6 +227,25 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
     plan = gentler ? planAfterStop(model, paths, request, gentler.value()) : gentler.error();
   }
   if (plan) plan.value().times_ms.topp += candidate.stop_ms;
+  return plan;
+}
+
+// A start at rest inside the clearance that touches nothing: out along the steepest way, then
+// the rest-to-rest plan from there (docs/algorithm.md section 5). `refused` is the path stage's
+// own answer, kept when there is no way out.
+Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
+                            Result<Plan> refused) {
+  ToppSolver solver(model.planner.topp);
+  const CollisionWorld& world = paths.world(request.pieces);
+  Result<Trajectory> escape = clearanceEscape(model, world, request.start, solver);
+  if (!escape) {
+    return Result<Plan>::failure(PlanStatus::kStartInCollision,
+                                 fmt::format("{}; {}", refused.error().reason, escape.error().reason));
+  }
+  Result<Plan> plan =
+      joinAfter("out of the clearance", request, escape.value(),
+                timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces, JointVector::Zero()));
+  if (plan) plan.value().min_clearance_m = std::min(plan.value().min_clearance_m, world.distance(request.start).value);
   return plan;
 }
 
@@ -261,6 +282,9 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   Result<Plan> chosen = inconsistent();
   if (!moving) {
     chosen = timedPath(model_, paths, request.start, request.goal, request.pieces, JointVector::Zero());
+    if (!chosen && chosen.status() == PlanStatus::kStartInCollision) {
+      chosen = escapeThenPlan(model_, paths, request, std::move(chosen));
+    }
   } else {
     // Leaving along the velocity is timed on the search's path alone: the candidate that stops
     // first searches the alternatives (docs/moving-starts.md, "Planning time").
