@@ -247,6 +247,14 @@ def read_plant_csv(path):
     return rows
 
 
+def published_around(rows, t_stop, t_resume):
+    """The last ARM_STATE the simulator published at or before t_stop and the first at or after
+    t_resume (wall s; 1 ms of slack for the fault's own log line), from its --log rows: a published
+    row carries the message's utime. A recorder can miss messages; these rows cannot."""
+    published = [r["utime"] * 1e-6 for r in rows if r["state_published"] == 1]
+    return (max(t for t in published if t <= t_stop + 0.001), min(t for t in published if t >= t_resume - 0.001))
+
+
 def plant_summary(path):
     """The counters of cyber-plant-sim's closing 'stopped:' line on stderr."""
     text = open(path).read()

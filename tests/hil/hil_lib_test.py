@@ -99,6 +99,19 @@ class Gaps(unittest.TestCase):
         self.assertEqual(hil.longest_gap([1.0], 0.0, 2.0, default=0.0), 0.0)
 
 
+class PublishedAround(unittest.TestCase):
+    # The simulator's rows at 100 Hz: published until 10.0 s, silent, published again from 10.5 s.
+    ROWS = [{"utime": round(t * 1e6), "state_published": 0.0 if 10.0 < t < 10.5 else 1.0}
+            for t in (9.97, 9.98, 9.99, 10.0, 10.1, 10.2, 10.3, 10.4, 10.5, 10.51)]
+
+    def test_the_last_before_and_first_after_come_from_the_rows(self):
+        # A recorder that missed 9.99 and 10.0 would have put the last state 20 ms earlier.
+        self.assertEqual(hil.published_around(self.ROWS, 10.0004, 10.5), (10.0, 10.5))
+
+    def test_unpublished_rows_do_not_count(self):
+        self.assertEqual(hil.published_around(self.ROWS, 10.35, 10.05), (10.0, 10.5))
+
+
 class HoldFit(unittest.TestCase):
     """daemon_check's hold_fit: a hold fits a logged state, or the newest one carried along its
     velocity across states the logger missed; an old command or a stale state does not fit."""
@@ -172,6 +185,38 @@ class SpliceVoid(unittest.TestCase):
         self.assertFalse(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
                                          "11.500 info request 3 executing (0.987 s, planned in 2089.5 ms)",
                                          "11.501 info request 2 cancelled: replaced by request 3"]))
+
+
+class LinkVoid(unittest.TestCase):
+    """daemon_check's link_outlasted: a link run is void when its goal was done before the link
+    went down (the guest stood still after the simulator said "moving"), not when the outage cut
+    the move."""
+
+    def outlasted(self, lines, scenario="emulated=1\nlink=1\n"):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import daemon_check
+        with tempfile.TemporaryDirectory() as out:
+            with open(os.path.join(out, "daemon.log"), "w") as f:
+                f.write("".join(f"2026-12-02 14:23:{line}\n" for line in lines))
+            with open(os.path.join(out, "scenario.txt"), "w") as f:
+                f.write(scenario)
+            return daemon_check.link_outlasted(out)
+
+    # The fresh clone's run: done at 50.020, the link down at 50.338.
+    def test_a_goal_done_before_the_link_went_down_is_void(self):
+        self.assertTrue(self.outlasted(["47.071 info request 1 executing (3.268 s, planned in 9809.7 ms)",
+                                        "50.020 info request 1 done",
+                                        "50.338 warning CAN write failed: network down: Network is down"]))
+
+    def test_an_outage_during_the_move_is_not_void(self):
+        self.assertFalse(self.outlasted(["47.071 info request 1 executing (3.268 s, planned in 9809.7 ms)",
+                                         "47.400 warning CAN write failed: network down: Network is down",
+                                         "47.480 warning motion stopped: no fresh roboRIO heartbeat"]))
+
+    def test_another_goal_done_does_not_count(self):
+        self.assertFalse(self.outlasted(["47.000 info request 1 done",
+                                         "48.400 warning CAN write failed: network down: Network is down"],
+                                        scenario="emulated=1\nretry=1\nlink=101\n"))
 
 
 class StallVerdict(unittest.TestCase):

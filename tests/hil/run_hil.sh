@@ -158,7 +158,8 @@ case $1 in
     # hil.daemon_motion relies on an enabled robot throughout and on a splice: a run in which the
     # whole guest stood still for the heartbeat timeout (0.5 s in its config) or longer, or in
     # which goal 2 ended before goal 3's plan came back, is void, and run again (at most twice
-    # more). The fault tests retry their own goals instead (hil_guest.sh).
+    # more). So is a link run whose goal was done before the link went down. The fault tests
+    # retry their own goals instead (hil_guest.sh).
     for attempt in 1 2 3; do
       vcan_vm
       verdict=0
@@ -172,6 +173,10 @@ case $1 in
       [[ $verdict == 0 ]] && break
       if [[ $1 == daemon_motion && $attempt -lt 3 ]] && tests/hil/daemon_check.py void "$out" 0.5; then
         echo "run_hil: attempt $attempt void (the guest stalled, or planned goal 3 too slowly to splice it): $verdict; running it again"
+        continue
+      fi
+      if [[ $1 == daemon_link_down && $attempt -lt 3 ]] && tests/hil/daemon_check.py void-link "$out"; then
+        echo "run_hil: attempt $attempt void (the guest stood still until the move was over): $verdict; running it again"
         continue
       fi
       show_evidence "$out"

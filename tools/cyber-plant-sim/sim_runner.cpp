@@ -91,7 +91,8 @@ class Runner {
   void applyFaultNow(FaultKind kind, const char* source);
   void armFaultTimer();
   void writeFrame(const can::Frame& frame, const char* what);
-  void writeLogRow(double t_s, bool published);
+  // utime_us: the published ARM_STATE's own utime, or 0 to take the clock now.
+  void writeLogRow(double t_s, bool published, std::int64_t utime_us = 0);
   void printSummary() const;
 
   const RunnerSetup& setup_;
@@ -276,9 +277,11 @@ void Runner::onStateTimer() {
   const double t_s = now();
   sim_.advanceTo(clock_.simulationTime(t_s));
   bool published = false;
+  std::int64_t published_utime = 0;
   if (switches_.publish_state) {
     cyberplanner::arm_state_t msg{};
     msg.utime = realtimeMicros();
+    published_utime = msg.utime;
     msg.elevator_m = sim_.state(planner::kElevator).position;
     msg.elevator_mps = sim_.state(planner::kElevator).velocity;
     msg.arm_rad = sim_.state(planner::kArm).position;
@@ -292,7 +295,7 @@ void Runner::onStateTimer() {
       say("LCM publish of %s failed", setup_.state_channel.c_str());
     }
   }
-  writeLogRow(t_s, published);
+  writeLogRow(t_s, published, published ? published_utime : 0);
 }
 
 void Runner::onFaultTimer() {
@@ -341,11 +344,13 @@ void Runner::armFaultTimer() {
   }
 }
 
-void Runner::writeLogRow(double t_s, bool published) {
+void Runner::writeLogRow(double t_s, bool published, std::int64_t utime_us) {
   if (log_ == nullptr) return;
   StateLogRow row;
   row.t_s = t_s;
-  row.utime = realtimeMicros();
+  // A published row carries the message's utime, so the log tells exactly when each ARM_STATE
+  // went out, even where a recorder missed it.
+  row.utime = utime_us != 0 ? utime_us : realtimeMicros();
   for (int joint = 0; joint < kJointCount; ++joint) {
     row.state[joint] = sim_.state(joint);
     row.command[joint] = sim_.effectiveCommand(joint, sim_.time_s());
