@@ -1,5 +1,7 @@
 #include "cyber/daemon/io/status_publisher.hpp"
 
+#include <algorithm>
+
 #include <spdlog/spdlog.h>
 
 #include "cyber/can/status_codec.hpp"
@@ -13,6 +15,11 @@ namespace cyber::daemon::io {
 namespace {
 
 constexpr MonoNs kSecond = 1'000'000'000;
+
+// Age of a receive stamp at `now` (ms), -1 before the first. The receiving thread can stamp a
+// message after `now` was read, so a fresh one would come out a fraction of a millisecond below
+// zero (once -0.2 ms in CI's daemon_integration_wall_clock_jump): it is fresh, age 0.
+double ageMs(MonoNs now, MonoNs stamp) { return stamp == kNever ? -1.0 : std::max(0.0, nsToMs(now - stamp)); }
 
 }  // namespace
 
@@ -84,8 +91,8 @@ void StatusPublisher::publishDaemonStatus(const StreamSnapshot& snapshot, MonoNs
   m.robot_enabled = robotEnabled(snapshot, now);
   m.motion_allowed = snapshot.ticks > 0 && snapshot.gate_reason == GateReason::kOpen;
   m.active_request_id = snapshot.request_id;
-  m.state_age_ms = state_ns == kNever ? -1.0 : nsToMs(now - state_ns);
-  m.heartbeat_age_ms = heartbeat_ns == kNever ? -1.0 : nsToMs(now - heartbeat_ns);
+  m.state_age_ms = ageMs(now, state_ns);
+  m.heartbeat_age_ms = ageMs(now, heartbeat_ns);
   m.goals_received = c.goals_received;
   m.plans_succeeded = c.plans_succeeded;
   m.plans_failed = c.plans_failed + c.goals_rejected;
