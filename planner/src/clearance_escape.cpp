@@ -1,7 +1,8 @@
 #include "cyber/planner/clearance_escape.hpp"
 
-#include <cmath>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
