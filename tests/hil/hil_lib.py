@@ -247,6 +247,21 @@ def read_plant_csv(path):
     return rows
 
 
+def final_from_goal_output(path, request_id, status_codes):
+    """The final status cyber-goal printed for request_id ("request N cancelled: reason") as
+    {request_id, status (its code in status_codes), reason}, or None without such a line."""
+    if not os.path.exists(path):
+        return None
+    finals = "|".join(name for name, code in status_codes.items() if code >= status_codes["done"])
+    found = None
+    with open(path) as f:
+        for line in f:
+            m = re.match(rf"request {request_id} ({finals})(?:: (.*))?$", line.rstrip("\n"))
+            if m:
+                found = {"request_id": request_id, "status": status_codes[m.group(1)], "reason": m.group(2) or ""}
+    return found
+
+
 def published_around(rows, t_stop, t_resume):
     """The last ARM_STATE the simulator published at or before t_stop and the first at or after
     t_resume (wall s; 1 ms of slack for the fault's own log line), from its --log rows: a published

@@ -99,6 +99,29 @@ class Gaps(unittest.TestCase):
         self.assertEqual(hil.longest_gap([1.0], 0.0, 2.0, default=0.0), 0.0)
 
 
+class FinalFromGoalOutput(unittest.TestCase):
+    CODES = dict(accepted=0, planning=1, executing=2, done=3, rejected=4, failed=5, cancelled=6)
+
+    def final(self, text, request_id=2):
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(out, "goal.out")
+            with open(path, "w") as f:
+                f.write(text)
+            return hil.final_from_goal_output(path, request_id, self.CODES)
+
+    # The fresh clone's goal2.out, whose final ARM_PLAN_STATUS lcm-logger missed.
+    def test_the_final_line_with_its_reason(self):
+        text = ("request 2 accepted\nrequest 2 planning\nrequest 2 trajectory: 834 samples, dt 0.0100 s, duration 8.325 s\n"
+                "request 2 executing (duration 8.325 s, planned in 2193.8 ms)\n"
+                "request 2 cancelled: superseded by request 3\n")
+        self.assertEqual(self.final(text), {"request_id": 2, "status": 6, "reason": "superseded by request 3"})
+
+    def test_no_final_line_or_another_request(self):
+        self.assertIsNone(self.final("request 2 accepted\nrequest 2 executing (duration 1 s, planned in 1 ms)\n"))
+        self.assertIsNone(self.final("request 12 done\n"))
+        self.assertEqual(self.final("request 2 done\n")["status"], 3)
+
+
 class PublishedAround(unittest.TestCase):
     # The simulator's rows at 100 Hz: published until 10.0 s, silent, published again from 10.5 s.
     ROWS = [{"utime": round(t * 1e6), "state_published": 0.0 if 10.0 < t < 10.5 else 1.0}
