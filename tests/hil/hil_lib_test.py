@@ -176,17 +176,28 @@ class HoldFit(unittest.TestCase):
         self.assertEqual(self.fit((0.4, 2.0), 11.0)[1], None)
 
 
+def daemon_log(minute, lines):
+    """cyber-plannerd log lines ("SS.mmm level text") stamped within one minute of 2026-12-02."""
+    return "".join(f"2026-12-02 {minute}:{line}\n" for line in lines)
+
+
+def judge_results(verdict, files):
+    """daemon_check.<verdict>(out) on a results directory holding `files` ({name: text})."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import daemon_check
+    with tempfile.TemporaryDirectory() as out:
+        for name, text in files.items():
+            with open(os.path.join(out, name), "w") as f:
+                f.write(text)
+        return getattr(daemon_check, verdict)(out)
+
+
 class SpliceVoid(unittest.TestCase):
     """daemon_check's splice_outlasted: a motion run is void when goal 2 ended while goal 3 was
     still being planned, not when goal 2 had ended before goal 3's planning began."""
 
     def outlasted(self, lines):
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-        import daemon_check
-        with tempfile.TemporaryDirectory() as out:
-            with open(os.path.join(out, "daemon.log"), "w") as f:
-                f.write("".join(f"2026-12-02 13:12:{line}\n" for line in lines))
-            return daemon_check.splice_outlasted(out)
+        return judge_results("splice_outlasted", {"daemon.log": daemon_log("13:12", lines)})
 
     def test_goal_2_ending_while_goal_3_is_planned_is_void(self):
         self.assertTrue(self.outlasted(["08.761 info request 2 executing (4.163 s, planned in 21340.6 ms)",
@@ -216,14 +227,7 @@ class LinkVoid(unittest.TestCase):
     the move."""
 
     def outlasted(self, lines, scenario="emulated=1\nlink=1\n"):
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-        import daemon_check
-        with tempfile.TemporaryDirectory() as out:
-            with open(os.path.join(out, "daemon.log"), "w") as f:
-                f.write("".join(f"2026-12-02 14:23:{line}\n" for line in lines))
-            with open(os.path.join(out, "scenario.txt"), "w") as f:
-                f.write(scenario)
-            return daemon_check.link_outlasted(out)
+        return judge_results("link_outlasted", {"daemon.log": daemon_log("14:23", lines), "scenario.txt": scenario})
 
     # The fresh clone's run: done at 50.020, the link down at 50.338.
     def test_a_goal_done_before_the_link_went_down_is_void(self):
