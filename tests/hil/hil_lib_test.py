@@ -240,6 +240,14 @@ class LinkVoid(unittest.TestCase):
                                          "47.400 warning CAN write failed: network down: Network is down",
                                          "47.480 warning motion stopped: no fresh roboRIO heartbeat"]))
 
+    # The final fresh clone's run: the simulator coasted the arm 15 mm into l4_post.
+    def test_a_next_goal_refused_because_its_start_touches_an_obstacle_is_void(self):
+        self.assertTrue(self.outlasted([
+            "52.566 info request 1 executing (3.268 s, planned in 4380.6 ms)",
+            "55.531 warning CAN write failed: network down: Network is down",
+            "59.790 warning request 2 failed: start in collision: start (1.8470 m, 5.1135 rad) is -0.0149 m from "
+            "l4_post (clearance 0.0300 m); it touches an obstacle, so no way out is planned"]))
+
     def test_another_goal_done_does_not_count(self):
         self.assertFalse(self.outlasted(["47.000 info request 1 done",
                                          "48.400 warning CAN write failed: network down: Network is down"],

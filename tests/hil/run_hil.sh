@@ -176,7 +176,7 @@ case $1 in
         continue
       fi
       if [[ $1 == daemon_link_down && $attempt -lt 3 ]] && tests/hil/daemon_check.py void-link "$out"; then
-        echo "run_hil: attempt $attempt void (the guest stood still until the move was over): $verdict; running it again"
+        echo "run_hil: attempt $attempt void (the guest stood still until the move was over, or the simulator coasted into an obstacle): $verdict; running it again"
         continue
       fi
       show_evidence "$out"
