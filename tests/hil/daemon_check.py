@@ -210,6 +210,11 @@ class Trajectory:
         q_tol = 3e-4 + da * h * h / 8
         u = self.u[joint][max(i - 1, 0):i + 3]
         widen = 0.05 + KV[joint] * (v_tol - 0.01) + KA[joint] * da
+        if i == 0 and any(abs(self.v[j][0]) > 1e-6 for j in (0, 1)):
+            # A spliced plan often stops first, in a few ms (0.75 -> 0.19 rad/s within its first
+            # 10 ms sample once): the feedforward of a phase shorter than a sample cannot be
+            # bounded from the samples, so only position and velocity are held there.
+            return q, v, (-math.inf, math.inf), q_tol, v_tol
         return q, v, (min(u) - widen, max(u) + widen), q_tol, v_tol
 
     def max_acceleration(self, joint):
