@@ -865,6 +865,15 @@ def daemon_log_time(line):
         return None
 
 
+def daemon_log_lines(out):
+    """The lines of the run's daemon.log, none when the guest left no log."""
+    path = os.path.join(out, "daemon.log")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return f.read().splitlines()
+
+
 def splice_outlasted(out):
     """True when the motion test's splice never had a motion to go into: goal 2 ended while the
     daemon was still planning goal 3. Either the plan came back past its splice point and goal 2
@@ -873,11 +882,7 @@ def splice_outlasted(out):
     In the emulated guest a plan that takes ~0.2 s natively has taken 5 s on a busy host; such a
     run does not test the splice. A run in which goal 2 ended before goal 3's plan began still
     fails."""
-    path = os.path.join(out, "daemon.log")
-    lines = []
-    if os.path.exists(path):
-        with open(path) as f:
-            lines = f.read().splitlines()
+    lines = daemon_log_lines(out)
     missed = next((l for l in lines if "request 3: plan took" in l and "missing its splice point" in l), None)
     done_2 = next((l for l in lines if " request 2 done" in l), None)
     if missed and done_2:
@@ -902,11 +907,9 @@ def link_outlasted(out):
     as link=ID; the outage begins at the daemon's first "CAN write failed". Also true when a goal
     was refused because its start touches an obstacle: the simulated mechanism coasted into it."""
     scenario = hil.read_scenario(os.path.join(out, "scenario.txt"))
-    path = os.path.join(out, "daemon.log")
-    if not scenario.get("link") or not os.path.exists(path):
+    lines = daemon_log_lines(out)
+    if not scenario.get("link") or not lines:
         return False
-    with open(path) as f:
-        lines = f.read().splitlines()
     # The simulator models no obstacles: coasting through the outage it can carry the mechanism
     # into one (once 15 mm into l4_post), and then the next goal is rightly refused.
     into = next((l for l in lines if "start in collision" in l and "touches an obstacle" in l), None)
