@@ -353,6 +353,24 @@ def ticks_between(run, t0, t1):
     return ticks
 
 
+def best_start_shift(traj, ticks, span_s=0.2):
+    """Diagnosis of a failed fit: the shift of the trajectory's start time within +-span_s that
+    brings the given ticks' positions closest to it (median over at most 100 ticks), and that
+    median error; (None, None) without ticks."""
+    ticks = ticks[::max(1, len(ticks) // 100)]
+    if not ticks:
+        return None, None
+    best = None
+    for k in range(-round(span_s * 2e3), round(span_s * 2e3) + 1):
+        shift = k * 5e-4
+        errors = sorted(sum(abs(traj.at(t - traj.start - shift, j)[0] - joints[j][0]) for j in (0, 1))
+                        for t, joints in ticks)
+        median = errors[len(errors) // 2]
+        if best is None or median < best[1]:
+            best = (shift, median)
+    return best
+
+
 def check_on_trajectories(c, run, request_ids, t0, t1):
     """Each streamer tick between t0 and t1 lies on one of the given planned trajectories: both
     joints' positions and velocities at a common best-matching time within [-15, +5] ms of the
@@ -443,6 +461,12 @@ def check_on_trajectories(c, run, request_ids, t0, t1):
             f"position {max(worst[0], 0) * 1e3:.3f} mm|mrad, velocity {max(worst[1], 0):.4f}, feedforward {max(worst[2], 0):.3f} V")
     for text in offenders:
         c.note(f"requests {request_ids}: off the trajectory at {text}")
+    if max(worst) > 0.0:
+        for r, traj in trajs:
+            shift, error = best_start_shift(traj, [(t, j) for t, j in ticks if traj.start <= t <= traj.start + traj.duration])
+            if shift is not None:
+                c.note(f"requests {request_ids}: request {r}'s capture fits its trajectory best with start_utime "
+                       f"{shift * 1e3:+.1f} ms (median position error then {error * 1e3:.3f} mm|mrad)")
     if lags:
         c.note(f"requests {request_ids}: largest differences from the trajectory: position {raw[0] * 1e3:.3f} mm|mrad, "
                f"velocity {raw[1]:.4f}")

@@ -176,6 +176,28 @@ class HoldFit(unittest.TestCase):
         self.assertEqual(self.fit((0.4, 2.0), 11.0)[1], None)
 
 
+class StartShift(unittest.TestCase):
+    """daemon_check's best_start_shift finds how far a captured motion runs ahead of its
+    ARM_TRAJECTORY's start_utime (the diagnosis printed when the ticks do not fit)."""
+
+    def test_a_motion_35_ms_ahead_of_its_stamp(self):
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import daemon_check as dc
+        # Constant acceleration 2 m/s^2 and 8 rad/s^2 for 0.5 s, sampled every 10 ms from 100 s.
+        t = [0.01 * k for k in range(51)]
+        msg = dict(start_utime=100_000_000, duration_s=0.5, t_s=t, elevator_m=[t_ * t_ for t_ in t],
+                   arm_rad=[4 * t_ * t_ for t_ in t], elevator_mps=[2 * t_ for t_ in t], arm_radps=[8 * t_ for t_ in t],
+                   elevator_volts=[0.0] * 51, arm_volts=[0.0] * 51)
+        traj = dc.Trajectory(msg)
+        ticks = []
+        for k in range(1, 80):
+            tau = 0.005 * k + 0.035
+            ticks.append((100.0 + 0.005 * k, [traj.at(tau, 0)[:2] + (0.0,), traj.at(tau, 1)[:2] + (0.0,)]))
+        shift, error = dc.best_start_shift(traj, ticks)
+        self.assertAlmostEqual(shift, -0.035, delta=6e-4)
+        self.assertLess(error, 1e-4)
+
+
 def daemon_log(minute, lines):
     """cyber-plannerd log lines ("SS.mmm level text") stamped within one minute of 2026-12-02."""
     return "".join(f"2026-12-02 {minute}:{line}\n" for line in lines)

@@ -13,10 +13,6 @@ std::int64_t wallMicros() {
   return static_cast<std::int64_t>(ts.tv_sec) * 1'000'000 + ts.tv_nsec / 1000;
 }
 
-std::int64_t monoToWallMicros(MonoNs t, MonoNs mono_now, std::int64_t wall_now_us) {
-  return wall_now_us + (t - mono_now) / 1000;
-}
-
 GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message) {
   GoalRequest goal;
   goal.request_id = message.request_id;

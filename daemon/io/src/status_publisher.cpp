@@ -5,8 +5,8 @@
 #include <spdlog/spdlog.h>
 
 #include "cyber/can/status_codec.hpp"
+#include "cyber/daemon/io/clock_pair.hpp"
 #include "cyber/daemon/io/lcm_messages.hpp"
-#include "cyber/daemon/io/monotonic_clock.hpp"
 #include "cyber/notify/notifier.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 
@@ -115,10 +115,8 @@ void StatusPublisher::publishSetpointEcho() {
   const StreamSnapshot snapshot = s_.channels.snapshot.load();
   if (snapshot.ticks == last_echo_tick_ || !snapshot.setpoints_written) return;
   last_echo_tick_ = snapshot.ticks;
-  const MonoNs now = monotonicNow();
-  const std::int64_t wall = wallMicros();
   s_.bridge.publish(s_.bridge.channels().setpoint,
-                    setpointMessage(snapshot, monoToWallMicros(snapshot.time_ns, now, wall)));
+                    setpointMessage(snapshot, wallMicrosAt(snapshot.time_ns, readClockPair())));
 }
 
 }  // namespace cyber::daemon::io

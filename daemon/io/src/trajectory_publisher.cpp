@@ -1,5 +1,6 @@
 #include "cyber/daemon/io/trajectory_publisher.hpp"
 
+#include "cyber/daemon/io/clock_pair.hpp"
 #include "cyber/daemon/io/lcm_messages.hpp"
 
 namespace cyber::daemon::io {
@@ -20,12 +21,12 @@ void TrajectoryPublisher::flush(MonoNs now) {
   if (!waiting_) return;
   if (last_published_ns_ != kNever && now - last_published_ns_ < kInterval) return;
   last_published_ns_ = now;
-  const std::int64_t wall = wallMicros();
+  const ClockPair clocks = readClockPair();
   const Waiting waiting = std::move(*waiting_);
   waiting_.reset();
   bridge_.publish(bridge_.channels().trajectory,
-                  trajectoryMessage(waiting.request_id, *waiting.trajectory,
-                                    monoToWallMicros(waiting.start_ns, now, wall), step_s_, wall));
+                  trajectoryMessage(waiting.request_id, *waiting.trajectory, wallMicrosAt(waiting.start_ns, clocks),
+                                    step_s_, clocks.wall_us));
 }
 
 }  // namespace cyber::daemon::io

@@ -19,8 +19,6 @@
 namespace cyber::daemon::io {
 
 std::int64_t wallMicros();
-// A monotonic time as wall-clock microseconds (through the current offset between the clocks).
-std::int64_t monoToWallMicros(MonoNs t, MonoNs mono_now, std::int64_t wall_now_us);
 
 GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message);
 
