@@ -12,6 +12,7 @@
 #include "cyber/planner/path_optimizer.hpp"
 #include "cyber/planner/path_shaping.hpp"
 #include "cyber/planner/path_timing.hpp"
+#include "cyber/planner/synchronised_path.hpp"
 #include "cyber/planner/weighted_norm.hpp"
 
 namespace cyber::planner {
@@ -87,6 +88,9 @@ constexpr int kShapeCheckGridPoints = 100;
 constexpr int kDirectShapeKnots = 6;
 constexpr int kGateGridPoints = 20;
 constexpr double kDirectShapeRatio = 1.003;
+// The synchronised candidate is tried when the slower joint alone is this much faster than the
+// fastest candidate's estimate (100 grid points): below that it cannot gain enough to matter.
+constexpr double kSynchronisedRatio = 1.01;
 // The other side of this many holes of C-space (the largest) is searched for as well.
 // Only when it costs at most this much more than the first path in the search's own metric (the
 // other sides that were faster on the public moves cost 1.03-1.06 times as much; most that were
@@ -103,15 +107,14 @@ double straightEstimate(const JointVector& from, const JointVector& to, const Jo
   return estimateDuration(StraightPath(from, (to - from) / length, length), drives, 0.0, grid_points);
 }
 
-// The larger of the joints' straightEstimate moving alone (the other one staying at `from`), on
-// kGateGridPoints.
+// The larger of the joints' straightEstimate moving alone (the other one staying at `from`).
 double slowerJointAlone(const JointVector& from, const JointVector& to, const JointVector& metric,
-                        const std::array<DriveParams, kJointCount>& drives) {
+                        const std::array<DriveParams, kJointCount>& drives, int grid_points = kGateGridPoints) {
   double slower = 0.0;
   for (int joint = 0; joint < kJointCount; ++joint) {
     JointVector alone = from;
     alone[joint] = to[joint];
-    slower = std::max(slower, straightEstimate(from, alone, metric, drives, kGateGridPoints));
+    slower = std::max(slower, straightEstimate(from, alone, metric, drives, grid_points));
   }
   return slower;
 }
@@ -399,6 +402,25 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
       const PlannedPath fastest = candidates.front();
       add_shaped(fastest, fastest.waypoints);
     }
+  }
+  if (!candidates.empty() && start_speed == 0.0 && alternatives == PathAlternatives::kSearch) {
+    // The joints' own fastest motions side by side (synchronised_path.hpp), first when a finer
+    // estimate confirms it faster, as for a shaped path.
+    const PlannedPath& fastest = candidates.front();
+    const double fastest_s = estimateDuration(*fastest.path, drives, 0.0, kShapeCheckGridPoints);
+    // A coarser estimate of the slower joint alone first: the joints' own profiles cost five times
+    // as much, and half the public moves are already within a per cent of it.
+    if (fastest_s > kSynchronisedRatio * slowerJointAlone(start, goal, metric, drives, kTimingGridPoints))
+      if (auto synchronised = synchronisedPath(start, goal, world, model_, fastest_s / kSynchronisedRatio);
+          synchronised &&
+          estimateDuration(synchronised->path, drives, 0.0, kShapeCheckGridPoints) < (1.0 - kShapeGain) * fastest_s) {
+        PlannedPath better = fastest;
+        better.path = std::make_shared<const CubicSplinePath>(std::move(synchronised->path));
+        better.waypoints = std::move(synchronised->waypoints);
+        better.min_clearance_m = synchronised->min_clearance_m;
+        better.method = "synchronised joints";
+        candidates.insert(candidates.begin(), std::move(better));
+      }
   }
   const double smooth_ms = millisecondsSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;

@@ -10,29 +10,42 @@
 
 namespace cyber::planner {
 
-double estimateDuration(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives, double b_start,
-                        int grid_points) {
-  constexpr double kNever = std::numeric_limits<double>::infinity();
+TimedFractions reachabilityTimes(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives,
+                                 double b_start, int grid_points) {
+  TimedFractions out;
   const double length = path.length();
-  if (!(length > 0.0)) return 0.0;
+  if (!(length > 0.0)) {
+    out.fraction.assign(1, 0.0);
+    out.time_s.assign(1, 0.0);
+    return out;
+  }
   topp::Problem problem;
   topp::sampleGrid(path, grid_points, problem);
   topp::LimitMargins margins;
   margins.reset(problem.intervals());
   std::string error;
-  if (!topp::buildRows(drives, margins, problem, &error)) return kNever;
+  if (!topp::buildRows(drives, margins, problem, &error)) return out;
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
   problem.speed_bound = 1e3 / length;
   std::vector<double> b, controllable;
-  if (topp::forwardBackward(problem, b, controllable).status != topp::ReachabilityStatus::kOk) return kNever;
+  if (topp::forwardBackward(problem, b, controllable).status != topp::ReachabilityStatus::kOk) return out;
+  out.fraction = problem.s;
+  out.time_s.assign(problem.s.size(), 0.0);
   double t = 0.0;  // in units of the unit-length path: b is (ds/dt)^2 / length^2
   for (int k = 0; k < problem.intervals(); ++k) {
     const double speed_sum = std::sqrt(b[static_cast<size_t>(k)]) + std::sqrt(b[static_cast<size_t>(k) + 1]);
-    if (!(speed_sum > 0.0)) return kNever;
+    if (!(speed_sum > 0.0)) return TimedFractions{};
     t += 2.0 * problem.ds(k) / speed_sum;
+    out.time_s[static_cast<size_t>(k) + 1] = t;
   }
-  return t;
+  return out;
+}
+
+double estimateDuration(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives, double b_start,
+                        int grid_points) {
+  const TimedFractions times = reachabilityTimes(path, drives, b_start, grid_points);
+  return times.time_s.empty() ? std::numeric_limits<double>::infinity() : times.time_s.back();
 }
 
 }  // namespace cyber::planner

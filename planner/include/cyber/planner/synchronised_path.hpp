@@ -1,0 +1,48 @@
+#pragma once
+// A candidate path drawn by the joints' own fastest motions (docs/algorithm.md section 2.5).
+// Many rest-to-rest moves are as fast as their slower joint moving
+// alone: that joint runs its own time-optimal profile and the faster one fits in beside it. The
+// search's paths keep to the middle of the free space and lose 3-5 % on such moves. So the
+// slower joint's profile, stretched by a few factors, is paired with the faster joint's profile
+// delayed and stretched to fit inside it; the pairs whose spline through samples at even times
+// keeps the clearance are timed by the reachability pass, and the first within a few per cent
+// of its own construction's time (or the fastest of a few) is returned.
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/cubic_spline_path.hpp"
+#include "cyber/planner/robot_model.hpp"
+
+namespace cyber::planner {
+
+struct SynchronisedSettings {
+  std::array<double, 3> slowdowns{1.0, 1.04, 1.1};  // of the slower joint's own profile
+  int divisions = 4;                                // of the faster joint's stretch and of its delay, each
+  int samples = 24;                                 // waypoints at even times, after the start
+  int profile_points = 300;                         // of each joint's own profile
+  int estimate_points = 40;                         // of each candidate's reachability estimate
+  int max_estimates = 6;
+  // A candidate estimated within this factor of its construction's time is taken at once: its
+  // timing is (nearly) feasible, so no other pair of the same slowdown is much faster.
+  double accept_ratio = 1.025;
+};
+
+struct SynchronisedPath {
+  std::vector<JointVector> waypoints;
+  CubicSplinePath path;
+  double estimate_s = 0.0;      // on estimate_points
+  double slower_alone_s = 0.0;  // the slower joint's own time-optimal duration
+  double min_clearance_m = 0.0;
+  int checked = 0;  // splines checked for clearance
+};
+
+// Rest to rest from `from` to `to`; nothing when a joint does not move, when the slower joint alone
+// cannot beat `beat_s` (the fastest candidate's estimate so far) or when no pair keeps the clearance.
+std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const JointVector& to,
+                                                 const CollisionWorld& world, const RobotModel& model, double beat_s,
+                                                 const SynchronisedSettings& settings = {});
+
+}  // namespace cyber::planner
