@@ -327,20 +327,27 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
   const double b_start = start_speed * start_speed;
   // The shape search from `knots` (through which `fastest` runs), put first when it is faster.
-  auto add_shaped = [&](const PlannedPath& fastest, const std::vector<JointVector>& knots) {
-    ShapedPath shaped = shapeForTime(knots, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
-    // The search's estimate is coarse: the shaped path must also be faster on a finer grid.
-    if (shaped.improvements == 0 ||
-        !(estimateDuration(shaped.path, drives, b_start, kShapeCheckGridPoints) <
+  // `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid
+  // than the searches' own confirms it faster (a coarse estimate can be fooled between its points).
+  auto put_first_if_faster = [&](const PlannedPath& fastest, CubicSplinePath path, std::vector<JointVector> waypoints,
+                                 double min_clearance_m, std::string method) {
+    if (!(estimateDuration(path, drives, b_start, kShapeCheckGridPoints) <
           (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints))) {
       return;
     }
     PlannedPath better = fastest;
-    better.path = std::make_shared<const CubicSplinePath>(std::move(shaped.path));
-    better.waypoints = std::move(shaped.waypoints);
-    better.min_clearance_m = shaped.min_clearance_m;
-    better.method = "shaped for time, " + fastest.method;
+    better.path = std::make_shared<const CubicSplinePath>(std::move(path));
+    better.waypoints = std::move(waypoints);
+    better.min_clearance_m = min_clearance_m;
+    better.method = std::move(method);
     candidates.insert(candidates.begin(), std::move(better));
+  };
+  // The shape search from `knots` (through which `fastest` runs).
+  auto add_shaped = [&](const PlannedPath& fastest, const std::vector<JointVector>& knots) {
+    ShapedPath shaped = shapeForTime(knots, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
+    if (shaped.improvements == 0) return;
+    put_first_if_faster(fastest, std::move(shaped.path), std::move(shaped.waypoints), shaped.min_clearance_m,
+                        "shaped for time, " + fastest.method);
   };
   if (out.direct && done && alternatives == PathAlternatives::kSearch) {
     // A straight segment is not the fastest path when the joints' limits differ (gravity, voltage
@@ -404,23 +411,17 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     }
   }
   if (!candidates.empty() && start_speed == 0.0 && alternatives == PathAlternatives::kSearch) {
-    // The joints' own fastest motions side by side (synchronised_path.hpp), first when a finer
-    // estimate confirms it faster, as for a shaped path.
-    const PlannedPath& fastest = candidates.front();
+    // The joints' own fastest motions side by side (synchronised_path.hpp). A coarser estimate of
+    // the slower joint alone first: the joints' own profiles cost five times as much, and half the
+    // public moves are already within a per cent of it.
+    const PlannedPath fastest = candidates.front();
     const double fastest_s = estimateDuration(*fastest.path, drives, 0.0, kShapeCheckGridPoints);
-    // A coarser estimate of the slower joint alone first: the joints' own profiles cost five times
-    // as much, and half the public moves are already within a per cent of it.
-    if (fastest_s > kSynchronisedRatio * slowerJointAlone(start, goal, metric, drives, kTimingGridPoints))
-      if (auto synchronised = synchronisedPath(start, goal, world, model_, fastest_s / kSynchronisedRatio);
-          synchronised &&
-          estimateDuration(synchronised->path, drives, 0.0, kShapeCheckGridPoints) < (1.0 - kShapeGain) * fastest_s) {
-        PlannedPath better = fastest;
-        better.path = std::make_shared<const CubicSplinePath>(std::move(synchronised->path));
-        better.waypoints = std::move(synchronised->waypoints);
-        better.min_clearance_m = synchronised->min_clearance_m;
-        better.method = "synchronised joints";
-        candidates.insert(candidates.begin(), std::move(better));
+    if (fastest_s > kSynchronisedRatio * slowerJointAlone(start, goal, metric, drives, kTimingGridPoints)) {
+      if (auto synchronised = synchronisedPath(start, goal, world, model_, fastest_s / kSynchronisedRatio)) {
+        put_first_if_faster(fastest, std::move(synchronised->path), std::move(synchronised->waypoints),
+                            synchronised->min_clearance_m, "synchronised joints");
       }
+    }
   }
   const double smooth_ms = millisecondsSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
