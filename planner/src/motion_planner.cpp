@@ -85,16 +85,24 @@ Judged judged(Result<Plan> plan) {
 // across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
 // uniformly moves the switch between the samples (by about half the added time), so the shortest
 // slowdown that puts it where the columns agree, within the limits, is taken.
-std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
+// The shortest uniform slowdown of `trajectory` by a multiple of kSlowerStep, up to `steps` of
+// them, that stays within the limits and that `agrees` accepts.
+template <class Agrees>
+std::optional<Trajectory> shortestSlowdown(const RobotModel& model, const Trajectory& trajectory, int steps,
+                                           Agrees&& agrees) {
   const double duration = trajectory.duration_s();
-  if (duration > kSlowerMaxDurationS) return std::nullopt;
-  for (int i = 1; i <= kSlowerSteps && duration > 0.0; ++i) {
+  for (int i = 1; i <= steps && duration > 0.0; ++i) {
     Result<Trajectory> slower = slowedDown(trajectory, 1.0 + i * kSlowerStep * kConsistencyStepS / duration);
-    if (slower && consistent(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {
+    if (slower && agrees(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {
       return std::move(slower).value();
     }
   }
   return std::nullopt;
+}
+
+std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
+  if (trajectory.duration_s() > kSlowerMaxDurationS) return std::nullopt;
+  return shortestSlowdown(model, trajectory, kSlowerSteps, [](const Trajectory& slower) { return consistent(slower); });
 }
 
 // TOPP along the path stage's candidates from a start with velocity v0, in the order of their
@@ -254,12 +262,13 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   // to braking, and the jump at the junction, are large next to its peak speed, so its columns
   // may disagree at 1 ms as a short move's do. It is slowed as one is (consistentSlowdown), by
   // fractions of a step, until the joined columns agree.
-  const double escape_s = escape.value().duration_s();
-  for (int i = 1; i <= kEscapeSlowerSteps && plan && escape_s > 0.0 && !consistent(*plan.value().trajectory); ++i) {
-    Result<Trajectory> slower = slowedDown(escape.value(), 1.0 + i * kSlowerStep * kConsistencyStepS / escape_s);
-    if (!slower || !withinDriveLimits(slower.value(), model.planner.topp)) continue;
-    Result<Plan> retry = joinAfter("out of the clearance", request, slower.value(), onward);
-    if (retry && consistent(*retry.value().trajectory)) plan = std::move(retry);
+  if (plan && !consistent(*plan.value().trajectory)) {
+    Result<Plan> joined = plan;
+    const auto joined_agrees = [&](const Trajectory& slower) {
+      joined = joinAfter("out of the clearance", request, slower, onward);
+      return joined && consistent(*joined.value().trajectory);
+    };
+    if (shortestSlowdown(model, escape.value(), kEscapeSlowerSteps, joined_agrees)) plan = std::move(joined);
   }
   if (plan) plan.value().min_clearance_m = std::min(plan.value().min_clearance_m, world.distance(request.start).value);
   return plan;

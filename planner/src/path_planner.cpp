@@ -329,12 +329,10 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   // The shape search from `knots` (through which `fastest` runs), put first when it is faster.
   // `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid
   // than the searches' own confirms it faster (a coarse estimate can be fooled between its points).
-  auto put_first_if_faster = [&](const PlannedPath& fastest, CubicSplinePath path, std::vector<JointVector> waypoints,
-                                 double min_clearance_m, std::string method) {
-    if (!(estimateDuration(path, drives, b_start, kShapeCheckGridPoints) <
-          (1.0 - kShapeGain) * estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints))) {
-      return;
-    }
+  // fastest_s: `fastest`'s estimate on that grid.
+  auto put_first_if_faster = [&](const PlannedPath& fastest, double fastest_s, CubicSplinePath path,
+                                 std::vector<JointVector> waypoints, double min_clearance_m, std::string method) {
+    if (!(estimateDuration(path, drives, b_start, kShapeCheckGridPoints) < (1.0 - kShapeGain) * fastest_s)) return;
     PlannedPath better = fastest;
     better.path = std::make_shared<const CubicSplinePath>(std::move(path));
     better.waypoints = std::move(waypoints);
@@ -346,7 +344,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   auto add_shaped = [&](const PlannedPath& fastest, const std::vector<JointVector>& knots) {
     ShapedPath shaped = shapeForTime(knots, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
     if (shaped.improvements == 0) return;
-    put_first_if_faster(fastest, std::move(shaped.path), std::move(shaped.waypoints), shaped.min_clearance_m,
+    put_first_if_faster(fastest, estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints),
+                        std::move(shaped.path), std::move(shaped.waypoints), shaped.min_clearance_m,
                         "shaped for time, " + fastest.method);
   };
   if (out.direct && done && alternatives == PathAlternatives::kSearch) {
@@ -418,7 +417,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     const double fastest_s = estimateDuration(*fastest.path, drives, 0.0, kShapeCheckGridPoints);
     if (fastest_s > kSynchronisedRatio * slowerJointAlone(start, goal, metric, drives, kTimingGridPoints)) {
       if (auto synchronised = synchronisedPath(start, goal, world, model_, fastest_s / kSynchronisedRatio)) {
-        put_first_if_faster(fastest, std::move(synchronised->path), std::move(synchronised->waypoints),
+        put_first_if_faster(fastest, fastest_s, std::move(synchronised->path), std::move(synchronised->waypoints),
                             synchronised->min_clearance_m, "synchronised joints");
       }
     }

@@ -58,7 +58,7 @@ std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const 
   if (!(slower.durationS() < beat_s)) return std::nullopt;
 
   std::optional<SynchronisedPath> best;
-  int checked = 0, estimates = 0;
+  int estimates = 0;
   std::vector<JointVector> waypoints(static_cast<size_t>(settings.samples) + 1);
   const int n = settings.divisions;
   for (double slowdown : settings.slowdowns) {
@@ -79,23 +79,20 @@ std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const 
         waypoints.back() = to;  // exactly: the fractions' last product may miss it by a rounding
         auto spline = CubicSplinePath::through(waypoints, model.planner.metric);
         if (!spline.ok()) continue;
-        ++checked;
         const ClearanceCheck check = checkPath(spline.value(), world, model, model.clearance_m);
         if (!check.ok()) continue;
         const double estimate = estimateDuration(spline.value(), drives, 0.0, settings.estimate_points);
         ++estimates;
         if (std::isfinite(estimate) && (!best || estimate < best->estimate_s)) {
-          best = SynchronisedPath{waypoints,          std::move(spline).value(), estimate,
-                                  slower.durationS(), check.min_distance_m,      0};
+          best = SynchronisedPath{waypoints, std::move(spline).value(), estimate, slower.durationS(),
+                                  check.min_distance_m};
         }
         if (estimates >= settings.max_estimates || (best && best->estimate_s <= settings.accept_ratio * total_s)) {
-          if (best) best->checked = checked;
           return best;
         }
       }
     }
   }
-  if (best) best->checked = checked;
   return best;
 }
 

@@ -36,7 +36,6 @@ struct SynchronisedPath {
   double estimate_s = 0.0;      // on estimate_points
   double slower_alone_s = 0.0;  // the slower joint's own time-optimal duration
   double min_clearance_m = 0.0;
-  int checked = 0;  // splines checked for clearance
 };
 
 // Rest to rest from `from` to `to`; nothing when a joint does not move, when the slower joint alone
