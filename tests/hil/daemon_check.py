@@ -210,12 +210,25 @@ class Trajectory:
         q_tol = 3e-4 + da * h * h / 8
         u = self.u[joint][max(i - 1, 0):i + 3]
         widen = 0.05 + KV[joint] * (v_tol - 0.01) + KA[joint] * da
-        if i == 0 and any(abs(self.v[j][0]) > 1e-6 for j in (0, 1)):
+        if i == 0 and self.moving_start():
             # A spliced plan often stops first, in a few ms (0.75 -> 0.19 rad/s within its first
-            # 10 ms sample once): the feedforward of a phase shorter than a sample cannot be
-            # bounded from the samples, so only position and velocity are held there.
+            # 10 ms sample once), and may leave from rest at full voltage within the same sample:
+            # neither the feedforward nor the velocity's path through rest can be bounded from the
+            # samples there, only that the velocity stays between its ends and rest
+            # (first_sample_span), and the position.
+            lo, hi = self.first_sample_span(joint)
+            v_tol = max(v_tol, 0.01 + max(v - lo, hi - v))
             return q, v, (-math.inf, math.inf), q_tol, v_tol
         return q, v, (min(u) - widen, max(u) + widen), q_tol, v_tol
+
+    def moving_start(self):
+        return any(abs(self.v[j][0]) > 1e-6 for j in (0, 1))
+
+    def first_sample_span(self, joint):
+        """The velocities a moving start's first sample interval can pass through: from its
+        first velocity, through rest when it stops first, to its second sample's."""
+        v0, v1 = self.v[joint][0], self.v[joint][1]
+        return min(v0, v1, 0.0), max(v0, v1, 0.0)
 
     def max_acceleration(self, joint):
         return max((abs(x) for x in self.a[joint]), default=0.0)
@@ -628,12 +641,20 @@ def check_motion(out):
         around = ticks_between(run, t3.start - 0.1, t3.start + 0.1)
     worst_dv, worst_dq, backwards = 0.0, 0.0, 0
     c.check(len(around) >= 20, f"ticks within 100 ms of the splice: {len(around)}")
+    # Inside goal 3's first sample the samples do not bound its acceleration (a stop, then a
+    # start from rest): a step that overlaps it may also cross first_sample_span.
+    first_end = t3.start + t3.t[1] if t3.moving_start() else t3.start
     for (ta, ja), (tb, jb) in zip(around, around[1:]):
         dt = tb - ta
         backwards += dt <= 0.0
         for j in (0, 1):
             (qa, va, _), (qb, vb, _) = ja[j], jb[j]
-            worst_dv = max(worst_dv, abs(vb - va) - accel[j] * (dt + 0.002) - 0.002)
+            step_allowed = accel[j] * (dt + 0.002)
+            if ta < first_end and tb > t3.start:
+                # Within the first sample, at most the span; beyond it, the samples' acceleration.
+                lo, hi = t3.first_sample_span(j)
+                step_allowed += hi - lo
+            worst_dv = max(worst_dv, abs(vb - va) - step_allowed - 0.002)
             worst_dq = max(worst_dq, abs(qb - qa) - max(abs(va), abs(vb)) * (dt + 0.002) - accel[j] * dt * dt - 2e-5)
     c.check(backwards == 0, f"tick times increase across the splice ({backwards} steps back)")
     c.check(worst_dv <= 0.0 and worst_dq <= 0.0,
