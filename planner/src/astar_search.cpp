@@ -5,18 +5,27 @@
 #include <cstdint>
 #include <limits>
 
+#include "cyber/planner/quaternary_heap.hpp"
+
 namespace cyber::planner {
 namespace {
 
+// 16 bytes, so that a heap node's four children share a cache line or two. g is needed only to
+// break ties in f; the node's own cost is read from g[] when it is expanded.
 struct OpenEntry {
   double f;
-  double g;
+  float g;
   int node;
 };
 
-// Min-heap on f; among equal f the deeper node (larger g) first, which expands fewer nodes.
-struct LaterEntry {
-  bool operator()(const OpenEntry& a, const OpenEntry& b) const { return a.f > b.f || (a.f == b.f && a.g < b.g); }
+// Smallest f first; among equal f the deeper node (larger g), which expands fewer nodes; then the
+// smaller node, so the order is total and the search's path does not depend on the heap.
+struct EarlierEntry {
+  bool operator()(const OpenEntry& a, const OpenEntry& b) const {
+    if (a.f != b.f) return a.f < b.f;
+    if (a.g != b.g) return a.g > b.g;
+    return a.node < b.node;
+  }
 };
 
 }  // namespace
@@ -97,14 +106,13 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   std::vector<double> g(nodes, inf);
   std::vector<int> parent(nodes, -1);
   std::vector<std::uint8_t> closed(nodes, 0);
-  std::vector<OpenEntry> open;
+  QuaternaryHeap<OpenEntry, EarlierEntry> open;
   open.reserve(1024);
   auto push = [&](int node, double cost, int from, double h) {
     if (cost >= g[static_cast<size_t>(node)]) return;
     g[static_cast<size_t>(node)] = cost;
     parent[static_cast<size_t>(node)] = from;
-    open.push_back({cost + h, cost, node});
-    std::push_heap(open.begin(), open.end(), LaterEntry{});
+    open.push({cost + h, static_cast<float>(cost), node});
   };
   for (const SearchEndpoint& source : sources) {
     if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
@@ -118,12 +126,13 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   };
   int expanded = 0;
   while (!open.empty()) {
-    std::pop_heap(open.begin(), open.end(), LaterEntry{});
-    const OpenEntry top = open.back();
-    open.pop_back();
-    if (closed[static_cast<size_t>(top.node)] != 0 || top.g > g[static_cast<size_t>(top.node)]) continue;
+    const OpenEntry top = open.pop();
+    // An entry whose node has a cheaper one has a larger f, so the cheaper one came first and
+    // closed the node (barring a tie in rounding, when the node is expanded at its cost in g[]).
+    if (closed[static_cast<size_t>(top.node)] != 0) continue;
     if (top.f > options.max_cost) break;
     closed[static_cast<size_t>(top.node)] = 1;
+    const double g_top = g[static_cast<size_t>(top.node)];
     ++expanded;
     if (top.node == goal_node) break;
 
@@ -133,7 +142,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     const int j = grid.armIndex(here);
     if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
       for (const SearchEndpoint& goal : goals) {
-        if (goal.cell == here) push(goal_node, top.g + goal.cost, top.node, 0.0);
+        if (goal.cell == here) push(goal_node, g_top + goal.cost, top.node, 0.0);
       }
     }
     const double p_here = grid.potential(here);
@@ -149,7 +158,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(here, di, dj)) continue;
         if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
         const double cost =
-            top.g + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
+            g_top + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
         if (cost >= g[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
         push(next, cost, top.node, heuristic(a, b, next_layer));
       }

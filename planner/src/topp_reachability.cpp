@@ -20,9 +20,9 @@ struct Quadratic {
 };
 
 // Appends the real roots of a t^2 + b t + c in [0, t_max].
-void addRoots(double a, double b, double c, double t_max, std::array<double, kMaxCandidates>& out, int& count) {
+void addRoots(double a, double b, double c, double t_max, std::array<double, 4>& out, int& count) {
   auto push = [&](double t) {
-    if (t >= 0.0 && t <= t_max && count < kMaxCandidates) out[static_cast<size_t>(count++)] = t;
+    if (t >= 0.0 && t <= t_max) out[static_cast<size_t>(count++)] = t;
   };
   if (std::abs(a) < 1e-300) {
     if (b != 0.0) push(-c / b);
@@ -63,52 +63,58 @@ int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward,
   return count;
 }
 
-// Largest t in [0, t_max] where every quadratic is within its bounds; -1 when none is. The
-// feasible set is a finite union of closed intervals whose ends are roots or 0 or t_max.
-double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max, bool any = false) {
-  auto feasible = [&](double t) {
-    for (int j = 0; j < rows; ++j) {
-      const Quadratic& r = q[static_cast<size_t>(j)];
-      const double v = r.at(t);
-      if (v > r.hi + kRowTolerance || v < r.lo - kRowTolerance) return false;
-    }
-    return true;
-  };
-  if (feasible(t_max)) return t_max;
-  std::array<double, kMaxCandidates> candidates{};
+[[nodiscard]] bool withinBounds(const Quadratic& r, double t) {
+  const double v = r.at(t);
+  return v <= r.hi + kRowTolerance && v >= r.lo - kRowTolerance;
+}
+
+// Largest t' in [0, t] where one row is within its bounds, -1 when none is. Its feasible set is
+// at most two closed intervals, whose right ends are roots of q = hi or q = lo, or t itself.
+double largestWithinBelow(const Quadratic& r, double t) {
+  std::array<double, 4> ends{};
   int count = 0;
-  for (int i = 0; i < rows; ++i) {
-    const Quadratic& r = q[static_cast<size_t>(i)];
-    const int before = count;
-    addRoots(r.a, r.b, r.c - r.hi, t_max, candidates, count);
-    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t_max, candidates, count);
-    if (any) {
-      for (int c = before; c < count; ++c) {
-        if (feasible(candidates[static_cast<size_t>(c)])) return candidates[static_cast<size_t>(c)];
-      }
-    }
-  }
-  if (any) return feasible(0.0) ? 0.0 : -1.0;
-  candidates[static_cast<size_t>(count++)] = 0.0;
-  std::sort(candidates.begin(), candidates.begin() + count, std::greater<>());
+  addRoots(r.a, r.b, r.c - r.hi, t, ends, count);
+  if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t, ends, count);
+  double best = withinBounds(r, 0.0) ? 0.0 : -1.0;
   for (int i = 0; i < count; ++i) {
-    if (feasible(candidates[static_cast<size_t>(i)])) return candidates[static_cast<size_t>(i)];
+    const double end = ends[static_cast<size_t>(i)];
+    if (end > best && withinBounds(r, end)) best = end;
   }
-  return -1.0;
+  return best;
+}
+
+// Largest t in [0, t_max] where every quadratic is within its bounds; -1 when none is. Descends
+// from t_max: each row that is violated moves t down to its own largest feasible point below t.
+// The answer is feasible for every row, so no step passes it; t falls strictly at each move and
+// lands only on one of finitely many roots, so the descent ends, usually after a move or two.
+double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max) {
+  double t = t_max;
+  int satisfied = 0;  // rows in a row, cyclically, found within bounds at the current t
+  for (int j = 0; satisfied < rows; j = (j + 1) % rows) {
+    const Quadratic& r = q[static_cast<size_t>(j)];
+    if (withinBounds(r, t)) {
+      ++satisfied;
+      continue;
+    }
+    t = largestWithinBelow(r, t);
+    if (t < 0.0) return -1.0;
+    satisfied = 1;
+  }
+  return t;
 }
 
 // Some c_{k+1} in [0, c_next_max] admits every row of interval k with c_k = c_now.
 bool reachable(const Problem& problem, int interval, double c_now, double c_next_max) {
   std::array<Quadratic, kMaxCandidates> q{};
   const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
-  return largestFeasible(q, rows, c_next_max, true) >= 0.0;
+  return largestFeasible(q, rows, c_next_max) >= 0.0;
 }
 
-// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-6: C_k is a cap
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-5: C_k is a cap
 // for the forward pass, and the optimiser absorbs anything below that.
 template <class Pred>
 double bisect(Pred pred, double lo, double hi) {
-  while (hi - lo > 1e-6 * hi) {
+  while (hi - lo > 1e-5 * hi) {
     const double mid = 0.5 * (lo + hi);
     (pred(mid) ? lo : hi) = mid;
   }

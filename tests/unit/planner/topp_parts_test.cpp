@@ -256,6 +256,55 @@ TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
   EXPECT_EQ(b.front(), clamped.controllable_start_b);
 }
 
+// The largest next speed against a dense scan of [0, c_max] (the rows' feasible set can be a
+// union of intervals, so the scan looks at all of it): the answer satisfies every row, and no
+// scanned speed above it does.
+TEST(ToppReachability, FastestNextSpeedIsTheLargestFeasibleOverSeededStates) {
+  const topp::Problem p = makeProblem(150);
+  std::vector<double> b, controllable;
+  ASSERT_EQ(topp::forwardBackward(p, b, controllable).status, topp::ReachabilityStatus::kOk);
+  auto within = [&](int k, double c0, double c1, double tolerance) {
+    const double b0 = c0 * c0, b1 = c1 * c1, a = (b1 - b0) / (2.0 * p.ds(k));
+    for (int i = p.row_begin[static_cast<size_t>(k)]; i < p.row_begin[static_cast<size_t>(k) + 1]; ++i) {
+      const topp::LinearRow& row = p.rows[static_cast<size_t>(i)];
+      const double v = row.value(a, b0, b1, c0, c1);
+      if (v > row.hi + tolerance || v < row.lo - tolerance) return false;
+    }
+    return true;
+  };
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> interval(0, p.intervals() - 1);
+  std::uniform_real_distribution<double> fraction(0.0, 1.3);
+  int found = 0, none = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int k = interval(rng);
+    const double c_cap = std::sqrt(std::max(controllable[static_cast<size_t>(k)], 1e-6));
+    const double c_now = fraction(rng) * c_cap;
+    const double c_max = fraction(rng) * std::sqrt(std::max(controllable[static_cast<size_t>(k) + 1], 1e-6));
+    const double c_next = topp::fastestNextSpeed(p, k, c_now, c_max);
+    constexpr int kScan = 4000;
+    double scanned = -1.0;
+    for (int i = kScan; i >= 0; --i) {
+      const double c = c_max * i / kScan;
+      if (within(k, c_now, c, 0.0)) {
+        scanned = c;
+        break;
+      }
+    }
+    if (c_next < 0.0) {
+      ++none;
+      EXPECT_LT(scanned, 0.0) << "trial " << trial << ": none found, but " << scanned << " is feasible";
+      continue;
+    }
+    ++found;
+    EXPECT_LE(c_next, c_max) << "trial " << trial;
+    EXPECT_TRUE(within(k, c_now, c_next, 1e-9)) << "trial " << trial << " c_next " << c_next;
+    EXPECT_LE(scanned, c_next * (1.0 + 1e-9) + 1e-12) << "trial " << trial << ": " << scanned << " above " << c_next;
+  }
+  EXPECT_GT(found, 200);
+  EXPECT_GT(none, 10);
+}
+
 TEST(ToppVariableLayout, NumbersEveryVariableOnceAndKeepsEachConstraintInTheBand) {
   for (const int grid_points : {2, 3, 7, 50}) {
     const topp::VariableLayout v{grid_points};
