@@ -35,10 +35,16 @@ void addRoots(double a, double b, double c, double t_max, std::array<double, 4>&
   if (q != 0.0) push(c / q);
 }
 
-// Rows of interval k in the speed of one end with the other end's speed fixed. `forward`: the
-// free speed is c_{k+1} (given c_k = fixed), else c_k (given c_{k+1} = fixed).
-int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward,
-                     std::array<Quadratic, kMaxCandidates>& q) {
+// A row of interval k, value = alpha (c1^2 - c0^2) / (2 ds) + beta ((1-w) c0^2 + w c1^2) +
+// gamma ((1-w) c0 + w c1), as a quadratic in either end's speed: c1^2 a_next + c1 b_next +
+// c0^2 a_now + c0 b_now. The backward pass asks many questions of one interval; the forms are
+// made once for all of them.
+struct RowForm {
+  double a_next, b_next, a_now, b_now, lo, hi;
+};
+using IntervalForms = std::array<RowForm, kMaxCandidates>;
+
+int intervalForms(const Problem& problem, int k, IntervalForms& forms) {
   const double inv = 1.0 / (2.0 * problem.ds(k));
   const int begin = problem.row_begin[static_cast<size_t>(k)];
   const int end = problem.row_begin[static_cast<size_t>(k) + 1];
@@ -46,21 +52,22 @@ int rowsAsQuadratics(const Problem& problem, int k, double fixed, bool forward,
   for (int i = begin; i < end && count < kMaxCandidates; ++i) {
     const LinearRow& r = problem.rows[static_cast<size_t>(i)];
     const double w = r.at;
-    const double f2 = fixed * fixed;
-    Quadratic out{0.0, 0.0, 0.0, r.lo, r.hi};
-    // value = alpha (c1^2 - c0^2) inv + beta ((1-w) c0^2 + w c1^2) + gamma ((1-w) c0 + w c1)
-    if (forward) {
-      out.a = r.alpha * inv + r.beta * w;
-      out.b = r.gamma * w;
-      out.c = -r.alpha * f2 * inv + (1.0 - w) * (r.beta * f2 + r.gamma * fixed);
-    } else {
-      out.a = -r.alpha * inv + r.beta * (1.0 - w);
-      out.b = r.gamma * (1.0 - w);
-      out.c = r.alpha * f2 * inv + w * (r.beta * f2 + r.gamma * fixed);
-    }
-    q[static_cast<size_t>(count++)] = out;
+    forms[static_cast<size_t>(count++)] = {r.alpha * inv + r.beta * w, r.gamma * w, -r.alpha * inv + r.beta * (1.0 - w),
+                                           r.gamma * (1.0 - w),        r.lo,        r.hi};
   }
   return count;
+}
+
+// The rows in the speed of one end with the other end's speed fixed. `forward`: the free speed
+// is c_{k+1} (given c_k = fixed), else c_k (given c_{k+1} = fixed).
+void rowsAsQuadratics(const IntervalForms& forms, int rows, double fixed, bool forward,
+                      std::array<Quadratic, kMaxCandidates>& q) {
+  const double f2 = fixed * fixed;
+  for (int i = 0; i < rows; ++i) {
+    const RowForm& r = forms[static_cast<size_t>(i)];
+    q[static_cast<size_t>(i)] = forward ? Quadratic{r.a_next, r.b_next, r.a_now * f2 + r.b_now * fixed, r.lo, r.hi}
+                                        : Quadratic{r.a_now, r.b_now, r.a_next * f2 + r.b_next * fixed, r.lo, r.hi};
+  }
 }
 
 [[nodiscard]] bool withinBounds(const Quadratic& r, double t) {
@@ -103,10 +110,10 @@ double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows,
   return t;
 }
 
-// Some c_{k+1} in [0, c_next_max] admits every row of interval k with c_k = c_now.
-bool reachable(const Problem& problem, int interval, double c_now, double c_next_max) {
-  std::array<Quadratic, kMaxCandidates> q{};
-  const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
+// Some c_{k+1} in [0, c_next_max] admits every row of the interval with c_k = c_now.
+bool reachable(const IntervalForms& forms, int rows, double c_now, double c_next_max) {
+  std::array<Quadratic, kMaxCandidates> q;
+  rowsAsQuadratics(forms, rows, c_now, true, q);
   return largestFeasible(q, rows, c_next_max) >= 0.0;
 }
 
@@ -169,8 +176,10 @@ AccelInterval admissibleAcceleration(const Problem& problem, int interval, doubl
 }
 
 double fastestNextSpeed(const Problem& problem, int interval, double c_now, double c_next_max) {
-  std::array<Quadratic, kMaxCandidates> q{};
-  const int rows = rowsAsQuadratics(problem, interval, c_now, true, q);
+  IntervalForms forms;
+  const int rows = intervalForms(problem, interval, forms);
+  std::array<Quadratic, kMaxCandidates> q;
+  rowsAsQuadratics(forms, rows, c_now, true, q);
   return largestFeasible(q, rows, c_next_max);
 }
 
@@ -188,9 +197,11 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     const double c_next = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
     // Usually the largest c_k is the one that lands exactly on sqrt(C_{k+1}) (braking binds);
     // where c_k is limited by its own limits a harder braking may allow more, so search above.
-    auto stoppable = [&](double c) { return reachable(problem, k, c, c_next); };
-    std::array<Quadratic, kMaxCandidates> q{};
-    const int rows = rowsAsQuadratics(problem, k, c_next, false, q);
+    IntervalForms forms;
+    const int rows = intervalForms(problem, k, forms);
+    auto stoppable = [&](double c) { return reachable(forms, rows, c, c_next); };
+    std::array<Quadratic, kMaxCandidates> q;
+    rowsAsQuadratics(forms, rows, c_next, false, q);
     double c = largestFeasible(q, rows, problem.speed_bound);
     if (c < 0.0) {
       if (!stoppable(0.0)) {
