@@ -117,11 +117,11 @@ bool reachable(const IntervalForms& forms, int rows, double c_now, double c_next
   return largestFeasible(q, rows, c_next_max) >= 0.0;
 }
 
-// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-4: C_k is a cap
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-5: C_k is a cap
 // for the forward pass, and the optimiser absorbs anything below that.
 template <class Pred>
 double bisect(Pred pred, double lo, double hi) {
-  while (hi - lo > 1e-4 * hi) {
+  while (hi - lo > 1e-5 * hi) {
     const double mid = 0.5 * (lo + hi);
     (pred(mid) ? lo : hi) = mid;
   }
