@@ -332,6 +332,12 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
       direct = judged(timePaths(model_, direct_paths.value(), request.start_velocity));
     }
     if (!direct.plan && !direct_paths) direct.plan = direct_paths.error();
+    if (!direct.plan && !stopped.plan) {
+      // Neither serves: say why stopping first did not either (a stop into an obstacle or a joint
+      // limit, or no way on from where it stops), not only why leaving along the velocity failed.
+      return Result<Plan>::failure(direct.plan.status(),
+                                   direct.plan.error().reason + "; stopping first: " + stopped.plan.error().reason);
+    }
     chosen = stopped.plan && (!direct.plan || stopped.rank() < direct.rank()) ? std::move(stopped.plan)
                                                                               : std::move(direct.plan);
   }

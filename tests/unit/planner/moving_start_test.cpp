@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -121,6 +122,26 @@ TEST(MovingStart, AShortMoveAfterTheStopIsSlowedRatherThanLosingToTheSlowerCandi
   const ColumnConsistency c = columnConsistency(*plan.value().trajectory, kStepS);
   EXPECT_LE(c.position_error, 0.01);
   EXPECT_LE(c.velocity_error, 0.02);
+}
+
+// A state no plan can serve: 10 ms from the clearance and 20 ms from touching the reef's L4 trunk,
+// moving into it at 1.5 m/s and 3.2 rad/s with coral held (from rest the goal is 72 ms away). The
+// refusal says why stopping first did not serve either.
+TEST(MovingStart, ARefusalSaysWhyStoppingFirstFailedToo) {
+  const auto planner = MotionPlanner::create(test::referenceModel());
+  ASSERT_TRUE(planner.ok());
+  PlanRequest request;
+  request.start = JointVector(1.4124, 5.6042);
+  request.goal = JointVector(1.4750, 5.3602);
+  request.pieces = HeldPieces{true, false};
+  ASSERT_TRUE(planner.value().plan(request).ok());
+  request.start_velocity = JointVector(1.4675, 3.1783);
+  const auto plan = planner.value().plan(request);
+  ASSERT_FALSE(plan.ok());
+  EXPECT_NE(
+      plan.error().reason.find("; stopping first: braking along the start velocity comes closer than the clearance"),
+      std::string::npos)
+      << plan.error().reason;
 }
 
 // The reef scene without game pieces, for fastestStop on its own.
