@@ -1,6 +1,7 @@
 #include "cyber/planner/astar_search.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,21 +11,28 @@
 namespace cyber::planner {
 namespace {
 
-// 16 bytes, so that a heap node's four children share a cache line or two. g is needed only to
-// break ties in f; the node's own cost is read from g[] when it is expanded.
+// The open list's order as two integers, compared without branches (popping dominates the
+// search): smallest f first; among equal f the deeper node (larger g), which expands fewer nodes;
+// then the smaller node, so the order is total and the search's path does not depend on the heap.
+// f and g are never negative, and the bits of non-negative IEEE numbers order as their values.
+// g is needed only for the tie; the node's own cost is read from g[] when it is expanded.
 struct OpenEntry {
-  double f;
-  float g;
-  int node;
+  std::uint64_t f_bits;
+  std::uint64_t tie;  // ~bits(float g) << 32 | node
+
+  OpenEntry(double f, double g, int node)
+      : f_bits(std::bit_cast<std::uint64_t>(f)),
+        tie(static_cast<std::uint64_t>(~std::bit_cast<std::uint32_t>(static_cast<float>(g))) << 32 |
+            static_cast<std::uint32_t>(node)) {}
+  [[nodiscard]] double f() const { return std::bit_cast<double>(f_bits); }
+  [[nodiscard]] int node() const { return static_cast<int>(tie & 0xffffffffU); }
 };
 
-// Smallest f first; among equal f the deeper node (larger g), which expands fewer nodes; then the
-// smaller node, so the order is total and the search's path does not depend on the heap.
 struct EarlierEntry {
+  // Bitwise, not short-circuit: the comparisons of a pop are unpredictable, and branches on them
+  // cost more than doing both.
   bool operator()(const OpenEntry& a, const OpenEntry& b) const {
-    if (a.f != b.f) return a.f < b.f;
-    if (a.g != b.g) return a.g > b.g;
-    return a.node < b.node;
+    return (a.f_bits < b.f_bits) | ((a.f_bits == b.f_bits) & (a.tie < b.tie));
   }
 };
 
@@ -112,7 +120,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
     if (cost >= g[static_cast<size_t>(node)]) return;
     g[static_cast<size_t>(node)] = cost;
     parent[static_cast<size_t>(node)] = from;
-    open.push({cost + h, static_cast<float>(cost), node});
+    open.push(OpenEntry(cost + h, cost, node));
   };
   for (const SearchEndpoint& source : sources) {
     if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
@@ -126,23 +134,24 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   };
   int expanded = 0;
   while (!open.empty()) {
-    const OpenEntry top = open.pop();
+    const OpenEntry entry = open.pop();
+    const int top = entry.node();
     // An entry whose node has a cheaper one has a larger f, so the cheaper one came first and
     // closed the node (barring a tie in rounding, when the node is expanded at its cost in g[]).
-    if (closed[static_cast<size_t>(top.node)] != 0) continue;
-    if (top.f > options.max_cost) break;
-    closed[static_cast<size_t>(top.node)] = 1;
-    const double g_top = g[static_cast<size_t>(top.node)];
+    if (closed[static_cast<size_t>(top)] != 0) continue;
+    if (entry.f() > options.max_cost) break;
+    closed[static_cast<size_t>(top)] = 1;
+    const double g_top = g[static_cast<size_t>(top)];
     ++expanded;
-    if (top.node == goal_node) break;
+    if (top == goal_node) break;
 
-    const int layer = top.node >= n ? 1 : 0;
-    const int here = top.node - layer * n;
+    const int layer = top >= n ? 1 : 0;
+    const int here = top - layer * n;
     const int i = grid.elevatorIndex(here);
     const int j = grid.armIndex(here);
     if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
       for (const SearchEndpoint& goal : goals) {
-        if (goal.cell == here) push(goal_node, g_top + goal.cost, top.node, 0.0);
+        if (goal.cell == here) push(goal_node, g_top + goal.cost, top, 0.0);
       }
     }
     const double p_here = grid.potential(here);
@@ -160,7 +169,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
         const double cost =
             g_top + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
         if (cost >= g[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
-        push(next, cost, top.node, heuristic(a, b, next_layer));
+        push(next, cost, top, heuristic(a, b, next_layer));
       }
     }
   }
