@@ -110,11 +110,17 @@ double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows,
   return t;
 }
 
+// Largest speed in [0, cap] at the free end (`forward`: c_{k+1}, else c_k) that every row of the
+// interval admits with the other end's speed fixed; -1 when none does.
+double largestFreeSpeed(const IntervalForms& forms, int rows, double fixed, bool forward, double cap) {
+  std::array<Quadratic, kMaxCandidates> q;
+  rowsAsQuadratics(forms, rows, fixed, forward, q);
+  return largestFeasible(q, rows, cap);
+}
+
 // Some c_{k+1} in [0, c_next_max] admits every row of the interval with c_k = c_now.
 bool reachable(const IntervalForms& forms, int rows, double c_now, double c_next_max) {
-  std::array<Quadratic, kMaxCandidates> q;
-  rowsAsQuadratics(forms, rows, c_now, true, q);
-  return largestFeasible(q, rows, c_next_max) >= 0.0;
+  return largestFreeSpeed(forms, rows, c_now, true, c_next_max) >= 0.0;
 }
 
 // Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-5: C_k is a cap
@@ -178,9 +184,7 @@ AccelInterval admissibleAcceleration(const Problem& problem, int interval, doubl
 double fastestNextSpeed(const Problem& problem, int interval, double c_now, double c_next_max) {
   IntervalForms forms;
   const int rows = intervalForms(problem, interval, forms);
-  std::array<Quadratic, kMaxCandidates> q;
-  rowsAsQuadratics(forms, rows, c_now, true, q);
-  return largestFeasible(q, rows, c_next_max);
+  return largestFreeSpeed(forms, rows, c_now, true, c_next_max);
 }
 
 ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& b, std::vector<double>& controllable,
@@ -200,9 +204,7 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     IntervalForms forms;
     const int rows = intervalForms(problem, k, forms);
     auto stoppable = [&](double c) { return reachable(forms, rows, c, c_next); };
-    std::array<Quadratic, kMaxCandidates> q;
-    rowsAsQuadratics(forms, rows, c_next, false, q);
-    double c = largestFeasible(q, rows, problem.speed_bound);
+    double c = largestFreeSpeed(forms, rows, c_next, false, problem.speed_bound);
     if (c < 0.0) {
       if (!stoppable(0.0)) {
         result.status = ReachabilityStatus::kNotControllable;
