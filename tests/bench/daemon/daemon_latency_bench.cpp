@@ -35,12 +35,17 @@ using namespace std::chrono_literals;
 using cyber::daemon::io::Daemon;
 using cyber::daemon::io::DaemonProbe;
 
-void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
+// One line of wake-up latencies: the streamer's and the bare timers' share it, so they line up.
+void printLatency(const char* label, const cyber::daemon::io::LatencyHistogram& jitter, long long overruns,
+                  bool realtime) {
   std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n", label,
-              static_cast<long long>(channels.jitter.count()), channels.jitter.percentileUs(0.5),
-              channels.jitter.percentileUs(0.99), channels.jitter.maxUs(),
-              static_cast<long long>(channels.overruns.load()),
-              channels.realtime_priority.load() > 0 ? "on" : "refused");
+              static_cast<long long>(jitter.count()), jitter.percentileUs(0.5), jitter.percentileUs(0.99),
+              jitter.maxUs(), overruns, realtime ? "on" : "refused");
+}
+
+void printJitter(const char* label, const cyber::daemon::io::StreamerChannels& channels) {
+  printLatency(label, channels.jitter, static_cast<long long>(channels.overruns.load()),
+               channels.realtime_priority.load() > 0);
 }
 
 // Runs a daemon on its own thread and plays the robot: ARM_STATE follows the commanded position
@@ -157,10 +162,7 @@ class Rig {
 };
 
 void printTimer(const char* label, const cyber::test::BareTimerResult& result) {
-  std::printf("%-34s ticks %6lld  p50 %7.1f us  p99 %7.1f us  max %8.1f us  overruns %lld  (SCHED_FIFO %s)\n", label,
-              static_cast<long long>(result.jitter.count()), result.jitter.percentileUs(0.5),
-              result.jitter.percentileUs(0.99), result.jitter.maxUs(), static_cast<long long>(result.overruns.load()),
-              result.realtime.load() ? "on" : "refused");
+  printLatency(label, result.jitter, static_cast<long long>(result.overruns.load()), result.realtime.load());
 }
 
 // The machine's own timer latency: a bare SCHED_FIFO thread on a 200 Hz timerfd, no daemon.
