@@ -9,6 +9,13 @@
 #include "cyber/planner/topp_reachability.hpp"
 
 namespace cyber::planner {
+namespace {
+
+// An estimate compares candidate paths, and a C_k short by this much costs far less time than the
+// differences it decides (the TOPP itself bisects to topp::Problem's default).
+constexpr double kEstimateControllableTolerance = 1e-3;
+
+}  // namespace
 
 TimedFractions reachabilityTimes(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives,
                                  double b_start, int grid_points) {
@@ -28,6 +35,7 @@ TimedFractions reachabilityTimes(const GeometricPath& path, const std::array<Dri
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
   problem.speed_bound = 1e3 / length;
+  problem.controllable_tolerance = kEstimateControllableTolerance;
   std::vector<double> b, controllable;
   if (topp::forwardBackward(problem, b, controllable).status != topp::ReachabilityStatus::kOk) return out;
   out.fraction = problem.s;

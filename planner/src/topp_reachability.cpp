@@ -126,8 +126,8 @@ bool reachable(const IntervalForms& forms, int rows, double c_now, double c_next
 // Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-5: C_k is a cap
 // for the forward pass, and the optimiser absorbs anything below that.
 template <class Pred>
-double bisect(Pred pred, double lo, double hi) {
-  while (hi - lo > 1e-5 * hi) {
+double bisect(Pred pred, double lo, double hi, double tolerance) {
+  while (hi - lo > tolerance * hi) {
     const double mid = 0.5 * (lo + hi);
     (pred(mid) ? lo : hi) = mid;
   }
@@ -138,23 +138,23 @@ double bisect(Pred pred, double lo, double hi) {
 // controllable speed varies little from node to node, so a geometric search from the guess
 // brackets it in a few steps (assumes pred holds on an interval).
 template <class Pred>
-double largestTrueNear(Pred pred, double known, double guess, double c_max) {
+double largestTrueNear(Pred pred, double known, double guess, double c_max, double tolerance) {
   guess = std::clamp(guess, known, c_max);
   double step = 1e-4 * std::max(guess, 1e-3);
   if (guess > known && !pred(guess)) {
     double hi = guess;
     for (double c = guess - step; c > known; step *= 4.0, c = guess - step) {
-      if (pred(c)) return bisect(pred, c, hi);
+      if (pred(c)) return bisect(pred, c, hi, tolerance);
       hi = c;
     }
-    return bisect(pred, known, hi);
+    return bisect(pred, known, hi, tolerance);
   }
   double lo = guess;
   for (double c = lo + step; c < c_max; step *= 4.0, c = lo + step) {
-    if (!pred(c)) return bisect(pred, lo, c);
+    if (!pred(c)) return bisect(pred, lo, c, tolerance);
     lo = c;
   }
-  return pred(c_max) ? c_max : bisect(pred, lo, c_max);
+  return pred(c_max) ? c_max : bisect(pred, lo, c_max, tolerance);
 }
 
 }  // namespace
@@ -224,8 +224,12 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
         return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
       };
       const double guess = std::max(c, previous);
-      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, problem.speed_bound) : c;
-      c = stoppable(c_left) ? c_left : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left);
+      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, problem.speed_bound,
+                                                                problem.controllable_tolerance)
+                                              : c;
+      c = stoppable(c_left)
+              ? c_left
+              : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left, problem.controllable_tolerance);
     }
     previous = c;
     controllable[static_cast<size_t>(k)] = c * c;

@@ -81,6 +81,8 @@ struct Problem {
   // No speed c = sqrt(b) above this is searched for (a bound far above any motor's reach, in
   // the problem's units).
   double speed_bound = 1e3;
+  // The backward pass bisects each C_k to this relative width (a cap for the forward pass).
+  double controllable_tolerance = 1e-5;
   [[nodiscard]] int gridPoints() const { return static_cast<int>(s.size()); }
   [[nodiscard]] int intervals() const { return gridPoints() - 1; }
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
