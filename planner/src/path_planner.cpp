@@ -82,6 +82,11 @@ constexpr int kBandRadius = 6;
 constexpr double kShapeRatio = 1.02;
 constexpr double kShapeGain = 0.002;
 constexpr int kShapeCheckGridPoints = 100;
+// The shape search goes on with more bumps and evaluations (path_shaping.hpp) when its shape is
+// still estimated this much slower than the slower joint alone (40 grid points each). On the
+// public moves 56 pass; at 1.10 two moves (coral L1 -> NET, none NET -> L1) stayed above 1.03 of
+// the best known.
+constexpr double kRefineRatio = 1.05;
 // A direct path is shaped from this many knots along its straight segment, when its estimate (on
 // this many grid points) is this much above its slower joint's alone: on the public moves those
 // that gained were 1.006-1.06 above, the others equal (one joint's limits bind all along).
@@ -91,6 +96,10 @@ constexpr double kDirectShapeRatio = 1.003;
 // The synchronised candidate is tried when the slower joint alone is this much faster than the
 // fastest candidate's estimate (100 grid points): below that it cannot gain enough to matter.
 constexpr double kSynchronisedRatio = 1.01;
+// Nor when it is this much slower: then the obstacles decide the move, and the joints' own motions
+// side by side run into them (on the public moves the synchronised candidate was found only below
+// 1.045; above, its profiles and clearance checks cost 1-2 ms for nothing).
+constexpr double kSynchronisedMaxRatio = 1.08;
 // The other side of this many holes of C-space (the largest) is searched for as well.
 // Only when it costs at most this much more than the first path in the search's own metric (the
 // other sides that were faster on the public moves cost 1.03-1.06 times as much; most that were
@@ -340,9 +349,19 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     better.method = std::move(method);
     candidates.insert(candidates.begin(), std::move(better));
   };
-  // The shape search from `knots` (through which `fastest` runs).
+  // The shape search from `knots` (through which `fastest` runs), refined further when its shape
+  // is still estimated well above the slower joint moving alone.
   auto add_shaped = [&](const PlannedPath& fastest, const std::vector<JointVector>& knots) {
     ShapedPath shaped = shapeForTime(knots, fixed_head, start_velocity, world, model_, b_start, ShapeSearchSettings{});
+    const ShapeRefinementSettings refinement;
+    if (shaped.estimate_s > kRefineRatio * slowerJointAlone(from, goal, metric, drives, refinement.grid_points)) {
+      ShapedPath refined =
+          refineShapeForTime(shaped.waypoints, fixed_head, start_velocity, world, model_, b_start, refinement);
+      if (refined.improvements > 0) {
+        refined.improvements += shaped.improvements;
+        shaped = std::move(refined);
+      }
+    }
     if (shaped.improvements == 0) return;
     put_first_if_faster(fastest, estimateDuration(*fastest.path, drives, b_start, kShapeCheckGridPoints),
                         std::move(shaped.path), std::move(shaped.waypoints), shaped.min_clearance_m,
@@ -415,7 +434,8 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     // public moves are already within a per cent of it.
     const PlannedPath fastest = candidates.front();
     const double fastest_s = estimateDuration(*fastest.path, drives, 0.0, kShapeCheckGridPoints);
-    if (fastest_s > kSynchronisedRatio * slowerJointAlone(start, goal, metric, drives, kTimingGridPoints)) {
+    const double slower_alone_s = slowerJointAlone(start, goal, metric, drives, kTimingGridPoints);
+    if (fastest_s > kSynchronisedRatio * slower_alone_s && fastest_s < kSynchronisedMaxRatio * slower_alone_s) {
       if (auto synchronised = synchronisedPath(start, goal, world, model_, fastest_s / kSynchronisedRatio)) {
         put_first_if_faster(fastest, fastest_s, std::move(synchronised->path), std::move(synchronised->waypoints),
                             synchronised->min_clearance_m, "synchronised joints");

@@ -1,6 +1,7 @@
 #include "public_moves.hpp"
 
 #include <map>
+#include <stdexcept>
 
 namespace cyber::test {
 namespace {
@@ -57,6 +58,13 @@ const std::vector<PublicMove>& publicMoves() {
     return out;
   }();
   return moves;
+}
+
+const PublicMove& publicMove(const std::string& label) {
+  for (const PublicMove& move : publicMoves()) {
+    if (move.label == label) return move;
+  }
+  throw std::out_of_range("no public move " + label);
 }
 
 }  // namespace cyber::test

@@ -25,5 +25,7 @@ struct PublicMove {
 const std::vector<NamedPose>& publicPoses(const std::string& piece_set);
 // All 144 ordered pairs.
 const std::vector<PublicMove>& publicMoves();
+// The move with this label; throws std::out_of_range when there is none.
+const PublicMove& publicMove(const std::string& label);
 
 }  // namespace cyber::test
