@@ -157,6 +157,62 @@ double largestTrueNear(Pred pred, double known, double guess, double c_max, doub
   return pred(c_max) ? c_max : bisect(pred, lo, c_max, tolerance);
 }
 
+// Largest c in [known, cap] such that every speed from `known` to c is one at which the rows at
+// interval k's left end alone admit an acceleration that brakes to at most `next` (a speed
+// squared) by its right end; `known` itself when it is not one. With b = c^2 each row bounds a by
+// a quadratic in c over alpha, so "the lowest admitted a brakes enough" and "the admitted a are
+// not empty" are quadratic conditions in c, and the answer is the first root above `known` at
+// which one of them stops holding (where a bisection of admissibleAcceleration took a dozen
+// passes over the rows). Above that root the conditions can hold again (two joints' terms in
+// c^2 can cancel far above any reachable speed); those speeds are not connected to `known`.
+double leftStoppableAbove(const Problem& problem, int k, double next, double known, double cap) {
+  const double inv = 1.0 / (2.0 * problem.ds(k));
+  const int begin = problem.row_begin[static_cast<size_t>(k)];
+  const int end = problem.row_begin[static_cast<size_t>(k) + 1];
+  // a >= (bound - beta c^2 - gamma c) / alpha, and a <= the same with the other bound.
+  struct Bound {
+    double c2, c1, c0;
+  };
+  std::array<Bound, kMaxCandidates> lower{}, upper{};
+  int lowers = 0, uppers = 0;
+  double top = cap;
+  bool feasible = true;
+  auto limit = [&](const Quadratic& r) {
+    if (!withinBounds(r, known)) feasible = false;
+    std::array<double, 4> roots{};
+    int count = 0;
+    addRoots(r.a, r.b, r.c - r.hi, top, roots, count);
+    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, top, roots, count);
+    for (int i = 0; i < count; ++i) {
+      if (roots[static_cast<size_t>(i)] > known) top = std::min(top, roots[static_cast<size_t>(i)]);
+    }
+  };
+  for (int i = begin; i < end; ++i) {
+    const LinearRow& row = problem.rows[static_cast<size_t>(i)];
+    if (row.at != 0.0) continue;
+    if (row.alpha == 0.0) {
+      limit({row.beta, row.gamma, 0.0, row.lo, row.hi});
+      continue;
+    }
+    const double low = row.alpha > 0.0 ? row.lo : row.hi, high = row.alpha > 0.0 ? row.hi : row.lo;
+    const double c2 = -row.beta / row.alpha, c1 = -row.gamma / row.alpha;
+    if (std::isfinite(low) && lowers < kMaxCandidates) lower[static_cast<size_t>(lowers++)] = {c2, c1, low / row.alpha};
+    if (std::isfinite(high) && uppers < kMaxCandidates)
+      upper[static_cast<size_t>(uppers++)] = {c2, c1, high / row.alpha};
+  }
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < lowers; ++i) {
+    const Bound& l = lower[static_cast<size_t>(i)];
+    // c^2 + 2 a ds <= next at the lowest a: l(c) - (next - c^2) / (2 ds) <= 0.
+    limit({l.c2 + inv, l.c1, l.c0 - next * inv, -kInf, 0.0});
+    for (int j = 0; j < uppers; ++j) {
+      const Bound& u = upper[static_cast<size_t>(j)];
+      limit({l.c2 - u.c2, l.c1 - u.c1, l.c0 - u.c0, -kInf, 0.0});
+    }
+  }
+  return feasible ? top : known;
+}
+
 }  // namespace
 
 AccelInterval admissibleAcceleration(const Problem& problem, int interval, double b) {
@@ -217,16 +273,8 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
     if (stoppable(c * (1.0 + 1e-9) + 1e-12)) {
       // The left-end rows alone (a linear interval in a) bound c_k cheaply from above; all rows
       // are checked there and searched below it only when the right-end rows cut it down.
-      const double next = c_next * c_next;
-      const double ds = problem.ds(k);
-      auto stoppable_left = [&](double cc) {
-        const AccelInterval a = admissibleAcceleration(problem, k, cc * cc);
-        return !a.empty() && cc * cc + 2.0 * a.lo * ds <= next * (1.0 + 1e-12) + 1e-15;
-      };
       const double guess = std::max(c, previous);
-      const double c_left = stoppable_left(c) ? largestTrueNear(stoppable_left, c, guess, problem.speed_bound,
-                                                                problem.controllable_tolerance)
-                                              : c;
+      const double c_left = leftStoppableAbove(problem, k, c_next * c_next, c, problem.speed_bound);
       c = stoppable(c_left)
               ? c_left
               : largestTrueNear(stoppable, c, std::min(guess, c_left), c_left, problem.controllable_tolerance);

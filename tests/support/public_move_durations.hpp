@@ -124,7 +124,7 @@ inline constexpr std::array<StoredDuration, 144> kStoredDurations{{
     {"none:L3->NET", 0.434921, 0.436185},
     {"none:L3->PROCESSOR", 0.597046, 0.604761},
     {"none:L3->STOW", 0.449269, 0.453444},
-    {"none:L4->ALGAE_HIGH", 0.677362, 0.691734},
+    {"none:L4->ALGAE_HIGH", 0.677362, 0.689923},
     {"none:L4->ALGAE_LOW", 0.677267, 0.684243},
     {"none:L4->INTAKE", 0.541949, 0.547130},
     {"none:L4->L1", 0.570708, 0.575026},

@@ -256,6 +256,29 @@ TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {
   EXPECT_EQ(b.front(), clamped.controllable_start_b);
 }
 
+// Each node's controllable speed is the top of the speeds from which the node after can be reached
+// within its own controllable speed: every speed up to it can (scanned), and a speed 10^-4 above
+// it cannot (fastestNextSpeed, checked against a scan below, answers "can").
+TEST(ToppReachability, ControllableSpeedIsTheTopOfTheStoppableSpeedsAtEveryNode) {
+  for (const double b_start : {0.0, 0.5}) {
+    const topp::Problem p = makeProblem(150, b_start);
+    std::vector<double> b, controllable;
+    ASSERT_EQ(topp::forwardBackward(p, b, controllable).status, topp::ReachabilityStatus::kOk);
+    int capped = 0;
+    for (int k = 0; k < p.intervals(); ++k) {
+      const double c_top = std::sqrt(controllable[static_cast<size_t>(k)]);
+      const double c_next = std::sqrt(controllable[static_cast<size_t>(k) + 1]);
+      auto stoppable = [&](double c) { return topp::fastestNextSpeed(p, k, c, c_next) >= 0.0; };
+      for (int i = 0; i <= 50; ++i) EXPECT_TRUE(stoppable(c_top * i / 50)) << "node " << k << ", " << i << "/50";
+      if (c_top < 0.99 * p.speed_bound) {
+        ++capped;
+        EXPECT_FALSE(stoppable(c_top * (1.0 + 1e-4) + 1e-9)) << "node " << k << ": C_k could be larger";
+      }
+    }
+    EXPECT_GT(capped, 100);
+  }
+}
+
 // The largest next speed against a dense scan of [0, c_max] (the rows' feasible set can be a
 // union of intervals, so the scan looks at all of it): the answer satisfies every row, and no
 // scanned speed above it does.
