@@ -162,9 +162,8 @@ double largestTrueNear(Pred pred, double known, double guess, double c_max, doub
 // squared) by its right end; `known` itself when it is not one. With b = c^2 each row bounds a by
 // a quadratic in c over alpha, so "the lowest admitted a brakes enough" and "the admitted a are
 // not empty" are quadratic conditions in c, and the answer is the first root above `known` at
-// which one of them stops holding (where a bisection of admissibleAcceleration took a dozen
-// passes over the rows). Above that root the conditions can hold again (two joints' terms in
-// c^2 can cancel far above any reachable speed); those speeds are not connected to `known`.
+// which one of them stops holding: exact, and one pass over the rows. Above that root the conditions can hold again
+// (two joints' terms in c^2 can cancel far above any reachable speed); those speeds are not connected to `known`.
 double leftStoppableAbove(const Problem& problem, int k, double next, double known, double cap) {
   const double inv = 1.0 / (2.0 * problem.ds(k));
   const int begin = problem.row_begin[static_cast<size_t>(k)];
