@@ -5,6 +5,7 @@
 #include "cyber/planner/path_shaping.hpp"
 
 #include <array>
+#include <span>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -25,8 +26,13 @@ const PathPlanner& planner() { return test::referencePathPlanner(); }
 // Both searches on the search's own smoothed path of every public move that has one: never
 // slower nor less clear than their input, the fixed knots kept. Returns how many moves were
 // shaped and how many of them became 3 % faster.
-template <class Search>
-std::array<int, 2> checkOnPublicMoves(const Search& search, int max_evaluations, int grid_points) {
+template <class Settings>
+using ShapeSearch = ShapedPath (*)(std::span<const JointVector>, int, const JointVector&, const CollisionWorld&,
+                                   const RobotModel&, double, const Settings&);
+
+template <class Settings>
+std::array<int, 2> checkOnPublicMoves(ShapeSearch<Settings> search, const Settings& settings) {
+  const int max_evaluations = settings.max_evaluations, grid_points = settings.grid_points;
   const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
   int shaped = 0, much_faster = 0, checked = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
@@ -35,7 +41,7 @@ std::array<int, 2> checkOnPublicMoves(const Search& search, int max_evaluations,
     if (!found || found.value().front().direct) continue;
     const PlannedPath& path = found.value().front();
     const CollisionWorld& world = planner().world(move.pieces);
-    const ShapedPath result = search(path.waypoints, world);
+    const ShapedPath result = search(path.waypoints, 1, JointVector::Zero(), world, model(), 0.0, settings);
     ++checked;
     const double before_s = estimateDuration(*path.path, drives, 0.0, grid_points);
     EXPECT_LE(result.evaluations, max_evaluations) << move.label;
@@ -62,23 +68,13 @@ std::array<int, 2> checkOnPublicMoves(const Search& search, int max_evaluations,
 }
 
 TEST(ShapeForTime, NeverSlowerNorCloserAndKeepsTheEnds) {
-  const ShapeSearchSettings settings;
-  const auto [shaped, much_faster] = checkOnPublicMoves(
-      [&](const std::vector<JointVector>& waypoints, const CollisionWorld& world) {
-        return shapeForTime(waypoints, 1, JointVector::Zero(), world, model(), 0.0, settings);
-      },
-      settings.max_evaluations, settings.grid_points);
+  const auto [shaped, much_faster] = checkOnPublicMoves(shapeForTime, ShapeSearchSettings{});
   EXPECT_GT(shaped, 30) << "the search finds faster shapes on many moves";
   EXPECT_GT(much_faster, 5);
 }
 
 TEST(RefineShapeForTime, NeverSlowerNorCloserAndKeepsTheEnds) {
-  const ShapeRefinementSettings settings;
-  const auto [shaped, much_faster] = checkOnPublicMoves(
-      [&](const std::vector<JointVector>& waypoints, const CollisionWorld& world) {
-        return refineShapeForTime(waypoints, 1, JointVector::Zero(), world, model(), 0.0, settings);
-      },
-      settings.max_evaluations, settings.grid_points);
+  const auto [shaped, much_faster] = checkOnPublicMoves(refineShapeForTime, ShapeRefinementSettings{});
   EXPECT_GT(shaped, 30);
   EXPECT_GT(much_faster, 15) << "its budget is spent where it gains";
 }
