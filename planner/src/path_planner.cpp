@@ -84,8 +84,8 @@ constexpr double kShapeGain = 0.002;
 constexpr int kShapeCheckGridPoints = 100;
 // The shape search goes on with more bumps and evaluations (path_shaping.hpp) when its shape is
 // still estimated this much slower than the slower joint alone (40 grid points each). On the
-// public moves 56 pass; at 1.10 two moves (coral L1 -> NET, none NET -> L1) stayed above 1.03 of
-// the best known.
+// public moves 53 pass (50 are refined: three are direct paths with too few knots); at 1.10 two
+// moves (coral L1 -> NET, none NET -> L1) stayed above 1.03 of the best known.
 constexpr double kRefineRatio = 1.05;
 // A direct path is shaped from this many knots along its straight segment, when its estimate (on
 // this many grid points) is this much above its slower joint's alone: on the public moves those

@@ -80,6 +80,12 @@ class ShapeSearch {
     return Trial::kFaster;
   }
 
+  // The same over the whole path.
+  Trial tryStep(int parameter, double amount) {
+    double unused = 0.0;
+    return tryStep(parameter, amount, -1.0, 1.0, unused);
+  }
+
   ShapedPath take() { return std::move(best_); }
 
  private:
@@ -108,14 +114,13 @@ ShapedPath shapeForTime(std::span<const JointVector> waypoints, int fixed_head, 
   JointVector step = settings.initial_step;
   const JointVector min_step = settings.min_step_fraction * settings.initial_step;
   std::vector<int> last_sign(static_cast<size_t>(search.parameters()), 1);
-  double unused = 0.0;
   while (search.evaluations() < settings.max_evaluations && (step[0] >= min_step[0] || step[1] >= min_step[1])) {
     bool improved = false;
     for (int p = 0; p < search.parameters() && search.evaluations() < settings.max_evaluations; ++p) {
       // The direction that helped last time first.
       for (int sign : {last_sign[static_cast<size_t>(p)], -last_sign[static_cast<size_t>(p)]}) {
         if (search.evaluations() >= settings.max_evaluations) break;
-        if (search.tryStep(p, sign * step[p / bumps], -1.0, 1.0, unused) != ShapeSearch::Trial::kFaster) continue;
+        if (search.tryStep(p, sign * step[p / bumps]) != ShapeSearch::Trial::kFaster) continue;
         last_sign[static_cast<size_t>(p)] = sign;
         improved = true;
         break;

@@ -75,13 +75,19 @@ void rowsAsQuadratics(const IntervalForms& forms, int rows, double fixed, bool f
   return v <= r.hi + kRowTolerance && v >= r.lo - kRowTolerance;
 }
 
+// The speeds in [0, t_max] where a row meets one of its bounds (q = hi, or q = lo when finite).
+int boundaryRoots(const Quadratic& r, double t_max, std::array<double, 4>& roots) {
+  int count = 0;
+  addRoots(r.a, r.b, r.c - r.hi, t_max, roots, count);
+  if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t_max, roots, count);
+  return count;
+}
+
 // Largest t' in [0, t] where one row is within its bounds, -1 when none is. Its feasible set is
 // at most two closed intervals, whose right ends are roots of q = hi or q = lo, or t itself.
 double largestWithinBelow(const Quadratic& r, double t) {
   std::array<double, 4> ends{};
-  int count = 0;
-  addRoots(r.a, r.b, r.c - r.hi, t, ends, count);
-  if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, t, ends, count);
+  const int count = boundaryRoots(r, t, ends);
   double best = withinBounds(r, 0.0) ? 0.0 : -1.0;
   for (int i = 0; i < count; ++i) {
     const double end = ends[static_cast<size_t>(i)];
@@ -123,8 +129,9 @@ bool reachable(const IntervalForms& forms, int rows, double c_now, double c_next
   return largestFreeSpeed(forms, rows, c_now, true, c_next_max) >= 0.0;
 }
 
-// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of 1e-5: C_k is a cap
-// for the forward pass, and the optimiser absorbs anything below that.
+// Bisects [lo, hi] (pred(lo) true, pred(hi) false) to a relative width of `tolerance`
+// (Problem::controllable_tolerance): C_k is a cap for the forward pass, and the optimiser absorbs
+// anything below that.
 template <class Pred>
 double bisect(Pred pred, double lo, double hi, double tolerance) {
   while (hi - lo > tolerance * hi) {
@@ -162,8 +169,9 @@ double largestTrueNear(Pred pred, double known, double guess, double c_max, doub
 // squared) by its right end; `known` itself when it is not one. With b = c^2 each row bounds a by
 // a quadratic in c over alpha, so "the lowest admitted a brakes enough" and "the admitted a are
 // not empty" are quadratic conditions in c, and the answer is the first root above `known` at
-// which one of them stops holding: exact, and one pass over the rows. Above that root the conditions can hold again
-// (two joints' terms in c^2 can cancel far above any reachable speed); those speeds are not connected to `known`.
+// which one of them stops holding: exact, and one pass over the rows. Above that root the
+// conditions can hold again (two joints' terms in c^2 can cancel far above any reachable speed);
+// those speeds are not connected to `known`.
 double leftStoppableAbove(const Problem& problem, int k, double next, double known, double cap) {
   const double inv = 1.0 / (2.0 * problem.ds(k));
   const int begin = problem.row_begin[static_cast<size_t>(k)];
@@ -179,9 +187,7 @@ double leftStoppableAbove(const Problem& problem, int k, double next, double kno
   auto limit = [&](const Quadratic& r) {
     if (!withinBounds(r, known)) feasible = false;
     std::array<double, 4> roots{};
-    int count = 0;
-    addRoots(r.a, r.b, r.c - r.hi, top, roots, count);
-    if (std::isfinite(r.lo)) addRoots(r.a, r.b, r.c - r.lo, top, roots, count);
+    const int count = boundaryRoots(r, top, roots);
     for (int i = 0; i < count; ++i) {
       if (roots[static_cast<size_t>(i)] > known) top = std::min(top, roots[static_cast<size_t>(i)]);
     }

@@ -41,13 +41,13 @@ struct ShapedPath {
 // window that holds the knots still there: the fastest paths touch the clearance, and a bump
 // over the whole path would otherwise push that place into the obstacle every time.
 struct ShapeRefinementSettings {
-  int bumps = 6;                         // per joint
-  int max_evaluations = 100;             // spline + reachability estimates
-  int grid_points = 40;                  // of each estimate
-  JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]
-  double min_step_fraction = 0.02;       // an amplitude whose step has shrunk to this share is done
-  double max_step_fraction = 4.0;        // steps grow to at most this share
-  double pin_width = 0.15;               // of the knots' arc fraction: the held window's half width (0: none)
+  int bumps = 6;                                                  // per joint
+  int max_evaluations = 100;                                      // spline + reachability estimates
+  int grid_points = ShapeSearchSettings{}.grid_points;            // of each estimate: the first search's,
+  JointVector initial_step = ShapeSearchSettings{}.initial_step;  // whose shape it goes on from
+  double min_step_fraction = 0.02;  // an amplitude whose step has shrunk to this share is done
+  double max_step_fraction = 4.0;   // steps grow to at most this share
+  double pin_width = 0.15;          // of the knots' arc fraction: the held window's half width (0: none)
 };
 
 // Starts from `waypoints` (their spline must already be clear); the first fixed_head knots and the
