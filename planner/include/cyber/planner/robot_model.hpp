@@ -7,18 +7,11 @@
 #include <vector>
 
 #include "cyber/planner/convex_polygon.hpp"
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/planner/topp_al_settings.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
-
-struct JointRange {
-  double min = 0.0;
-  double max = 0.0;
-  [[nodiscard]] bool contains(double x, double tolerance = 0.0) const {
-    return x >= min - tolerance && x <= max + tolerance;
-  }
-};
 
 // The carriage rail: pivot(t) = base + t * (cos tilt, sin tilt)  (algorithm.md section 1).
 struct Rail {
