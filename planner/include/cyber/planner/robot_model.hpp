@@ -8,6 +8,7 @@
 
 #include "cyber/planner/convex_polygon.hpp"
 #include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner/motor_params.hpp"
 #include "cyber/planner/topp_al_settings.hpp"
 #include "cyber/planner/types.hpp"
 
@@ -35,22 +36,6 @@ struct NamedPolygon {
 struct Scene {
   std::string name;
   std::vector<NamedPolygon> obstacles;
-};
-
-// DC motor figures as WPILib's DCMotor gives them.
-struct MotorParams {
-  double nominal_voltage_volts = 12.0;
-  double stall_torque_nm = 0.0;
-  double stall_current_amps = 0.0;
-  double free_current_amps = 0.0;
-  double free_speed_radps = 0.0;
-
-  [[nodiscard]] double resistanceOhms() const { return nominal_voltage_volts / stall_current_amps; }
-  // Kv in rad/s per volt of back-EMF.
-  [[nodiscard]] double kvRadpsPerVolt() const {
-    return free_speed_radps / (nominal_voltage_volts - resistanceOhms() * free_current_amps);
-  }
-  [[nodiscard]] double ktNmPerAmp() const { return stall_torque_nm / stall_current_amps; }
 };
 
 enum class GravityModel { kConstant, kCosine };  // elevator: g = 1; arm: g = cos(theta)
