@@ -11,6 +11,8 @@
 #include <map>
 #include <numbers>
 
+#include "read_chain.hpp"
+#include "read_drives.hpp"
 #include "table_reader.hpp"
 
 namespace cyber::config {
@@ -22,111 +24,11 @@ using detail::kPositive;
 using detail::TableReader;
 using planner::RobotModel;
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-void readJoints(TableReader joints, RobotModel& robot) {
-  TableReader elevator = joints.table("elevator");
-  robot.elevator_range_m.min = elevator.number("min_m");
-  robot.elevator_range_m.max = elevator.number("max_m", Bounds{robot.elevator_range_m.min, 1e300, true});
-  robot.rail.tilt_rad = elevator.number("tilt_deg", Bounds{-180.0, 180.0}) * kDegToRad;
-  robot.rail.base_m = elevator.vector2("base_m");
-  elevator.finish();
-
-  TableReader arm = joints.table("arm");
-  robot.arm_range_rad.min = arm.number("min_rad");
-  robot.arm_range_rad.max = arm.number("max_rad", Bounds{robot.arm_range_rad.min, 1e300, true});
-  if (robot.arm_range_rad.max - robot.arm_range_rad.min > 2.0 * std::numbers::pi + 1e-9) {
-    arm.fail("max_rad", "the arm range may span at most one turn (no wrap-around)");
-  }
-  arm.finish();
-  joints.finish();
-}
-
-void readRobot(TableReader robot_table, RobotModel& robot) {
-  robot.geometry.arm = robot_table.polygons("arm");
-  if (robot_table.has("coral")) robot.geometry.coral = robot_table.polygons("coral");
-  if (robot_table.has("algae")) robot.geometry.algae = robot_table.polygons("algae");
-  robot_table.finish();
-}
-
-void readScenes(TableReader& root, const std::map<std::string, planner::ConvexPolygon>& obstacles, RobotModel& robot) {
-  const toml::array& scenes = root.array("scenes");
-  if (scenes.empty()) root.fail("scenes", "expected at least one scene");
-  for (size_t i = 0; i < scenes.size(); ++i) {
-    const std::string path = "scenes[" + std::to_string(i) + "]";
-    TableReader scene = detail::tableAt(scenes[i], path);
-    planner::Scene out;
-    out.name = scene.string("name");
-    if (out.name.empty()) scene.fail("name", "must not be empty");
-    if (robot.sceneIndex(out.name) >= 0) scene.fail("name", "duplicate scene name \"" + out.name + "\"");
-    for (const std::string& name : scene.strings("obstacles")) {
-      const auto it = obstacles.find(name);
-      if (it == obstacles.end()) scene.fail("obstacles", "unknown obstacle \"" + name + "\"");
-      out.obstacles.push_back({name, it->second});
-    }
-    scene.finish();
-    robot.scenes.push_back(std::move(out));
-  }
-}
-
-planner::MotorParams readMotor(TableReader motor) {
-  planner::MotorParams m;
-  m.nominal_voltage_volts = motor.number("nominal_voltage_volts", kPositive);
-  m.stall_torque_nm = motor.number("stall_torque_nm", kPositive);
-  m.stall_current_amps = motor.number("stall_current_amps", kPositive);
-  m.free_current_amps = motor.number("free_current_amps", Bounds{0.0, m.stall_current_amps, false});
-  m.free_speed_radps = motor.number("free_speed_rpm", kPositive) * 2.0 * std::numbers::pi / 60.0;
-  motor.finish();
-  return m;
-}
-
-planner::DriveParams readDrive(TableReader drive, const std::map<std::string, planner::MotorParams>& motors,
-                               planner::GravityModel expected_gravity) {
-  planner::DriveParams d;
-  const std::string motor = drive.string("motor");
-  const auto it = motors.find(motor);
-  if (it == motors.end()) drive.fail("motor", "unknown motor \"" + motor + "\" (define it under [motors])");
-  d.motor = it->second;
-  d.motor_count = static_cast<int>(drive.integer("count", 1, 16));
-  d.gearing = drive.number("gearing", kPositive);
-  const std::string gravity = drive.string("gravity");
-  if (gravity == "constant") {
-    d.gravity = planner::GravityModel::kConstant;
-  } else if (gravity == "cosine") {
-    d.gravity = planner::GravityModel::kCosine;
-  } else {
-    drive.fail("gravity", "expected \"constant\" or \"cosine\", got \"" + gravity + "\"");
-  }
-  if (d.gravity != expected_gravity) {
-    drive.fail("gravity", expected_gravity == planner::GravityModel::kConstant
-                              ? "the elevator carries a constant gravity load: use \"constant\""
-                              : "the arm's gravity load varies with its angle: use \"cosine\"");
-  }
-  d.kS_volts = drive.number("kS_volts", kNonNegative);
-  d.kG_volts = drive.number("kG_volts");
-  d.kV = drive.number("kV", kPositive);
-  d.kA = drive.number("kA", kPositive);
-  d.voltage_limit_volts = drive.number("voltage_limit_volts", Bounds{0.0, d.motor.nominal_voltage_volts * 2.0, true});
-  d.current_limit_amps = drive.number("current_limit_amps", Bounds{0.0, d.motor.stall_current_amps, true});
-  d.velocity_limit = drive.optionalNumber("velocity_limit", kPositive);
-  d.acceleration_limit = drive.optionalNumber("acceleration_limit", kPositive);
-  // The mechanism must be able to hold itself against gravity within both limits.
-  if (std::abs(d.kS_volts) + std::abs(d.kG_volts) >= d.voltage_limit_volts) {
-    drive.fail("voltage_limit_volts", "must exceed kS_volts + |kG_volts| or the joint cannot hold against gravity");
-  }
-  if ((std::abs(d.kS_volts) + std::abs(d.kG_volts)) / d.motor.resistanceOhms() >= d.current_limit_amps) {
-    drive.fail("current_limit_amps", "too small to hold the joint against gravity (kG / R)");
-  }
-  drive.finish();
-  return d;
-}
-
 void readPlanner(TableReader p, planner::PlannerSettings& s) {
   s.metric = p.vector2("metric", kPositive);
   {
     TableReader g = p.table("grid");
-    s.grid.elevator_step_m = g.number("elevator_step_m", Bounds{1e-4, 0.5});
-    s.grid.arm_step_rad = g.number("arm_step_rad", Bounds{1e-4, 0.5});
+    s.grid.step = g.vector2("step", Bounds{1e-4, 0.5});
     g.finish();
   }
   {
@@ -219,59 +121,21 @@ DaemonSettings readDaemon(TableReader d) {
   return s;
 }
 
-std::vector<PoseSet> readPoses(TableReader t, const RobotModel& robot) {
-  std::vector<PoseSet> sets;
-  const std::pair<const char*, planner::HeldPieces> kSets[] = {
-      {"none", {}}, {"coral", {true, false}}, {"algae", {false, true}}};
-  for (const auto& [name, pieces] : kSets) {
-    if (!t.has(name)) continue;
-    TableReader set = t.table(name);
-    PoseSet out{name, pieces, {}};
-    for (const std::string& pose : set.keys()) {
-      const Eigen::Vector2d q = set.vector2(pose);
-      if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");
-      out.poses.push_back(NamedPose{pose, q});
-    }
-    set.finish();
-    sets.push_back(std::move(out));
-  }
-  t.finish();
-  return sets;
-}
-
 Config readRoot(const toml::table& root_table) {
   Config config;
   RobotModel& robot = config.robot;
   TableReader root(root_table, "");
+  detail::rejectOldFormat(root);
   robot.name = root.string("name");
   robot.clearance_m = root.number("clearance_m", Bounds{0.0, 1.0});
-  readJoints(root.table("joints"), robot);
-  readRobot(root.table("robot"), robot);
-
-  std::map<std::string, planner::ConvexPolygon> obstacles;
-  {
-    TableReader t = root.table("obstacles");
-    for (const std::string& name : t.keys()) obstacles.emplace(name, t.polygon(name));
-    t.finish();
-  }
-  readScenes(root, obstacles, robot);
-
-  std::map<std::string, planner::MotorParams> motors;
-  {
-    TableReader t = root.table("motors");
-    for (const std::string& name : t.keys()) motors.emplace(name, readMotor(t.table(name)));
-    if (motors.empty()) t.fail("", "define at least one motor");
-    t.finish();
-  }
-  {
-    TableReader drives = root.table("drives");
-    robot.elevator_drive = readDrive(drives.table("elevator"), motors, planner::GravityModel::kConstant);
-    robot.arm_drive = readDrive(drives.table("arm"), motors, planner::GravityModel::kCosine);
-    drives.finish();
-  }
+  detail::readJoints(root, robot);
+  detail::readLinks(root.table("links"), robot);
+  if (root.has("pieces")) detail::readPieces(root.table("pieces"), robot);
+  detail::readScenes(root, root.table("obstacles"), robot);
+  detail::readDrives(root.table("motors"), root.table("drives"), robot);
   readPlanner(root.table("planner"), robot.planner);
   config.daemon = readDaemon(root.table("daemon"));
-  if (root.has("poses")) config.poses = readPoses(root.table("poses"), robot);
+  if (root.has("poses")) config.poses = detail::readPoses(root.table("poses"), robot);
   root.finish();
   return config;
 }

@@ -39,6 +39,10 @@ class TableReader {
   // One convex polygon [[x, y], ...].
   [[nodiscard]] planner::ConvexPolygon polygon(const std::string& key);
   [[nodiscard]] bool has(const std::string& key) const { return table_.contains(key); }
+  [[nodiscard]] bool isArray(const std::string& key) const {
+    const toml::node* node = table_.get(key);
+    return node != nullptr && node->is_array();
+  }
   [[nodiscard]] TableReader table(const std::string& key);
   [[nodiscard]] const toml::array& array(const std::string& key);
   // Every key of this table, for tables whose keys are names (obstacles, motors).

@@ -51,8 +51,8 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   const int goal_layer = side ? side->parity : 0;
   const int goal_node = layers * n;  // virtual node behind every goal connection
   const double inf = std::numeric_limits<double>::infinity();
-  const int nj = grid.armAxis().count;
-  const int ni = grid.elevatorAxis().count;
+  const int nj = grid.secondAxis().count;
+  const int ni = grid.firstAxis().count;
   const JointVector metric = grid.metric();
   const double weight = grid.potentialWeight();
 
@@ -61,10 +61,10 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   int goal_i_lo = ni, goal_i_hi = -1, goal_j_lo = nj, goal_j_hi = -1;
   for (const SearchEndpoint& goal : goals) {
     if (goal.cell < 0 || goal.cell >= n || grid.blocked(goal.cell)) continue;
-    goal_i_lo = std::min(goal_i_lo, grid.elevatorIndex(goal.cell));
-    goal_i_hi = std::max(goal_i_hi, grid.elevatorIndex(goal.cell));
-    goal_j_lo = std::min(goal_j_lo, grid.armIndex(goal.cell));
-    goal_j_hi = std::max(goal_j_hi, grid.armIndex(goal.cell));
+    goal_i_lo = std::min(goal_i_lo, grid.firstIndex(goal.cell));
+    goal_i_hi = std::max(goal_i_hi, grid.firstIndex(goal.cell));
+    goal_j_lo = std::min(goal_j_lo, grid.secondIndex(goal.cell));
+    goal_j_hi = std::max(goal_j_hi, grid.secondIndex(goal.cell));
   }
   if (goal_i_hi < 0) return std::nullopt;
   // No goal in a source's region: nothing to search (the refused moves would otherwise expand
@@ -79,23 +79,23 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   if (!reachable) return std::nullopt;
 
   // In coordinates scaled by sqrt(metric), where |.|_Sigma is Euclidean.
-  const double scale_e = std::sqrt(metric[kElevator]), scale_a = std::sqrt(metric[kArm]);
-  const double target_x = scale_e * target[kElevator], target_y = scale_a * target[kArm];
+  const double scale_e = std::sqrt(metric[0]), scale_a = std::sqrt(metric[1]);
+  const double target_x = scale_e * target[0], target_y = scale_a * target[1];
   // The hole's ray: x = ray_x, y >= ray_y (crossesRay).
   const double ray_x =
-      side ? scale_e * 0.5 * (grid.elevatorAxis().at(side->hole.i) + grid.elevatorAxis().at(side->hole.i + 1)) : 0.0;
-  const double ray_y = side ? scale_a * grid.armAxis().at(side->hole.j) : 0.0;
+      side ? scale_e * 0.5 * (grid.firstAxis().at(side->hole.i) + grid.firstAxis().at(side->hole.i + 1)) : 0.0;
+  const double ray_y = side ? scale_a * grid.secondAxis().at(side->hole.j) : 0.0;
   auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };  // std::hypot is slower
   // Of the node at indices (i, j) in `layer` (its cell's indices are known where it is pushed:
   // no divisions on the hot path).
-  const GridAxis& elevator_axis = grid.elevatorAxis();
-  const GridAxis& arm_axis = grid.armAxis();
+  const GridAxis& first_axis = grid.firstAxis();
+  const GridAxis& second_axis = grid.secondAxis();
   auto heuristic = [&](int i, int j, int layer) {
     if (!use_heuristic) return 0.0;
-    const double q_e = elevator_axis.at(i), q_a = arm_axis.at(j);
+    const double q_e = first_axis.at(i), q_a = second_axis.at(j);
     if (layer == goal_layer) {
-      const double d_e = q_e - target[kElevator], d_a = q_a - target[kArm];
-      return std::sqrt(metric[kElevator] * d_e * d_e + metric[kArm] * d_a * d_a);
+      const double d_e = q_e - target[0], d_a = q_a - target[1];
+      return std::sqrt(metric[0] * d_e * d_e + metric[1] * d_a * d_a);
     }
     const double x = scale_e * q_e, y = scale_a * q_a;
     // On the wrong side a path must still cross the ray: the shortest way to the target through a
@@ -124,7 +124,7 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
   };
   for (const SearchEndpoint& source : sources) {
     if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
-    push(source.cell, source.cost, -1, heuristic(grid.elevatorIndex(source.cell), grid.armIndex(source.cell), 0));
+    push(source.cell, source.cost, -1, heuristic(grid.firstIndex(source.cell), grid.secondIndex(source.cell), 0));
   }
 
   const double step_length[3][3] = {
@@ -147,8 +147,8 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
 
     const int layer = top >= n ? 1 : 0;
     const int here = top - layer * n;
-    const int i = grid.elevatorIndex(here);
-    const int j = grid.armIndex(here);
+    const int i = grid.firstIndex(here);
+    const int j = grid.secondIndex(here);
     if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
       for (const SearchEndpoint& goal : goals) {
         if (goal.cell == here) push(goal_node, g_top + goal.cost, top, 0.0);
@@ -208,8 +208,8 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
 int rayCrossingParity(const CSpaceGrid& grid, const GridHole& hole, std::span<const int> cells) {
   int parity = 0;
   for (size_t k = 1; k < cells.size(); ++k) {
-    const int di = grid.elevatorIndex(cells[k]) - grid.elevatorIndex(cells[k - 1]);
-    const int dj = grid.armIndex(cells[k]) - grid.armIndex(cells[k - 1]);
+    const int di = grid.firstIndex(cells[k]) - grid.firstIndex(cells[k - 1]);
+    const int dj = grid.secondIndex(cells[k]) - grid.secondIndex(cells[k - 1]);
     if (grid.crossesRay(hole, cells[k - 1], di, dj)) parity ^= 1;
   }
   return parity;

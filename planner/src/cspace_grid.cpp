@@ -24,10 +24,10 @@ GridAxis GridAxis::covering(const JointRange& range, double max_step, double ins
   return axis;
 }
 
-CSpaceGrid::CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t> blocked, const JointVector& metric,
+CSpaceGrid::CSpaceGrid(GridAxis first, GridAxis second, std::vector<std::uint8_t> blocked, const JointVector& metric,
                        const SearchSettings& search)
-    : elevator_(elevator),
-      arm_(arm),
+    : first_(first),
+      second_(second),
       blocked_(std::move(blocked)),
       metric_(metric),
       potential_weight_(search.potential_weight) {
@@ -42,7 +42,7 @@ void CSpaceGrid::labelRegions() {
   // A flood fill over free steps from each unlabelled free node; steps are symmetric (stepFree).
   region_.assign(static_cast<size_t>(cellCount()), -1);
   std::vector<int> stack;
-  const int ni = elevator_.count, nj = arm_.count;
+  const int ni = first_.count, nj = second_.count;
   for (int start = 0; start < cellCount(); ++start) {
     if (blocked(start) || region_[static_cast<size_t>(start)] >= 0) continue;
     region_[static_cast<size_t>(start)] = start;
@@ -50,7 +50,7 @@ void CSpaceGrid::labelRegions() {
     while (!stack.empty()) {
       const int c = stack.back();
       stack.pop_back();
-      const int i = elevatorIndex(c), j = armIndex(c);
+      const int i = firstIndex(c), j = secondIndex(c);
       for (int di = -1; di <= 1; ++di) {
         for (int dj = -1; dj <= 1; ++dj) {
           const int a = i + di, b = j + dj;
@@ -67,7 +67,7 @@ void CSpaceGrid::labelRegions() {
 
 void CSpaceGrid::findHoles() {
   // Blocked regions, 8-connected, by a flood fill from each unlabelled blocked node.
-  const int ni = elevator_.count, nj = arm_.count;
+  const int ni = first_.count, nj = second_.count;
   std::vector<int> label(static_cast<size_t>(cellCount()), -1);
   std::vector<int> stack;
   holes_.clear();
@@ -82,7 +82,7 @@ void CSpaceGrid::findHoles() {
       const int c = stack.back();
       stack.pop_back();
       ++hole.cells;
-      const int i = elevatorIndex(c), j = armIndex(c);
+      const int i = firstIndex(c), j = secondIndex(c);
       touches_edge = touches_edge || i == 0 || j == 0 || i == ni - 1 || j == nj - 1;
       for (int di = -1; di <= 1; ++di) {
         for (int dj = -1; dj <= 1; ++dj) {
@@ -98,7 +98,7 @@ void CSpaceGrid::findHoles() {
     if (touches_edge) continue;
     // The ray's foot: the highest pair of horizontally adjacent nodes of the region.
     for (int c = start; c < cellCount(); ++c) {
-      const int i = elevatorIndex(c), j = armIndex(c);
+      const int i = firstIndex(c), j = secondIndex(c);
       if (label[static_cast<size_t>(c)] != id || i + 1 >= ni || label[static_cast<size_t>(cell(i + 1, j))] != id)
         continue;
       if (j > hole.j) hole = GridHole{i, j, hole.cells};
@@ -110,13 +110,13 @@ void CSpaceGrid::findHoles() {
 
 void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
   steps_.assign(static_cast<size_t>(cellCount()), 0);
-  for (int i = 0; i < elevator_.count; ++i) {
-    for (int j = 0; j < arm_.count; ++j) {
+  for (int i = 0; i < first_.count; ++i) {
+    for (int j = 0; j < second_.count; ++j) {
       const int c = cell(i, j);
       if (blocked(c)) continue;
       for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
         const int a = i + di, b = j + dj;
-        if (a >= elevator_.count || b < 0 || b >= arm_.count || blocked(cell(a, b))) continue;
+        if (a >= first_.count || b < 0 || b >= second_.count || blocked(cell(a, b))) continue;
         steps_[static_cast<size_t>(c)] |= static_cast<std::uint8_t>(1U << kStepBit[di + 1][dj + 1]);
       }
     }
@@ -125,33 +125,33 @@ void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
 
 CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
   const GridSettings& settings = model.planner.grid;
-  const GridAxis elevator = GridAxis::covering(model.elevator_range_m, settings.elevator_step_m, kJointLimitMargin);
-  const GridAxis arm = GridAxis::covering(model.arm_range_rad, settings.arm_step_rad, kJointLimitMargin);
+  const GridAxis first = GridAxis::covering(model.range(0), settings.step[0], kJointLimitMargin);
+  const GridAxis second = GridAxis::covering(model.range(1), settings.step[1], kJointLimitMargin);
   const double clearance = model.clearance_m;
   // Half a diagonal step can lose at most this much distance; farther nodes need no exact value.
-  const double widest_margin = 0.5 * world.lipschitzBound(JointVector(elevator.step, arm.step));
-  const auto count = static_cast<size_t>(elevator.count) * static_cast<size_t>(arm.count);
+  const double widest_margin = 0.5 * world.lipschitzBound(JointVector(first.step, second.step));
+  const auto count = static_cast<size_t>(first.count) * static_cast<size_t>(second.count);
   std::vector<double> distance(count);
   std::vector<std::uint8_t> blocked(count, 0);
-  for (int i = 0; i < elevator.count; ++i) {
-    for (int j = 0; j < arm.count; ++j) {
-      const size_t c = static_cast<size_t>(i) * static_cast<size_t>(arm.count) + static_cast<size_t>(j);
-      distance[c] = world.distance(JointVector(elevator.at(i), arm.at(j)), clearance + widest_margin).value;
+  for (int i = 0; i < first.count; ++i) {
+    for (int j = 0; j < second.count; ++j) {
+      const size_t c = static_cast<size_t>(i) * static_cast<size_t>(second.count) + static_cast<size_t>(j);
+      distance[c] = world.distance(JointVector(first.at(i), second.at(j)), clearance + widest_margin).value;
       blocked[c] = distance[c] < clearance;
     }
   }
-  CSpaceGrid grid(elevator, arm, std::move(blocked), model.planner.metric, model.planner.search);
+  CSpaceGrid grid(first, second, std::move(blocked), model.planner.metric, model.planner.search);
   grid.clearance_m_ = clearance;
   // Steps near obstacles: keep only those a continuous check clears.
-  for (int i = 0; i < elevator.count; ++i) {
-    for (int j = 0; j < arm.count; ++j) {
+  for (int i = 0; i < first.count; ++i) {
+    for (int j = 0; j < second.count; ++j) {
       const int c = grid.cell(i, j);
       for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
         const int bit = kStepBit[di + 1][dj + 1];
         if (((grid.steps_[static_cast<size_t>(c)] >> bit) & 1U) == 0) continue;
         const int target = grid.cell(i + di, j + dj);
         const double margin =
-            0.5 * world.lipschitzBound(JointVector(std::abs(di) * elevator.step, std::abs(dj) * arm.step));
+            0.5 * world.lipschitzBound(JointVector(std::abs(di) * first.step, std::abs(dj) * second.step));
         if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin)
           continue;
         ++grid.checked_steps_;
@@ -170,9 +170,9 @@ int CSpaceGrid::blockedCount() const {
 }
 
 double CSpaceGrid::stepLength(int di, int dj) const {
-  const double dt = di * elevator_.step;
-  const double dth = dj * arm_.step;
-  return std::sqrt(metric_[kElevator] * dt * dt + metric_[kArm] * dth * dth);
+  const double dt = di * first_.step;
+  const double dth = dj * second_.step;
+  return std::sqrt(metric_[0] * dt * dt + metric_[1] * dth * dth);
 }
 
 int CSpaceGrid::lowerCorner(const JointVector& q) const {
@@ -180,14 +180,14 @@ int CSpaceGrid::lowerCorner(const JointVector& q) const {
     const double f = std::floor((x - axis.min) / axis.step);
     return static_cast<int>(std::clamp(f, 0.0, static_cast<double>(axis.count - 1)));
   };
-  return cell(index(elevator_, q[kElevator]), index(arm_, q[kArm]));
+  return cell(index(first_, q[0]), index(second_, q[1]));
 }
 
 void CSpaceGrid::computePotential(double range) {
   // Chamfer distance transform with the weighted lengths of the 8 neighbour steps: a forward and
   // a backward raster pass, each relaxing the 4 already-visited neighbours.
-  const int ni = elevator_.count;
-  const int nj = arm_.count;
+  const int ni = first_.count;
+  const int nj = second_.count;
   const double straight_i = stepLength(1, 0);
   const double straight_j = stepLength(0, 1);
   const double diagonal = stepLength(1, 1);

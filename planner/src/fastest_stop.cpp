@@ -37,7 +37,7 @@ double distanceToLimits(const RobotModel& model, const JointVector& start, const
 
 // Where braking as hard as the rows at each node allow brings b_start to rest on a line of
 // `length` (an outer bound on the admissible deceleration, so an estimate from below).
-double stopDistanceEstimate(const StraightPath& line, const std::array<DriveParams, kJointCount>& drives,
+double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives,
                             double b_start, topp::Problem& problem, topp::LimitMargins& margins) {
   const double length = line.length();
   topp::sampleGrid(line, kEstimatePoints, problem);
@@ -64,7 +64,7 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
                                   std::vector<double>& profile, std::vector<double>& controllable) {
   using R = Result<Trajectory>;
   const double length = line->length();
-  const std::array<DriveParams, kJointCount> drives{model.elevator_drive, model.arm_drive};
+  const DriveModel drives = model.driveModel();
   topp::sampleGrid(*line, points, problem);
   margins.reset(problem.intervals());
   std::string error;
@@ -94,7 +94,7 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   if (!std::isfinite(speed) || speed <= 0.0) return R::failure(PlanStatus::kInvalidInput, "no velocity to stop from");
   const JointVector direction = velocity / speed;
   const double b_start = speed * speed;
-  const std::array<DriveParams, kJointCount> drives{model.elevator_drive, model.arm_drive};
+  const DriveModel drives = model.driveModel();
   const double reach = std::min(distanceToLimits(model, start, direction), 10.0);
   const auto cannot_stop = [] {
     return R::failure(PlanStatus::kInfeasibleStart,
@@ -169,7 +169,7 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
     // The optimiser's refined limits when the profile's own check fails (docs/moving-starts.md).
     if (!braking.ok() && braking.status() == PlanStatus::kSolverNotConverged) {
       ToppReport report;
-      braking = solver.solve(line, model.elevator_drive, model.arm_drive, b_start, &report);
+      braking = solver.solve(line, model.driveModel(), b_start, &report);
       // A start clamped into the controllable set would not begin at v0: lengthen instead.
       if (braking.ok() && report.start_speed_ratio != 1.0) braking = cannot_stop();
     }
@@ -205,7 +205,7 @@ Result<Trajectory> stretchedStop(const RobotModel& model, const CollisionWorld& 
   std::vector<double> s_grid = stop.sGrid();
   for (double& s : s_grid) s *= factor;
   s_grid.back() = length;
-  return Trajectory::create(std::move(line), stop.drive(kElevator), stop.drive(kArm), std::move(s_grid), stop.bGrid());
+  return Trajectory::create(std::move(line), stop.drives(), std::move(s_grid), stop.bGrid());
 }
 
 }  // namespace cyber::planner

@@ -33,8 +33,7 @@ Result<Trajectory> joinAtRest(const Trajectory& first, const Trajectory& second)
     s_grid.push_back(offset + s2[k]);
     b_grid.push_back(b2[k]);
   }
-  return Trajectory::create(std::move(path), first.drive(kElevator), first.drive(kArm), std::move(s_grid),
-                            std::move(b_grid));
+  return Trajectory::create(std::move(path), first.drives(), std::move(s_grid), std::move(b_grid));
 }
 
 }  // namespace cyber::planner

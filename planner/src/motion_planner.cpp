@@ -119,7 +119,7 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
     const auto topp_start = std::chrono::steady_clock::now();
     Plan plan;
     Result<Trajectory> trajectory =
-        solver.solve(path.path, model.elevator_drive, model.arm_drive, speed * speed, &plan.solver);
+        solver.solve(path.path, model.driveModel(), speed * speed, &plan.solver);
     topp_ms += msSince(topp_start);
     if (!trajectory) {
       if (i == 0) fallback = trajectory.error();
@@ -166,7 +166,7 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
 double estimatedSeconds(const RobotModel& model, const Result<std::vector<PlannedPath>>& found, const JointVector& v0) {
   if (!found || found.value().empty()) return std::numeric_limits<double>::infinity();
   const double speed = weightedNorm(v0, model.planner.metric);
-  return estimateDuration(*found.value().front().path, {model.elevator_drive, model.arm_drive}, speed * speed,
+  return estimateDuration(*found.value().front().path, model.driveModel(), speed * speed,
                           kEstimateGridPoints);
 }
 
@@ -284,8 +284,12 @@ bool requestError(PlanStatus status) {
 
 Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
   if (model.scenes.empty()) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no scene");
-  if (model.geometry.arm.empty()) {
-    return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no arm geometry");
+  bool has_polygon = false;
+  for (const LinkGeometry& link : model.links) has_polygon = has_polygon || !link.polygons.empty();
+  if (!has_polygon) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no link polygons");
+  if (static_cast<int>(model.pieces.size()) > HeldPieces::kMaxPieces) {
+    return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput,
+                                          fmt::format("at most {} game pieces", HeldPieces::kMaxPieces));
   }
   MotionPlanner planner;
   planner.model_ = model;

@@ -20,7 +20,7 @@ SmoothingObjective::SmoothingObjective(const CollisionWorld& world, std::vector<
       free_count_(std::max(0, static_cast<int>(prior_.size()) - 1 - fixed_head_)),
       metric_(model.planner.metric),
       settings_(settings),
-      limits_{model.elevator_range_m, model.arm_range_rad},
+      limits_{model.range(0), model.range(1)},
       points_(prior_) {}
 
 Eigen::VectorXd SmoothingObjective::priorVariables() const {
@@ -179,8 +179,8 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
     return std::clamp(v, range.min + margin, range.max - margin);
   };
   for (int k = 0; k < m; ++k) {
-    x[k] = inside(x[k], model.elevator_range_m);
-    x[m + k] = inside(x[m + k], model.arm_range_rad);
+    x[k] = inside(x[k], model.range(0));
+    x[m + k] = inside(x[m + k], model.range(1));
   }
   result.waypoints = objective.waypoints(x);
   return result;

@@ -24,17 +24,24 @@ double millisecondsSince(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-std::string poseText(const JointVector& q) { return fmt::format("({:.4f} m, {:.4f} rad)", q[0], q[1]); }
+std::string poseText(const RobotModel& model, const JointVector& q) {
+  return fmt::format("({:.4f} {}, {:.4f} {})", q[0], unitName(model.joints[0].type), q[1],
+                     unitName(model.joints[1].type));
+}
 
 std::string rangeText(const RobotModel& model) {
-  return fmt::format("elevator [{:.4f}, {:.4f}] m, arm [{:.4f}, {:.4f}] rad", model.elevator_range_m.min,
-                     model.elevator_range_m.max, model.arm_range_rad.min, model.arm_range_rad.max);
+  return fmt::format("{} [{:.4f}, {:.4f}], {} [{:.4f}, {:.4f}]", model.joints[0].name, model.range(0).min,
+                     model.range(0).max, model.joints[1].name, model.range(1).min, model.range(1).max);
 }
 
 std::string obstacleName(const Scene& scene, int index) {
-  // CollisionWorld skips empty polygons; the loader never produces them, so indices agree.
-  if (index >= 0 && index < static_cast<int>(scene.obstacles.size()))
-    return scene.obstacles[static_cast<size_t>(index)].name;
+  // CollisionWorld numbers the field elements, then the fixed obstacles, and skips empty
+  // polygons; the loader never produces them, so indices agree.
+  const int movable = static_cast<int>(scene.obstacles.size());
+  if (index >= 0 && index < movable) return scene.obstacles[static_cast<size_t>(index)].name;
+  if (index >= movable && index - movable < static_cast<int>(scene.fixed.size())) {
+    return scene.fixed[static_cast<size_t>(index - movable)].name;
+  }
   return "an obstacle";
 }
 
@@ -49,11 +56,11 @@ std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const Collisio
                                           double clearance_m) {
   std::vector<SearchEndpoint> out;
   const int corner = grid.lowerCorner(pose);
-  const int i0 = grid.elevatorIndex(corner), j0 = grid.armIndex(corner);
+  const int i0 = grid.firstIndex(corner), j0 = grid.secondIndex(corner);
   for (int ring = 1; ring <= kMaxConnectionRing && out.empty(); ++ring) {
     for (int i = i0 - ring + 1; i <= i0 + ring; ++i) {
       for (int j = j0 - ring + 1; j <= j0 + ring; ++j) {
-        if (i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count) continue;
+        if (i < 0 || j < 0 || i >= grid.firstAxis().count || j >= grid.secondAxis().count) continue;
         // Only the new ring: the inner nodes were tried already.
         const bool inner = i > i0 - ring + 1 && i < i0 + ring && j > j0 - ring + 1 && j < j0 + ring;
         if (ring > 1 && inner) continue;
@@ -110,7 +117,7 @@ constexpr double kMaxSideCost = 1.08;
 // The reachability estimate from rest of the straight segment from `from` to `to` (obstacles
 // ignored); 0 when they are the same pose.
 double straightEstimate(const JointVector& from, const JointVector& to, const JointVector& metric,
-                        const std::array<DriveParams, kJointCount>& drives, int grid_points = kTimingGridPoints) {
+                        const DriveModel& drives, int grid_points = kTimingGridPoints) {
   const double length = weightedNorm(to - from, metric);
   if (!(length > kSamePose)) return 0.0;
   return estimateDuration(StraightPath(from, (to - from) / length, length), drives, 0.0, grid_points);
@@ -118,7 +125,7 @@ double straightEstimate(const JointVector& from, const JointVector& to, const Jo
 
 // The larger of the joints' straightEstimate moving alone (the other one staying at `from`).
 double slowerJointAlone(const JointVector& from, const JointVector& to, const JointVector& metric,
-                        const std::array<DriveParams, kJointCount>& drives, int grid_points = kGateGridPoints) {
+                        const DriveModel& drives, int grid_points = kGateGridPoints) {
   double slower = 0.0;
   for (int joint = 0; joint < kJointCount; ++joint) {
     JointVector alone = from;
@@ -164,15 +171,15 @@ std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std
 std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<int>& cells, int radius) {
   std::vector<std::uint8_t> band(static_cast<size_t>(grid.cellCount()), 0);
   if (cells.empty()) return band;
-  const int ni = grid.elevatorAxis().count, nj = grid.armAxis().count;
+  const int ni = grid.firstAxis().count, nj = grid.secondAxis().count;
   auto near_end = [&](int i, int j) {
     for (int end : {cells.front(), cells.back()}) {
-      if (std::abs(i - grid.elevatorIndex(end)) <= radius && std::abs(j - grid.armIndex(end)) <= radius) return true;
+      if (std::abs(i - grid.firstIndex(end)) <= radius && std::abs(j - grid.secondIndex(end)) <= radius) return true;
     }
     return false;
   };
   for (int cell : cells) {
-    const int i0 = grid.elevatorIndex(cell), j0 = grid.armIndex(cell);
+    const int i0 = grid.firstIndex(cell), j0 = grid.secondIndex(cell);
     for (int i = std::max(0, i0 - radius); i <= std::min(ni - 1, i0 + radius); ++i) {
       for (int j = std::max(0, j0 - radius); j <= std::min(nj - 1, j0 + radius); ++j) {
         if (!near_end(i, j)) band[static_cast<size_t>(grid.cell(i, j))] = 1;
@@ -185,9 +192,11 @@ std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<i
 }  // namespace
 
 PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(model), scene_(scene) {
-  worlds_.reserve(kPieceSetCount);
-  grids_.reserve(kPieceSetCount);
-  for (int set = 0; set < kPieceSetCount; ++set) {
+  const int sets = model_.pieceSetCount();
+  worlds_.reserve(static_cast<size_t>(sets));
+  grids_.reserve(static_cast<size_t>(sets));
+  grid_build_ms_.assign(static_cast<size_t>(sets), 0.0);
+  for (int set = 0; set < sets; ++set) {
     const Clock::time_point t0 = Clock::now();
     worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set));
     grids_.push_back(CSpaceGrid::build(worlds_.back(), model_));
@@ -205,11 +214,11 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
   if (!model_.withinLimits(start)) {
     return R::failure(PlanStatus::kStartOutOfRange,
-                      "start " + poseText(start) + " is outside the joint limits: " + rangeText(model_));
+                      "start " + poseText(model_, start) + " is outside the joint limits: " + rangeText(model_));
   }
   if (!model_.withinLimits(goal)) {
     return R::failure(PlanStatus::kGoalOutOfRange,
-                      "goal " + poseText(goal) + " is outside the joint limits: " + rangeText(model_));
+                      "goal " + poseText(model_, goal) + " is outside the joint limits: " + rangeText(model_));
   }
   const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
   const CSpaceGrid& grid = grids_[static_cast<size_t>(pieces.index())];
@@ -217,7 +226,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const JointVector& metric = model_.planner.metric;
   const SmoothingSettings& smoothing = model_.planner.smoothing;
   auto too_close = [&](const char* which, const JointVector& q, const SignedDistance& d) {
-    return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(q), d.value,
+    return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(model_, q), d.value,
                        obstacleName(scene_, d.obstacle), clearance);
   };
   const SignedDistance d_start = world.distance(start);
@@ -268,18 +277,18 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   } else {
     const std::vector<SearchEndpoint> sources = connectToGrid(grid, world, from, clearance);
     if (sources.empty()) {
-      return R::failure(PlanStatus::kNoPath, "no free grid node near the start " + poseText(from) +
+      return R::failure(PlanStatus::kNoPath, "no free grid node near the start " + poseText(model_, from) +
                                                  " can be reached in a straight line with the clearance");
     }
     const std::vector<SearchEndpoint> goals = connectToGrid(grid, world, goal, clearance);
     if (goals.empty()) {
-      return R::failure(PlanStatus::kNoPath, "no free grid node near the goal " + poseText(goal) +
+      return R::failure(PlanStatus::kNoPath, "no free grid node near the goal " + poseText(model_, goal) +
                                                  " can be reached in a straight line with the clearance");
     }
     const auto found = astarSearch(grid, sources, goals, goal);
     if (!found) {
-      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(goal) + " cannot be reached from " +
-                                                 poseText(from) + " without coming closer than the clearance");
+      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(model_, goal) + " cannot be reached from " +
+                                                 poseText(model_, from) + " without coming closer than the clearance");
     }
     out.search_expanded = found->expanded;
     for (int cell : found->cells) polyline.push_back(grid.node(cell));
@@ -333,7 +342,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const bool done = smooth(polyline, "", out);
   std::vector<PlannedPath> candidates;
   if (done) candidates.push_back(out);
-  const std::array<DriveParams, kJointCount> drives{model_.elevator_drive, model_.arm_drive};
+  const DriveModel drives = model_.driveModel();
   const double b_start = start_speed * start_speed;
   // The shape search from `knots` (through which `fastest` runs), put first when it is faster.
   // `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid

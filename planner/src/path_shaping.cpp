@@ -21,7 +21,7 @@ class ShapeSearch {
               const CollisionWorld& world, const RobotModel& model, double b_start, int bumps, int grid_points)
       : world_(world),
         model_(model),
-        drives_{model.elevator_drive, model.arm_drive},
+        drives_(model.driveModel()),
         start_velocity_(start_velocity),
         b_start_(b_start),
         bumps_(bumps),
@@ -92,7 +92,7 @@ class ShapeSearch {
   static constexpr double kMinGain = 1e-4;  // relative; smaller gains are the estimate's noise
   const CollisionWorld& world_;
   const RobotModel& model_;
-  std::array<DriveParams, kJointCount> drives_;
+  DriveModel drives_;
   JointVector start_velocity_;
   double b_start_;
   int bumps_, grid_points_, free_first_, free_last_;

@@ -1,26 +1,35 @@
 #include "cyber/planner/robot_model.hpp"
 
-#include <cmath>
-
 namespace cyber::planner {
+namespace {
 
-double DriveParams::gravityFactor(double q) const { return gravity == GravityModel::kCosine ? std::cos(q) : 1.0; }
-
-double DriveParams::volts(double q, double qdot, double qddot) const {
-  const double sign = static_cast<double>((qdot > 0.0) - (qdot < 0.0));
-  return kS_volts * sign + kG_volts * gravityFactor(q) + kV * qdot + kA * qddot;
-}
-
-double DriveParams::amps(double v, double qdot) const {
-  // DC motor: V = I R + omega / Kv with omega = gearing * qdot (algorithm.md section 3).
-  return (v - gearing * qdot / motor.kvRadpsPerVolt()) / motor.resistanceOhms();
-}
-
-int RobotModel::sceneIndex(const std::string& scene_name) const {
-  for (size_t i = 0; i < scenes.size(); ++i) {
-    if (scenes[i].name == scene_name) return static_cast<int>(i);
+template <class Named>
+int indexByName(const std::vector<Named>& items, const std::string& name) {
+  for (size_t i = 0; i < items.size(); ++i) {
+    if (items[i].name == name) return static_cast<int>(i);
   }
   return -1;
+}
+
+}  // namespace
+
+int RobotModel::sceneIndex(const std::string& scene_name) const { return indexByName(scenes, scene_name); }
+int RobotModel::pieceIndex(const std::string& piece_name) const { return indexByName(pieces, piece_name); }
+int RobotModel::jointIndex(const std::string& joint_name) const {
+  for (int j = 0; j < kJointCount; ++j) {
+    if (joints[static_cast<size_t>(j)].name == joint_name) return j;
+  }
+  return -1;
+}
+
+std::string RobotModel::pieceSetName(HeldPieces held) const {
+  std::string out;
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    if (!held.holds(static_cast<int>(i))) continue;
+    if (!out.empty()) out += '+';
+    out += pieces[i].name;
+  }
+  return out.empty() ? "none" : out;
 }
 
 }  // namespace cyber::planner

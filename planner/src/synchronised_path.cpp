@@ -27,7 +27,7 @@ struct JointProfile {
 };
 
 std::optional<JointProfile> ownProfile(const JointVector& from, const JointVector& to, int joint,
-                                       const std::array<DriveParams, kJointCount>& drives, int grid_points) {
+                                       const DriveModel& drives, int grid_points) {
   JointVector direction = JointVector::Zero();
   const double travel = std::abs(to[joint] - from[joint]);
   direction[joint] = to[joint] > from[joint] ? 1.0 : -1.0;
@@ -41,7 +41,7 @@ std::optional<JointProfile> ownProfile(const JointVector& from, const JointVecto
 std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const JointVector& to,
                                                  const CollisionWorld& world, const RobotModel& model, double beat_s,
                                                  const SynchronisedSettings& settings) {
-  const std::array<DriveParams, kJointCount> drives{model.elevator_drive, model.arm_drive};
+  const DriveModel drives = model.driveModel();
   // StraightPath's length is in joint units here, so each joint's travel must be worth planning.
   constexpr double kMinTravel = 1e-3;  // m or rad
   for (int j = 0; j < kJointCount; ++j) {

@@ -25,7 +25,7 @@ constexpr int kTimingGridPoints = 64;  // of the coarse grid whose profile place
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
-bool validDrive(const DriveParams& d, const char* name, std::string* error) {
+bool validDrive(const DriveParams& d, int joint, std::string* error) {
   const MotorParams& m = d.motor;
   const bool ok = positiveFinite(m.nominal_voltage_volts) && positiveFinite(m.stall_current_amps) &&
                   positiveFinite(m.free_speed_radps) && std::isfinite(m.free_current_amps) &&
@@ -34,7 +34,7 @@ bool validDrive(const DriveParams& d, const char* name, std::string* error) {
                   d.kV >= 0.0 && std::isfinite(d.kA) && d.kA >= 0.0 && positiveFinite(d.voltage_limit_volts) &&
                   positiveFinite(d.current_limit_amps) && (!d.velocity_limit || positiveFinite(*d.velocity_limit)) &&
                   (!d.acceleration_limit || positiveFinite(*d.acceleration_limit));
-  if (!ok) *error = std::string("the ") + name + " drive figures are not finite and positive where required";
+  if (!ok) *error = fmt::format("the drive figures of joint {} are not finite and positive where required", joint);
   return ok;
 }
 
@@ -124,12 +124,13 @@ Result<Trajectory> fail(PlanStatus status, std::string reason) {
 }
 
 // The reason the inputs cannot be parameterised, if any (the path itself is known to exist).
-std::optional<std::string> invalidInput(double length, double b_start, const DriveParams& elevator,
-                                        const DriveParams& arm) {
+std::optional<std::string> invalidInput(double length, double b_start, const DriveModel& drives) {
   if (!std::isfinite(length) || length < 0.0) return "path length is not finite";
   if (!std::isfinite(b_start) || b_start < 0.0) return "start path speed^2 b_start must be finite and >= 0";
   std::string error;
-  if (!validDrive(elevator, "elevator", &error) || !validDrive(arm, "arm", &error)) return error;
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!validDrive(drives.drive(j), j, &error)) return error;
+  }
   return std::nullopt;
 }
 
@@ -158,7 +159,7 @@ std::string overLimitsText(int refinements, const ToppReport& report) {
 // What one call of solve() asks for: a path of non-zero length, its drives and its start.
 struct ToppSolver::Move {
   std::shared_ptr<const GeometricPath> path;
-  std::array<DriveParams, kJointCount> drives;
+  DriveModel drives;
   double length = 0.0;
   double length_squared = 0.0;
   double b_start = 0.0;       // as asked, in path units
@@ -299,15 +300,15 @@ Result<ToppSolver::RowLimits> ToppSolver::refineOrTighten(const Move& move, Topp
   return Result<RowLimits>::failure(PlanStatus::kInvalidInput, error);
 }
 
-Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                     const DriveParams& arm, double b_start, ToppReport* report_out) {
+Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                     double b_start, ToppReport* report_out) {
   ToppReport local_report;
   ToppReport& report = report_out ? *report_out : local_report;
   report = ToppReport{};
 
   if (!path) return fail(PlanStatus::kInvalidInput, "no path to parameterise");
   const double length = path->length();
-  if (std::optional<std::string> reason = invalidInput(length, b_start, elevator, arm)) {
+  if (std::optional<std::string> reason = invalidInput(length, b_start, drives)) {
     return fail(PlanStatus::kInvalidInput, std::move(*reason));
   }
   if (length == 0.0) {
@@ -315,11 +316,11 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       return fail(PlanStatus::kInfeasibleStart, "a moving start cannot be brought to rest on a zero-length path");
     }
     report.grid_points = 1;
-    return Trajectory::create(std::move(path), elevator, arm, {0.0}, {0.0});
+    return Trajectory::create(std::move(path), drives, {0.0}, {0.0});
   }
 
   const double length_squared = length * length;
-  const Move move{std::move(path), {elevator, arm}, length, length_squared, b_start, b_start / length_squared};
+  const Move move{std::move(path), drives, length, length_squared, b_start, b_start / length_squared};
   problem_.b_start = move.unit_b_start;
   problem_.b_end = 0.0;
   problem_.cost_scale = 1.0;
@@ -360,11 +361,10 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   }
 }
 
-Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                           const DriveParams& arm, const ToppSettings& settings, double b_start,
-                                           ToppReport* report) {
+Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                           const ToppSettings& settings, double b_start, ToppReport* report) {
   ToppSolver solver(settings);
-  return solver.solve(std::move(path), elevator, arm, b_start, report);
+  return solver.solve(std::move(path), drives, b_start, report);
 }
 
 }  // namespace cyber::planner

@@ -16,8 +16,8 @@ int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); 
 
 std::string describe(LimitKind kind, int joint, double s) {
   static constexpr const char* kKinds[] = {"voltage", "current", "acceleration", "velocity"};
-  return fmt::format("the {} limit of the {} cannot hold at s = {:.4f} whatever the motion",
-                     kKinds[static_cast<int>(kind)], joint == kElevator ? "elevator" : "arm", s);
+  return fmt::format("the {} limit of joint {} cannot hold at s = {:.4f} whatever the motion",
+                     kKinds[static_cast<int>(kind)], joint, s);
 }
 
 // Appends lo <= alpha a + beta b + gamma c <= hi scaled by 1/scale; a row without coefficients
@@ -165,7 +165,7 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
   out.speed_bound = in.speed_bound * time_scale_s;
 }
 
-bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
+bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem,
                std::string* error) {
   const int intervals = problem.intervals();
   problem.rows.clear();
@@ -182,7 +182,8 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
       const bool pinned_at_rest = (place == 0 && k == 0 && problem.b_start == 0.0) ||
                                   (place == 1 && k + 1 == intervals && problem.b_end == 0.0);
       for (int j = 0; j < kJointCount; ++j) {
-        const DriveParams& d = drives[static_cast<size_t>(j)];
+        const DriveParams& d = drives.drive(j);
+        const PathVoltage pv = drives.pathVoltage(j, p);
         const double qp = p.dq_ds[j];
         const double qpp = p.d2q_ds2[j];
         // Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and
@@ -204,16 +205,16 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
         }
         const double coulomb_lo = d.kS_volts * sign_lo;
         const double coulomb_hi = d.kS_volts * sign_hi;
-        const double gravity = d.kG_volts * d.gravityFactor(p.q[j]);
+        const double gravity = pv.gravity_volts;
         const auto joint = static_cast<std::int8_t>(j);
 
-        // Voltage: V = kS sgn + kG g + kV q' c + kA (q'' b + q' a), |V| <= Vmax.
+        // Voltage: V = kS sgn + gravity + alpha a + beta b + gamma c (DriveModel::pathVoltage), |V| <= Vmax.
         const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
         LinearRow voltage{k,
                           at,
-                          d.kA * qp,
-                          d.kA * qpp,
-                          d.kV * qp,
+                          pv.alpha,
+                          pv.beta,
+                          pv.gamma,
                           -v_limit - gravity - coulomb_lo,
                           v_limit - gravity - coulomb_hi,
                           joint,
@@ -226,9 +227,9 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
         const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
         LinearRow current{k,
                           at,
-                          d.kA * qp,
-                          d.kA * qpp,
-                          (d.kV - back_emf) * qp,
+                          pv.alpha,
+                          pv.beta,
+                          pv.gamma - back_emf * qp,
                           -r * i_limit - gravity - coulomb_lo,
                           r * i_limit - gravity - coulomb_hi,
                           joint,

@@ -14,8 +14,8 @@ constexpr double kOwnCheckShare = 0.5;
 
 }  // namespace
 
-Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                      const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid) {
+Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                      std::vector<double> s_grid, std::vector<double> b_grid) {
   if (!path) return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "trajectory without a path");
   const double length = path->length();
   if (!std::isfinite(length) || length < 0.0) {
@@ -44,7 +44,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
 
   Trajectory trajectory;
   trajectory.path_ = std::move(path);
-  trajectory.drives_ = {elevator, arm};
+  trajectory.drives_ = drives;
   trajectory.t_grid_.assign(n, 0.0);
   trajectory.a_grid_.assign(n > 1 ? n - 1 : 0, 0.0);
   for (size_t k = 0; k + 1 < n; ++k) {
@@ -76,11 +76,8 @@ size_t Trajectory::intervalAtS(double s) const {
 
 TrajectorySample Trajectory::sample(double t) const {
   TrajectorySample out = sampleMotion(t);
-  for (int j = 0; j < kJointCount; ++j) {
-    const DriveParams& d = drives_[static_cast<size_t>(j)];
-    out.volts[j] = d.volts(out.q[j], out.qdot[j], out.qddot[j]);
-    out.amps[j] = d.amps(out.volts[j], out.qdot[j]);
-  }
+  out.volts = drives_.volts(out.q, out.qdot, out.qddot);
+  out.amps = drives_.amps(out.volts, out.qdot);
   return out;
 }
 
@@ -144,8 +141,7 @@ Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor) {
   }
   std::vector<double> b_grid = trajectory.bGrid();
   for (double& b : b_grid) b /= factor * factor;
-  return Trajectory::create(trajectory.sharedPath(), trajectory.drive(kElevator), trajectory.drive(kArm),
-                            trajectory.sGrid(), std::move(b_grid));
+  return Trajectory::create(trajectory.sharedPath(), trajectory.drives(), trajectory.sGrid(), std::move(b_grid));
 }
 
 }  // namespace cyber::planner

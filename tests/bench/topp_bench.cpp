@@ -52,7 +52,7 @@ void BM_ToppPublicMoves(benchmark::State& state) {
       ToppReport report;
       const auto t0 = std::chrono::steady_clock::now();
       const double c0 = bench::threadCpuMs();
-      const auto result = solver.solve(path, model.elevator_drive, model.arm_drive, 0.0, &report);
+      const auto result = solver.solve(path, model.driveModel(), 0.0, &report);
       cpu_ms.push_back(bench::threadCpuMs() - c0);
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
       refinements.push_back(report.refinements);

@@ -15,8 +15,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const cyber::config::Config config = cyber::config::parseConfig(text, "fuzz.toml");
     const auto& robot = config.robot;
-    CYBER_FUZZ_CHECK(robot.elevator_range_m.min < robot.elevator_range_m.max);
-    CYBER_FUZZ_CHECK(robot.arm_range_rad.min < robot.arm_range_rad.max);
+    CYBER_FUZZ_CHECK(robot.range(0).min < robot.range(0).max);
+    CYBER_FUZZ_CHECK(robot.range(1).min < robot.range(1).max);
     CYBER_FUZZ_CHECK(!robot.scenes.empty());
     CYBER_FUZZ_CHECK(std::isfinite(config.daemon.stream_rate_hz) && config.daemon.stream_rate_hz > 0.0);
   } catch (const cyber::config::ConfigError& error) {

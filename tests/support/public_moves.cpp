@@ -1,5 +1,7 @@
 #include "public_moves.hpp"
 
+#include "reference_model.hpp"
+
 #include <map>
 #include <stdexcept>
 
@@ -45,9 +47,8 @@ const std::vector<NamedPose>& publicPoses(const std::string& piece_set) { return
 const std::vector<PublicMove>& publicMoves() {
   static const std::vector<PublicMove> moves = [] {
     std::vector<PublicMove> out;
-    const std::pair<const char*, planner::HeldPieces> sets[] = {
-        {"none", {}}, {"coral", {true, false}}, {"algae", {false, true}}};
-    for (const auto& [set, pieces] : sets) {
+    for (const char* set : {"none", "coral", "algae"}) {
+      const planner::HeldPieces pieces = referencePieces(set);
       for (const NamedPose& a : publicPoses(set)) {
         for (const NamedPose& b : publicPoses(set)) {
           if (a.name == b.name) continue;

@@ -75,8 +75,8 @@ int main(int argc, char** argv) {
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
   sim.plants[cyber::planner::kElevator] =
-      cyber::plant::JointPlant::fromDrive(robot.elevator_drive, robot.elevator_range_m);
-  sim.plants[cyber::planner::kArm] = cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.arm_range_rad);
+      cyber::plant::JointPlant::fromDrive(robot.elevator_drive, robot.range(0));
+  sim.plants[cyber::planner::kArm] = cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.range(1));
   sim.gains[cyber::planner::kElevator] = options.elevator_gains;
   sim.gains[cyber::planner::kArm] = options.arm_gains;
   sim.setpoint_timeout_s = options.setpoint_timeout_s;

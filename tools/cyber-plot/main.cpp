@@ -38,7 +38,7 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
   }
   const bool named = !poses.empty();
   if (!named) {
-    const planner::JointRange e = robot.elevator_range_m, a = robot.arm_range_rad;
+    const planner::JointRange e = robot.range(0), a = robot.range(1);
     for (double f : {0.1, 0.5, 0.9}) {
       const planner::JointVector q(e.min + f * (e.max - e.min), a.min + f * (a.max - a.min));
       poses.push_back({fmt::format("{:.2f} m, {:.2f} rad", q[0], q[1]), q});

@@ -47,10 +47,10 @@ planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::
     return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
                                                fmt::format("arm_rad is not finite ({:g})", goal.arm_rad));
   }
-  if (auto problem = checkJoint("elevator_m", goal.elevator_m, robot.elevator_range_m, "m")) {
+  if (auto problem = checkJoint("elevator_m", goal.elevator_m, robot.range(0), "m")) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kGoalOutOfRange, *problem);
   }
-  if (auto problem = checkJoint("arm_rad", goal.arm_rad, robot.arm_range_rad, "rad")) {
+  if (auto problem = checkJoint("arm_rad", goal.arm_rad, robot.range(1), "rad")) {
     return planner::Result<ValidGoal>::failure(PlanStatus::kGoalOutOfRange, *problem);
   }
   ValidGoal valid;

@@ -54,7 +54,7 @@ TEST(ValidateGoal, RejectsOutOfRangeJointsWithTheLimits) {
   EXPECT_EQ(negative.error().status, PlanStatus::kGoalOutOfRange);
   EXPECT_NE(negative.error().reason.find("arm_rad"), std::string::npos);
   // The limits themselves are inside.
-  EXPECT_TRUE(validateGoal(goalAt(robot.elevator_range_m.max, robot.arm_range_rad.min), robot));
+  EXPECT_TRUE(validateGoal(goalAt(robot.range(0).max, robot.range(1).min), robot));
 }
 
 TEST(ValidateGoal, ResolvesSceneNamesAndRejectsUnknownOnes) {

@@ -53,11 +53,11 @@ double dijkstraCost(const CSpaceGrid& grid, const std::vector<SearchEndpoint>& s
     }
     if (u < 0) break;
     done[static_cast<size_t>(u)] = true;
-    const int i = grid.elevatorIndex(u), j = grid.armIndex(u);
+    const int i = grid.firstIndex(u), j = grid.secondIndex(u);
     for (int di = -1; di <= 1; ++di) {
       for (int dj = -1; dj <= 1; ++dj) {
         const int a = i + di, b = j + dj;
-        if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= grid.elevatorAxis().count || b >= grid.armAxis().count)
+        if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= grid.firstAxis().count || b >= grid.secondAxis().count)
           continue;
         const int v = grid.cell(a, b);
         if (grid.blocked(v)) continue;
@@ -127,8 +127,8 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
       EXPECT_FALSE(grid.blocked(astar->cells[k]));
       if (k == 0) continue;
       const int a = astar->cells[k - 1], b = astar->cells[k];
-      EXPECT_LE(std::abs(grid.elevatorIndex(a) - grid.elevatorIndex(b)), 1);
-      EXPECT_LE(std::abs(grid.armIndex(a) - grid.armIndex(b)), 1);
+      EXPECT_LE(std::abs(grid.firstIndex(a) - grid.firstIndex(b)), 1);
+      EXPECT_LE(std::abs(grid.secondIndex(a) - grid.secondIndex(b)), 1);
       EXPECT_NE(a, b);
       total += stepCost(grid, a, b);
     }
@@ -220,8 +220,8 @@ TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
       // The ray runs up from the square: the path above crosses it once, the path below never.
       for (int parity : {0, 1}) {
         for (int cell : side[parity]->cells) {
-          if (grid.elevatorIndex(cell) == 6) {
-            EXPECT_EQ(grid.armIndex(cell) > 6, parity == 1);
+          if (grid.firstIndex(cell) == 6) {
+            EXPECT_EQ(grid.secondIndex(cell) > 6, parity == 1);
           }
         }
       }
@@ -342,7 +342,7 @@ TEST(CSpaceGrid, PotentialIsTheDistanceTransformOfTheBlockedNodes) {
       done[static_cast<size_t>(u)] = true;
       for (int di = -1; di <= 1; ++di) {
         for (int dj = -1; dj <= 1; ++dj) {
-          const int a = grid.elevatorIndex(u) + di, b = grid.armIndex(u) + dj;
+          const int a = grid.firstIndex(u) + di, b = grid.secondIndex(u) + dj;
           if (a < 0 || b < 0 || a >= 12 || b >= 15) continue;
           const int v = grid.cell(a, b);
           dist[static_cast<size_t>(v)] =

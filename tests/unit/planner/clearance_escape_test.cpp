@@ -23,8 +23,8 @@ const JointVector kStow(0.20, 1.57);
 // 95 % of the clearance.
 std::vector<JointVector> startsInsideTheClearance(const RobotModel& model, const CollisionWorld& world) {
   std::mt19937 rng(2026);
-  std::uniform_real_distribution<double> t(model.elevator_range_m.min, model.elevator_range_m.max);
-  std::uniform_real_distribution<double> theta(model.arm_range_rad.min, model.arm_range_rad.max);
+  std::uniform_real_distribution<double> t(model.range(0).min, model.range(0).max);
+  std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);
   std::vector<JointVector> out;
   while (static_cast<int>(out.size()) < kStarts) {
     const JointVector q(t(rng), theta(rng));

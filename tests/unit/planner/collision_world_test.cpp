@@ -111,7 +111,7 @@ TEST(CollisionWorld, AgreesWithBruteForceOverAllPairs) {
 }
 
 TEST(CollisionWorld, CutoffGivesExactValuesBelowItAndLowerBoundsAbove) {
-  const CollisionWorld world(model(), scene(), HeldPieces{true, true});
+  const CollisionWorld world(model(), scene(), test::referencePieces("coral+algae"));
   std::mt19937 rng(12);
   int bounded = 0;
   for (int trial = 0; trial < 2000; ++trial) {

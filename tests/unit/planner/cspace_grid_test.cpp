@@ -39,8 +39,8 @@ TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheClearance) {
     const CollisionWorld& world = grids().worlds[static_cast<size_t>(set)];
     EXPECT_EQ(grid.clearance_m(), model().clearance_m);
     EXPECT_GT(grid.checkedStepCount(), 0);
-    EXPECT_LE(grid.elevatorAxis().step, model().planner.grid.elevator_step_m);
-    EXPECT_LE(grid.armAxis().step, model().planner.grid.arm_step_rad);
+    EXPECT_LE(grid.firstAxis().step, model().planner.grid.elevator_step_m);
+    EXPECT_LE(grid.secondAxis().step, model().planner.grid.arm_step_rad);
     for (int c = 0; c < grid.cellCount(); c += 7) {
       EXPECT_EQ(grid.blocked(c), world.distance(grid.node(c)).value < model().clearance_m) << c;
       if (grid.blocked(c)) {
@@ -67,8 +67,8 @@ TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
     while (checked < 500) {
       const int a = any(rng);
       const int di = offset(rng), dj = offset(rng);
-      const int i = grid.elevatorIndex(a) + di, j = grid.armIndex(a) + dj;
-      if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= grid.elevatorAxis().count || j >= grid.armAxis().count)
+      const int i = grid.firstIndex(a) + di, j = grid.secondIndex(a) + dj;
+      if ((di == 0 && dj == 0) || i < 0 || j < 0 || i >= grid.firstAxis().count || j >= grid.secondAxis().count)
         continue;
       const int b = grid.cell(i, j);
       // Only steps near the obstacles say anything.
@@ -89,8 +89,8 @@ TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
     EXPECT_LT(closest, model().clearance_m + 0.002) << "the sampled steps came near the clearance";
     int refused = 0;
     for (int c = 0; c < grid.cellCount(); ++c) {
-      const int i = grid.elevatorIndex(c), j = grid.armIndex(c);
-      if (grid.blocked(c) || i + 1 >= grid.elevatorAxis().count || j + 1 >= grid.armAxis().count) continue;
+      const int i = grid.firstIndex(c), j = grid.secondIndex(c);
+      if (grid.blocked(c) || i + 1 >= grid.firstAxis().count || j + 1 >= grid.secondAxis().count) continue;
       for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}, std::pair{1, 1}}) {
         if (!grid.blocked(grid.cell(i + di, j + dj)) && !grid.stepFree(c, di, dj)) ++refused;
       }

@@ -21,8 +21,8 @@ constexpr unsigned kSeed = 20261201;
 constexpr int kStarts = 300;
 
 JointVector uniformPose(const RobotModel& model, std::mt19937& rng) {
-  std::uniform_real_distribution<double> t(model.elevator_range_m.min, model.elevator_range_m.max);
-  std::uniform_real_distribution<double> theta(model.arm_range_rad.min, model.arm_range_rad.max);
+  std::uniform_real_distribution<double> t(model.range(0).min, model.range(0).max);
+  std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);
   return {t(rng), theta(rng)};
 }
 
@@ -37,7 +37,7 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
   int compared = 0, stopped_first = 0, over_bound = 0;
   for (int i = 0; i < kStarts; ++i) {
     PlanRequest request;
-    request.pieces = HeldPieces{coin(rng), false};
+    request.pieces = (coin(rng) ? test::referencePieces("coral") : HeldPieces{});
     const CollisionWorld& world = paths.world(request.pieces);
     do request.start = uniformPose(model, rng);
     while (world.distance(request.start).value < model.clearance_m);
@@ -133,7 +133,7 @@ TEST(MovingStart, ARefusalSaysWhyStoppingFirstFailedToo) {
   PlanRequest request;
   request.start = JointVector(1.4124, 5.6042);
   request.goal = JointVector(1.4750, 5.3602);
-  request.pieces = HeldPieces{true, false};
+  request.pieces = test::referencePieces("coral");
   ASSERT_TRUE(planner.value().plan(request).ok());
   request.start_velocity = JointVector(1.4675, 3.1783);
   const auto plan = planner.value().plan(request);

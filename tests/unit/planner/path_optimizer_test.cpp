@@ -35,7 +35,7 @@ std::vector<JointVector> wavyPath(int count) {
 }
 
 TEST(SmoothingObjective, GradientMatchesCentralDifferences) {
-  const CollisionWorld world(model(), model().scenes.front(), HeldPieces{true, false});
+  const CollisionWorld world(model(), model().scenes.front(), test::referencePieces("coral"));
   const std::vector<JointVector> prior = wavyPath(30);
   std::mt19937 rng(41);
   std::normal_distribution<double> noise(0.0, 0.01);

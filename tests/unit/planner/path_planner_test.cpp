@@ -213,8 +213,8 @@ TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
 TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
   // Poses between grid nodes: the path starts and ends exactly there.
   const JointVector start(0.2137, 1.5731), goal(0.7813, 6.0871);
-  ASSERT_EQ(components(HeldPieces{true, false}).of(start), components(HeldPieces{true, false}).of(goal));
-  const auto result = planner().plan(start, goal, HeldPieces{true, false});
+  ASSERT_EQ(components(test::referencePieces("coral")).of(start), components(test::referencePieces("coral")).of(goal));
+  const auto result = planner().plan(start, goal, test::referencePieces("coral"));
   ASSERT_TRUE(result.ok()) << result.error().reason;
   EXPECT_EQ(result.value().path->at(0.0).q, start);
   EXPECT_NEAR((result.value().path->at(result.value().path->length()).q - goal).norm(), 0.0, 1e-12);
@@ -235,7 +235,7 @@ TEST(PathPlanner, ZeroLengthMoveIsATrivialPath) {
 TEST(PathPlanner, VeryShortMovesAreValid) {
   for (double step : {1e-8, 1e-6, 1e-4, 1e-2}) {
     const JointVector start(0.58, 2.97), goal = start + JointVector(step, -step);
-    const auto result = planner().plan(start, goal, HeldPieces{true, true});
+    const auto result = planner().plan(start, goal, test::referencePieces("coral+algae"));
     ASSERT_TRUE(result.ok()) << step << ": " << result.error().reason;
     const GeometricPath& path = *result.value().path;
     EXPECT_GT(path.length(), 0.0);
@@ -270,10 +270,10 @@ TEST(PathPlanner, BadInputsGiveTypedErrors) {
   for (int i = 0; i < 5000 && found < 5; ++i) {
     const JointVector q(t(rng), th(rng));
     if (planner().world(none).distance(q).value < 0.1) continue;
-    if (planner().world(HeldPieces{false, true}).distance(q).value >= model().clearance_m) continue;
+    if (planner().world(test::referencePieces("algae")).distance(q).value >= model().clearance_m) continue;
     ++found;
-    EXPECT_EQ(planner().plan(q, ok_goal, HeldPieces{false, true}).status(), PlanStatus::kStartInCollision);
-    EXPECT_EQ(planner().plan(ok_start, q, HeldPieces{false, true}).status(), PlanStatus::kGoalInCollision);
+    EXPECT_EQ(planner().plan(q, ok_goal, test::referencePieces("algae")).status(), PlanStatus::kStartInCollision);
+    EXPECT_EQ(planner().plan(ok_start, q, test::referencePieces("algae")).status(), PlanStatus::kGoalInCollision);
   }
   EXPECT_EQ(found, 5);
 }
@@ -390,7 +390,7 @@ TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
 TEST(PathPlanner, HeldPiecesShapeThePath) {
   // A held piece makes the robot bigger: its grid blocks more, and a path planned for the bare
   // arm can come closer than the clearance once the piece is held, while the piece's path does not.
-  EXPECT_GT(planner().grid(HeldPieces{false, true}).blockedCount(), planner().grid(HeldPieces{}).blockedCount());
+  EXPECT_GT(planner().grid(test::referencePieces("algae")).blockedCount(), planner().grid(HeldPieces{}).blockedCount());
   const HeldPieces coral{true, false};
   int bare_path_too_close = 0;
   for (const test::PublicMove& move : test::publicMoves()) {

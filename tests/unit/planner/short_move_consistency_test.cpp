@@ -37,7 +37,7 @@ TEST(ShortMove, TheRefereesShortMovesAgreeAtOneMillisecond) {
   ASSERT_TRUE(planner.ok());
   const ShortMove moves[] = {
       {JointVector(0.84427, 4.15376), JointVector(0.81929, 4.36080), HeldPieces{}, 0.0557777},
-      {JointVector(0.54757, 4.89680), JointVector(0.47999, 5.00276), HeldPieces{true, false}, 0.0726723},
+      {JointVector(0.54757, 4.89680), JointVector(0.47999, 5.00276), test::referencePieces("coral"), 0.0726723},
       {JointVector(1.22049, 3.63779), JointVector(1.14852, 3.50259), HeldPieces{}, 0.0749960},
   };
   for (const ShortMove& move : moves) {
@@ -60,15 +60,15 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAtOneMillisecond) {
   ASSERT_TRUE(planner.ok());
   const PathPlanner& paths = planner.value().pathPlanner(0);
   std::mt19937 rng(kSeed);
-  std::uniform_real_distribution<double> t(model.elevator_range_m.min, model.elevator_range_m.max);
-  std::uniform_real_distribution<double> theta(model.arm_range_rad.min, model.arm_range_rad.max);
+  std::uniform_real_distribution<double> t(model.range(0).min, model.range(0).max);
+  std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);
   // Up to 10 cm of elevator and 0.3 rad of arm: moves of 20-90 ms.
   std::uniform_real_distribution<double> dt(-0.1, 0.1), dtheta(-0.3, 0.3);
   std::bernoulli_distribution coin(0.5);
   int planned = 0;
   for (int i = 0; i < kMoves; ++i) {
     PlanRequest request;
-    request.pieces = HeldPieces{coin(rng), false};
+    request.pieces = (coin(rng) ? test::referencePieces("coral") : HeldPieces{});
     const CollisionWorld& world = paths.world(request.pieces);
     // One draw a statement: a call's arguments are evaluated in an order the target chooses.
     const double start_t = t(rng), start_theta = theta(rng);

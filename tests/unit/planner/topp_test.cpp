@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "reference_model.hpp"
 #include "topp_fixtures.hpp"
 
 namespace cyber::planner {
@@ -315,7 +316,7 @@ TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
     const TrajectorySample s = result.value().sample(t);
     EXPECT_EQ(s.q, JointVector(0.7, 2.0));
     EXPECT_EQ(s.qdot, JointVector::Zero());
-    EXPECT_NEAR(s.volts[kElevator], 0.37, 1e-12);  // holds against gravity
+    EXPECT_NEAR(s.volts[test::kElevator], 0.37, 1e-12);  // holds against gravity
   }
   const Result<Trajectory> moving = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {}, 0.5);
   ASSERT_FALSE(moving.ok());
@@ -351,12 +352,12 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   const DriveParams arm = armDrive();
   for (double dt : {-0.004, 0.004}) {
     const TrajectorySample s = trajectory.sample(turn_t + dt);
-    ASSERT_NE(s.qdot[kArm], 0.0);
-    const double without_friction = arm.kG_volts * std::cos(s.q[kArm]) + arm.kV * s.qdot[kArm] + arm.kA * s.qddot[kArm];
-    EXPECT_NEAR(s.volts[kArm] - without_friction, std::copysign(arm.kS_volts, s.qdot[kArm]), 1e-12);
+    ASSERT_NE(s.qdot[test::kArm], 0.0);
+    const double without_friction = arm.kG_volts * std::cos(s.q[test::kArm]) + arm.kV * s.qdot[test::kArm] + arm.kA * s.qddot[test::kArm];
+    EXPECT_NEAR(s.volts[test::kArm] - without_friction, std::copysign(arm.kS_volts, s.qdot[test::kArm]), 1e-12);
   }
-  EXPECT_GT(trajectory.sample(turn_t - 0.004).qdot[kArm], 0.0);
-  EXPECT_LT(trajectory.sample(turn_t + 0.004).qdot[kArm], 0.0);
+  EXPECT_GT(trajectory.sample(turn_t - 0.004).qdot[test::kArm], 0.0);
+  EXPECT_LT(trajectory.sample(turn_t + 0.004).qdot[test::kArm], 0.0);
 }
 
 TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {

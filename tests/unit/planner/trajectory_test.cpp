@@ -14,6 +14,7 @@
 
 #include "allocation_counter.hpp"
 
+#include "reference_model.hpp"
 #include "topp_fixtures.hpp"
 
 namespace cyber::planner {
@@ -127,7 +128,7 @@ TEST(Trajectory, EndsAndOutOfRangeTimes) {
   EXPECT_LT((after.q - path->at(path->length()).q).norm(), 1e-12);
   EXPECT_EQ(after.qdot, JointVector::Zero());
   EXPECT_EQ(after.qddot, JointVector::Zero());
-  EXPECT_NEAR(after.volts[kElevator], elevatorDrive().kG_volts, 1e-12);
+  EXPECT_NEAR(after.volts[test::kElevator], elevatorDrive().kG_volts, 1e-12);
   const TrajectorySample nan = t.sample(std::nan(""));
   EXPECT_TRUE(nan.q.allFinite());
 }
@@ -136,9 +137,9 @@ TEST(Trajectory, VoltsAndAmpsFollowTheDriveModel) {
   const Trajectory t = makeTrajectory(wiggle());
   for (int i = 0; i <= 100; ++i) {
     const TrajectorySample s = t.sample(t.duration_s() * i / 100.0);
-    EXPECT_DOUBLE_EQ(s.volts[kArm], armDrive().volts(s.q[kArm], s.qdot[kArm], s.qddot[kArm]));
-    EXPECT_DOUBLE_EQ(s.amps[kArm], armDrive().amps(s.volts[kArm], s.qdot[kArm]));
-    EXPECT_DOUBLE_EQ(s.volts[kElevator], elevatorDrive().volts(s.q[kElevator], s.qdot[kElevator], s.qddot[kElevator]));
+    EXPECT_DOUBLE_EQ(s.volts[test::kArm], armDrive().volts(s.q[test::kArm], s.qdot[test::kArm], s.qddot[test::kArm]));
+    EXPECT_DOUBLE_EQ(s.amps[test::kArm], armDrive().amps(s.volts[test::kArm], s.qdot[test::kArm]));
+    EXPECT_DOUBLE_EQ(s.volts[test::kElevator], elevatorDrive().volts(s.q[test::kElevator], s.qdot[test::kElevator], s.qddot[test::kElevator]));
   }
 }
 
@@ -156,7 +157,7 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
   const auto path = wiggle();
   const Trajectory reference = makeTrajectory(path);
   const double step = 0.001;
-  const double peak = peakVoltageRatio(reference, kArm, step);
+  const double peak = peakVoltageRatio(reference, test::kArm, step);
   ASSERT_GT(peak, 0.0);
   // The same profile with the arm's voltage limit just above and just below its peak.
   auto withArmLimit = [&](double volts) {

@@ -10,8 +10,8 @@
 namespace cyber::plant {
 namespace {
 
-using planner::kArm;
-using planner::kElevator;
+using test::kArm;
+using test::kElevator;
 
 JointPlant referencePlant(int joint) {
   const auto& model = test::referenceModel();
@@ -26,7 +26,7 @@ JointState run(const JointPlant& plant, JointState state, double volts, double d
 
 TEST(JointModel, CopiesTheDriveFigures) {
   const auto& drive = test::referenceModel().arm_drive;
-  const JointPlant plant = referencePlant(kArm);
+  const JointPlant plant = referencePlant(test::kArm);
   EXPECT_EQ(plant.kS_volts, drive.kS_volts);
   EXPECT_EQ(plant.kG_volts, drive.kG_volts);
   EXPECT_EQ(plant.kV, drive.kV);
@@ -34,14 +34,14 @@ TEST(JointModel, CopiesTheDriveFigures) {
   EXPECT_EQ(plant.voltage_limit_volts, drive.voltage_limit_volts);
   EXPECT_EQ(plant.range.max, test::referenceModel().arm_range_rad.max);
   EXPECT_DOUBLE_EQ(plant.gravityFactor(0.3), std::cos(0.3));
-  EXPECT_EQ(referencePlant(kElevator).gravityFactor(0.3), 1.0);
+  EXPECT_EQ(referencePlant(test::kElevator).gravityFactor(0.3), 1.0);
 }
 
 // The feedforward of a constant velocity keeps that velocity: the model is the inverse of
 // DriveParams::volts.
 TEST(JointModel, FeedforwardOfAConstantVelocityHoldsIt) {
   const auto& drive = test::referenceModel().elevator_drive;
-  const JointPlant plant = referencePlant(kElevator);
+  const JointPlant plant = referencePlant(test::kElevator);
   for (double v : {-1.5, -0.2, 0.3, 2.0}) {
     JointState state{1.0, v};
     const double volts = drive.volts(state.position, v, 0.0);
@@ -54,7 +54,7 @@ TEST(JointModel, FeedforwardOfAConstantVelocityHoldsIt) {
 // From rest under a constant voltage, kA v' = V - kS - kG - kV v: v(t) = v_inf (1 - exp(-t kV/kA)).
 // Semi-implicit Euler is first order: the error shrinks in proportion to the step.
 TEST(JointModel, ConstantVoltageMatchesTheExponentialToFirstOrder) {
-  const JointPlant plant = referencePlant(kElevator);
+  const JointPlant plant = referencePlant(test::kElevator);
   const double volts = 6.0;
   const double v_inf = (volts - plant.kS_volts - plant.kG_volts) / plant.kV;
   const double tau = plant.kA / plant.kV;
@@ -75,7 +75,7 @@ TEST(JointModel, ConstantVoltageMatchesTheExponentialToFirstOrder) {
 }
 
 TEST(JointModel, StictionHoldsAJointAtRestWithinTheFrictionBand) {
-  const JointPlant plant = referencePlant(kElevator);
+  const JointPlant plant = referencePlant(test::kElevator);
   for (double dv : {-0.999 * plant.kS_volts, -0.05, 0.0, 0.1, 0.999 * plant.kS_volts}) {
     const JointState end = run(plant, JointState{0.7, 0.0}, plant.kG_volts + dv, 0.5, 1e-3);
     EXPECT_EQ(end.position, 0.7) << dv;
@@ -90,7 +90,7 @@ TEST(JointModel, StictionHoldsAJointAtRestWithinTheFrictionBand) {
 // never reversing. Closed form: v(t) = (v0 + kS/kV) exp(-t kV/kA) - kS/kV until v = 0, and the
 // distance travelled is kA/kV (v0 - kS/kV ln(1 + v0 kV/kS)).
 TEST(JointModel, FrictionStopsAJointWithoutReversingIt) {
-  JointPlant plant = referencePlant(kElevator);
+  JointPlant plant = referencePlant(test::kElevator);
   plant.kG_volts = 0.0;
   const double v0 = 0.8;
   const double s = plant.kS_volts / plant.kV;
@@ -107,13 +107,13 @@ TEST(JointModel, FrictionStopsAJointWithoutReversingIt) {
 // Neutral (0 V, brake mode): the elevator slides down at (kG - kS) / kV; the arm near vertical
 // (cos ~ 0) stays put because friction beats gravity there.
 TEST(JointModel, NeutralSlidesAtTheBrakeVelocityOrStaysPut) {
-  const JointPlant elevator = referencePlant(kElevator);
+  const JointPlant elevator = referencePlant(test::kElevator);
   const double slide = neutralSlideVelocity(elevator, 1.0);
   EXPECT_NEAR(slide, -(elevator.kG_volts - elevator.kS_volts) / elevator.kV, 1e-15);
   const JointState end = run(elevator, JointState{1.0, 0.0}, 0.0, 0.3, 1e-3);
   EXPECT_NEAR(end.velocity, slide, 1e-9);
 
-  const JointPlant arm = referencePlant(kArm);
+  const JointPlant arm = referencePlant(test::kArm);
   EXPECT_EQ(neutralSlideVelocity(arm, 1.57), 0.0);
   EXPECT_EQ(run(arm, JointState{1.57, 0.0}, 0.0, 0.5, 1e-3).position, 1.57);
   // Horizontal, pointing forward: gravity (cos 0 = 1) beats friction, it falls (theta decreases).
@@ -124,7 +124,7 @@ TEST(JointModel, NeutralSlidesAtTheBrakeVelocityOrStaysPut) {
 }
 
 TEST(JointModel, HardStopsAtTheJointRange) {
-  const JointPlant plant = referencePlant(kElevator);
+  const JointPlant plant = referencePlant(test::kElevator);
   JointState state{0.05, 0.0};
   for (int i = 0; i < 500; ++i) {
     state = stepPlant(plant, state, -plant.voltage_limit_volts, 1e-3);
@@ -145,7 +145,7 @@ TEST(JointModel, HardStopsAtTheJointRange) {
 }
 
 TEST(JointModel, ControllerIsFeedforwardPlusPdClampedToTheLimit) {
-  const JointPlant plant = referencePlant(kArm);
+  const JointPlant plant = referencePlant(test::kArm);
   const PdGains gains{60.0, 0.1};
   const JointCommand command{1.0, 0.5, 0.7};
   const JointState state{0.99, 0.4};

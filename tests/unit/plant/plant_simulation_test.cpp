@@ -11,18 +11,18 @@
 namespace cyber::plant {
 namespace {
 
-using planner::kArm;
-using planner::kElevator;
+using test::kArm;
+using test::kElevator;
 
 constexpr double kStreamPeriod_s = 0.005;  // the daemon's default 200 Hz
 
 SimulationSettings referenceSettings() {
   const auto& model = test::referenceModel();
   SimulationSettings settings;
-  settings.plants[kElevator] = JointPlant::fromDrive(model.elevator_drive, model.elevator_range_m);
-  settings.plants[kArm] = JointPlant::fromDrive(model.arm_drive, model.arm_range_rad);
-  settings.gains[kElevator] = kDefaultElevatorGains;
-  settings.gains[kArm] = kDefaultArmGains;
+  settings.plants[test::kElevator] = JointPlant::fromDrive(model.elevator_drive, model.range(0));
+  settings.plants[test::kArm] = JointPlant::fromDrive(model.arm_drive, model.range(1));
+  settings.gains[test::kElevator] = kDefaultElevatorGains;
+  settings.gains[test::kArm] = kDefaultArmGains;
   return settings;
 }
 
@@ -65,7 +65,7 @@ TrackingResult track(PlantSimulation& sim, const Quintic (&moves)[2], double end
   TrackingResult result;
   for (long k = 0; k * kStreamPeriod_s <= end_s + 1e-12; ++k) {
     const double t = static_cast<double>(k) * kStreamPeriod_s;
-    for (int joint : {kElevator, kArm}) {
+    for (int joint : {test::kElevator, test::kArm}) {
       const JointCommand command = commandAt(moves[joint], model.drive(joint), t);
       sim.receiveSetpoint(joint, command, t);
       const double error = std::abs(sim.state(joint).position - command.position);
@@ -82,13 +82,13 @@ TEST(PlantSimulation, TracksAFeedforwardMoveAndSettlesWithinTheFrictionBand) {
   const TrackingResult result = track(sim, moves, 1.5);
   // The plant is the feedforward model itself, so only integration and extrapolation errors
   // remain during the move (measured: 0.6 mm and 1.1 mrad).
-  EXPECT_LT(result.max_error[kElevator], 0.001);
-  EXPECT_LT(result.max_error[kArm], 0.002);
+  EXPECT_LT(result.max_error[test::kElevator], 0.001);
+  EXPECT_LT(result.max_error[test::kArm], 0.002);
   // At rest the PD loop leaves at most the friction dead band.
-  EXPECT_LE(result.final_error[kElevator], deadBand(sim.settings(), kElevator));
-  EXPECT_LE(result.final_error[kArm], deadBand(sim.settings(), kArm));
-  EXPECT_NEAR(sim.velocities()[kElevator], 0.0, 1e-6);
-  EXPECT_NEAR(sim.velocities()[kArm], 0.0, 1e-6);
+  EXPECT_LE(result.final_error[test::kElevator], deadBand(sim.settings(), test::kElevator));
+  EXPECT_LE(result.final_error[test::kArm], deadBand(sim.settings(), test::kArm));
+  EXPECT_NEAR(sim.velocities()[test::kElevator], 0.0, 1e-6);
+  EXPECT_NEAR(sim.velocities()[test::kArm], 0.0, 1e-6);
 }
 
 // Feedback matters: from a start 5 cm / 0.2 rad off, hold setpoints pull both joints to within
@@ -103,12 +103,12 @@ TEST(PlantSimulation, HoldSetpointsConvergeFromAnOffsetStart) {
     PlantSimulation sim(referenceSettings(), target + planner::JointVector(-0.05, 0.2));
     for (long k = 0; k <= 200; ++k) {
       const double t = static_cast<double>(k) * kStreamPeriod_s;
-      for (int joint : {kElevator, kArm}) {
+      for (int joint : {test::kElevator, test::kArm}) {
         const JointCommand hold{target[joint], 0.0, model.drive(joint).volts(target[joint], 0.0, 0.0)};
         sim.receiveSetpoint(joint, hold, t);
       }
     }
-    for (int joint : {kElevator, kArm}) {
+    for (int joint : {test::kElevator, test::kArm}) {
       EXPECT_LE(std::abs(sim.positions()[joint] - target[joint]), deadBand(sim.settings(), joint))
           << "trial " << trial << " joint " << joint;
     }
@@ -146,16 +146,16 @@ TEST(PlantSimulation, IsDeterministic) {
 
 TEST(PlantSimulation, ExtrapolatesTheLatestSetpointUntilItTimesOut) {
   PlantSimulation sim(referenceSettings(), planner::JointVector(0.2, 1.57));
-  EXPECT_FALSE(sim.effectiveCommand(kElevator, 0.0));  // nothing received: neutral
-  sim.receiveSetpoint(kElevator, JointCommand{0.3, 0.5, 2.0}, 1.0);
-  const auto at = sim.effectiveCommand(kElevator, 1.004);
+  EXPECT_FALSE(sim.effectiveCommand(test::kElevator, 0.0));  // nothing received: neutral
+  sim.receiveSetpoint(test::kElevator, JointCommand{0.3, 0.5, 2.0}, 1.0);
+  const auto at = sim.effectiveCommand(test::kElevator, 1.004);
   ASSERT_TRUE(at);
   EXPECT_DOUBLE_EQ(at->position, 0.3 + 0.5 * 0.004);
   EXPECT_EQ(at->velocity, 0.5);
   EXPECT_EQ(at->feedforward_volts, 2.0);
-  EXPECT_TRUE(sim.effectiveCommand(kElevator, 1.0999));
-  EXPECT_FALSE(sim.effectiveCommand(kElevator, 1.1001));
-  EXPECT_FALSE(sim.effectiveCommand(kArm, 1.0));  // per joint
+  EXPECT_TRUE(sim.effectiveCommand(test::kElevator, 1.0999));
+  EXPECT_FALSE(sim.effectiveCommand(test::kElevator, 1.1001));
+  EXPECT_FALSE(sim.effectiveCommand(test::kArm, 1.0));  // per joint
 }
 
 // Setpoints stop (the daemon stopped streaming): after the timeout the controller is neutral and
@@ -164,15 +164,15 @@ TEST(PlantSimulation, GoesNeutralAfterTheSetpointTimeout) {
   const auto& model = test::referenceModel();
   PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
   const JointCommand hold{1.0, 0.0, model.elevator_drive.volts(1.0, 0.0, 0.0)};
-  for (int k = 0; k < 20; ++k) sim.receiveSetpoint(kElevator, hold, k * kStreamPeriod_s);
+  for (int k = 0; k < 20; ++k) sim.receiveSetpoint(test::kElevator, hold, k * kStreamPeriod_s);
   const double last_s = 19 * kStreamPeriod_s;
   sim.advanceTo(last_s + 0.099);
-  EXPECT_NE(sim.appliedVolts(kElevator), 0.0);
-  EXPECT_NEAR(sim.positions()[kElevator], 1.0, 0.001);
+  EXPECT_NE(sim.appliedVolts(test::kElevator), 0.0);
+  EXPECT_NEAR(sim.positions()[test::kElevator], 1.0, 0.001);
   sim.advanceTo(last_s + 0.3);
-  EXPECT_EQ(sim.appliedVolts(kElevator), 0.0);
-  EXPECT_NEAR(sim.velocities()[kElevator], neutralSlideVelocity(sim.settings().plants[kElevator], 1.0), 1e-6);
-  EXPECT_LT(sim.positions()[kElevator], 0.995);
+  EXPECT_EQ(sim.appliedVolts(test::kElevator), 0.0);
+  EXPECT_NEAR(sim.velocities()[test::kElevator], neutralSlideVelocity(sim.settings().plants[test::kElevator], 1.0), 1e-6);
+  EXPECT_LT(sim.positions()[test::kElevator], 0.995);
 }
 
 TEST(PlantSimulation, RestsAtTheInitialPoseUntilTheFirstSetpoint) {
@@ -181,25 +181,25 @@ TEST(PlantSimulation, RestsAtTheInitialPoseUntilTheFirstSetpoint) {
   EXPECT_EQ(sim.positions(), planner::JointVector(1.0, 0.3));
   EXPECT_EQ(sim.velocities(), planner::JointVector(0.0, 0.0));
   // A setpoint for the elevator only: the elevator is driven, the arm still rests.
-  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 2.0);
+  sim.receiveSetpoint(test::kElevator, JointCommand{1.0, 0.0, 0.37}, 2.0);
   sim.advanceTo(2.5);  // past the timeout: neutral, sliding
-  EXPECT_LT(sim.positions()[kElevator], 0.99);
-  EXPECT_EQ(sim.positions()[kArm], 0.3);
+  EXPECT_LT(sim.positions()[test::kElevator], 0.99);
+  EXPECT_EQ(sim.positions()[test::kArm], 0.3);
 }
 
 TEST(PlantSimulation, BroadcastDisableIsNeutralAtOnceUntilTheNextSetpoint) {
   PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
-  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 0.0);
-  sim.receiveSetpoint(kArm, JointCommand{1.57, 0.0, 0.0}, 0.0);
+  sim.receiveSetpoint(test::kElevator, JointCommand{1.0, 0.0, 0.37}, 0.0);
+  sim.receiveSetpoint(test::kArm, JointCommand{1.57, 0.0, 0.0}, 0.0);
   sim.advanceTo(0.01);
   sim.disableOutputs();
-  EXPECT_FALSE(sim.effectiveCommand(kElevator, 0.011));
-  EXPECT_FALSE(sim.effectiveCommand(kArm, 0.011));
+  EXPECT_FALSE(sim.effectiveCommand(test::kElevator, 0.011));
+  EXPECT_FALSE(sim.effectiveCommand(test::kArm, 0.011));
   sim.advanceTo(0.02);
-  EXPECT_EQ(sim.appliedVolts(kElevator), 0.0);
-  sim.receiveSetpoint(kElevator, JointCommand{1.0, 0.0, 0.37}, 0.02);
-  EXPECT_TRUE(sim.effectiveCommand(kElevator, 0.021));
-  EXPECT_FALSE(sim.effectiveCommand(kArm, 0.021));  // only the joint that got a setpoint
+  EXPECT_EQ(sim.appliedVolts(test::kElevator), 0.0);
+  sim.receiveSetpoint(test::kElevator, JointCommand{1.0, 0.0, 0.37}, 0.02);
+  EXPECT_TRUE(sim.effectiveCommand(test::kElevator, 0.021));
+  EXPECT_FALSE(sim.effectiveCommand(test::kArm, 0.021));  // only the joint that got a setpoint
 }
 
 }  // namespace

@@ -7,8 +7,8 @@ namespace cyber::plot {
 
 CSpaceMap sampleCSpace(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, int cells) {
   CSpaceMap map;
-  map.elevator_m = robot.elevator_range_m;
-  map.arm_rad = robot.arm_range_rad;
+  map.elevator_m = robot.range(0);
+  map.arm_rad = robot.range(1);
   if (scene < 0 || scene >= static_cast<int>(robot.scenes.size()) || cells < 2) return map;
   const planner::CollisionWorld world(robot, robot.scenes[static_cast<size_t>(scene)], pieces);
   map.elevator_cells = cells;

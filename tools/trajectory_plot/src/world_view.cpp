@@ -88,8 +88,8 @@ void drawScene(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& rob
     }
   }
   const Point2 dir(std::cos(robot.rail.tilt_rad), std::sin(robot.rail.tilt_rad));
-  const Point2 a = robot.rail.base_m + robot.elevator_range_m.min * dir;
-  const Point2 b = robot.rail.base_m + robot.elevator_range_m.max * dir;
+  const Point2 a = robot.rail.base_m + robot.range(0).min * dir;
+  const Point2 b = robot.rail.base_m + robot.range(0).max * dir;
   setColor(cr, kRail, 0.5);
   cairo_set_line_width(cr, 5.0);
   cairo_move_to(cr, c.px(a.x()), c.py(a.y()));
@@ -248,12 +248,12 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
 
 WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_y, double box_w, double box_h) {
   double reach = 0;
-  for (const ConvexPolygon* p : robotPolygons(robot, planner::HeldPieces{true, true})) {
+  for (const ConvexPolygon* p : robotPolygons(robot, robot.allPieces())) {
     for (const Point2& v : p->vertices()) reach = std::max(reach, v.norm());
   }
   const Point2 dir(std::cos(robot.rail.tilt_rad), std::sin(robot.rail.tilt_rad));
-  const Point2 a = robot.rail.base_m + robot.elevator_range_m.min * dir;
-  const Point2 b = robot.rail.base_m + robot.elevator_range_m.max * dir;
+  const Point2 a = robot.rail.base_m + robot.range(0).min * dir;
+  const Point2 b = robot.rail.base_m + robot.range(0).max * dir;
   constexpr double kMargin = 0.1;
   double x0 = std::min(a.x(), b.x()) - reach - kMargin, x1 = std::max(a.x(), b.x()) + reach + kMargin;
   double y0 = std::min(-kMargin, std::min(a.y(), b.y()) - reach - kMargin),

@@ -13,13 +13,13 @@ namespace cyber::config {
 
 struct NamedPose {
   std::string name;
-  planner::JointVector q;  // elevator m, arm rad
+  planner::JointVector q;  // joint units, chain order
 };
 
-// The optional [poses.none], [poses.coral] and [poses.algae] tables: poses a team names for one
-// set of held game pieces (docs/configuration.md), drawn by cyber-plot --config.
+// The optional [poses.SET] tables: poses a team names for one set of held game pieces, SET "none"
+// or piece names joined by '+' (docs/configuration.md), drawn by cyber-plot --config.
 struct PoseSet {
-  std::string name;  // "none", "coral" or "algae"
+  std::string name;  // as in the file
   planner::HeldPieces pieces;
   std::vector<NamedPose> poses;
 };
@@ -27,7 +27,7 @@ struct PoseSet {
 struct Config {
   planner::RobotModel robot;
   DaemonSettings daemon;
-  std::vector<PoseSet> poses;  // in the order none, coral, algae; only the sets the file has
+  std::vector<PoseSet> poses;  // the sets the file has, by name
 };
 
 // Thrown for any invalid configuration; what() reads "<source>: <key>: <problem>".
@@ -44,7 +44,7 @@ class ConfigError : public std::runtime_error {
 Config parseConfig(std::string_view toml_text, std::string_view source_name);
 // Reads and parses a file.
 Config loadConfigFile(const std::string& path);
-// The reference robot, compiled into the binary from config/reefscape-2025.toml.
+// The default robot, compiled into the binary from config/reefscape-2025.toml.
 std::string_view embeddedDefaultConfig();
 std::string_view embeddedDefaultConfigName();
 Config loadEmbeddedDefaultConfig();

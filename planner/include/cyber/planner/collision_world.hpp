@@ -1,12 +1,13 @@
 #pragma once
-// The robot polygons for one set of held game pieces against one scene's obstacles:
+// The robot polygons (every link's, and the held game pieces') for one set of held pieces against
+// one scene's obstacles at one offset of its field elements:
 // the signed distance d(q) of algorithm.md section 1 with its gradient dd/dq.
 
 #include <limits>
 #include <span>
 #include <vector>
 
-#include "cyber/planner/pose_transform.hpp"
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
 
@@ -16,7 +17,7 @@ struct SignedDistance {
   // d(q) when it is below the cutoff asked for; otherwise only a lower bound >= the cutoff
   // (exact == false, gradient zero). +inf when the scene has no obstacles.
   double value = std::numeric_limits<double>::infinity();
-  JointVector gradient = JointVector::Zero();  // dd/dq (t in m, theta in rad)
+  JointVector gradient = JointVector::Zero();  // dd/dq (joint units)
   bool exact = false;
   Point2 witness_robot = Point2::Zero();  // closest (or deepest) points, world frame
   Point2 witness_obstacle = Point2::Zero();
@@ -26,8 +27,9 @@ struct SignedDistance {
 
 class CollisionWorld {
  public:
-  // Robot polygons: the arm, plus coral and/or algae when held (a held piece only adds geometry).
-  CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces);
+  // Robot polygons: every link's, plus those of the held pieces (a held piece only adds geometry).
+  // The scene's field elements are shifted by scene_offset_m in x, its fixed obstacles are not.
+  CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, double scene_offset_m = 0.0);
 
   // Signed distance of the pose q: minimum over robot polygon x obstacle pairs. Pairs whose cheap
   // lower bound (bounding circle against bounding box, then the separating-axis gap) cannot beat
@@ -41,21 +43,22 @@ class CollisionWorld {
   // sum over these is smooth where the closest pair switches.
   int closePairs(const JointVector& q, double cutoff, std::span<SignedDistance> out) const;
 
-  // Largest distance of any robot point from the pivot [m]. Moving from q by dq moves every robot
-  // point by at most |dt| + reach * |dtheta|, so d is Lipschitz with these constants.
-  [[nodiscard]] double reach_m() const { return reach_m_; }
-  // Upper bound of |d(q + dq) - d(q)| per unit of the given joint displacement magnitudes.
-  [[nodiscard]] double lipschitzBound(const JointVector& abs_dq) const {
-    return abs_dq[kElevator] + reach_m_ * abs_dq[kArm];
-  }
+  // Upper bound of |d(q + dq) - d(q)| per unit of the given joint displacement magnitudes: no
+  // robot point moves faster than sum_j speed_j |dq_j|, with speed_j 1 for a prismatic joint and
+  // the largest distance of a point moved by a revolute joint from its axis, over the whole range
+  // of the joint after it (docs/algorithm.md section 1).
+  [[nodiscard]] double lipschitzBound(const JointVector& abs_dq) const { return point_speed_.dot(abs_dq); }
+  [[nodiscard]] const JointVector& pointSpeedBound() const { return point_speed_; }
 
   [[nodiscard]] HeldPieces pieces() const { return pieces_; }
   [[nodiscard]] int robotPolygonCount() const { return static_cast<int>(robot_.size()); }
   [[nodiscard]] int obstacleCount() const { return static_cast<int>(obstacles_.size()); }
-  [[nodiscard]] ArmPose poseAt(const JointVector& q) const { return armPose(rail_base_m_, rail_direction_, q); }
+  [[nodiscard]] ChainPose poseAt(const JointVector& q) const { return chainPose(chain_, q); }
+  [[nodiscard]] double sceneOffsetM() const { return scene_offset_m_; }
 
  private:
-  struct RobotPart {  // arm frame
+  struct RobotPart {  // in its link's frame
+    int link = 0;
     std::vector<Point2> vertices;
     std::vector<Point2> normals;
     Point2 centre = Point2::Zero();  // bounding circle
@@ -68,7 +71,7 @@ class CollisionWorld {
     Point2 box_max = Point2::Zero();
   };
 
-  // The arm polygons placed in the world once per query when small enough for this buffer (the
+  // The robot polygons placed in the world once per query when small enough for this buffer (the
   // usual case); larger ones are transformed on the fly.
   static constexpr int kStackVertices = 16;
   struct PlacedPolygon {
@@ -77,15 +80,15 @@ class CollisionWorld {
     int placed_part = -1;
   };
   // Signed distance of robot part r and obstacle o, or a lower bound >= bound (exact == false).
-  [[nodiscard]] bool pairDistance(size_t r, size_t o, const ArmPose& pose, double bound, PlacedPolygon& placed,
+  [[nodiscard]] bool pairDistance(size_t r, size_t o, const ChainPose& pose, double bound, PlacedPolygon& placed,
                                   SignedDistance& out) const;
 
   HeldPieces pieces_;
-  Point2 rail_base_m_ = Point2::Zero();
-  Point2 rail_direction_ = Point2(1.0, 0.0);
+  double scene_offset_m_ = 0.0;
+  JointChain chain_;
   std::vector<RobotPart> robot_;
   std::vector<Obstacle> obstacles_;
-  double reach_m_ = 0.0;
+  JointVector point_speed_ = JointVector::Zero();
 };
 
 }  // namespace cyber::planner

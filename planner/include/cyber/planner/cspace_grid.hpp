@@ -29,7 +29,7 @@ struct GridAxis {
 inline constexpr double kJointLimitMargin = 0.005;
 
 // A blocked region that touches no edge of the grid: an obstacle of C-space a path can pass on
-// either side. Its ray runs up (increasing arm index) from between nodes (i, j) and (i + 1, j),
+// either side. Its ray runs up (increasing second-joint index) from between nodes (i, j) and (i + 1, j),
 // both in the region (a region with no two such nodes is left out), to the grid's edge; a path's
 // side of the hole is the parity of its crossings of the ray (two paths with the same ends and
 // different parities cannot be deformed into each other without crossing the hole).
@@ -42,9 +42,9 @@ struct GridHole {
 class CSpaceGrid {
  public:
   CSpaceGrid() = default;
-  // From a blocked mask (cell = i_elevator * arm.count + i_arm); every step between free nodes is
+  // From a blocked mask (cell = i_first * second.count + i_second); every step between free nodes is
   // free. Computes the potential.
-  CSpaceGrid(GridAxis elevator, GridAxis arm, std::vector<std::uint8_t> blocked, const JointVector& metric,
+  CSpaceGrid(GridAxis first, GridAxis second, std::vector<std::uint8_t> blocked, const JointVector& metric,
              const SearchSettings& search);
 
   // The grid of one collision world. A node is blocked when d(node) < clearance. A step between
@@ -54,12 +54,12 @@ class CSpaceGrid {
   // otherwise decided by a continuous segment check. Only nodes near obstacles need that check.
   static CSpaceGrid build(const CollisionWorld& world, const RobotModel& model);
 
-  [[nodiscard]] int cellCount() const { return elevator_.count * arm_.count; }
-  [[nodiscard]] int cell(int i_elevator, int i_arm) const { return i_elevator * arm_.count + i_arm; }
-  [[nodiscard]] int elevatorIndex(int cell) const { return cell / arm_.count; }
-  [[nodiscard]] int armIndex(int cell) const { return cell % arm_.count; }
+  [[nodiscard]] int cellCount() const { return first_.count * second_.count; }
+  [[nodiscard]] int cell(int i_first, int i_second) const { return i_first * second_.count + i_second; }
+  [[nodiscard]] int firstIndex(int cell) const { return cell / second_.count; }
+  [[nodiscard]] int secondIndex(int cell) const { return cell % second_.count; }
   [[nodiscard]] JointVector node(int cell) const {
-    return JointVector(elevator_.at(elevatorIndex(cell)), arm_.at(armIndex(cell)));
+    return JointVector(first_.at(firstIndex(cell)), second_.at(secondIndex(cell)));
   }
   [[nodiscard]] bool blocked(int cell) const { return blocked_[static_cast<size_t>(cell)] != 0; }
   // Whether the step from cell by (di, dj), each in {-1, 0, 1}, not both 0, stays clear. The
@@ -69,13 +69,13 @@ class CSpaceGrid {
     // (+1, +1) and (0, +1); the others are looked up at their target.
     const int bit = kStepBit[di + 1][dj + 1];
     if (bit >= 0) return (steps_[static_cast<size_t>(cell)] >> bit) & 1U;
-    const int target = cell + di * arm_.count + dj;
+    const int target = cell + di * second_.count + dj;
     return (steps_[static_cast<size_t>(target)] >> kStepBit[1 - di][1 - dj]) & 1U;
   }
   // In [0, 1]: 1 on blocked nodes, falling to 0 at potential_range (weighted) from them.
   [[nodiscard]] double potential(int cell) const { return potential_[static_cast<size_t>(cell)]; }
-  [[nodiscard]] const GridAxis& elevatorAxis() const { return elevator_; }
-  [[nodiscard]] const GridAxis& armAxis() const { return arm_; }
+  [[nodiscard]] const GridAxis& firstAxis() const { return first_; }
+  [[nodiscard]] const GridAxis& secondAxis() const { return second_; }
   [[nodiscard]] const JointVector& metric() const { return metric_; }
   [[nodiscard]] double potentialWeight() const { return potential_weight_; }
   [[nodiscard]] double clearance_m() const { return clearance_m_; }
@@ -83,9 +83,9 @@ class CSpaceGrid {
   [[nodiscard]] const std::vector<GridHole>& holes() const { return holes_; }
   // Whether the step from cell by (di, dj) crosses the hole's ray.
   [[nodiscard]] bool crossesRay(const GridHole& hole, int cell, int di, int dj) const {
-    const int i = elevatorIndex(cell);
+    const int i = firstIndex(cell);
     if (std::min(i, i + di) != hole.i || std::max(i, i + di) != hole.i + 1) return false;
-    return 2 * armIndex(cell) + dj > 2 * hole.j;
+    return 2 * secondIndex(cell) + dj > 2 * hole.j;
   }
   // The connected region of free nodes (through free steps) a free node belongs to; -1 when
   // blocked. Nodes of different regions have no path between them.
@@ -107,8 +107,8 @@ class CSpaceGrid {
   // kStepBit[di + 1][dj + 1]: bit of a forward step, -1 for the backward ones.
   static constexpr int kStepBit[3][3] = {{-1, -1, -1}, {-1, -1, 3}, {0, 1, 2}};
 
-  GridAxis elevator_;
-  GridAxis arm_;
+  GridAxis first_;
+  GridAxis second_;
   std::vector<std::uint8_t> blocked_;
   std::vector<std::uint8_t> steps_;  // bit per forward step, see stepFree
   std::vector<float> potential_;

@@ -26,6 +26,9 @@ struct JointRange {
   }
 };
 
+// The unit of a joint's value: "m" (prismatic) or "rad" (revolute).
+inline const char* unitName(JointType type) { return type == JointType::kPrismatic ? "m" : "rad"; }
+
 struct ChainJoint {
   std::string name;
   JointType type = JointType::kRevolute;
@@ -75,6 +78,42 @@ inline LinkFrame childFrame(const LinkFrame& parent, const ChainJoint& joint, do
 inline std::array<LinkFrame, kJointCount> linkFrames(const JointChain& chain, const JointVector& q) {
   const LinkFrame first = childFrame(LinkFrame{}, chain[0], q[0]);
   return {first, childFrame(first, chain[1], q[1])};
+}
+
+// (x, y) -> (-y, x): rotation by +90 degrees, the derivative of R(angle) p with respect to angle.
+inline Point2 perpendicular(const Point2& v) { return Point2(-v.y(), v.x()); }
+
+// Both links' frames at one q, with what the point Jacobians need.
+struct ChainPose {
+  std::array<LinkFrame, kJointCount> frames;
+  std::array<JointType, kJointCount> types{JointType::kRevolute, JointType::kRevolute};
+  std::array<Point2, kJointCount> travel;  // a prismatic joint's direction of travel in the world
+
+  // Velocity of the point of link `link` now at world position x per unit joint rate: column j
+  // is dx/dq_j (zero for joints after the link; a revolute joint turns x about its origin, a
+  // prismatic one moves it along its travel).
+  [[nodiscard]] Eigen::Matrix2d pointJacobian(int link, const Point2& x_world) const {
+    Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
+    for (int j = 0; j <= link; ++j) {
+      jacobian.col(j) = types[static_cast<size_t>(j)] == JointType::kRevolute
+                            ? perpendicular(x_world - frames[static_cast<size_t>(j)].origin_m)
+                            : travel[static_cast<size_t>(j)];
+    }
+    return jacobian;
+  }
+};
+
+inline ChainPose chainPose(const JointChain& chain, const JointVector& q) {
+  ChainPose pose;
+  LinkFrame parent;
+  for (int j = 0; j < kJointCount; ++j) {
+    const ChainJoint& joint = chain[static_cast<size_t>(j)];
+    pose.types[static_cast<size_t>(j)] = joint.type;
+    pose.travel[static_cast<size_t>(j)] = parent.rotate(Point2(std::cos(joint.axis_rad), std::sin(joint.axis_rad)));
+    parent = childFrame(parent, joint, q[j]);
+    pose.frames[static_cast<size_t>(j)] = parent;
+  }
+  return pose;
 }
 
 }  // namespace cyber::planner

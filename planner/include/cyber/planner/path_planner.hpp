@@ -70,7 +70,7 @@ class PathPlanner {
   Scene scene_;
   std::vector<CollisionWorld> worlds_;  // by HeldPieces::index()
   std::vector<CSpaceGrid> grids_;
-  std::array<double, kPieceSetCount> grid_build_ms_{};
+  std::vector<double> grid_build_ms_;
 };
 
 }  // namespace cyber::planner

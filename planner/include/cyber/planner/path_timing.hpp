@@ -13,7 +13,7 @@ namespace cyber::planner {
 
 // Seconds from path speed^2 b_start (path units) to rest at the end; infinity when the profile
 // does not exist (a limit that cannot hold, a start that cannot be stopped).
-double estimateDuration(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives, double b_start,
+double estimateDuration(const GeometricPath& path, const DriveModel& drives, double b_start,
                         int grid_points);
 
 // The same profile's times: at each grid point, the fraction of the path's length reached and the
@@ -23,7 +23,7 @@ struct TimedFractions {
   std::vector<double> fraction;
   std::vector<double> time_s;
 };
-TimedFractions reachabilityTimes(const GeometricPath& path, const std::array<DriveParams, kJointCount>& drives,
+TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& drives,
                                  double b_start, int grid_points);
 
 }  // namespace cyber::planner

@@ -2,29 +2,31 @@
 // The robot description the planner works on: joints, polygons, scenes, drives and settings.
 // Plain values; the TOML loader (config_loader) fills and validates them.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "cyber/planner/convex_polygon.hpp"
+#include "cyber/planner/drive_model.hpp"
 #include "cyber/planner/joint_chain.hpp"
-#include "cyber/planner/motor_params.hpp"
 #include "cyber/planner/topp_al_settings.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
 
-// The carriage rail: pivot(t) = base + t * (cos tilt, sin tilt)  (algorithm.md section 1).
-struct Rail {
-  Point2 base_m = Point2::Zero();
-  double tilt_rad = 0.0;
+// Polygons attached to one link of the chain, in that link's frame (joint_chain.hpp).
+struct LinkGeometry {
+  std::string name;
+  int joint = 0;  // the link of this joint
+  std::vector<ConvexPolygon> polygons;
 };
 
-// Robot polygons in the arm frame (x along the arm from the pivot).
-struct RobotGeometry {
-  std::vector<ConvexPolygon> arm;    // always present
-  std::vector<ConvexPolygon> coral;  // added while coral is held
-  std::vector<ConvexPolygon> algae;  // added while algae is held
+// A named game piece: polygons in its joint's link frame, present only while it is held.
+struct GamePiece {
+  std::string name;
+  int joint = 0;
+  std::vector<ConvexPolygon> polygons;
 };
 
 struct NamedPolygon {
@@ -32,39 +34,19 @@ struct NamedPolygon {
   ConvexPolygon polygon;  // world frame
 };
 
-// A named set of obstacles; the first scene of a model is its default.
+// A named set of obstacles; the first scene of a model is its default. A goal may shift the
+// scene's field elements (`obstacles`) by an offset in x within offset_range_m (the robot's
+// distance to them; > 0 = the robot further away); `fixed` ones (keep-outs on the robot, the
+// floor) never move.
 struct Scene {
   std::string name;
   std::vector<NamedPolygon> obstacles;
-};
-
-enum class GravityModel { kConstant, kCosine };  // elevator: g = 1; arm: g = cos(theta)
-
-// One joint's drive: WPILib feedforward, the motors behind it and its limits.
-// Joint units are m (elevator) or rad (arm); kV is V per unit/s, kA V per unit/s^2.
-struct DriveParams {
-  MotorParams motor;
-  int motor_count = 1;
-  double gearing = 1.0;  // motor rad per joint unit
-  double kS_volts = 0.0;
-  double kG_volts = 0.0;
-  double kV = 0.0;
-  double kA = 0.0;
-  GravityModel gravity = GravityModel::kConstant;
-  double voltage_limit_volts = 12.0;
-  double current_limit_amps = 0.0;           // per motor
-  std::optional<double> velocity_limit;      // joint units/s
-  std::optional<double> acceleration_limit;  // joint units/s^2
-
-  [[nodiscard]] double gravityFactor(double q) const;  // g(q) of algorithm.md section 3
-  // Feedforward voltage V(q, qdot, qddot) and the per-motor current it draws.
-  [[nodiscard]] double volts(double q, double qdot, double qddot) const;
-  [[nodiscard]] double amps(double volts, double qdot) const;
+  std::vector<NamedPolygon> fixed;
+  JointRange offset_range_m;  // {0, 0}: the scene does not move
 };
 
 struct GridSettings {
-  double elevator_step_m = 0.02;
-  double arm_step_rad = 0.02;
+  JointVector step = JointVector(0.02, 0.02);  // cell size of each joint, joint units
 };
 
 struct SearchSettings {
@@ -113,23 +95,31 @@ struct PlannerSettings {
 
 struct RobotModel {
   std::string name;
-  JointRange elevator_range_m;
-  JointRange arm_range_rad;
-  Rail rail;
-  RobotGeometry geometry;
-  std::vector<Scene> scenes;  // scenes.front() is the default
+  JointChain joints;
+  std::vector<LinkGeometry> links;  // at least one polygon in all
+  std::vector<GamePiece> pieces;    // at most HeldPieces::kMaxPieces
+  std::vector<Scene> scenes;        // scenes.front() is the default
   double clearance_m = 0.0;
-  DriveParams elevator_drive;
-  DriveParams arm_drive;
+  std::array<DriveParams, kJointCount> drives;
   PlannerSettings planner;
 
-  [[nodiscard]] JointRange range(int joint) const { return joint == kElevator ? elevator_range_m : arm_range_rad; }
-  [[nodiscard]] const DriveParams& drive(int joint) const { return joint == kElevator ? elevator_drive : arm_drive; }
+  [[nodiscard]] const JointRange& range(int joint) const { return joints[static_cast<size_t>(joint)].range; }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return drives[static_cast<size_t>(joint)]; }
   [[nodiscard]] bool withinLimits(const JointVector& q, double tolerance = 0.0) const {
-    return elevator_range_m.contains(q[kElevator], tolerance) && arm_range_rad.contains(q[kArm], tolerance);
+    return range(0).contains(q[0], tolerance) && range(1).contains(q[1], tolerance);
   }
-  // Index of a scene by name; -1 when there is none.
+  // Index of a scene, a piece or a joint by name; -1 when there is none.
   [[nodiscard]] int sceneIndex(const std::string& name) const;
+  [[nodiscard]] int pieceIndex(const std::string& name) const;
+  [[nodiscard]] int jointIndex(const std::string& name) const;
+  // The number of distinct held sets (every subset of the pieces).
+  [[nodiscard]] int pieceSetCount() const { return HeldPieces::setCount(static_cast<int>(pieces.size())); }
+  [[nodiscard]] HeldPieces allPieces() const { return HeldPieces::fromIndex(pieceSetCount() - 1); }
+  // "none", or the held pieces' names joined by '+' in declaration order.
+  [[nodiscard]] std::string pieceSetName(HeldPieces held) const;
+
+  // The voltage model of both joints (drive_model.hpp).
+  [[nodiscard]] DriveModel driveModel() const { return DriveModel(joints, drives); }
 };
 
 }  // namespace cyber::planner

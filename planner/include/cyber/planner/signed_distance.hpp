@@ -10,21 +10,21 @@
 // continuous. The witnesses give the gradient under rigid motion of A: see CollisionWorld.
 //
 // Polygons are read through views with size(), vertex(i) and normal(i) (outward unit normal of
-// edge i, vertex i -> i+1, counter-clockwise), so an arm polygon can be transformed on the fly
+// edge i, vertex i -> i+1, counter-clockwise), so a robot polygon can be transformed on the fly
 // without a buffer.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "cyber/planner/pose_transform.hpp"
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
 
 struct PairDistance {
   double value = std::numeric_limits<double>::infinity();
-  Point2 witness_a = Point2::Zero();  // point of A (arm-fixed when A is a robot polygon)
+  Point2 witness_a = Point2::Zero();  // point of A (world frame; fixed to its link when A is a robot polygon)
   Point2 witness_b = Point2::Zero();  // point of B
   Point2 normal = Point2::Zero();     // unit, from A towards B: value = normal . (witness_b - witness_a)
   bool exact = false;                 // false: value is only a lower bound >= the cutoff asked for
@@ -40,15 +40,15 @@ struct WorldPolygonView {
   [[nodiscard]] Point2 normal(int i) const { return normals[i]; }
 };
 
-// A polygon given in the arm frame, placed by an ArmPose.
-struct ArmPolygonView {
-  const Point2* vertices_arm = nullptr;
-  const Point2* normals_arm = nullptr;
+// A polygon given in a link frame, placed by that link's frame.
+struct LinkPolygonView {
+  const Point2* vertices_link = nullptr;
+  const Point2* normals_link = nullptr;
   int count = 0;
-  const ArmPose* pose = nullptr;
+  const LinkFrame* frame = nullptr;
   [[nodiscard]] int size() const { return count; }
-  [[nodiscard]] Point2 vertex(int i) const { return pose->toWorld(vertices_arm[i]); }
-  [[nodiscard]] Point2 normal(int i) const { return pose->rotate(normals_arm[i]); }
+  [[nodiscard]] Point2 vertex(int i) const { return frame->toWorld(vertices_link[i]); }
+  [[nodiscard]] Point2 normal(int i) const { return frame->rotate(normals_link[i]); }
 };
 
 namespace detail {

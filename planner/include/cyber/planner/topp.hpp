@@ -53,8 +53,8 @@ class ToppSolver {
   // (b_start cannot be brought to rest within the limits, even allowing limit_check_tolerance on
   // the start speed; see ToppReport::start_speed_ratio), kSolverNotConverged (the augmented
   // Lagrangian or the limit refinement hit its cap; the reason gives the residuals).
-  Result<Trajectory> solve(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                           const DriveParams& arm, double b_start = 0.0, ToppReport* report = nullptr);
+  Result<Trajectory> solve(std::shared_ptr<const GeometricPath> path, const DriveModel& drives, double b_start = 0.0,
+                           ToppReport* report = nullptr);
 
   [[nodiscard]] const ToppSettings& settings() const { return settings_; }
 
@@ -88,8 +88,8 @@ class ToppSolver {
 };
 
 // One-shot convenience wrapper around ToppSolver.
-Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                           const DriveParams& arm, const ToppSettings& settings, double b_start = 0.0,
+Result<Trajectory> parameterizeTimeOptimal(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                           const ToppSettings& settings, double b_start = 0.0,
                                            ToppReport* report = nullptr);
 
 }  // namespace cyber::planner

@@ -110,7 +110,7 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 // middle of every interval. The Coulomb term kS*sgn(qdot) uses every sign qdot takes on the
 // interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with
 // `error` set when a limit cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
-bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMargins& margins, Problem& problem,
+bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem,
                std::string* error);
 
 // The trajectory along `path` of a speed profile on `problem`'s unit-length grid: s scales by the
@@ -119,7 +119,7 @@ bool buildRows(const std::array<DriveParams, kJointCount>& drives, const LimitMa
 // the move's own (scaling it there and back would round it), and to rest.
 template <class UnitB>
 Result<Trajectory> unitProfileTrajectory(std::shared_ptr<const GeometricPath> path,
-                                         const std::array<DriveParams, kJointCount>& drives, const Problem& problem,
+                                         const DriveModel& drives, const Problem& problem,
                                          UnitB&& unit_b, double b_scale, double b_start) {
   const double length = path->length();
   std::vector<double> s_grid(problem.s.size()), b_grid(problem.s.size());
@@ -130,7 +130,7 @@ Result<Trajectory> unitProfileTrajectory(std::shared_ptr<const GeometricPath> pa
   s_grid.back() = length;
   b_grid.front() = b_start;
   b_grid.back() = 0.0;
-  return Trajectory::create(std::move(path), drives[kElevator], drives[kArm], std::move(s_grid), std::move(b_grid));
+  return Trajectory::create(std::move(path), drives, std::move(s_grid), std::move(b_grid));
 }
 
 }  // namespace cyber::planner::topp

@@ -24,16 +24,16 @@ struct TrajectorySample {
   JointVector q = JointVector::Zero();
   JointVector qdot = JointVector::Zero();
   JointVector qddot = JointVector::Zero();
-  JointVector volts = JointVector::Zero();  // feedforward voltage of each joint (DriveParams::volts)
-  JointVector amps = JointVector::Zero();   // current of each motor of each joint (DriveParams::amps)
+  JointVector volts = JointVector::Zero();  // feedforward voltage of each joint (DriveModel::volts)
+  JointVector amps = JointVector::Zero();   // current of each motor of each joint (DriveModel::amps)
 };
 
 class Trajectory {
  public:
   // Validates the profile: grid strictly increasing from 0 to path->length(), b >= 0 finite, no
   // interval with b = 0 at both ends (it would take forever) unless the path has zero length.
-  static Result<Trajectory> create(std::shared_ptr<const GeometricPath> path, const DriveParams& elevator,
-                                   const DriveParams& arm, std::vector<double> s_grid, std::vector<double> b_grid);
+  static Result<Trajectory> create(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                   std::vector<double> s_grid, std::vector<double> b_grid);
 
   [[nodiscard]] double duration_s() const { return t_grid_.empty() ? 0.0 : t_grid_.back(); }
   // The state at time t (clamped to [0, duration]). Does not allocate.
@@ -46,7 +46,8 @@ class Trajectory {
 
   [[nodiscard]] const GeometricPath& path() const { return *path_; }
   [[nodiscard]] const std::shared_ptr<const GeometricPath>& sharedPath() const { return path_; }
-  [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[static_cast<size_t>(joint)]; }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return drives_.drive(joint); }
+  [[nodiscard]] const DriveModel& drives() const { return drives_; }
   [[nodiscard]] const std::vector<double>& sGrid() const { return s_grid_; }
   [[nodiscard]] const std::vector<double>& bGrid() const { return b_grid_; }
   [[nodiscard]] const std::vector<double>& tGrid() const { return t_grid_; }
@@ -58,7 +59,7 @@ class Trajectory {
   [[nodiscard]] size_t intervalAtS(double s) const;
 
   std::shared_ptr<const GeometricPath> path_;
-  std::array<DriveParams, kJointCount> drives_{};
+  DriveModel drives_;
   std::vector<double> s_grid_;
   std::vector<double> b_grid_;
   std::vector<double> a_grid_;  // per interval: (b_{k+1} - b_k) / (2 ds_k)

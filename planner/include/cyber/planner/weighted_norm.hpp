@@ -9,7 +9,7 @@
 namespace cyber::planner {
 
 inline double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[kElevator] * v[kElevator] * v[kElevator] + metric[kArm] * v[kArm] * v[kArm]);
+  return std::sqrt(metric[0] * v[0] * v[0] + metric[1] * v[1] * v[1]);
 }
 
 }  // namespace cyber::planner

@@ -1,0 +1,162 @@
+#include "read_chain.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+namespace cyber::config::detail {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+// A joint named by a link or a piece: its name in [[joints]].
+int jointOf(TableReader& table, const planner::RobotModel& robot) {
+  const std::string name = table.string("joint");
+  const int joint = robot.jointIndex(name);
+  if (joint < 0) {
+    table.fail("joint", "unknown joint \"" + name + "\" (expected \"" + robot.joints[0].name + "\" or \"" +
+                            robot.joints[1].name + "\")");
+  }
+  return joint;
+}
+
+planner::JointType jointType(TableReader& joint) {
+  const std::string type = joint.string("type");
+  if (type == "prismatic") return planner::JointType::kPrismatic;
+  if (type == "revolute") return planner::JointType::kRevolute;
+  joint.fail("type", "expected \"prismatic\" or \"revolute\", got \"" + type + "\"");
+}
+
+}  // namespace
+
+void rejectOldFormat(const TableReader& root) {
+  if (root.has("robot") || (root.has("joints") && !root.isArray("joints"))) {
+    root.fail("joints",
+              "this is the format before joint chains: describe the mechanism as two [[joints]] entries (name, type "
+              "= \"prismatic\" | \"revolute\", min, max, origin_m, axis_deg), its outlines as [links.NAME] (joint, "
+              "polygons) and its game pieces as [pieces.NAME] (joint, polygons); drives are keyed by joint name; "
+              "see docs/configuration.md");
+  }
+}
+
+void readJoints(TableReader& root, planner::RobotModel& robot) {
+  const toml::array& joints = root.array("joints");
+  if (joints.size() != static_cast<size_t>(planner::kJointCount)) {
+    root.fail("joints", "expected exactly two joints, in chain order");
+  }
+  for (size_t i = 0; i < joints.size(); ++i) {
+    TableReader joint = tableAt(joints[i], "joints[" + std::to_string(i) + "]");
+    planner::ChainJoint& out = robot.joints[i];
+    out.name = joint.string("name");
+    if (out.name.empty()) joint.fail("name", "must not be empty");
+    if (i == 1 && out.name == robot.joints[0].name) joint.fail("name", "the two joints need different names");
+    out.type = jointType(joint);
+    out.range.min = joint.number("min");
+    out.range.max = joint.number("max", Bounds{out.range.min, 1e300, true});
+    if (out.type == planner::JointType::kRevolute && out.range.max - out.range.min > 2.0 * std::numbers::pi + 1e-9) {
+      joint.fail("max", "a revolute joint may span at most one turn (no wrap-around)");
+    }
+    out.origin_m = joint.vector2("origin_m");
+    out.axis_rad = joint.number("axis_deg", Bounds{-360.0, 360.0}) * kDegToRad;
+    joint.finish();
+  }
+}
+
+void readLinks(TableReader links, planner::RobotModel& robot) {
+  for (const std::string& name : links.keys()) {
+    TableReader link = links.table(name);
+    planner::LinkGeometry out;
+    out.name = name;
+    out.joint = jointOf(link, robot);
+    out.polygons = link.polygons("polygons");
+    link.finish();
+    robot.links.push_back(std::move(out));
+  }
+  if (robot.links.empty()) links.fail("", "define at least one link outline");
+}
+
+void readPieces(TableReader pieces, planner::RobotModel& robot) {
+  for (const std::string& name : pieces.keys()) {
+    if (name.find('+') != std::string::npos || name == "none") {
+      pieces.fail(name, "a piece name may not be \"none\" or contain '+' (they name held sets)");
+    }
+    TableReader piece = pieces.table(name);
+    planner::GamePiece out;
+    out.name = name;
+    out.joint = jointOf(piece, robot);
+    out.polygons = piece.polygons("polygons");
+    piece.finish();
+    robot.pieces.push_back(std::move(out));
+  }
+  if (static_cast<int>(robot.pieces.size()) > planner::HeldPieces::kMaxPieces) {
+    pieces.fail("", "at most " + std::to_string(planner::HeldPieces::kMaxPieces) +
+                        " game pieces (every held set gets its own grids at start-up)");
+  }
+}
+
+void readScenes(TableReader& root, TableReader obstacle_table, planner::RobotModel& robot) {
+  std::map<std::string, planner::ConvexPolygon> obstacles;
+  for (const std::string& name : obstacle_table.keys()) obstacles.emplace(name, obstacle_table.polygon(name));
+  obstacle_table.finish();
+
+  const toml::array& scenes = root.array("scenes");
+  if (scenes.empty()) root.fail("scenes", "expected at least one scene");
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    TableReader scene = tableAt(scenes[i], "scenes[" + std::to_string(i) + "]");
+    planner::Scene out;
+    out.name = scene.string("name");
+    if (out.name.empty()) scene.fail("name", "must not be empty");
+    if (robot.sceneIndex(out.name) >= 0) scene.fail("name", "duplicate scene name \"" + out.name + "\"");
+    auto named = [&](const char* key, std::vector<planner::NamedPolygon>& into) {
+      if (!scene.has(key)) return;
+      for (const std::string& name : scene.strings(key)) {
+        const auto it = obstacles.find(name);
+        if (it == obstacles.end()) scene.fail(key, "unknown obstacle \"" + name + "\"");
+        into.push_back({name, it->second});
+      }
+    };
+    named("obstacles", out.obstacles);
+    named("fixed", out.fixed);
+    if (out.obstacles.empty() && out.fixed.empty()) scene.fail("obstacles", "a scene needs at least one obstacle");
+    if (scene.has("offset_range_m")) {
+      const Eigen::Vector2d range = scene.vector2("offset_range_m", Bounds{-5.0, 5.0});
+      if (!(range.x() <= 0.0 && 0.0 <= range.y())) {
+        scene.fail("offset_range_m", "[min, max] with min <= 0 <= max (0 is the scene as drawn)");
+      }
+      out.offset_range_m = planner::JointRange{range.x(), range.y()};
+    }
+    scene.finish();
+    robot.scenes.push_back(std::move(out));
+  }
+}
+
+std::vector<PoseSet> readPoses(TableReader t, const planner::RobotModel& robot) {
+  std::vector<PoseSet> sets;
+  for (const std::string& name : t.keys()) {
+    TableReader set = t.table(name);
+    PoseSet out{name, {}, {}};
+    if (name != "none") {
+      std::string rest = name;
+      while (!rest.empty()) {
+        const size_t plus = rest.find('+');
+        const std::string piece = rest.substr(0, plus);
+        const int index = robot.pieceIndex(piece);
+        if (index < 0) t.fail(name, "unknown game piece \"" + piece + "\" (sets are \"none\" or names joined by '+')");
+        out.pieces = out.pieces.with(index);
+        rest = plus == std::string::npos ? std::string() : rest.substr(plus + 1);
+      }
+    }
+    for (const std::string& pose : set.keys()) {
+      const Eigen::Vector2d q = set.vector2(pose);
+      if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");
+      out.poses.push_back(NamedPose{pose, q});
+    }
+    set.finish();
+    sets.push_back(std::move(out));
+  }
+  t.finish();
+  return sets;
+}
+
+}  // namespace cyber::config::detail

@@ -1,0 +1,76 @@
+#include "read_drives.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+namespace cyber::config::detail {
+namespace {
+
+planner::MotorParams readMotor(TableReader motor) {
+  planner::MotorParams m;
+  m.nominal_voltage_volts = motor.number("nominal_voltage_volts", kPositive);
+  m.stall_torque_nm = motor.number("stall_torque_nm", kPositive);
+  m.stall_current_amps = motor.number("stall_current_amps", kPositive);
+  m.free_current_amps = motor.number("free_current_amps", Bounds{0.0, m.stall_current_amps, false});
+  m.free_speed_radps = motor.number("free_speed_rpm", kPositive) * 2.0 * std::numbers::pi / 60.0;
+  motor.finish();
+  return m;
+}
+
+planner::GravityModel gravityModel(TableReader& drive) {
+  const std::string gravity = drive.string("gravity");
+  if (gravity == "constant") return planner::GravityModel::kConstant;
+  if (gravity == "cosine") return planner::GravityModel::kCosine;
+  if (gravity == "sine") return planner::GravityModel::kSine;
+  if (gravity == "none") return planner::GravityModel::kNone;
+  drive.fail("gravity", "expected \"constant\", \"cosine\", \"sine\" or \"none\", got \"" + gravity + "\"");
+}
+
+planner::DriveParams readDrive(TableReader drive, const std::map<std::string, planner::MotorParams>& motors) {
+  planner::DriveParams d;
+  const std::string kind = drive.string("kind");
+  if (kind != "feedforward") drive.fail("kind", "expected \"feedforward\", got \"" + kind + "\"");
+  const std::string motor = drive.string("motor");
+  const auto it = motors.find(motor);
+  if (it == motors.end()) drive.fail("motor", "unknown motor \"" + motor + "\" (define it under [motors])");
+  d.motor = it->second;
+  d.motor_count = static_cast<int>(drive.integer("count", 1, 16));
+  d.gearing = drive.number("gearing", kPositive);
+  d.gravity = gravityModel(drive);
+  d.kS_volts = drive.number("kS_volts", kNonNegative);
+  d.kG_volts = drive.number("kG_volts");
+  d.kV = drive.number("kV", kPositive);
+  d.kA = drive.number("kA", kPositive);
+  d.voltage_limit_volts = drive.number("voltage_limit_volts", Bounds{0.0, d.motor.nominal_voltage_volts * 2.0, true});
+  d.current_limit_amps = drive.number("current_limit_amps", Bounds{0.0, d.motor.stall_current_amps, true});
+  d.velocity_limit = drive.optionalNumber("velocity_limit", kPositive);
+  d.acceleration_limit = drive.optionalNumber("acceleration_limit", kPositive);
+  // The mechanism must be able to hold itself against gravity within both limits.
+  if (std::abs(d.kS_volts) + std::abs(d.kG_volts) >= d.voltage_limit_volts) {
+    drive.fail("voltage_limit_volts", "must exceed kS_volts + |kG_volts| or the joint cannot hold against gravity");
+  }
+  if ((std::abs(d.kS_volts) + std::abs(d.kG_volts)) / d.motor.resistanceOhms() >= d.current_limit_amps) {
+    drive.fail("current_limit_amps", "too small to hold the joint against gravity (kG / R)");
+  }
+  drive.finish();
+  return d;
+}
+
+}  // namespace
+
+void readDrives(TableReader motor_table, TableReader drives, planner::RobotModel& robot) {
+  std::map<std::string, planner::MotorParams> motors;
+  for (const std::string& name : motor_table.keys()) motors.emplace(name, readMotor(motor_table.table(name)));
+  if (motors.empty()) motor_table.fail("", "define at least one motor");
+  motor_table.finish();
+  for (int j = 0; j < planner::kJointCount; ++j) {
+    const std::string& joint = robot.joints[static_cast<size_t>(j)].name;
+    if (!drives.has(joint)) drives.fail(joint, "missing: every joint needs a drive, keyed by its name");
+    robot.drives[static_cast<size_t>(j)] = readDrive(drives.table(joint), motors);
+  }
+  drives.finish();
+}
+
+}  // namespace cyber::config::detail
