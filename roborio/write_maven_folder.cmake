@@ -55,7 +55,6 @@ artifact(cyber-planner-wpilib2026 ${WPILIB2026_JAR} ${SOURCE_DIR}/src/wpilib2026
          "${CORE_JAR}:${STANDINS2026_JAR}:${LCMTYPES_JAR}:${LCM_JAR}" ${core})
 artifact(cyber-planner-wpilib2027 ${WPILIB2027_JAR} ${SOURCE_DIR}/src/wpilib2027/java cyberplanner.roborio.wpilib2027
          "${CORE_JAR}:${STANDINS2027_JAR}:${LCMTYPES_JAR}:${LCM_JAR}" ${core})
-file(REMOVE_RECURSE ${work})
 
 # The vendordeps: one per WPILib year, the same Maven folder.
 set(MAVEN_URL cyber-planner/maven)
@@ -74,3 +73,4 @@ endforeach()
 # Last: the core's pom is the build's output file.
 artifact(cyber-planner-core ${CORE_JAR} ${SOURCE_DIR}/src/main/java cyberplanner.roborio "${LCMTYPES_JAR}:${LCM_JAR}"
          org.cyberplanner:cyber-lcmtypes:${VERSION} lcm:lcm:1.3.1)
+file(REMOVE_RECURSE ${work})
