@@ -171,6 +171,40 @@ class DaemonIntegrationTest {
     }
   }
 
+  @Test
+  @Order(3)
+  void aMoveCancelledMidwayEndsCancelledAndTheDaemonHolds() throws Exception {
+    // ARM_CANCEL with ACTION_HOLD (docs/lcm.md): the daemon brakes to rest and holds there.
+    SimulatedMechanism mechanism = new SimulatedMechanism(1.97, 5.17);  // where order 2 left it (L4)
+    try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 7000)) {
+      awaitDaemon(client);
+      ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
+          mechanism.elevator, mechanism.arm, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
+          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.elevator, mechanism.arm, JointGravity.NONE,
+              JointGravity.NONE));
+      StarvationWatch watch = StarvationWatch.fromDaemon();
+      RobotLoop loop = new RobotLoop(arm, mechanism, watch);
+      loop.runFor(1.0);
+      ArmState from = mechanism.state();
+      watch.checkUnlessStarved("cancel: L4 -> STOW", attempt -> {
+        MoveHandle move = arm.moveTo(Pose.of(0.20, 1.57));
+        for (int i = 0; i < 2000 && move.state() != MoveState.EXECUTING && !move.isFinished(); ++i) loop.runFor(LOOP_S);
+        loop.runFor(0.2);  // well into the move
+        MoveState before = move.state();
+        arm.cancel(move);
+        for (int i = 0; i < 400 && !move.isFinished(); ++i) loop.runFor(LOOP_S);
+        boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+        DaemonMode mode = client.daemonMode();
+        return () -> {
+          assertEquals(MoveState.EXECUTING, before, move.toString());
+          assertEquals(MoveState.CANCELLED, move.state(), move.toString());
+          assertTrue(settled, "no hold after the cancel");
+          assertEquals(DaemonMode.HOLDING, mode);
+        };
+      }, () -> restart(loop, mechanism, from, watch));
+    }
+  }
+
   /**
    * Puts the mechanism back where a void attempt started (it may have coasted anywhere on the last
    * setpoint, even past a joint limit, and the daemon holds there) and makes the daemon take that
