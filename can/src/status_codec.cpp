@@ -8,7 +8,7 @@
 namespace cyber::can {
 
 namespace {
-bool isDefinedMode(std::uint8_t mode) { return mode <= static_cast<std::uint8_t>(Mode::kRobotDisabled); }
+bool isDefinedMode(std::uint8_t mode) { return mode <= static_cast<std::uint8_t>(Mode::kReleased); }
 }  // namespace
 
 std::string_view toString(Mode mode) {
@@ -18,6 +18,7 @@ std::string_view toString(Mode mode) {
     case Mode::kMoving: return "moving";
     case Mode::kFault: return "fault";
     case Mode::kRobotDisabled: return "robot-disabled";
+    case Mode::kReleased: return "released";
   }
   return "undefined";
 }

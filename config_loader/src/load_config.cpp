@@ -115,6 +115,11 @@ DaemonSettings readDaemon(TableReader d) {
       *field = ch.string(key);
       if (field->empty()) ch.fail(key, "channel name must not be empty");
     }
+    // Added after the others (issue 25): optional, so configurations written before it still load.
+    if (ch.has("cancel")) {
+      s.channels.cancel = ch.string("cancel");
+      if (s.channels.cancel.empty()) ch.fail("cancel", "channel name must not be empty");
+    }
     ch.finish();
   }
   d.finish();

@@ -2,7 +2,8 @@
 # The real cyber-plannerd (--can none) and real LCM peers in a network namespace of their own.
 #   daemon_integration_test.sh CASE DAEMON GOAL_TOOL PEER CONFIG [WALL_CLOCK_JUMP_SHIM]
 # CASE: goal_done | bad_goals | flood | burst | garbage | sigterm | startup_errors | sighup |
-#       lcm_lost | logs_full | wall_clock_jump   (the last four: docs/operations.md, "Faults")
+#       lcm_lost | logs_full | wall_clock_jump | cancel   (lcm_lost to wall_clock_jump:
+#       docs/operations.md, "Faults"; cancel: docs/lcm.md, "Cancel and manual override")
 # Needs root (ip netns). The namespace and every process started here are removed on exit, also
 # on failure.
 set -euo pipefail
@@ -115,6 +116,15 @@ start_long_goal() {
     sleep 0.01
   done
   fail "the goal never started executing"
+}
+
+# wait_mode MODE: polls ARM_DAEMON_STATUS until its mode is MODE (10 s at most).
+wait_mode() {
+  for _ in $(seq 1 100); do
+    [ "$(status_value mode)" = "$1" ] && return 0
+    sleep 0.1
+  done
+  fail "mode never became $1 (last: $(status_value mode))"
 }
 
 # SIGTERM, and the daemon exits 0.
@@ -267,6 +277,42 @@ case "$case_name" in
     [ "$goal_rc" -eq 5 ] || fail "cyber-goal exited $goal_rc, expected 5 (cancelled)"
     grep -q "cancelled: daemon shutting down" "$tmp/goal.out" || fail "no cancellation with a reason"
     grep -q "SIGTERM: holding the commanded position" "$tmp/daemon.log" || fail "no shutdown line in the log"
+    ;;
+
+  cancel)
+    # ARM_CANCEL: a hold brakes a running move to rest (the real planner's fastest stop) and
+    # cancels it; a release cancels the next one and stops the setpoints (mode 5) until a goal.
+    start_daemon
+    start_long_goal 81
+    in_ns "$peer" cancel --id 81 --action hold
+    goal_rc=0
+    wait "$goal_pid" || goal_rc=$?
+    cat "$tmp/goal.out"
+    [ "$goal_rc" -eq 5 ] || fail "cyber-goal exited $goal_rc after a hold, expected 5 (cancelled)"
+    grep -q "request 81 cancelled: cancelled by ARM_CANCEL: hold" "$tmp/goal.out" || fail "no hold reason"
+    wait_mode 1
+    grep -q "continues to its end" "$tmp/daemon.log" && fail "the hold found no stop: the move ran to its end"
+    grep -q "ARM_CANCEL hold: request 81 brakes to rest in" "$tmp/daemon.log" || fail "no stop was planned"
+    [ "$(status_value active_request_id)" = 81 ] || fail "the stop does not carry request 81"
+
+    start_long_goal 82
+    in_ns "$peer" cancel --id -1 --action release
+    goal_rc=0
+    wait "$goal_pid" || goal_rc=$?
+    cat "$tmp/goal.out"
+    [ "$goal_rc" -eq 5 ] || fail "cyber-goal exited $goal_rc after a release, expected 5 (cancelled)"
+    grep -q "request 82 cancelled: cancelled by ARM_CANCEL: release (manual override)" "$tmp/goal.out" ||
+      fail "no release reason"
+    wait_mode 5
+    [ "$(status_value motion_allowed)" = 0 ] || fail "motion allowed while released"
+    # A stale cancel (82 is final) changes nothing: still released.
+    in_ns "$peer" cancel --id 82 --action hold
+    sleep 0.3
+    [ "$(status_value mode)" = 5 ] || fail "a stale cancel ended the release"
+    # The next goal ends the release.
+    expect_goal 0 "request 83 done" --to 0.58,2.97 --id 83
+    wait_mode 1
+    stop_daemon_cleanly
     ;;
 
   sighup)

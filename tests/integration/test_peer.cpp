@@ -8,6 +8,7 @@
 //           this process's sockets. Exit 0, 1 (an answer missing or doubled), 3 (missing, but the
 //           kernel dropped datagrams on the watcher's own socket: the run is void)
 //   status  [--timeout S]                         print one ARM_DAEMON_STATUS as key=value lines
+//   cancel  --id N --action hold|release          publish one ARM_CANCEL (-1: whatever goal is active)
 // Every subcommand takes --lcm-url URL. Exit 0 on success, 1 otherwise, 2 for bad arguments.
 
 #include <lcm/lcm-cpp.hpp>
@@ -25,6 +26,7 @@
 
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
+#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -47,6 +49,8 @@ struct Args {
   long long count = 100;
   double timeout_s = 10.0;
   int rcvbuf_bytes = 0;  // watch: forced receive buffer (0: LCM's choice)
+  long long id = -1;     // cancel
+  std::string action;    // cancel: hold | release
 };
 
 // A number option's handler: stores it when `parse` accepts it.
@@ -84,6 +88,12 @@ bool parse(int argc, char** argv, Args& args) {
   parser.option("--first-id", number(&args.first_id, integer));
   parser.option("--count", number(&args.count, integer));
   parser.option("--rcvbuf-bytes", number(&args.rcvbuf_bytes, integer));
+  parser.option("--id", number(&args.id, integer));
+  parser.option("--action", [&](const std::string& value) -> std::string {
+    if (value != "hold" && value != "release") return "expects hold or release, got '" + value + "'";
+    args.action = value;
+    return "";
+  });
   const auto scan = parser.parse(std::vector<std::string>(argv + 2, argv + argc));
   if (!scan) std::fprintf(stderr, "cyber-test-peer: %s\n", scan.error().message.c_str());
   return scan && scan.value() == cyber::cli::Scan::kComplete && args.rate_hz > 0.0;
@@ -259,6 +269,18 @@ int runWatch(lcm::LCM& lcm, const Args& args) {
   return drops > 0 ? 3 : 1;
 }
 
+int runCancel(lcm::LCM& lcm, const Args& args) {
+  if (args.action.empty()) return 2;
+  cyberplanner::arm_cancel_t cancel{};
+  cancel.utime = nowMicros();
+  cancel.request_id = args.id;
+  cancel.action =
+      args.action == "hold" ? cyberplanner::arm_cancel_t::ACTION_HOLD : cyberplanner::arm_cancel_t::ACTION_RELEASE;
+  if (lcm.publish("ARM_CANCEL", &cancel) != 0) return 1;
+  std::printf("sent ARM_CANCEL %s for request %lld\n", args.action.c_str(), args.id);
+  return 0;
+}
+
 struct StatusCatcher {
   bool got = false;
   cyberplanner::arm_daemon_status_t status{};
@@ -296,7 +318,8 @@ int runStatus(lcm::LCM& lcm, const Args& args) {
 int main(int argc, char** argv) {
   Args args;
   if (!parse(argc, argv, args)) {
-    std::fprintf(stderr, "usage: cyber-test-peer state|flood|garbage|watch|status [options] (see test_peer.cpp)\n");
+    std::fprintf(stderr,
+                 "usage: cyber-test-peer state|flood|garbage|watch|status|cancel [options] (see test_peer.cpp)\n");
     return 2;
   }
   std::signal(SIGTERM, [](int) { g_stop = 1; });
@@ -317,6 +340,8 @@ int main(int argc, char** argv) {
     rc = runWatch(lcm, args);
   else if (args.command == "status")
     rc = runStatus(lcm, args);
+  else if (args.command == "cancel")
+    rc = runCancel(lcm, args);
   if (rc == 2) std::fprintf(stderr, "cyber-test-peer: bad arguments for '%s'\n", args.command.c_str());
   return rc;
 }

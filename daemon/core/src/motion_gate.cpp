@@ -11,6 +11,7 @@ std::string_view toString(GateReason reason) {
     case GateReason::kNoHeartbeat: return "no fresh roboRIO heartbeat";
     case GateReason::kBroadcastDisable: return "broadcast disable received";
     case GateReason::kFault: return "fault: a setpoint was not finite or did not fit its frame";
+    case GateReason::kReleased: return "released: the robot program drives the joints (ARM_CANCEL, manual override)";
   }
   return "unknown";
 }
@@ -35,6 +36,7 @@ GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettin
   }
   if (inputs.state_ns == kNever) return {GateReason::kNoState};
   if (now - inputs.state_ns > secondsToNs(settings.state_timeout_s)) return {GateReason::kStateStale};
+  if (isReleased(inputs.release_generation)) return {GateReason::kReleased};
   return {GateReason::kOpen};
 }
 

@@ -59,6 +59,7 @@ void Streamer::restartOwnHold(MonoNs now, const JointVector& q, StreamEvent even
   executing_request_ = -1;
   done_reported_ = true;
   event.epoch = epoch_;
+  event.release_generation = releases_seen_;
   out.push(event);
 }
 
@@ -125,14 +126,20 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   const bool new_disable = inputs.broadcast_disable_count != disables_seen_;
   disables_seen_ = inputs.broadcast_disable_count;
   if (verdict.open() && new_disable) verdict.reason = GateReason::kBroadcastDisable;
+  // Likewise every change of the release generation stops the stream once: a release and the goal
+  // that ends it within one period still restart the stream from the measured position.
+  const bool new_release = inputs.release_generation != releases_seen_;
+  releases_seen_ = inputs.release_generation;
+  if (verdict.open() && new_release) verdict.reason = GateReason::kReleased;
   if (verdict.open() && now < fault_until_ns_) verdict.reason = GateReason::kFault;
   out.gate_reason = verdict.reason;
   if (!verdict.open()) {
     if (running_) stop(now, verdict.reason, out);
     if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
-    out.mode = verdict.reason == GateReason::kFault    ? StreamMode::kFault
-               : isRobotDisabledReason(verdict.reason) ? StreamMode::kRobotDisabled
-                                                       : StreamMode::kNoState;
+    out.mode = verdict.reason == GateReason::kFault      ? StreamMode::kFault
+               : verdict.reason == GateReason::kReleased ? StreamMode::kReleased
+               : isRobotDisabledReason(verdict.reason)   ? StreamMode::kRobotDisabled
+                                                         : StreamMode::kNoState;
     out.request_id = last_request_;
     return;
   }

@@ -116,7 +116,9 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       writer_(*port_, writerSettingsOf(options)),
       streamer_thread_(channels_, streamer_, writer_, periodOf(options.settings.stream_rate_hz)),
       worker_(planning),
-      lcm_input_(robot_, channels_, [this](const GoalRequest& goal) { onGoal(goal); }),
+      lcm_input_(
+          robot_, channels_, [this](const GoalRequest& goal) { onGoal(goal); },
+          [this](const CancelRequest& cancel) { goals_.onCancel(cancel, monotonicNow()); }),
       bridge_(*lcm_, options.settings.channels, lcm_input_.callbacks()),
       state_receiver_(*state_lcm_, options.settings.channels.state, lcm_input_),
       goals_(robot_, goalSettingsOf(options), bridge_, worker_, channels_, loop_),
@@ -217,7 +219,8 @@ void Daemon::onSignal() {
 // Goals are admitted on the gate as the streamer last read the robot link (robot_link.hpp).
 void Daemon::onGoal(const GoalRequest& goal) {
   const MonoNs now = monotonicNow();
-  const RobotInputs inputs = gateInputs(lcm_input_.state(), channels_.snapshot.load().robot_link);
+  const RobotInputs inputs =
+      gateInputs(lcm_input_.state(), channels_.snapshot.load().robot_link, channels_.release_generation.load());
   goals_.onGoal(goal, now, evaluateGate(inputs, now, gate_));
 }
 

@@ -23,6 +23,12 @@ void GoalHandler::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict gate) 
   coordinator_.onGoal(goal, now, gate);
 }
 
+void GoalHandler::onCancel(const CancelRequest& cancel, MonoNs now) {
+  spdlog::debug("ARM_CANCEL {} for request {}", cancel.action == CancelAction::kHold ? "hold" : "release",
+                cancel.request_id);
+  coordinator_.onCancel(cancel, now);
+}
+
 void GoalHandler::onPlanDone() {
   auto outcome = worker_.takeResult();
   if (!outcome) return;
@@ -38,7 +44,12 @@ void GoalHandler::onStreamEvent(const StreamEvent& event, MonoNs now) {
                     nsToMs(event.time_ns - it->second));
     }
   } else if (event.kind == StreamEventKind::kStopped) {
-    spdlog::warn("motion stopped: {}", toString(event.gate_reason));
+    // A release is asked for (ARM_CANCEL): not a fault.
+    if (event.gate_reason == GateReason::kReleased) {
+      spdlog::info("streaming stopped: {}", toString(event.gate_reason));
+    } else {
+      spdlog::warn("motion stopped: {}", toString(event.gate_reason));
+    }
   } else if (event.kind == StreamEventKind::kHolding) {
     spdlog::info("holding elevator {:.4f} m, arm {:.4f} rad ({})", event.position[0], event.position[1],
                  event.hold_cause == HoldCause::kShutdown ? "shutdown" : "motion allowed");
@@ -95,6 +106,10 @@ void GoalHandler::postProgram(std::unique_ptr<Program> program) {
     delete unread;
     loop_.post([this, rejected] { coordinator_.onStreamEvent(rejected, monotonicNow()); });
   }
+}
+
+void GoalHandler::setReleaseGeneration(std::uint32_t generation) {
+  channels_.release_generation.store(generation, std::memory_order_relaxed);
 }
 
 void GoalHandler::note(NoteLevel level, const std::string& text) {

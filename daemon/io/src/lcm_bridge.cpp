@@ -8,6 +8,8 @@ LcmBridge::LcmBridge(lcm::LCM& lcm, const config::ChannelNames& channels, Callba
   // rest without a word. Every goal must be answered, so goals may queue far more (a 1000/s flood
   // for 10 s).
   lcm_.subscribe(channels_.goal, &LcmBridge::onGoal, this)->setQueueCapacity(kGoalQueueCapacity);
+  // A lost cancel would leave a move running (or a manual override unserved): queued like goals.
+  lcm_.subscribe(channels_.cancel, &LcmBridge::onCancel, this)->setQueueCapacity(kGoalQueueCapacity);
 }
 
 int LcmBridge::handleReady(int max_messages) {
@@ -18,6 +20,10 @@ int LcmBridge::handleReady(int max_messages) {
 
 void LcmBridge::onGoal(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
   deliverDecoded<cyberplanner::arm_goal_t>(buffer, channel, callbacks_.goal, callbacks_.undecodable);
+}
+
+void LcmBridge::onCancel(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  deliverDecoded<cyberplanner::arm_cancel_t>(buffer, channel, callbacks_.cancel, callbacks_.undecodable);
 }
 
 }  // namespace cyber::daemon::io

@@ -5,11 +5,22 @@
 
 namespace cyber::daemon::io {
 
-LcmInput::LcmInput(const planner::RobotModel& robot, StreamerChannels& channels, GoalHandler on_goal)
-    : robot_(robot), channels_(channels), on_goal_(std::move(on_goal)) {}
+LcmInput::LcmInput(const planner::RobotModel& robot, StreamerChannels& channels, GoalHandler on_goal,
+                   CancelHandler on_cancel)
+    : robot_(robot), channels_(channels), on_goal_(std::move(on_goal)), on_cancel_(std::move(on_cancel)) {}
 
 LcmBridge::Callbacks LcmInput::callbacks() {
   return LcmBridge::Callbacks{[this](const cyberplanner::arm_goal_t& m) { on_goal_(goalFromMessage(m)); },
+                              [this](const cyberplanner::arm_cancel_t& m) {
+                                if (const auto cancel = cancelFromMessage(m)) {
+                                  on_cancel_(*cancel);
+                                  return;
+                                }
+                                ++undecodable_;
+                                undecodable_warning_.warn(monotonicNow(),
+                                                          "ignoring ARM_CANCEL for request {} with unknown action {}",
+                                                          m.request_id, int{m.action});
+                              },
                               [this](const std::string& channel, int size) {
                                 ++undecodable_;
                                 warnUndecodable(undecodable_warning_, channel, size);

@@ -24,6 +24,17 @@ GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message) {
   return goal;
 }
 
+std::optional<CancelRequest> cancelFromMessage(const cyberplanner::arm_cancel_t& message) {
+  CancelRequest cancel;
+  cancel.request_id = message.request_id;
+  switch (message.action) {
+    case cyberplanner::arm_cancel_t::ACTION_HOLD: cancel.action = CancelAction::kHold; break;
+    case cyberplanner::arm_cancel_t::ACTION_RELEASE: cancel.action = CancelAction::kRelease; break;
+    default: return std::nullopt;
+  }
+  return cancel;
+}
+
 std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
                                               const planner::RobotModel& robot, double margin) {
   const double values[] = {message.elevator_m, message.elevator_mps, message.arm_rad, message.arm_radps};

@@ -42,7 +42,10 @@ std::string StatusPublisher::serviceStatus() const {
 
 bool StatusPublisher::robotEnabled(const StreamSnapshot& snapshot, MonoNs now) const {
   if (!gate_.require_robot_enabled) return true;
-  const GateReason reason = evaluateGate(gateInputs(s_.lcm_input.state(), snapshot.robot_link), now, gate_).reason;
+  const GateReason reason =
+      evaluateGate(gateInputs(s_.lcm_input.state(), snapshot.robot_link, s_.channels.release_generation.load()), now,
+                   gate_)
+          .reason;
   return !isRobotDisabledReason(reason);
 }
 

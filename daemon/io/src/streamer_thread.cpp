@@ -11,8 +11,9 @@
 
 namespace cyber::daemon::io {
 
-RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link) {
+RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link, std::uint32_t release_generation) {
   RobotInputs inputs;
+  inputs.release_generation = release_generation;
   inputs.state_ns = state.state_ns;
   inputs.measured_q = JointVector(state.measured_q[0], state.measured_q[1]);
   inputs.measured_qdot = JointVector(state.measured_qdot[0], state.measured_qdot[1]);
@@ -61,7 +62,8 @@ void StreamerThread::run() {
     // Never wait for the state: the receiver runs below this thread, so on one CPU a store this
     // tick interrupted cannot finish until the tick is over. The last state ages as it should.
     if (const std::optional<MeasuredStateData> state = channels_.state.tryLoad()) state_ = *state;
-    const RobotInputs inputs = gateInputs(state_, robot_link_);
+    const RobotInputs inputs =
+        gateInputs(state_, robot_link_, channels_.release_generation.load(std::memory_order_relaxed));
     Program* offered = channels_.offered.exchange(nullptr, std::memory_order_acq_rel);
     streamer_.tick(now, inputs, offered, channels_.stop_requested.load(std::memory_order_relaxed), out);
     const WriteReport report = writer_.write(out, channels_.fault_bits.load(std::memory_order_relaxed));

@@ -1,7 +1,9 @@
 #include "cyber/daemon/motion_planner_service.hpp"
 
 #include <algorithm>
+#include <chrono>
 
+#include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/motion_planner.hpp"
 
 namespace cyber::daemon {
@@ -37,6 +39,7 @@ class MotionPlannerService final : public PlanningService {
   explicit MotionPlannerService(planner::MotionPlanner planner) : planner_(std::move(planner)) {}
 
   [[nodiscard]] planner::Result<PlannedMotion> plan(const MotionRequest& request) const override {
+    if (request.kind == MotionKind::kStop) return stop(request);
     planner::PlanRequest plan_request;
     plan_request.start = request.start;
     plan_request.goal = request.goal;
@@ -54,6 +57,27 @@ class MotionPlannerService final : public PlanningService {
   }
 
  private:
+  // ARM_CANCEL's hold: the planner's fastest stop along the start velocity, in the collision world
+  // of the motion it brakes (docs/lcm.md, "Cancel and manual override").
+  [[nodiscard]] planner::Result<PlannedMotion> stop(const MotionRequest& request) const {
+    const planner::RobotModel& model = planner_.model();
+    if (request.scene < 0 || request.scene >= static_cast<int>(model.scenes.size())) {
+      return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kInvalidInput,
+                                                     "unknown scene index " + std::to_string(request.scene));
+    }
+    const auto started = std::chrono::steady_clock::now();
+    planner::ToppSolver solver(model.planner.topp);
+    auto stop = planner::fastestStop(model, planner_.pathPlanner(request.scene).world(request.pieces), request.start,
+                                     request.start_velocity, solver);
+    if (!stop) return stop.error();
+    PlannedMotion out;
+    out.trajectory =
+        std::make_shared<TrajectorySource>(std::make_shared<const planner::Trajectory>(std::move(stop).value()));
+    out.times_ms.topp = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    out.times_ms.total = out.times_ms.topp;
+    return out;
+  }
+
   planner::MotionPlanner planner_;
 };
 

@@ -25,14 +25,16 @@ TEST(StatusCodec, ModeNumbersAreTheContract) {
   EXPECT_EQ(static_cast<int>(Mode::kMoving), 2);
   EXPECT_EQ(static_cast<int>(Mode::kFault), 3);
   EXPECT_EQ(static_cast<int>(Mode::kRobotDisabled), 4);
+  EXPECT_EQ(static_cast<int>(Mode::kReleased), 5);
   EXPECT_EQ(toString(Mode::kMoving), "moving");
   EXPECT_EQ(toString(Mode::kRobotDisabled), "robot-disabled");
+  EXPECT_EQ(toString(Mode::kReleased), "released");
   EXPECT_EQ(toString(static_cast<Mode>(9)), "undefined");
 }
 
 TEST(StatusCodec, RandomStatusesRoundTrip) {
   std::mt19937 rng(31337);
-  std::uniform_int_distribution<int> mode(0, 4), u16(0, 65535), u8(0, 255), device(0, 63);
+  std::uniform_int_distribution<int> mode(0, 5), u16(0, 65535), u8(0, 255), device(0, 63);
   for (int i = 0; i < 20000; ++i) {
     const Status in{static_cast<Mode>(mode(rng)), static_cast<std::uint16_t>(u16(rng)),
                     static_cast<std::uint16_t>(u16(rng)), static_cast<std::uint8_t>(u8(rng)),
@@ -46,6 +48,17 @@ TEST(StatusCodec, RandomStatusesRoundTrip) {
     ASSERT_EQ(out.value().device, dev);
     ASSERT_EQ(out.value().status, in);
   }
+}
+
+// ARM_CANCEL's release (docs/can-protocol.md): mode 5 on the wire, byte 0 = 0x05.
+TEST(StatusCodec, ReleasedModeRoundTrips) {
+  const Status in{Mode::kReleased, requestIdLow16(-1), 0, 0, 9};
+  const auto frame = encodeStatus(3, in);
+  ASSERT_TRUE(frame.ok());
+  EXPECT_EQ(frame.value().data[0], 0x05);
+  const auto out = decodeStatus(frame.value());
+  ASSERT_TRUE(out.ok());
+  EXPECT_EQ(out.value().status, in);
 }
 
 TEST(StatusCodec, SaturatesTimeRemaining) {
@@ -82,12 +95,12 @@ TEST(StatusCodec, SequenceWraps) {
 
 TEST(StatusCodec, EncodeRejectsBadDeviceAndMode) {
   EXPECT_EQ(encodeStatus(64, Status{}).error(), CodecError::kDeviceOutOfRange);
-  EXPECT_EQ(encodeStatus(1, Status{static_cast<Mode>(5), 0, 0, 0, 0}).error(), CodecError::kBadMode);
+  EXPECT_EQ(encodeStatus(1, Status{static_cast<Mode>(6), 0, 0, 0, 0}).error(), CodecError::kBadMode);
 }
 
 TEST(StatusCodec, DecodeRejectsWrongFrames) {
   const Frame good = encodeStatus(3, Status{Mode::kFault, 7, 0, fault::kBusError, 1}).value();
-  for (std::uint8_t mode = 5; mode != 0; ++mode) {
+  for (std::uint8_t mode = 6; mode != 0; ++mode) {
     Frame frame = good;
     frame.data[0] = mode;
     ASSERT_EQ(decodeStatus(frame).error(), CodecError::kBadMode) << int{mode};

@@ -64,6 +64,7 @@ TEST(LoadConfig, EmbeddedDefaultIsTheReferenceRobot) {
 
   EXPECT_EQ(config.daemon.devices.elevator, 1);
   EXPECT_EQ(config.daemon.channels.goal, "ARM_GOAL");
+  EXPECT_EQ(config.daemon.channels.cancel, "ARM_CANCEL");
   EXPECT_DOUBLE_EQ(config.daemon.stream_rate_hz, 200.0);
   EXPECT_DOUBLE_EQ(config.daemon.heartbeat_timeout_s, 0.1);
 }
@@ -94,6 +95,16 @@ TEST(LoadConfig, MaxPlanningBudgetIsOptionalWithADefaultOfOneSecond) {
   const std::string with =
       mutated("planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 3.0\n");
   EXPECT_EQ(parseConfig(with, "robot.toml").daemon.max_planning_budget_s, 3.0);
+}
+
+// Optional (added with ARM_CANCEL, issue 25), so configurations written before it still load.
+TEST(LoadConfig, TheCancelChannelIsOptionalAndCanBeRenamed) {
+  EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.channels.cancel, "ARM_CANCEL");
+  const std::string renamed = mutated("goal = \"ARM_GOAL\"\n", "goal = \"ARM_GOAL\"\ncancel = \"LEFT_ARM_CANCEL\"\n");
+  EXPECT_EQ(parseConfig(renamed, "robot.toml").daemon.channels.cancel, "LEFT_ARM_CANCEL");
+  EXPECT_THROW(
+      (void)parseConfig(mutated("goal = \"ARM_GOAL\"\n", "goal = \"ARM_GOAL\"\ncancel = \"\"\n"), "robot.toml"),
+      ConfigError);
 }
 
 TEST(LoadConfig, MissingFileIsAnError) {

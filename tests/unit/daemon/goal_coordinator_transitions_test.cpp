@@ -45,6 +45,7 @@ class Transitions : public ::testing::Test {
     StreamEvent e = event(kind);
     e.epoch = ++epoch;
     e.position = q;
+    e.release_generation = generation;
     return e;
   }
   void hold(const JointVector& q, HoldCause cause = HoldCause::kEnabled) {
@@ -104,6 +105,7 @@ class Transitions : public ::testing::Test {
   test::RecordingSink sink;
   MonoNs now = 1'000 * kMs;
   std::uint64_t epoch = 0;
+  std::uint32_t generation = 0;  // the release generation the streamer has seen (its events carry it)
   GoalCoordinator coordinator;
 };
 
@@ -475,6 +477,119 @@ TEST_F(Transitions, AGoalRefusedOnArrivalLeavesTheStateAsItWas) {
   adopt();
   EXPECT_TRUE(coordinator.idle());
   EXPECT_EQ(sink.jobs_started.size(), 1u);
+}
+
+// ARM_CANCEL's release (stream region: Streaming -> Released -> Stopped -> Streaming).
+
+TEST_F(Transitions, ReleasedToStoppedOnAGoalThenStreamingOnlyOnTheHoldAfterTheRelease) {
+  hold(kStow);
+  goal(1, kHigh);
+  planned(10.0);
+  adopt();
+  streamed(StreamEventKind::kExecuting, 1);
+  coordinator.onCancel(CancelRequest{CancelRequest::kActive, CancelAction::kRelease}, now);
+  EXPECT_TRUE(coordinator.released());
+  EXPECT_EQ(sink.release_generation, 1u);
+  EXPECT_EQ(sink.last(1)->status, S::kCancelled);
+
+  goal(2, kLow, GateReason::kReleased);  // the gate says released: the goal ends the release
+  EXPECT_FALSE(coordinator.released());
+  EXPECT_EQ(sink.release_generation, 2u);
+  EXPECT_EQ(statuses(2), std::vector<S>{S::kAccepted});
+  // A hold the streamer took before it saw the release: the goal still waits.
+  hold(kStow);
+  EXPECT_TRUE(sink.jobs_started.size() == 1u);
+  // The streamer's stop for the release cancels nothing: the goal open now came after it.
+  generation = 2;
+  stopped(GateReason::kReleased);
+  EXPECT_EQ(statuses(2), std::vector<S>{S::kAccepted});
+  hold(kLow);  // the hold at the measured position after the release
+  ASSERT_EQ(sink.jobs_started.size(), 2u);
+  EXPECT_EQ(sink.jobs_started[1].request.start, kLow);
+  EXPECT_EQ(statuses(2), (std::vector<S>{S::kAccepted, S::kPlanning}));
+}
+
+TEST_F(Transitions, ReleasedStaysReleasedWhenTheGateClosesForAnotherReason) {
+  hold(kStow);
+  coordinator.onCancel(CancelRequest{CancelRequest::kActive, CancelAction::kRelease}, now);
+  stopped(GateReason::kRobotDisabled);  // the streamer stopped before it saw the release
+  EXPECT_TRUE(coordinator.released());
+  generation = 1;
+  stopped(GateReason::kReleased);
+  EXPECT_TRUE(coordinator.released());
+  goal(1, kHigh, GateReason::kReleased);
+  EXPECT_FALSE(coordinator.released());
+  generation = 2;
+  hold(kLow);
+  ASSERT_EQ(sink.jobs_started.size(), 1u);
+  EXPECT_EQ(sink.jobs_started[0].request.start, kLow);
+}
+
+// ARM_CANCEL's hold in the pipeline.
+
+TEST_F(Transitions, AHoldWhilePostedLetsTheProgramBeAdoptedThenBrakesIt) {
+  hold(kStow);
+  goal(1, kHigh);
+  planned(10.0);
+  ASSERT_NE(sink.program, nullptr);
+  coordinator.onCancel(CancelRequest{1, CancelAction::kHold}, now);
+  EXPECT_EQ(sink.last(1)->status, S::kCancelled);
+  EXPECT_TRUE(sink.jobs_started.size() == 1u);  // the stop waits for the streamer's answer
+  adopt();                                      // moving from now on
+  now += 100 * kMs;
+  coordinator.onTimer(now);
+  ASSERT_EQ(sink.jobs_started.size(), 2u);
+  EXPECT_EQ(sink.jobs_started[1].request.kind, MotionKind::kStop);
+  EXPECT_EQ(sink.jobs_started[1].request_id, 1);
+}
+
+TEST_F(Transitions, AHoldWhilePostedAndRejectedIsNotReplanned) {
+  hold(kStow);
+  goal(1, kHigh);
+  planned(10.0);
+  coordinator.onCancel(CancelRequest{CancelRequest::kActive, CancelAction::kHold}, now);
+  rejectPosted(RejectReason::kLate);
+  // Nothing runs: at rest there is nothing to stop, and the cancelled goal is not re-planned.
+  EXPECT_EQ(sink.jobs_started.size(), 1u);
+  EXPECT_EQ(statuses(1), (std::vector<S>{S::kAccepted, S::kPlanning, S::kCancelled}));
+  EXPECT_TRUE(coordinator.idle());
+}
+
+TEST_F(Transitions, AStopThatComesBackLateIsReplannedThenGivenUp) {
+  hold(kStow);
+  goal(1, kHigh);
+  planned(10.0);
+  adopt();
+  streamed(StreamEventKind::kExecuting, 1);
+  now += 500 * kMs;
+  coordinator.onCancel(CancelRequest{1, CancelAction::kHold}, now);
+  for (int i = 0; i < settings().max_late_attempts; ++i) {
+    ASSERT_TRUE(sink.job.has_value()) << i;
+    EXPECT_EQ(sink.job->request.kind, MotionKind::kStop);
+    now += 2000 * kMs;  // far past the splice point
+    planned(0.2);
+    EXPECT_EQ(sink.program, nullptr);
+  }
+  EXPECT_FALSE(sink.job.has_value());
+  EXPECT_NE(sink.notes.back().find("no stop was planned in time"), std::string::npos) << sink.notes.back();
+  EXPECT_TRUE(coordinator.idle());
+}
+
+TEST_F(Transitions, ANewGoalReplacesAStopWaitingForTheWorker) {
+  hold(kStow);
+  goal(1, kHigh);
+  planned(10.0);
+  adopt();
+  streamed(StreamEventKind::kExecuting, 1);
+  now += 500 * kMs;
+  goal(2, kLow);  // at the worker
+  coordinator.onCancel(CancelRequest{2, CancelAction::kHold}, now);
+  goal(3, kStow);  // replaces the stop waiting behind 2's plan
+  planned();       // 2's plan: dropped
+  ASSERT_TRUE(sink.job.has_value());
+  EXPECT_EQ(sink.job->request.kind, MotionKind::kMove);
+  EXPECT_EQ(sink.job->request_id, 3);
+  EXPECT_GT(sink.job->request.start_velocity.norm(), 0.0);  // from the running motion
 }
 
 }  // namespace

@@ -97,5 +97,19 @@ TEST(MotionGate, RobotReasonsComeBeforeStateReasons) {
   EXPECT_FALSE(isRobotDisabledReason(GateReason::kNoState));
 }
 
+TEST(MotionGate, AReleaseClosesItOnlyWhenNothingElseDoes) {
+  RobotInputs inputs;
+  inputs.release_generation = 1;  // odd: released
+  EXPECT_EQ(evaluateGate(inputs, 0, enabledGate()).reason, GateReason::kNoHeartbeat);
+  inputs.heartbeat_ns = 0;
+  inputs.heartbeat_watchdog = true;
+  EXPECT_EQ(evaluateGate(inputs, 0, enabledGate()).reason, GateReason::kNoState);
+  inputs.state_ns = 0;
+  EXPECT_EQ(evaluateGate(inputs, 0, enabledGate()).reason, GateReason::kReleased);
+  EXPECT_FALSE(isRobotDisabledReason(GateReason::kReleased));
+  inputs.release_generation = 2;  // even: the release has ended
+  EXPECT_TRUE(evaluateGate(inputs, 0, enabledGate()).open());
+}
+
 }  // namespace
 }  // namespace cyber::daemon

@@ -240,6 +240,41 @@ TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
   EXPECT_TRUE(tick().send_setpoints);
 }
 
+// ARM_CANCEL's release (docs/lcm.md, "Cancel and manual override"): nothing is streamed while the
+// generation is odd; the status says RELEASED; the end of the release holds the measured position.
+TEST_F(StreamerTest, ReleaseStreamsNothingUntilItEndsThenHoldsTheMeasuredPosition) {
+  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  holdThenMove(a, b);
+  feed(a);
+  inputs.release_generation = 1;
+  for (int i = 0; i < 10; ++i) {
+    inputs.state_ns = now;
+    inputs.heartbeat_ns = now;
+    const TickOutput out = tick();
+    EXPECT_FALSE(out.send_setpoints);
+    EXPECT_EQ(out.mode, StreamMode::kReleased);
+    EXPECT_EQ(out.gate_reason, GateReason::kReleased);
+  }
+  expectStopped(1, GateReason::kReleased);
+  EXPECT_EQ(events.back().release_generation, 1u);
+  inputs.release_generation = 2;
+  EXPECT_FALSE(tick().send_setpoints);  // the new generation is latched as one stop
+  expectEnabledHoldAt(JointVector(0.7, 2.0));
+  EXPECT_EQ(events.back().release_generation, 2u);
+}
+
+TEST_F(StreamerTest, AReleaseEndedBeforeTheNextTickStillStopsOnce) {
+  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  holdThenMove(a, b);
+  feed(a);
+  inputs.release_generation = 2;  // released and ended between two ticks
+  const TickOutput out = tick();
+  EXPECT_FALSE(out.send_setpoints);
+  EXPECT_EQ(out.mode, StreamMode::kReleased);
+  expectStopped(1, GateReason::kReleased);
+  expectEnabledHoldAt(JointVector(0.3, 1.1));
+}
+
 TEST_F(StreamerTest, ProgramsOfAStoppedEpochAreRejected) {
   const JointVector a(0.2, 1.0), b(1.6, 3.0);
   feed(a);

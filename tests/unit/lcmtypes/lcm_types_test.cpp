@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cyber/can/status_codec.hpp"
+#include "cyber/lcmtypes/constant_names.hpp"
 #include "cyber/lcmtypes/safe_decode.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
@@ -257,11 +258,14 @@ TEST(LcmTypes, ModeConstantsMatchTheCanStatusModes) {
   EXPECT_EQ(arm_setpoint_t::MODE_MOVING, static_cast<int>(Mode::kMoving));
   EXPECT_EQ(arm_setpoint_t::MODE_FAULT, static_cast<int>(Mode::kFault));
   EXPECT_EQ(arm_setpoint_t::MODE_ROBOT_DISABLED, static_cast<int>(Mode::kRobotDisabled));
+  EXPECT_EQ(arm_setpoint_t::MODE_RELEASED, static_cast<int>(Mode::kReleased));
   EXPECT_EQ(arm_daemon_status_t::MODE_NO_STATE, static_cast<int>(Mode::kNoState));
   EXPECT_EQ(arm_daemon_status_t::MODE_HOLDING, static_cast<int>(Mode::kHolding));
   EXPECT_EQ(arm_daemon_status_t::MODE_MOVING, static_cast<int>(Mode::kMoving));
   EXPECT_EQ(arm_daemon_status_t::MODE_FAULT, static_cast<int>(Mode::kFault));
   EXPECT_EQ(arm_daemon_status_t::MODE_ROBOT_DISABLED, static_cast<int>(Mode::kRobotDisabled));
+  EXPECT_EQ(arm_daemon_status_t::MODE_RELEASED, static_cast<int>(Mode::kReleased));
+  EXPECT_STREQ(cyber::lcmtypes::modeName(arm_daemon_status_t::MODE_RELEASED), "RELEASED");
 }
 
 TEST(LcmTypes, FingerprintMismatchFails) {

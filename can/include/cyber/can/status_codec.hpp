@@ -25,9 +25,10 @@ enum class Mode : std::uint8_t {
   kMoving = 2,         // streaming a trajectory
   kFault = 3,          // stopped by a fault (fault bits say which)
   kRobotDisabled = 4,  // heartbeat says disabled, is stale, or a broadcast disable arrived
+  kReleased = 5,       // manual override (ARM_CANCEL release): no setpoints until the next goal
 };
 
-// "no-state", "holding", "moving", "fault", "robot-disabled".
+// "no-state", "holding", "moving", "fault", "robot-disabled", "released".
 std::string_view toString(Mode mode);
 
 // Fault bits of byte 5. Bits 0x20, 0x40, 0x80 are reserved (sent as 0).

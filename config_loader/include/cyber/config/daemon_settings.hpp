@@ -13,6 +13,7 @@ struct DeviceNumbers {
 
 struct ChannelNames {
   std::string goal = "ARM_GOAL";
+  std::string cancel = "ARM_CANCEL";
   std::string state = "ARM_STATE";
   std::string plan_status = "ARM_PLAN_STATUS";
   std::string trajectory = "ARM_TRAJECTORY";

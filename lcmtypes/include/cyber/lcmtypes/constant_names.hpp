@@ -29,6 +29,7 @@ inline const char* modeName(int mode) {
     case M::MODE_MOVING: return "MOVING";
     case M::MODE_FAULT: return "FAULT";
     case M::MODE_ROBOT_DISABLED: return "ROBOT_DISABLED";
+    case M::MODE_RELEASED: return "RELEASED";
     default: return "UNKNOWN";
   }
 }

@@ -7,6 +7,7 @@
 #include <pthread.h>
 #include <sched.h>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -38,13 +40,20 @@ class FakePlanning final : public PlanningService {
       return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kGoalInCollision, "arm in the floor");
     }
     PlannedMotion motion;
-    motion.trajectory = test::makeHermite(request.start, request.start_velocity, request.goal, 0.3, robot_);
+    const double duration_s = duration_s_.load();
+    // A stop brakes at a constant rate to rest (the velocity falls linearly over duration_s).
+    const JointVector to = request.kind == MotionKind::kStop
+                               ? JointVector(request.start + 0.5 * duration_s * request.start_velocity)
+                               : request.goal;
+    motion.trajectory = test::makeHermite(request.start, request.start_velocity, to, duration_s, robot_);
     motion.times_ms.total = 1.0;
     return motion;
   }
+  void setDuration(double seconds) { duration_s_.store(seconds); }
 
  private:
   const planner::RobotModel& robot_;
+  std::atomic<double> duration_s_{0.3};
 };
 
 // Collects what the daemon publishes (handlers run on the daemon's loop thread).
@@ -333,6 +342,106 @@ TEST_F(DaemonMemq, TheStreamerKeepsTickingWhileAStateStoreIsUnfinished) {
   }
   LatestValueTestPeer<MeasuredStateData>::endStore(channels.state);
   EXPECT_TRUE(ticking) << "the streamer waited for an unfinished ARM_STATE store";
+}
+
+// ARM_CANCEL through LCM (docs/lcm.md, "Cancel and manual override").
+class DaemonMemqCancel : public DaemonMemq {
+ protected:
+  void cancel(std::int64_t id, std::int8_t action) {
+    cyberplanner::arm_cancel_t message{};
+    message.request_id = id;
+    message.action = action;
+    publish("ARM_CANCEL", message);
+  }
+  bool seen(std::int64_t id, std::int8_t status) {
+    for (const auto& s : listener.statuses) {
+      if (s.request_id == id && s.status == status) return true;
+    }
+    return false;
+  }
+  std::string finalReason(std::int64_t id) {
+    std::lock_guard<std::mutex> lock(listener.mutex);
+    for (const auto& s : listener.statuses) {
+      if (s.request_id == id && s.status >= cyberplanner::arm_plan_status_t::STATUS_DONE) return s.reason;
+    }
+    return "";
+  }
+};
+
+TEST_F(DaemonMemqCancel, AHoldCancelsTheGoalAndBrakesToRest) {
+  using S = cyberplanner::arm_plan_status_t;
+  using M = cyberplanner::arm_setpoint_t;
+  waitForHolding();
+  planning.setDuration(3.0);
+  goal(1, 1.8, 3.0);
+  ASSERT_TRUE(listener.waitFor([&] { return seen(1, S::STATUS_EXECUTING); }));
+  std::this_thread::sleep_for(300ms);
+  planning.setDuration(1.0);  // the stop brakes over 1 s
+  cancel(1, cyberplanner::arm_cancel_t::ACTION_HOLD);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(1); }));
+  EXPECT_EQ(listener.statusesOf(1), (std::vector<std::int8_t>{S::STATUS_ACCEPTED, S::STATUS_PLANNING,
+                                                              S::STATUS_EXECUTING, S::STATUS_CANCELLED}));
+  EXPECT_EQ(finalReason(1), "cancelled by ARM_CANCEL: hold");
+  // The stop is streamed under request 1, then held at rest, well short of the target (1.8, 3.0).
+  ASSERT_TRUE(
+      listener.waitFor([&] { return listener.trajectories.size() == 2 && listener.trajectories[1].request_id == 1; }));
+  ASSERT_TRUE(listener.waitFor([&] {
+    return !listener.setpoints.empty() && listener.setpoints.back().mode == M::MODE_HOLDING &&
+           listener.setpoints.back().request_id == 1;
+  }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.setpoints.back().elevator_mps, 0.0);
+  EXPECT_EQ(listener.setpoints.back().arm_radps, 0.0);
+  EXPECT_LT(listener.setpoints.back().arm_rad, 2.5);
+  EXPECT_EQ(listener.statusesOf(1).size(), 4u);  // no DONE for the cancelled goal
+}
+
+TEST_F(DaemonMemqCancel, AReleaseStopsTheSetpointsWithModeReleasedUntilTheNextGoal) {
+  using S = cyberplanner::arm_plan_status_t;
+  using D = cyberplanner::arm_daemon_status_t;
+  waitForHolding();
+  planning.setDuration(3.0);
+  goal(2, 1.8, 3.0);
+  ASSERT_TRUE(listener.waitFor([&] { return seen(2, S::STATUS_EXECUTING); }));
+  cancel(-1, cyberplanner::arm_cancel_t::ACTION_RELEASE);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(2); }));
+  EXPECT_EQ(finalReason(2), "cancelled by ARM_CANCEL: release (manual override)");
+  ASSERT_TRUE(listener.waitFor(
+      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().mode == D::MODE_RELEASED; }));
+  // No ARM_SETPOINT while released (the echo copies the CAN setpoints, and none are sent).
+  std::size_t echoes = 0;
+  {
+    std::lock_guard<std::mutex> lock(listener.mutex);
+    echoes = listener.setpoints.size();
+    EXPECT_FALSE(listener.daemon_statuses.back().motion_allowed);
+  }
+  std::this_thread::sleep_for(300ms);
+  {
+    std::lock_guard<std::mutex> lock(listener.mutex);
+    EXPECT_EQ(listener.setpoints.size(), echoes);
+    EXPECT_EQ(listener.daemon_statuses.back().mode, D::MODE_RELEASED);
+  }
+  // The next goal ends the release; it starts from the measured state (0.1, 1.2: the feeder's).
+  planning.setDuration(0.3);
+  goal(3, 1.0, 2.0);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(3); }));
+  EXPECT_EQ(listener.statusesOf(3),
+            (std::vector<std::int8_t>{S::STATUS_ACCEPTED, S::STATUS_PLANNING, S::STATUS_EXECUTING, S::STATUS_DONE}));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  ASSERT_FALSE(listener.trajectories.empty());
+  EXPECT_EQ(listener.trajectories.back().request_id, 3);
+  EXPECT_NEAR(listener.trajectories.back().elevator_m.front(), 0.1, 1e-12);
+  EXPECT_NEAR(listener.trajectories.back().arm_rad.front(), 1.2, 1e-12);
+}
+
+TEST_F(DaemonMemqCancel, UndecodableCancelsAreCounted) {
+  waitForHolding();
+  publishRaw("ARM_CANCEL", {1, 2, 3});
+  cancel(5, 7);  // no such action
+  ASSERT_TRUE(listener.waitFor(
+      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 2; }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.daemon_statuses.back().mode, cyberplanner::arm_daemon_status_t::MODE_HOLDING);
 }
 
 TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {

@@ -29,6 +29,21 @@ TEST(LcmMessages, GoalFieldsAreCopied) {
   EXPECT_EQ(goal.scene_name, "open");
 }
 
+TEST(LcmMessages, CancelsTakeTheRequestAndAKnownAction) {
+  cyberplanner::arm_cancel_t message{};
+  message.request_id = 42;
+  message.action = cyberplanner::arm_cancel_t::ACTION_HOLD;
+  ASSERT_TRUE(cancelFromMessage(message).has_value());
+  EXPECT_EQ(cancelFromMessage(message)->request_id, 42);
+  EXPECT_EQ(cancelFromMessage(message)->action, CancelAction::kHold);
+  message.request_id = -1;
+  message.action = cyberplanner::arm_cancel_t::ACTION_RELEASE;
+  EXPECT_EQ(cancelFromMessage(message)->request_id, CancelRequest::kActive);
+  EXPECT_EQ(cancelFromMessage(message)->action, CancelAction::kRelease);
+  message.action = 2;
+  EXPECT_FALSE(cancelFromMessage(message).has_value());
+}
+
 TEST(LcmMessages, StatesMustBeFiniteAndNearTheJointRanges) {
   const auto& robot = cyber::test::referenceModel();
   cyberplanner::arm_state_t message{};

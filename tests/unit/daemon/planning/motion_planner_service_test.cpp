@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/motion_planner.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
@@ -71,6 +72,51 @@ TEST(MotionPlannerService, FeedforwardStaysWithinTheVoltageLimitOtherwiseFollows
   }
   // The moves do reach past the limit, so the clamp is what keeps the stream within it.
   EXPECT_GT(raw_beyond, 0);
+}
+
+// ARM_CANCEL's hold (docs/lcm.md, "Cancel and manual override"): a stop request is the planner's
+// fastest stop from the moving state, in the world of the pieces held.
+TEST(MotionPlannerService, AStopRequestIsThePlannersFastestStop) {
+  const planner::RobotModel& model = test::referenceModel();
+  auto service = makeMotionPlannerService(model);
+  ASSERT_TRUE(service.ok()) << service.error().reason;
+  auto planner = planner::MotionPlanner::create(model);
+  ASSERT_TRUE(planner.ok());
+  const test::PublicMove& move = publicMove("coral:L1->NET");
+  planner::PlanRequest plan_request;
+  plan_request.start = move.from;
+  plan_request.goal = move.to;
+  plan_request.pieces = move.pieces;
+  const auto plan = planner.value().plan(plan_request);
+  ASSERT_TRUE(plan.ok());
+  const planner::TrajectorySample moving = plan.value().trajectory->sample(0.3 * plan.value().trajectory->duration_s());
+  ASSERT_GT(moving.qdot.norm(), 0.1);
+
+  MotionRequest request;
+  request.kind = MotionKind::kStop;
+  request.start = moving.q;
+  request.start_velocity = moving.qdot;
+  request.goal = moving.q;
+  request.pieces = move.pieces;
+  const auto stop = service.value()->plan(request);
+  ASSERT_TRUE(stop.ok()) << stop.error().reason;
+  const SetpointSource& source = *stop.value().trajectory;
+  planner::ToppSolver solver(model.planner.topp);
+  const auto expected =
+      planner::fastestStop(model, planner.value().pathPlanner(0).world(move.pieces), moving.q, moving.qdot, solver);
+  ASSERT_TRUE(expected.ok());
+  EXPECT_DOUBLE_EQ(source.durationS(), expected.value().duration_s());
+  EXPECT_TRUE(source.at(0.0).position.isApprox(moving.q, 1e-9));
+  EXPECT_TRUE(source.at(0.0).velocity.isApprox(moving.qdot, 1e-6));
+  EXPECT_LT(source.at(source.durationS()).velocity.norm(), 1e-9);  // at rest (the streamer then holds, exactly 0)
+  EXPECT_GT(stop.value().times_ms.total, 0.0);
+
+  // At rest there is nothing to stop: the planner's own error, as a value.
+  request.start_velocity = JointVector::Zero();
+  EXPECT_EQ(service.value()->plan(request).status(), planner::PlanStatus::kInvalidInput);
+  request.start_velocity = moving.qdot;
+  request.scene = 7;
+  EXPECT_EQ(service.value()->plan(request).status(), planner::PlanStatus::kInvalidInput);
 }
 
 }  // namespace

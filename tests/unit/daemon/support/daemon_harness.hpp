@@ -26,6 +26,7 @@ struct RecordingSink final : CoordinatorSink {
   std::vector<PlanJob> jobs_started;
   std::unique_ptr<Program> program;
   std::vector<std::string> notes;
+  std::uint32_t release_generation = 0;
 
   void publishStatus(const StatusUpdate& update) override { statuses.push_back(update); }
   void publishTrajectory(std::int64_t id, const SharedSetpointSource&, MonoNs start) override {
@@ -38,6 +39,15 @@ struct RecordingSink final : CoordinatorSink {
   }
   void postProgram(std::unique_ptr<Program> p) override { program = std::move(p); }
   void note(NoteLevel, const std::string& text) override { notes.push_back(text); }
+  void setReleaseGeneration(std::uint32_t generation) override { release_generation = generation; }
+
+  // Some note contains `text`.
+  [[nodiscard]] bool noted(const std::string& text) const {
+    for (const auto& n : notes) {
+      if (n.find(text) != std::string::npos) return true;
+    }
+    return false;
+  }
 
   // Statuses of one request, in order.
   [[nodiscard]] std::vector<GoalStatus> of(std::int64_t id) const {
@@ -80,8 +90,15 @@ class Harness {
 
   static constexpr MonoNs kPeriod = 5'000'000;  // 200 Hz
 
-  // A plan whose duration grows with the distance; rejects goals in `collision_goals`.
+  // A plan whose duration grows with the distance; rejects goals in `collision_goals`. A stop
+  // brakes at a constant rate over stop_duration_s (the velocity falls linearly to zero).
   planner::Result<PlannedMotion> defaultPlan(const MotionRequest& request) const {
+    if (request.kind == MotionKind::kStop) {
+      PlannedMotion stop;
+      const JointVector rest = request.start + 0.5 * stop_duration_s * request.start_velocity;
+      stop.trajectory = makeHermite(request.start, request.start_velocity, rest, stop_duration_s, robot);
+      return stop;
+    }
     for (const auto& q : collision_goals) {
       if ((q - request.goal).norm() < 1e-9) {
         return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kGoalInCollision,
@@ -110,11 +127,14 @@ class Harness {
 
   void goal(std::int64_t id, JointVector q, std::string scene = {}, bool coral = false, bool algae = false) {
     GoalRequest request{id, q[0], q[1], coral, algae, std::move(scene)};
-    coordinator_.onGoal(request, now, evaluateGate(inputs, now, settings_gate_));
+    rawGoal(request);
   }
+  // As the event loop admits a goal: on the gate with the release as the coordinator last set it.
   void rawGoal(const GoalRequest& request) {
+    inputs.release_generation = sink.release_generation;
     coordinator_.onGoal(request, now, evaluateGate(inputs, now, settings_gate_));
   }
+  void cancel(std::int64_t id, CancelAction action) { coordinator_.onCancel(CancelRequest{id, action}, now); }
 
   // One stream period: finished plans first (the worker wakes the loop), then the streamer's tick
   // and its events, then time advances. State and heartbeats are refreshed when asked to.
@@ -125,6 +145,7 @@ class Harness {
       coordinator_.onPlanResult(job.job_id, plan(job.request), plan_time_s_, now);
     }
     Program* offered = sink.program.release();
+    inputs.release_generation = sink.release_generation;
     TickOutput out;
     streamer_.tick(now, inputs, offered, stop_requested, out);
     for (int i = 0; i < out.retired_count; ++i) delete out.retired[static_cast<size_t>(i)];
@@ -175,6 +196,7 @@ class Harness {
   bool stop_requested = false;
   bool auto_state = true;
   bool auto_heartbeat = true;
+  double stop_duration_s = 0.2;
 
  private:
   static StreamerSettings streamerSettings(bool require_robot_enabled) {

@@ -2,11 +2,12 @@
 // The life of every goal, on the event-loop thread: validation, latest-wins coalescing of the goals
 // waiting for the planner (the plan in progress still runs; the newest goal is spliced into it), choosing
 // where a plan starts (at rest, or the commanded state a measured budget ahead of a running
-// motion), splicing finished plans into the streamer's program, and answering on ARM_PLAN_STATUS.
-// Single-threaded and clock-free: the caller passes "now", the plan results and the streamer's
-// events, and receives its decisions through CoordinatorSink. Its state machine, two regions
-// (the stream as the streamer reports it, the goal in the planning pipeline), is drawn in
-// docs/design.md, "The life of a goal".
+// motion), splicing finished plans into the streamer's program, answering on ARM_PLAN_STATUS, and
+// ARM_CANCEL: a hold (brake to rest, planned like a moving start) or a release (manual override:
+// the streamer stops until the next goal). Single-threaded and clock-free: the caller passes "now", the plan results
+// and the streamer's events, and receives its decisions through CoordinatorSink. Its state machine, two regions (the
+// stream as the streamer reports it, the goal in the planning pipeline), is drawn in docs/design.md, "The life of a
+// goal".
 
 #include <cstdint>
 #include <map>
@@ -17,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "cyber/daemon/cancel_request.hpp"
 #include "cyber/daemon/goal_request.hpp"
 #include "cyber/daemon/goal_status.hpp"
 #include "cyber/daemon/mono_time.hpp"
@@ -49,6 +51,8 @@ class CoordinatorSink {
   virtual void postProgram(std::unique_ptr<Program> program) = 0;
   // A decision worth a log line (late plans, fall-backs).
   virtual void note(NoteLevel level, const std::string& text) = 0;
+  // The manual override for the streamer (RobotInputs::release_generation): odd while released.
+  virtual void setReleaseGeneration(std::uint32_t generation) = 0;
 };
 
 struct CoordinatorSettings {
@@ -65,6 +69,8 @@ struct CoordinatorCounters {
   std::int64_t plans_failed = 0;  // FAILED answers
   std::int64_t plans_late = 0;    // plans that missed their splice time
   std::int64_t goals_done = 0;
+  std::int64_t goals_cancelled = 0;  // CANCELLED answers to ARM_CANCEL
+  std::int64_t stops_planned = 0;    // ARM_CANCEL holds that braked a moving mechanism (stop posted)
 };
 
 class GoalCoordinator {
@@ -80,19 +86,26 @@ class GoalCoordinator {
   void onTimer(MonoNs now);
   // Shutdown: every open goal is cancelled and later goals are rejected.
   void onShutdown(MonoNs now);
+  // ARM_CANCEL (docs/lcm.md, "Cancel and manual override"). A cancel that names no open goal
+  // changes nothing: a stale cancel must not stop a newer move.
+  void onCancel(const CancelRequest& cancel, MonoNs now);
 
   [[nodiscard]] const CoordinatorCounters& counters() const { return counters_; }
   [[nodiscard]] double budgetS() const { return budget_.budgetS(); }
   [[nodiscard]] bool idle() const { return !waiting_ && std::holds_alternative<Idle>(stage_); }
   // The program the streamer runs, as far as the coordinator knows (for tests and status).
   [[nodiscard]] const Program& mirror() const { return mirror_; }
+  // The robot program drives the joints (ARM_CANCEL's release) until the next goal.
+  [[nodiscard]] bool released() const { return std::holds_alternative<Released>(stream_); }
 
  private:
   // A goal on its way to the streamer and what a re-plan carries over.
   struct Attempt {
-    ValidGoal goal;
+    ValidGoal goal;          // a stop: the request and world of the motion it brakes, set when planned
     int attempt = 0;         // plans of this goal so far
-    bool from_rest = false;  // fall-back: start where the running motion ends
+    bool from_rest = false;  // fall-back: start where the running motion ends (a stop: give up)
+    bool stop = false;       // ARM_CANCEL's hold: the fastest stop of the running motion
+    bool cancelled = false;  // ARM_CANCEL ended it at the worker or the streamer: never posted again
   };
 
   // The stream region: what the streamer does, as its events report it.
@@ -100,8 +113,9 @@ class GoalCoordinator {
     std::string reason;
   };
   struct Streaming {};  // holding or moving: plans may start
+  struct Released {};   // ARM_CANCEL's release: the streamer sends nothing; the next goal ends it
   struct ShutDown {};   // terminal: goals are rejected, nothing is planned or posted
-  using StreamState = std::variant<Stopped, Streaming, ShutDown>;
+  using StreamState = std::variant<Stopped, Streaming, Released, ShutDown>;
 
   // The pipeline region: at most one goal is at the worker or at the streamer.
   struct Idle {};
@@ -127,6 +141,11 @@ class GoalCoordinator {
     double duration_s = 0.0;
   };
 
+  struct World {  // what a segment was planned among: a stop of it keeps the same clearance
+    planner::HeldPieces pieces;
+    int scene = 0;
+  };
+
   // Transitions of the pipeline (each called only from the state it names).
   void startPlanning(MonoNs now);  // Idle -> Planning, when a goal waits and the stream runs
   void onPlanned(Planning job, planner::Result<PlannedMotion> result, double plan_time_s,
@@ -134,6 +153,14 @@ class GoalCoordinator {
   void onAdopted(Posted posted, const StreamEvent& event, MonoNs now);   // Posted -> Idle
   void onRejected(Posted posted, const StreamEvent& event, MonoNs now);  // Posted -> Idle
   void replan(const Attempt& attempt, bool late, MonoNs now, const std::string& why);
+  // Fills a stop's request and world from the motion at the branch; false when there is nothing to
+  // brake (at rest by then) or it must not be braked (no world known, given up after late plans).
+  bool prepareStop(Attempt& stop, const ProgramSample& at_branch);
+
+  // ARM_CANCEL.
+  void cancelOpen(const std::string& reason);  // every open goal CANCELLED; plans in flight dropped
+  void release();                              // Streaming | Stopped -> Released
+  void endRelease();                           // Released -> Stopped, until the streamer holds again
 
   // Transitions of the stream region.
   void onStopped(const StreamEvent& event);
@@ -143,7 +170,7 @@ class GoalCoordinator {
   void onExecuting(const StreamEvent& event, MonoNs now);
 
   [[nodiscard]] bool shutDown() const { return std::holds_alternative<ShutDown>(stream_); }
-  [[nodiscard]] const std::string* stopReason() const;  // nullptr unless Stopped
+  [[nodiscard]] const std::string* stopReason() const;  // nullptr unless Stopped or Released
   void publish(std::int64_t request_id, GoalStatus status, std::string reason = {});
   void finish(std::int64_t request_id, GoalStatus status, std::string reason);
   void reject(std::int64_t request_id, std::string reason);
@@ -161,6 +188,8 @@ class GoalCoordinator {
   std::optional<Attempt> waiting_;  // latest wins: the next goal for the worker
   std::map<std::int64_t, OpenGoal> open_;
   std::optional<std::int64_t> executing_;  // the open request being streamed
+  std::map<std::int64_t, World> worlds_;   // of the mirror's segments, by request
+  std::uint32_t release_generation_ = 0;   // RobotInputs::release_generation as last set
   std::uint64_t next_job_id_ = 1;
   std::uint64_t next_program_id_ = 1;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // The motion gate: may the daemon stream motion at "now"? Closed without fresh measured state,
 // while the roboRIO heartbeat lacks the system-watchdog bit or is older than its timeout, and after
-// a broadcast disable (docs/design.md, "The motion gate").
+// a broadcast disable, and while the robot program has taken the joints over (ARM_CANCEL's release,
+// docs/design.md, "The motion gate").
 
 #include <cstdint>
 #include <string_view>
@@ -28,6 +29,11 @@ struct RobotInputs {
   // Broadcast disables seen so far. The streamer latches each new one as an event: a disable
   // followed within a period by an enabled heartbeat would otherwise be lifted before any tick saw it.
   std::uint32_t broadcast_disable_count = 0;
+  // The manual override (ARM_CANCEL's release): odd while the robot program drives the joints.
+  // The coordinator bumps it when a release begins and when the next goal ends it; the streamer
+  // latches every change as a stop, so a release that ends before any tick saw it still restarts
+  // the stream from the measured position.
+  std::uint32_t release_generation = 0;
 };
 
 enum class GateReason {
@@ -38,12 +44,15 @@ enum class GateReason {
   kNoHeartbeat,       // no heartbeat, or it is older than heartbeat_timeout_s
   kBroadcastDisable,  // a broadcast disable arrived and no enabled heartbeat since
   kFault,             // not from evaluateGate: the streamer stopped on a setpoint it could not send
+  kReleased,          // manual override: the robot program drives the joints until the next goal
 };
 
 std::string_view toString(GateReason reason);
 
 // True for reasons that mean "the robot is disabled" (CAN status mode 4) rather than "no state".
 bool isRobotDisabledReason(GateReason reason);
+
+[[nodiscard]] inline bool isReleased(std::uint32_t release_generation) { return release_generation % 2 == 1; }
 
 struct GateVerdict {
   GateReason reason = GateReason::kNoState;
@@ -52,7 +61,8 @@ struct GateVerdict {
 
 // With require_robot_enabled, a broadcast disable holds until a heartbeat with the watchdog bit
 // arrives after it; without (bench use, no roboRIO), until heartbeat_timeout_s has passed since
-// the latest disable. Robot reasons take precedence over state reasons.
+// the latest disable. Robot reasons take precedence over state reasons, and both over a release
+// (kReleased means "everything else is open", so a goal that ends the release may be accepted).
 GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettings& settings);
 
 }  // namespace cyber::daemon

@@ -9,7 +9,13 @@
 
 namespace cyber::daemon {
 
+enum class MotionKind {
+  kMove,  // start to goal, collision-free, ending at rest
+  kStop,  // ARM_CANCEL's hold: the fastest admissible stop from (start, start_velocity); goal unused
+};
+
 struct MotionRequest {
+  MotionKind kind = MotionKind::kMove;
   JointVector start = JointVector::Zero();
   JointVector goal = JointVector::Zero();
   JointVector start_velocity = JointVector::Zero();  // non-zero for a splice into a running motion

@@ -38,6 +38,9 @@ struct StreamEvent {
   GateReason gate_reason = GateReason::kOpen;
   RejectReason reject_reason = RejectReason::kLate;
   HoldCause hold_cause = HoldCause::kEnabled;
+  // kStopped, kHolding: the RobotInputs::release_generation the streamer had seen, so the
+  // coordinator can tell a hold taken before a release (or its end) from the one after.
+  std::uint32_t release_generation = 0;
 };
 
 std::string_view toString(StreamEventKind kind);

@@ -98,6 +98,7 @@ class Streamer {
   bool done_reported_ = true;
   MonoNs fault_until_ns_ = kNever;
   std::uint32_t disables_seen_ = 0;  // RobotInputs::broadcast_disable_count at the last tick
+  std::uint32_t releases_seen_ = 0;  // RobotInputs::release_generation at the last tick
 };
 
 }  // namespace cyber::daemon

@@ -40,6 +40,8 @@ class GoalHandler final : private CoordinatorSink {
   void onTimer(MonoNs now);
   // Every open goal is cancelled and later goals are rejected.
   void onShutdown(MonoNs now) { coordinator_.onShutdown(now); }
+  // ARM_CANCEL received at `now`.
+  void onCancel(const CancelRequest& cancel, MonoNs now);
 
   [[nodiscard]] const CoordinatorCounters& counters() const { return coordinator_.counters(); }
   // The latest final answer was REJECTED or FAILED (CAN status fault bit "plan failed").
@@ -55,6 +57,7 @@ class GoalHandler final : private CoordinatorSink {
   void startPlanning(const PlanJob& job) override;
   void postProgram(std::unique_ptr<Program> program) override;
   void note(NoteLevel level, const std::string& text) override;
+  void setReleaseGeneration(std::uint32_t generation) override;
 
   LcmBridge& bridge_;
   PlanningWorker& worker_;

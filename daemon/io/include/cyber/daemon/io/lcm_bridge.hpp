@@ -1,6 +1,6 @@
 #pragma once
-// The daemon's LCM endpoint on the event-loop thread: a raw subscription to the goal channel,
-// decoded with safeDecode (an undecodable or foreign message is counted, never trusted), and typed
+// The daemon's LCM endpoint on the event-loop thread: raw subscriptions to the goal and cancel
+// channels, decoded with safeDecode (an undecodable or foreign message is counted, never trusted), and typed
 // publishing on the output channels. ARM_STATE has an LCM instance and a thread of its own
 // (state_receiver.hpp).
 
@@ -11,6 +11,7 @@
 
 #include "cyber/config/daemon_settings.hpp"
 #include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 
 namespace cyber::daemon::io {
@@ -31,6 +32,7 @@ class LcmBridge {
  public:
   struct Callbacks {
     std::function<void(const cyberplanner::arm_goal_t&)> goal;
+    std::function<void(const cyberplanner::arm_cancel_t&)> cancel;
     std::function<void(const std::string& channel, int size)> undecodable;
   };
 
@@ -55,6 +57,7 @@ class LcmBridge {
 
  private:
   void onGoal(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void onCancel(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
   config::ChannelNames channels_;

@@ -1,14 +1,15 @@
 #pragma once
-// ARM_GOAL and ARM_STATE as the daemon receives them: goals (on the event loop) go on to
-// `on_goal`, valid measured states (on the state receiver's thread, state_receiver.hpp) to the
-// streamer (StreamerChannels::state); states with non-finite or absurd values and undecodable
-// messages are counted (ARM_DAEMON_STATUS.decode_errors) and logged, throttled.
+// ARM_GOAL, ARM_CANCEL and ARM_STATE as the daemon receives them: goals and cancels (on the event
+// loop) go on to `on_goal` and `on_cancel`, valid measured states (on the state receiver's thread, state_receiver.hpp)
+// to the streamer (StreamerChannels::state); states with non-finite or absurd values, cancels with an unknown action
+// and undecodable messages are counted (ARM_DAEMON_STATUS.decode_errors) and logged, throttled.
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
 #include <string>
 
+#include "cyber/daemon/cancel_request.hpp"
 #include "cyber/daemon/goal_request.hpp"
 #include "cyber/daemon/io/lcm_bridge.hpp"
 #include "cyber/daemon/io/log_throttle.hpp"
@@ -21,13 +22,14 @@ namespace cyber::daemon::io {
 class LcmInput {
  public:
   using GoalHandler = std::function<void(const GoalRequest&)>;
+  using CancelHandler = std::function<void(const CancelRequest&)>;
 
   // `robot` and `channels` must outlive this.
-  LcmInput(const planner::RobotModel& robot, StreamerChannels& channels, GoalHandler on_goal);
+  LcmInput(const planner::RobotModel& robot, StreamerChannels& channels, GoalHandler on_goal, CancelHandler on_cancel);
   LcmInput(const LcmInput&) = delete;
   LcmInput& operator=(const LcmInput&) = delete;
 
-  // What the LcmBridge calls for each goal (event loop).
+  // What the LcmBridge calls for each goal and cancel (event loop).
   [[nodiscard]] LcmBridge::Callbacks callbacks();
   // What the StateReceiver calls for each ARM_STATE (its thread only). A state is stamped here, on
   // CLOCK_MONOTONIC, as it is handed over.
@@ -36,7 +38,8 @@ class LcmInput {
 
   // The latest valid ARM_STATE (state_ns kNever before the first). Any thread.
   [[nodiscard]] MeasuredStateData state() const { return channels_.state.load(); }
-  // Undecodable or foreign messages on ARM_GOAL / ARM_STATE, and decodable states with bad values.
+  // Undecodable or foreign messages on ARM_GOAL / ARM_CANCEL / ARM_STATE, decodable states with bad
+  // values and cancels with an unknown action.
   [[nodiscard]] std::int64_t decodeErrors() const { return undecodable_.load() + bad_states_.load(); }
 
  private:
@@ -45,6 +48,7 @@ class LcmInput {
   const planner::RobotModel& robot_;
   StreamerChannels& channels_;
   GoalHandler on_goal_;
+  CancelHandler on_cancel_;
   MeasuredStateData state_;  // the receiver's copy
   std::atomic<std::int64_t> undecodable_{0};
   std::atomic<std::int64_t> bad_states_{0};

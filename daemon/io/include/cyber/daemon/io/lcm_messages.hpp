@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <optional>
 
+#include "cyber/daemon/cancel_request.hpp"
 #include "cyber/daemon/goal_request.hpp"
 #include "cyber/daemon/goal_status.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/setpoint_source.hpp"
 #include "cyber/planner/robot_model.hpp"
+#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
 #include "cyberplanner/arm_setpoint_t.hpp"
@@ -21,6 +23,9 @@ namespace cyber::daemon::io {
 std::int64_t wallMicros();
 
 GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message);
+
+// Nothing for an action that is not one of arm_cancel_t's ACTION_*.
+std::optional<CancelRequest> cancelFromMessage(const cyberplanner::arm_cancel_t& message);
 
 struct MeasuredState {
   JointVector q = JointVector::Zero();

@@ -26,8 +26,9 @@ struct MeasuredStateData {
   double measured_qdot[2] = {0.0, 0.0};
 };
 
-// The gate's inputs: the event loop's measured state and the streamer's reading of the robot link.
-RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link);
+// The gate's inputs: the event loop's measured state, the streamer's reading of the robot link and
+// the manual override (StreamerChannels::release_generation).
+RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link, std::uint32_t release_generation);
 
 // The latest tick, for ARM_SETPOINT and ARM_DAEMON_STATUS.
 struct StreamSnapshot {
@@ -58,6 +59,8 @@ struct StreamerChannels {
   LatestValue<MeasuredStateData> state;
   std::atomic<Program*> offered{nullptr};
   std::atomic<bool> stop_requested{false};
+  // ARM_CANCEL's release (RobotInputs::release_generation): odd while the robot program drives.
+  std::atomic<std::uint32_t> release_generation{0};
   std::atomic<std::uint8_t> fault_bits{0};  // plan failed, bus error, overrun (set by the loop)
 
   SpscRing<StreamEvent, 1024> events;

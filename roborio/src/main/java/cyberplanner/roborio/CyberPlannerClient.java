@@ -1,5 +1,6 @@
 package cyberplanner.roborio;
 
+import cyberplanner.arm_cancel_t;
 import cyberplanner.arm_daemon_status_t;
 import cyberplanner.arm_goal_t;
 import cyberplanner.arm_plan_status_t;
@@ -13,22 +14,29 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Consumer;
 import lcm.lcm.LCM;
 import lcm.lcm.LCMDataInputStream;
+import lcm.lcm.LCMEncodable;
 import lcm.lcm.LCMSubscriber;
 
 /**
  * The robot's side of cyber-plannerd's LCM interface (docs/lcm.md): publishes ARM_STATE, sends
- * goals with a request id each and tracks their ARM_PLAN_STATUS, and watches ARM_DAEMON_STATUS
- * for the daemon's liveness and mode. Ages are measured with this machine's monotonic clock at
- * receipt (the daemon's utime is another machine's clock). Thread-safe; LCM delivers on its own
+ * goals with a request id each and tracks their ARM_PLAN_STATUS, cancels them on ARM_CANCEL, and
+ * watches ARM_DAEMON_STATUS for the daemon's liveness and mode. Ages are measured with this
+ * machine's monotonic clock at receipt (the daemon's utime is another machine's clock). It starts
+ * without a network and connects when one appears (LcmLink). Thread-safe; LCM delivers on its own
  * thread.
  */
 public final class CyberPlannerClient implements AutoCloseable {
-  /** The robot LAN: the URL of the installed /etc/cyber-planner/robot.toml (docs/roborio.md). */
-  public static final String ROBOT_LAN_URL = "udpm://239.255.76.67:7667?ttl=1";
+  /**
+   * The robot LAN: one hop, port 5810, inside the team-use range 5800-5810 that field rules allow
+   * (5800-5809 are Limelight's and PhotonVision's; docs/lcm.md).
+   */
+  public static final String ROBOT_LAN_URL = "udpm://239.255.76.67:5810?ttl=1";
+  /** How often a client without a route tries to open LCM again. */
+  public static final double RETRY_S = 1.0;
 
   private static final long MAX_OPEN_MOVES = 1000;
 
-  private final LCM lcm;
+  private final LcmLink link;
   private final Channels channels;
   private final AtomicLong nextRequestId;
   private final Map<Long, MoveHandle> moves = new ConcurrentHashMap<>();
@@ -37,19 +45,28 @@ public final class CyberPlannerClient implements AutoCloseable {
   private volatile Consumer<arm_setpoint_t> setpointListener;
   private final AtomicLong undecodable = new AtomicLong();
 
-  /** Opens LCM at url; request ids start at 1. */
-  public CyberPlannerClient(String url) throws IOException {
-    this(new LCM(url), Channels.DEFAULT, 1);
+  /** LCM at url, opened now or, without a route, later; request ids start at 1. Never throws. */
+  public CyberPlannerClient(String url) {
+    this(() -> new LCM(url), Channels.DEFAULT, 1);
+  }
+
+  /** An LCM instance already open (tests: memq://). */
+  public CyberPlannerClient(LCM lcm, Channels channels, long firstRequestId) {
+    this(() -> lcm, channels, firstRequestId);
   }
 
   /**
    * @param firstRequestId the first move's request id; the next ones count up (a robot program
    *     that restarts may start from, e.g., the time, so old answers are not taken for new moves)
    */
-  public CyberPlannerClient(LCM lcm, Channels channels, long firstRequestId) {
-    this.lcm = lcm;
+  public CyberPlannerClient(LcmLink.Opener opener, Channels channels, long firstRequestId) {
     this.channels = channels;
     this.nextRequestId = new AtomicLong(firstRequestId);
+    this.link = new LcmLink(opener, RETRY_S, System::nanoTime, this::subscribe);
+    link.get();
+  }
+
+  private void subscribe(LCM lcm) {
     lcm.subscribe(channels.planStatus(), subscriber(this::onPlanStatus));
     lcm.subscribe(channels.daemonStatus(), subscriber(this::onDaemonStatus));
     lcm.subscribe(channels.setpoint(), subscriber(this::onSetpoint));
@@ -99,10 +116,25 @@ public final class CyberPlannerClient implements AutoCloseable {
     state.arm_radps = armRadps;
     state.held_coral = heldCoral;
     state.held_algae = heldAlgae;
-    lcm.publish(channels.state(), state);
+    publish(channels.state(), state);
   }
 
-  /** Sends a goal with the next request id. A newer move replaces this one (it ends CANCELLED). */
+  public void publishState(ArmState s) {
+    publishState(s.elevatorM(), s.elevatorMps(), s.armRad(), s.armRadps(), s.heldCoral(), s.heldAlgae());
+  }
+
+  /** Publishes if the link is up (trying to bring it up first); false if it is not. */
+  private boolean publish(String channel, LCMEncodable message) {
+    LCM lcm = link.get();
+    if (lcm == null) return false;
+    lcm.publish(channel, message);
+    return true;
+  }
+
+  /**
+   * Sends a goal with the next request id. A newer move replaces this one (it ends CANCELLED).
+   * Without a link the move ends FAILED at once, with the link's error as its reason.
+   */
   public MoveHandle moveTo(Pose pose) {
     MoveHandle move = new MoveHandle(nextRequestId.getAndIncrement(), pose);
     // Moves the daemon never answered (it was gone) are forgotten after MAX_OPEN_MOVES newer ones.
@@ -116,8 +148,37 @@ public final class CyberPlannerClient implements AutoCloseable {
     goal.held_coral = pose.heldCoral();
     goal.held_algae = pose.heldAlgae();
     goal.scene_name = pose.sceneName();
-    lcm.publish(channels.goal(), goal);
+    if (!publish(channels.goal(), goal)) {
+      moves.remove(move.requestId());
+      move.update(MoveState.FAILED, "no LCM link: " + link.lastError(), 0);
+    }
     return move;
+  }
+
+  /** Asks the daemon to stop a move (ARM_CANCEL); it answers CANCELLED. False without a link. */
+  public boolean cancel(MoveHandle move, CancelAction action) {
+    return cancel(move.requestId(), action);
+  }
+
+  /**
+   * Manual override: the daemon stops streaming setpoints for whatever goal is active and reports
+   * mode RELEASED until the next goal (docs/roborio.md, "Manual override").
+   */
+  public boolean release() {
+    return cancel(-1, CancelAction.RELEASE);
+  }
+
+  private boolean cancel(long requestId, CancelAction action) {
+    arm_cancel_t cancel = new arm_cancel_t();
+    cancel.utime = System.currentTimeMillis() * 1000;
+    cancel.request_id = requestId;
+    cancel.action = action.wire();
+    return publish(channels.cancel(), cancel);
+  }
+
+  /** The LCM link: connected, or why not (docs/roborio.md, "Start-up without a network"). */
+  public LcmLink link() {
+    return link;
   }
 
   /** Seconds since the latest ARM_DAEMON_STATUS arrived; +infinity before the first. */
@@ -153,6 +214,6 @@ public final class CyberPlannerClient implements AutoCloseable {
 
   @Override
   public void close() {
-    lcm.close();
+    link.close();
   }
 }

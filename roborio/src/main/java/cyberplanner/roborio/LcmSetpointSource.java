@@ -3,33 +3,49 @@ package cyberplanner.roborio;
 import cyberplanner.arm_setpoint_t;
 import cyberplanner.roborio.can.DaemonMode;
 import cyberplanner.roborio.can.Setpoint;
-import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.function.LongSupplier;
 
 /**
- * Desktop simulation: the setpoints from ARM_SETPOINT instead of CAN, for robot code and
- * `cyber-plannerd --can none` on one machine. The daemon must publish every stream tick
- * (`setpoint_echo_full_rate = true`, docs/configuration.md); the message's mode stands in for the
- * status frame. Device numbers are not on LCM: the setpoints carry device -1.
+ * Desktop simulation, or a daemon on the robot controller itself: the setpoints from ARM_SETPOINT
+ * instead of CAN. The daemon must publish every stream tick (`setpoint_echo_full_rate = true`,
+ * docs/configuration.md); the message's mode stands in for the status frame. Every message is
+ * queued with its time of receipt (the daemon's utime is another clock), so the guard sees every
+ * sequence number whatever the poll rate, and a setpoint's age counts from its arrival, not from
+ * the poll. Device numbers are not on LCM: the setpoints carry device -1.
  */
 public final class LcmSetpointSource implements SetpointSource {
-  private final AtomicReference<arm_setpoint_t> latest = new AtomicReference<>();
-  private arm_setpoint_t applied;
+  private static final int MAX_QUEUED = 1000;
 
+  private record Received(arm_setpoint_t message, long micros) {}
+
+  private final ConcurrentLinkedQueue<Received> queue = new ConcurrentLinkedQueue<>();
+
+  /** @param clockMicros the robot loop's clock (the one ArmController is given), in microseconds */
+  public LcmSetpointSource(CyberPlannerClient client, LongSupplier clockMicros) {
+    client.setSetpointListener(message -> {
+      queue.add(new Received(message, clockMicros.getAsLong()));
+      // A loop that stopped polling must not grow the queue without bound: the oldest go.
+      while (queue.size() > MAX_QUEUED) queue.poll();
+    });
+  }
+
+  /** With the System.nanoTime clock, ArmController's default. */
   public LcmSetpointSource(CyberPlannerClient client) {
-    client.setSetpointListener(latest::set);
+    this(client, () -> System.nanoTime() / 1000);
   }
 
   @Override
   public void poll(SetpointGuard guard, long nowMicros) {
-    arm_setpoint_t message = latest.get();
-    if (message == null || message == applied) return;
-    applied = message;
-    DaemonMode mode = DaemonMode.fromWire(message.mode);
-    if (mode == null) return;
-    guard.onStatus(mode, nowMicros);
-    guard.onSetpoint(Joint.ELEVATOR, new Setpoint(-1, message.elevator_m, message.elevator_mps, message.elevator_volts,
-        message.elevator_sequence & 0xFF), nowMicros);
-    guard.onSetpoint(Joint.ARM, new Setpoint(-1, message.arm_rad, message.arm_radps, message.arm_volts,
-        message.arm_sequence & 0xFF), nowMicros);
+    for (Received r; (r = queue.poll()) != null; ) {
+      DaemonMode mode = DaemonMode.fromWire(r.message.mode);
+      if (mode == null) continue;
+      arm_setpoint_t m = r.message;
+      guard.onStatus(mode, r.micros);
+      guard.onSetpoint(Joint.ELEVATOR, new Setpoint(-1, m.elevator_m, m.elevator_mps, m.elevator_volts,
+          m.elevator_sequence & 0xFF), r.micros);
+      guard.onSetpoint(Joint.ARM, new Setpoint(-1, m.arm_rad, m.arm_radps, m.arm_volts, m.arm_sequence & 0xFF),
+          r.micros);
+    }
   }
 }

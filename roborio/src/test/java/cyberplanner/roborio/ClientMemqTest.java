@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import cyberplanner.arm_cancel_t;
 import cyberplanner.arm_daemon_status_t;
 import cyberplanner.arm_goal_t;
 import cyberplanner.arm_plan_status_t;
@@ -131,6 +132,35 @@ class ClientMemqTest {
     lcm.publish("ARM_DAEMON_STATUS", new arm_state_t());
     until(() -> client.undecodableMessages() == 1);
     client.close();
+  }
+
+  @Test
+  void cancelHoldsAMoveAndReleaseStopsWhateverIsActive() throws Exception {
+    LCM lcm = new LCM("memq://");
+    List<arm_cancel_t> cancels = collect(lcm, "ARM_CANCEL", arm_cancel_t::new);
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 40);
+    MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));
+    assertTrue(client.cancel(move, CancelAction.HOLD));
+    assertTrue(client.release());
+    until(() -> cancels.size() == 2);
+    assertEquals(40, cancels.get(0).request_id);
+    assertEquals(arm_cancel_t.ACTION_HOLD, cancels.get(0).action);
+    assertEquals(-1, cancels.get(1).request_id);
+    assertEquals(arm_cancel_t.ACTION_RELEASE, cancels.get(1).action);
+    status(lcm, 40, arm_plan_status_t.STATUS_CANCELLED, "cancelled by the robot");
+    assertEquals(MoveState.CANCELLED, move.await(2));
+    // The daemon's new mode 5 (manual override) decodes.
+    arm_daemon_status_t released = new arm_daemon_status_t();
+    released.mode = 5;
+    lcm.publish("ARM_DAEMON_STATUS", released);
+    until(() -> client.daemonMode() == DaemonMode.RELEASED);
+    assertFalse(DaemonMode.RELEASED.streams());
+    client.close();
+  }
+
+  @Test
+  void theRobotLanUrlUsesTheTeamUsePort5810() {
+    assertEquals("udpm://239.255.76.67:5810?ttl=1", CyberPlannerClient.ROBOT_LAN_URL);
   }
 
   @Test

@@ -9,7 +9,9 @@ public enum DaemonMode {
   HOLDING(1),
   MOVING(2),
   FAULT(3),
-  ROBOT_DISABLED(4);
+  ROBOT_DISABLED(4),
+  /** Manual override (arm_cancel_t ACTION_RELEASE): no setpoints until the next goal. */
+  RELEASED(5);
 
   private final int wire;
 

@@ -11,7 +11,7 @@ public final class FrcCanId {
   public static final int SETPOINT_API_CLASS = 1;
   public static final int STATUS_API_CLASS = 2;
   public static final int API_INDEX = 0;
-  /** The API ids WPILib's CAN class reads by: (api_class << 4) | api_index. */
+  /** The API ids WPILib's CAN class reads by: {@code (api_class << 4) | api_index}. */
   public static final int SETPOINT_API_ID = apiId(SETPOINT_API_CLASS, API_INDEX);
   public static final int STATUS_API_ID = apiId(STATUS_API_CLASS, API_INDEX);
 

@@ -4,9 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import cyberplanner.arm_setpoint_t;
+import cyberplanner.roborio.ArmController;
 import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.Channels;
 import cyberplanner.roborio.CyberPlannerClient;
+import cyberplanner.roborio.HoldFallback;
+import cyberplanner.roborio.JointGravity;
 import cyberplanner.roborio.Joint;
 import cyberplanner.roborio.LcmSetpointSource;
 import cyberplanner.roborio.MoveHandle;
@@ -14,9 +17,6 @@ import cyberplanner.roborio.MoveState;
 import cyberplanner.roborio.Pose;
 import cyberplanner.roborio.SetpointGuard;
 import cyberplanner.roborio.can.DaemonMode;
-import cyberplanner.roborio.wpilib.CyberArmSubsystem;
-import cyberplanner.roborio.wpilib.HoldFallback;
-import cyberplanner.roborio.wpilib.MoveToPoseCommand;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import lcm.lcm.LCM;
@@ -35,7 +35,7 @@ import org.junit.jupiter.api.TestMethodOrder;
 @Tag("daemon")
 @TestMethodOrder(MethodOrderer.OrderAnnotation.class)
 class DaemonIntegrationTest {
-  static final String URL = System.getProperty("cyber.lcm.url", "udpm://239.255.76.67:7667?ttl=0");
+  static final String URL = System.getProperty("cyber.lcm.url", "udpm://239.255.76.67:5810?ttl=0");
   static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
   static final double POSITION_TOLERANCE_M = 0.002;
   static final double ANGLE_TOLERANCE_RAD = 0.005;
@@ -126,9 +126,9 @@ class DaemonIntegrationTest {
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
       awaitDaemon(client);
       SetpointGuard guard = new SetpointGuard(0.05, 0.25);
-      CyberArmSubsystem subsystem = new CyberArmSubsystem(client, new LcmSetpointSource(client), mechanism.elevator,
-          mechanism.arm, mechanism::state, guard, new HoldFallback(mechanism.elevator, mechanism.arm),
-          () -> System.nanoTime() / 1000);
+      ArmController subsystem = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
+          mechanism.elevator, mechanism.arm, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
+          new HoldFallback(mechanism.elevator, mechanism.arm, JointGravity.NONE, JointGravity.NONE));
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
       watch.checkUnlessStarved("sim: start", attempt -> {
@@ -141,8 +141,7 @@ class DaemonIntegrationTest {
         // A stale ARM_STATE stops the move, or the hold at its end, where the state lagged behind.
         ArmState from = mechanism.state();
         watch.checkUnlessStarved("sim: " + goal, attempt -> {
-          MoveToPoseCommand command = subsystem.moveToCommand(goal);
-          command.initialize();
+          MoveHandle command = subsystem.moveTo(goal);
           double waited = 0;
           while (!command.isFinished() && waited < 30) {
             loop.runFor(LOOP_S);
@@ -154,13 +153,13 @@ class DaemonIntegrationTest {
           double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
           double armError = Math.abs(at.armRad() - goal.armRad());
           System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s, loops outside USE %d%n",
-              goal, command.move().durationS(), elevatorError, armError, subsystem.verdict(),
+              goal, command.durationS(), elevatorError, armError, subsystem.verdict(),
               loop.fallbackLoops - fallbackBefore);
           return () -> {
-            assertTrue(command.succeeded(), goal + ": " + command.move());
+            assertTrue(command.isDone(), goal + ": " + command);
             assertTrue(settled, goal + ": not " + SETTLE_S + " s in a row on the setpoints in " + SETTLE_WITHIN_S
                 + " s");
-            assertTrue(command.move().durationS() > 0.1, goal + ": no real move");  // restart() put it back
+            assertTrue(command.durationS() > 0.1, goal + ": no real move");  // restart() put it back
             assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
             assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
           };
@@ -169,6 +168,40 @@ class DaemonIntegrationTest {
       System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d, "
           + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.ELEVATOR),
           guard.lostFrames(Joint.ARM), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
+    }
+  }
+
+  @Test
+  @Order(3)
+  void aMoveCancelledMidwayEndsCancelledAndTheDaemonHolds() throws Exception {
+    // ARM_CANCEL with ACTION_HOLD (docs/lcm.md): the daemon brakes to rest and holds there.
+    SimulatedMechanism mechanism = new SimulatedMechanism(1.97, 5.17);  // where order 2 left it (L4)
+    try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 7000)) {
+      awaitDaemon(client);
+      ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
+          mechanism.elevator, mechanism.arm, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
+          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.elevator, mechanism.arm, JointGravity.NONE,
+              JointGravity.NONE));
+      StarvationWatch watch = StarvationWatch.fromDaemon();
+      RobotLoop loop = new RobotLoop(arm, mechanism, watch);
+      loop.runFor(1.0);
+      ArmState from = mechanism.state();
+      watch.checkUnlessStarved("cancel: L4 -> STOW", attempt -> {
+        MoveHandle move = arm.moveTo(Pose.of(0.20, 1.57));
+        for (int i = 0; i < 2000 && move.state() != MoveState.EXECUTING && !move.isFinished(); ++i) loop.runFor(LOOP_S);
+        loop.runFor(0.2);  // well into the move
+        MoveState before = move.state();
+        arm.cancel(move);
+        for (int i = 0; i < 400 && !move.isFinished(); ++i) loop.runFor(LOOP_S);
+        boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+        DaemonMode mode = client.daemonMode();
+        return () -> {
+          assertEquals(MoveState.EXECUTING, before, move.toString());
+          assertEquals(MoveState.CANCELLED, move.state(), move.toString());
+          assertTrue(settled, "no hold after the cancel");
+          assertEquals(DaemonMode.HOLDING, mode);
+        };
+      }, () -> restart(loop, mechanism, from, watch));
     }
   }
 
@@ -190,14 +223,14 @@ class DaemonIntegrationTest {
 
   /** The robot's main loop at 200 Hz in real time: subsystem.periodic(), then the model. */
   static final class RobotLoop {
-    final CyberArmSubsystem subsystem;
+    final ArmController subsystem;
     final SimulatedMechanism mechanism;
     final StarvationWatch watch;
     long next = System.nanoTime();
     long loops;
     long fallbackLoops;
 
-    RobotLoop(CyberArmSubsystem subsystem, SimulatedMechanism mechanism, StarvationWatch watch) {
+    RobotLoop(ArmController subsystem, SimulatedMechanism mechanism, StarvationWatch watch) {
       this.subsystem = subsystem;
       this.mechanism = mechanism;
       this.watch = watch;

@@ -1,7 +1,7 @@
 package cyberplanner.roborio.sim;
 
 import cyberplanner.roborio.ArmState;
-import cyberplanner.roborio.wpilib.JointOutput;
+import cyberplanner.roborio.JointOutput;
 
 /**
  * A desktop stand-in for the elevator and arm: each joint is a critically damped follower of the

@@ -1,7 +1,0 @@
-package cyberplanner.roborio.wpilib;
-
-/** A motor controller that takes a joint setpoint: position, velocity and feedforward voltage. */
-public interface JointOutput {
-  /** Position in m (elevator) or rad (arm), velocity in m/s or rad/s, feedforward in volts. */
-  void apply(double position, double velocity, double feedforwardVolts);
-}

@@ -1,0 +1,106 @@
+package cyberplanner.roborio;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import cyberplanner.arm_daemon_status_t;
+import cyberplanner.arm_plan_status_t;
+import cyberplanner.roborio.can.DaemonMode;
+import cyberplanner.roborio.can.Setpoint;
+import java.util.ArrayList;
+import java.util.List;
+import lcm.lcm.LCM;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The robot loop without WPILib: what reaches the joints, and the values ArmInputs gives the loop
+ * to log (docs/roborio.md, "Values to log").
+ */
+class ArmControllerTest {
+  long nowMicros = 1_000_000;
+  boolean enabled = true;
+  final List<double[]> elevatorRequests = new ArrayList<>();
+  final JointOutput elevator = (p, v, ff) -> elevatorRequests.add(new double[] {p, v, ff});
+  final JointOutput arm = (p, v, ff) -> {};
+  /** A source that delivers one fresh pair of setpoints per loop, sequence counting up. */
+  int sequence;
+  DaemonMode mode = DaemonMode.MOVING;
+  final SetpointSource source = (guard, now) -> {
+    guard.onStatus(mode, now);
+    guard.onSetpoint(Joint.ELEVATOR, new Setpoint(1, 0.5, 0.1, 0.4, sequence & 0xFF), now);
+    guard.onSetpoint(Joint.ARM, new Setpoint(2, 1.0, 0.0, 0.1, sequence & 0xFF), now);
+    sequence += 2;  // every other frame lost
+  };
+
+  ArmController controller(LCM lcm) {
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 9);
+    return new ArmController(new ArmController.Parts(client, source, elevator, arm,
+        () -> new ArmState(0.3, 0, 1.5, 0, false, false), () -> enabled, () -> nowMicros),
+        JointGravity.constant(0.37), JointGravity.cosine(0.21));
+  }
+
+  @Test
+  void inputsCarryTheLinkTheDaemonTheVerdictTheMoveAndTheCounters() throws Exception {
+    LCM lcm = new LCM("memq://");
+    ArmController controller = controller(lcm);
+    ArmInputs inputs = new ArmInputs();
+    controller.periodic();
+    controller.updateInputs(inputs);
+    assertTrue(inputs.linkConnected);
+    assertEquals("", inputs.linkError);
+    assertFalse(inputs.daemonAlive);
+    assertEquals("USE", inputs.verdict);
+    assertEquals(0, inputs.moveRequestId);
+
+    arm_daemon_status_t status = new arm_daemon_status_t();
+    status.mode = arm_daemon_status_t.MODE_MOVING;
+    lcm.publish("ARM_DAEMON_STATUS", status);
+    MoveHandle move = controller.moveTo(Pose.of(1.22, 5.69));
+    ClientMemqTest.status(lcm, 9, arm_plan_status_t.STATUS_EXECUTING, "");
+    ClientMemqTest.until(() -> move.state() == MoveState.EXECUTING && controller.client().daemonMode() != null);
+    controller.periodic();
+    ClientMemqTest.status(lcm, 9, arm_plan_status_t.STATUS_DONE, "");
+    move.await(2);
+    controller.periodic();
+    controller.updateInputs(inputs);
+    assertTrue(inputs.daemonAlive);
+    assertEquals("MOVING", inputs.daemonMode);
+    assertEquals(9, inputs.moveRequestId);
+    assertEquals("DONE", inputs.moveState);
+    assertEquals(0.5, inputs.moveDurationS);
+    assertEquals(2, inputs.moveStateChanges);  // EXECUTING, then DONE, as the loop saw them
+    assertEquals(2, inputs.elevatorLostFrames);  // one per loop after the first
+    assertEquals(2, inputs.armLostFrames);
+    controller.client().close();
+  }
+
+  @Test
+  void nothingIsAppliedWhileDisabledOrOverriddenAndAMoveEndsTheOverride() throws Exception {
+    LCM lcm = new LCM("memq://");
+    ArmController controller = controller(lcm);
+    enabled = false;
+    controller.periodic();
+    assertEquals(0, elevatorRequests.size());
+    enabled = true;
+    controller.periodic();
+    assertEquals(1, elevatorRequests.size());
+    assertEquals(0.4, elevatorRequests.get(0)[2]);  // the setpoint's own feedforward
+    controller.beginManualOverride();
+    controller.periodic();
+    ArmInputs inputs = new ArmInputs();
+    controller.updateInputs(inputs);
+    assertTrue(inputs.manualOverride);
+    assertEquals(1, elevatorRequests.size());
+    controller.moveTo(Pose.of(0.2, 1.57));
+    assertFalse(controller.isManualOverride());
+    controller.periodic();
+    assertEquals(2, elevatorRequests.size());
+    mode = DaemonMode.RELEASED;  // not streaming: the hold, against gravity
+    controller.periodic();
+    assertEquals(0.3, elevatorRequests.get(2)[0]);
+    assertEquals(0.0, elevatorRequests.get(2)[1]);
+    assertEquals(0.37, elevatorRequests.get(2)[2]);
+    controller.client().close();
+  }
+}

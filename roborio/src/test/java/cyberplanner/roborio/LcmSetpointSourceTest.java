@@ -1,0 +1,66 @@
+package cyberplanner.roborio;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import cyberplanner.arm_setpoint_t;
+import cyberplanner.roborio.SetpointGuard.Verdict;
+import java.util.List;
+import lcm.lcm.LCM;
+import org.junit.jupiter.api.Test;
+
+/**
+ * ARM_SETPOINT as the setpoint source (simulation, a daemon on the controller): every message
+ * reaches the guard whatever the poll rate, stamped when it arrived.
+ */
+class LcmSetpointSourceTest {
+  long nowMicros = 5_000_000;
+
+  static arm_setpoint_t setpoint(int sequence) {
+    arm_setpoint_t m = new arm_setpoint_t();
+    m.mode = arm_setpoint_t.MODE_MOVING;
+    m.elevator_m = 0.5;
+    m.arm_rad = 1.0;
+    m.elevator_sequence = (byte) sequence;
+    m.arm_sequence = (byte) sequence;
+    return m;
+  }
+
+  @Test
+  void aLossless200HzStreamPolledAt50HzLosesNoFrames() throws Exception {
+    LCM lcm = new LCM("memq://");
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
+    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    int sequence = 0;
+    for (int loop = 0; loop < 50; ++loop) {
+      for (int i = 0; i < 4; ++i, ++sequence) {
+        if (loop == 20 && i == 1) continue;  // one message lost
+        lcm.publish("ARM_SETPOINT", setpoint(sequence & 0xFF));
+      }
+      int last = (sequence - 1) & 0xFF;
+      ClientMemqTest.until(() -> {  // one poll per loop once the loop's messages are in
+        source.poll(guard, nowMicros);
+        return guard.latest(Joint.ELEVATOR) != null && guard.latest(Joint.ELEVATOR).sequence() == last;
+      });
+      nowMicros += 20_000;
+    }
+    assertEquals(1, guard.lostFrames(Joint.ELEVATOR));
+    assertEquals(1, guard.lostFrames(Joint.ARM));
+    client.close();
+  }
+
+  @Test
+  void aSetpointsAgeCountsFromItsArrivalNotFromThePoll() throws Exception {
+    LCM lcm = new LCM("memq://");
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
+    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    List<arm_setpoint_t> delivered = ClientMemqTest.collect(lcm, "ARM_SETPOINT", arm_setpoint_t::new);
+    lcm.publish("ARM_SETPOINT", setpoint(0));
+    ClientMemqTest.until(() -> delivered.size() == 1);  // LCM handed it to the client (first) and to us
+    nowMicros += 60_000;  // the loop's first poll after it arrived comes 60 ms later
+    source.poll(guard, nowMicros);
+    assertEquals(Verdict.SETPOINT_STALE, guard.verdict(nowMicros));
+    client.close();
+  }
+}

@@ -1,0 +1,35 @@
+package cyberplanner.roborio.wpilib2026;
+
+import edu.wpi.first.wpilibj2.command.Command;
+
+/**
+ * A team's own command on the joints (docs/roborio.md, "Manual override"): while it runs, the
+ * daemon is released (it stops streaming) and the subsystem applies neither setpoints nor its
+ * fallback; drive runs every loop and commands the motors. When it ends, the fallback holds where
+ * the joints are until the next goal.
+ */
+public class ManualOverrideCommand extends Command {
+  private final CyberArmSubsystem arm;
+  private final Runnable drive;
+
+  public ManualOverrideCommand(CyberArmSubsystem arm, Runnable drive) {
+    this.arm = arm;
+    this.drive = drive;
+    addRequirements(arm);
+  }
+
+  @Override
+  public void initialize() {
+    arm.controller().beginManualOverride();
+  }
+
+  @Override
+  public void execute() {
+    drive.run();
+  }
+
+  @Override
+  public void end(boolean interrupted) {
+    arm.controller().endManualOverride();
+  }
+}

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# system.roborio_vendordep_YEAR: a robot project that has only a copy of the Maven folder and the
+# vendordep of one WPILib year (docs/roborio.md, "Installing"), no CMake build tree: every
+# javaDependency resolves through the JSON's relative mavenUrls entry (with its pom, and for our
+# artifacts its -sources and -javadoc jars), and that year's example of the page compiles with
+# plain javac against those jars and the vendors' stand-ins alone, as bytecode 17.
+#   roborio_vendordep.sh BUILD_DIR YEAR STANDINS_JAR
+set -euo pipefail
+build=$1 year=$2 standins=$3
+src=$(cd "$(dirname "$0")/../.." && pwd)
+fail() { echo "FAIL: $*"; exit 1; }
+publish=$build/roborio/publish
+[[ -f $publish/CyberPlanner-$year.json ]] || fail "$publish/CyberPlanner-$year.json missing: build the cyber_roborio_maven target"
+[[ -f $standins ]] || fail "$standins missing"
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+project=$work/robot
+mkdir -p "$project/cyber-planner" "$project/vendordeps"
+cp -r "$publish/maven" "$project/cyber-planner/"
+cp "$publish/CyberPlanner-$year.json" "$project/vendordeps/"
+cp "$standins" "$work/standins.jar"
+
+# Resolve as GradleRIO does: a relative mavenUrls entry is a folder of the robot project.
+classpath=$(cd "$project" && python3 - "vendordeps/CyberPlanner-$year.json" "$year" <<'PY'
+import json, os, sys
+dep = json.load(open(sys.argv[1]))
+year = sys.argv[2]
+key = "frcYear" if year == "2026" else "wpilibYear"
+assert dep.get(key) == year, (key, dep.get(key))
+assert [r["uuid"] for r in dep["requires"]] == ["111e20f7-815e-48f8-9dd6-e675ce75b266"], dep["requires"]
+(url,) = dep["mavenUrls"]
+assert "://" not in url and not os.path.isabs(url), url
+jars = []
+for j in dep["javaDependencies"]:
+    base = os.path.join(url, *j["groupId"].split("."), j["artifactId"], j["version"], f'{j["artifactId"]}-{j["version"]}')
+    for suffix in [".jar", ".pom"] + (["-sources.jar", "-javadoc.jar"] if j["groupId"] == "org.cyberplanner" else []):
+        assert os.path.isfile(base + suffix), base + suffix
+    jars.append(os.path.abspath(base + ".jar"))
+assert any(j.endswith(f"cyber-planner-wpilib{year}-" + dep["version"] + ".jar") for j in jars), jars
+print(":".join(jars))
+PY
+) || fail "the $year vendordep does not resolve in the copied Maven folder"
+echo "vendordep $year: $(tr ':' '\n' <<<"$classpath" | wc -l) jars resolve in cyber-planner/maven"
+
+# The page's Java examples: the first is 2026, the second 2027.
+index=$([[ $year == 2026 ]] && echo 1 || echo 2)
+awk -v want="$index" '$0 == "```java" { n++; inside = (n == want); next } /^```/ { inside = 0 } inside' \
+  "$src/docs/roborio.md" >"$work/CyberArm.java"
+lines=$(grep -cv '^\(import \|$\)' "$work/CyberArm.java")
+[[ $lines -ge 5 && $lines -le 20 ]] || fail "the $year example has $lines lines besides imports, the page says about 20"
+echo "+ javac CyberArm.java ($year, $lines lines besides imports)"
+javac --release 17 -Xlint:all -Werror -d "$work/classes" -cp "$classpath:$work/standins.jar" "$work/CyberArm.java" ||
+  fail "the $year example of docs/roborio.md does not compile against the vendordep's jars"
+major=$(javap -v -cp "$work/classes" CyberArm | sed -n 's/.*major version: //p')
+[[ $major == 61 ]] || fail "class file major version $major, expected 61 (Java 17)"
+echo "roborio_vendordep $year: PASS"
