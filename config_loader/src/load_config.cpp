@@ -35,6 +35,9 @@ void readPlanner(TableReader p, planner::PlannerSettings& s) {
     TableReader g = p.table("search");
     s.search.potential_weight = g.number("potential_weight", kNonNegative);
     s.search.potential_range = g.number("potential_range", kPositive);
+    if (g.has("offset_band_clearances")) {
+      s.search.offset_band_clearances = g.number("offset_band_clearances", Bounds{0.5, 20.0});
+    }
     g.finish();
   }
   {

@@ -1,9 +1,14 @@
 #include "read_chain.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
+
+#include "read_drives.hpp"
 
 namespace cyber::config::detail {
 namespace {
@@ -86,8 +91,22 @@ void readPieces(TableReader pieces, planner::RobotModel& robot) {
     out.name = name;
     out.joint = jointOf(piece, robot);
     out.polygons = piece.polygons("polygons");
+    // Mass data count under rigid-body drives; the cg defaults to the mean of the vertices.
+    planner::LinkInertia inertia;
+    if (piece.has("mass_kg")) {
+      planner::Point2 mean = planner::Point2::Zero();
+      int count = 0;
+      for (const planner::ConvexPolygon& p : out.polygons) {
+        for (const planner::Point2& v : p.vertices()) {
+          mean += v;
+          ++count;
+        }
+      }
+      inertia = readInertia(piece, mean / std::max(count, 1));
+    }
     piece.finish();
     robot.pieces.push_back(std::move(out));
+    robot.piece_inertias.push_back(inertia);
   }
   if (static_cast<int>(robot.pieces.size()) > planner::HeldPieces::kMaxPieces) {
     pieces.fail("", "at most " + std::to_string(planner::HeldPieces::kMaxPieces) +
@@ -135,18 +154,10 @@ std::vector<PoseSet> readPoses(TableReader t, const planner::RobotModel& robot) 
   std::vector<PoseSet> sets;
   for (const std::string& name : t.keys()) {
     TableReader set = t.table(name);
-    PoseSet out{name, {}, {}};
-    if (name != "none") {
-      std::string rest = name;
-      while (!rest.empty()) {
-        const size_t plus = rest.find('+');
-        const std::string piece = rest.substr(0, plus);
-        const int index = robot.pieceIndex(piece);
-        if (index < 0) t.fail(name, "unknown game piece \"" + piece + "\" (sets are \"none\" or names joined by '+')");
-        out.pieces = out.pieces.with(index);
-        rest = plus == std::string::npos ? std::string() : rest.substr(plus + 1);
-      }
-    }
+    std::string error;
+    const std::optional<planner::HeldPieces> held = robot.piecesNamed(name, &error);
+    if (!held) t.fail(name, error + "; a set is \"none\" or piece names joined by '+'");
+    PoseSet out{name, *held, {}};
     for (const std::string& pose : set.keys()) {
       const Eigen::Vector2d q = set.vector2(pose);
       if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");

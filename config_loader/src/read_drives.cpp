@@ -28,25 +28,36 @@ planner::GravityModel gravityModel(TableReader& drive) {
   drive.fail("gravity", "expected \"constant\", \"cosine\", \"sine\" or \"none\", got \"" + gravity + "\"");
 }
 
-planner::DriveParams readDrive(TableReader drive, const std::map<std::string, planner::MotorParams>& motors) {
-  planner::DriveParams d;
+planner::DriveKind driveKind(TableReader& drive) {
   const std::string kind = drive.string("kind");
-  if (kind != "feedforward") drive.fail("kind", "expected \"feedforward\", got \"" + kind + "\"");
+  if (kind == "feedforward") return planner::DriveKind::kFeedforward;
+  if (kind == "rigid_body") return planner::DriveKind::kRigidBody;
+  drive.fail("kind", "expected \"feedforward\" or \"rigid_body\", got \"" + kind + "\"");
+}
+
+// The motors behind a joint, its Coulomb friction and its limits: what both kinds share.
+void readMotors(TableReader& drive, const std::map<std::string, planner::MotorParams>& motors,
+                planner::DriveParams& d) {
   const std::string motor = drive.string("motor");
   const auto it = motors.find(motor);
   if (it == motors.end()) drive.fail("motor", "unknown motor \"" + motor + "\" (define it under [motors])");
   d.motor = it->second;
   d.motor_count = static_cast<int>(drive.integer("count", 1, 16));
   d.gearing = drive.number("gearing", kPositive);
-  d.gravity = gravityModel(drive);
   d.kS_volts = drive.number("kS_volts", kNonNegative);
-  d.kG_volts = drive.number("kG_volts");
-  d.kV = drive.number("kV", kPositive);
-  d.kA = drive.number("kA", kPositive);
   d.voltage_limit_volts = drive.number("voltage_limit_volts", Bounds{0.0, d.motor.nominal_voltage_volts * 2.0, true});
   d.current_limit_amps = drive.number("current_limit_amps", Bounds{0.0, d.motor.stall_current_amps, true});
   d.velocity_limit = drive.optionalNumber("velocity_limit", kPositive);
   d.acceleration_limit = drive.optionalNumber("acceleration_limit", kPositive);
+}
+
+planner::DriveParams readFeedforward(TableReader& drive, const std::map<std::string, planner::MotorParams>& motors) {
+  planner::DriveParams d;
+  readMotors(drive, motors, d);
+  d.gravity = gravityModel(drive);
+  d.kG_volts = drive.number("kG_volts");
+  d.kV = drive.number("kV", kPositive);
+  d.kA = drive.number("kA", kPositive);
   // The mechanism must be able to hold itself against gravity within both limits.
   if (std::abs(d.kS_volts) + std::abs(d.kG_volts) >= d.voltage_limit_volts) {
     drive.fail("voltage_limit_volts", "must exceed kS_volts + |kG_volts| or the joint cannot hold against gravity");
@@ -54,11 +65,22 @@ planner::DriveParams readDrive(TableReader drive, const std::map<std::string, pl
   if ((std::abs(d.kS_volts) + std::abs(d.kG_volts)) / d.motor.resistanceOhms() >= d.current_limit_amps) {
     drive.fail("current_limit_amps", "too small to hold the joint against gravity (kG / R)");
   }
-  drive.finish();
   return d;
 }
 
 }  // namespace
+
+planner::LinkInertia readInertia(TableReader& table, const planner::Point2& default_cg_m) {
+  planner::LinkInertia body;
+  body.mass_kg = table.number("mass_kg", kNonNegative);
+  body.cg_m = default_cg_m;
+  if (table.has("cg_m")) {
+    // A number is the distance along the link's x axis; [x, y] a point of the link frame.
+    body.cg_m = table.isArray("cg_m") ? table.vector2("cg_m") : planner::Point2(table.number("cg_m"), 0.0);
+  }
+  body.moi_kgm2 = table.has("moi_kgm2") ? table.number("moi_kgm2", kNonNegative) : 0.0;
+  return body;
+}
 
 void readDrives(TableReader motor_table, TableReader drives, planner::RobotModel& robot) {
   std::map<std::string, planner::MotorParams> motors;
@@ -68,7 +90,17 @@ void readDrives(TableReader motor_table, TableReader drives, planner::RobotModel
   for (int j = 0; j < planner::kJointCount; ++j) {
     const std::string& joint = robot.joints[static_cast<size_t>(j)].name;
     if (!drives.has(joint)) drives.fail(joint, "missing: every joint needs a drive, keyed by its name");
-    robot.drives[static_cast<size_t>(j)] = readDrive(drives.table(joint), motors);
+    TableReader drive = drives.table(joint);
+    const planner::DriveKind kind = driveKind(drive);
+    if (j == 0) robot.drive_kind = kind;
+    if (kind != robot.drive_kind) drive.fail("kind", "both joints' drives must be of the same kind");
+    if (kind == planner::DriveKind::kFeedforward) {
+      robot.drives[static_cast<size_t>(j)] = readFeedforward(drive, motors);
+    } else {
+      readMotors(drive, motors, robot.drives[static_cast<size_t>(j)]);
+      robot.bodies[static_cast<size_t>(j)] = readInertia(drive, planner::Point2::Zero());
+    }
+    drive.finish();
   }
   drives.finish();
 }

@@ -47,7 +47,7 @@ Result<Trajectory> clearanceEscape(const RobotModel& model, const CollisionWorld
       return refuse("the way out of the clearance comes closer to the obstacle first");
     }
     auto line = std::make_shared<const StraightPath>(start, direction, length);
-    return solver.solve(line, model.driveModel(), 0.0);
+    return solver.solve(line, model.driveModel(world.pieces()), 0.0);
   }
   return refuse(
       fmt::format("no straight way out of the clearance within the joint range (distance {:.4f} m)", at_start.value));

@@ -39,7 +39,11 @@ double farthestFromFirstAxis(const ChainJoint& second, const Point2& p) {
 }  // namespace
 
 CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, double scene_offset_m)
-    : pieces_(pieces), scene_offset_m_(scene_offset_m), chain_(model.joints) {
+    : CollisionWorld(model, scene, pieces, JointRange{scene_offset_m, scene_offset_m}) {}
+
+
+CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, const JointRange& band)
+    : pieces_(pieces), chain_(model.joints) {
   double reach_first_m = 0.0;   // of joint 0's axis (links 0 and 1)
   double reach_second_m = 0.0;  // of joint 1's axis (link 1)
   auto add_robot = [&](int link, const std::vector<ConvexPolygon>& polygons) {
@@ -70,11 +74,10 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
   point_speed_[0] = chain_[0].type == JointType::kPrismatic ? 1.0 : reach_first_m;
   point_speed_[1] = chain_[1].type == JointType::kPrismatic ? 1.0 : reach_second_m;
 
-  auto add_obstacle = [&](const NamedPolygon& named, double shift_m) {
+  auto add_obstacle = [&](const NamedPolygon& named, const JointRange& shift_m) {
     if (named.polygon.empty()) return;
     Obstacle obstacle;
-    obstacle.vertices = named.polygon.vertices();
-    for (Point2& v : obstacle.vertices) v.x() += shift_m;
+    obstacle.vertices = named.polygon.sweptAlongX(shift_m.min, shift_m.max).vertices();
     obstacle.normals = outwardNormals(obstacle.vertices);
     obstacle.box_min = obstacle.box_max = obstacle.vertices.front();
     for (const Point2& v : obstacle.vertices) {
@@ -83,8 +86,8 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
     }
     obstacles_.push_back(std::move(obstacle));
   };
-  for (const NamedPolygon& named : scene.obstacles) add_obstacle(named, scene_offset_m);
-  for (const NamedPolygon& named : scene.fixed) add_obstacle(named, 0.0);
+  for (const NamedPolygon& named : scene.obstacles) add_obstacle(named, band);
+  for (const NamedPolygon& named : scene.fixed) add_obstacle(named, JointRange{});
 }
 
 bool CollisionWorld::pairDistance(size_t r, size_t o, const ChainPose& pose, double bound, PlacedPolygon& placed,

@@ -49,4 +49,27 @@ ConvexPolygon ConvexPolygon::fromVertices(std::vector<Point2> v, std::string* er
   return ConvexPolygon(std::move(v));
 }
 
+ConvexPolygon ConvexPolygon::sweptAlongX(double lo_m, double hi_m) const {
+  std::vector<Point2> points;
+  points.reserve(2 * vertices_.size());
+  for (const Point2& v : vertices_) points.emplace_back(v.x() + lo_m, v.y());
+  if (hi_m == lo_m) return ConvexPolygon(std::move(points));
+  for (const Point2& v : vertices_) points.emplace_back(v.x() + hi_m, v.y());
+  // Andrew's monotone chain, counter-clockwise, collinear points dropped.
+  std::sort(points.begin(), points.end(),
+            [](const Point2& a, const Point2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  std::vector<Point2> hull(2 * points.size());
+  size_t k = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 1]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 1] - hull[k - 2], points[i] - hull[k - 1]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return ConvexPolygon(std::move(hull));
+}
+
 }  // namespace cyber::planner

@@ -31,6 +31,14 @@ DriveModel::DriveModel(const JointChain& chain, const std::array<DriveParams, kJ
   }
 }
 
+DriveModel::DriveModel(const std::array<DriveParams, kJointCount>& drives, const ChainDynamics& dynamics)
+    : drives_(drives), dynamics_(dynamics) {}
+
+RigidBodyDrive DriveModel::rigidBodyDrive(int joint) const {
+  const DriveParams& d = drive(joint);
+  return RigidBodyDrive{d.motor, d.motor_count, d.gearing, d.kS_volts, d.voltage_limit_volts, d.current_limit_amps};
+}
+
 double DriveModel::gravityAngle(int joint, const JointVector& q) const {
   // Revolute joints turn every later link by axis + q; a prismatic joint turns nothing and travels
   // along its own axis in its parent's orientation (joint_chain.hpp).
@@ -47,6 +55,11 @@ double DriveModel::gravityAngle(int joint, const JointVector& q) const {
 
 JointVector DriveModel::volts(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const {
   JointVector out;
+  if (dynamics_) {
+    const JointVector load = dynamics_->torque(q, qdot, qddot);
+    for (int j = 0; j < kJointCount; ++j) out[j] = rigidBodyDrive(j).volts(load[j], qdot[j]);
+    return out;
+  }
   for (int j = 0; j < kJointCount; ++j) out[j] = drive(j).volts(gravityAngle(j, q), qdot[j], qddot[j]);
   return out;
 }
@@ -55,11 +68,21 @@ JointVector DriveModel::amps(const JointVector& v, const JointVector& qdot) cons
   return JointVector(drive(0).amps(v[0], qdot[0]), drive(1).amps(v[1], qdot[1]));
 }
 
-PathVoltage DriveModel::pathVoltage(int joint, const PathPoint& p) const {
+std::array<PathVoltage, kJointCount> DriveModel::pathVoltages(const PathPoint& p) const {
+  std::array<PathVoltage, kJointCount> out;
+  if (dynamics_) {
+    const PathTorque torque = dynamics_->alongPath(p.q, p.dq_ds, p.d2q_ds2);
+    for (int j = 0; j < kJointCount; ++j) out[static_cast<size_t>(j)] = pathVoltage(rigidBodyDrive(j), torque, p.dq_ds, j);
+    return out;
+  }
   // qdot = q' c and qddot = q' a + q'' b, so kV qdot + kA qddot = kA q' a + kA q'' b + kV q' c.
-  const DriveParams& d = drive(joint);
-  const double qp = p.dq_ds[joint];
-  return PathVoltage{d.kA * qp, d.kA * p.d2q_ds2[joint], d.kV * qp, d.kG_volts * d.gravityFactor(gravityAngle(joint, p.q))};
+  for (int j = 0; j < kJointCount; ++j) {
+    const DriveParams& d = drive(j);
+    const double qp = p.dq_ds[j];
+    out[static_cast<size_t>(j)] =
+        PathVoltage{d.kA * qp, d.kA * p.d2q_ds2[j], d.kV * qp, d.kG_volts * d.gravityFactor(gravityAngle(j, p.q))};
+  }
+  return out;
 }
 
 }  // namespace cyber::planner

@@ -60,11 +60,10 @@ double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives,
 // every interval, checked at the solver's step like the optimiser's result. kInfeasibleStart when
 // b_start cannot be stopped on `line` as asked, kSolverNotConverged when the check fails.
 Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& line, const RobotModel& model,
-                                  double b_start, int points, topp::Problem& problem, topp::LimitMargins& margins,
+                                  const DriveModel& drives, double b_start, int points, topp::Problem& problem, topp::LimitMargins& margins,
                                   std::vector<double>& profile, std::vector<double>& controllable) {
   using R = Result<Trajectory>;
   const double length = line->length();
-  const DriveModel drives = model.driveModel();
   topp::sampleGrid(*line, points, problem);
   margins.reset(problem.intervals());
   std::string error;
@@ -94,7 +93,7 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   if (!std::isfinite(speed) || speed <= 0.0) return R::failure(PlanStatus::kInvalidInput, "no velocity to stop from");
   const JointVector direction = velocity / speed;
   const double b_start = speed * speed;
-  const DriveModel drives = model.driveModel();
+  const DriveModel drives = model.driveModel(world.pieces());
   const double reach = std::min(distanceToLimits(model, start, direction), 10.0);
   const auto cannot_stop = [] {
     return R::failure(PlanStatus::kInfeasibleStart,
@@ -165,11 +164,11 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
   double length = hi;
   for (int attempt = 0; attempt <= kMaxRetries; ++attempt, length = std::min(reach, kRetryGrowth * length)) {
     auto line = std::make_shared<const StraightPath>(start, direction, length);
-    R braking = brakingProfile(line, model, b_start, points, problem, margins, profile, controllable);
+    R braking = brakingProfile(line, model, drives, b_start, points, problem, margins, profile, controllable);
     // The optimiser's refined limits when the profile's own check fails (docs/moving-starts.md).
     if (!braking.ok() && braking.status() == PlanStatus::kSolverNotConverged) {
       ToppReport report;
-      braking = solver.solve(line, model.driveModel(), b_start, &report);
+      braking = solver.solve(line, drives, b_start, &report);
       // A start clamped into the controllable set would not begin at v0: lengthen instead.
       if (braking.ok() && report.start_speed_ratio != 1.0) braking = cannot_stop();
     }

@@ -119,7 +119,7 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
     const auto topp_start = std::chrono::steady_clock::now();
     Plan plan;
     Result<Trajectory> trajectory =
-        solver.solve(path.path, model.driveModel(), speed * speed, &plan.solver);
+        solver.solve(path.path, model.driveModel(path.pieces), speed * speed, &plan.solver);
     topp_ms += msSince(topp_start);
     if (!trajectory) {
       if (i == 0) fallback = trajectory.error();
@@ -166,7 +166,7 @@ Result<Plan> timedPath(const RobotModel& model, const PathPlanner& paths, const 
 double estimatedSeconds(const RobotModel& model, const Result<std::vector<PlannedPath>>& found, const JointVector& v0) {
   if (!found || found.value().empty()) return std::numeric_limits<double>::infinity();
   const double speed = weightedNorm(v0, model.planner.metric);
-  return estimateDuration(*found.value().front().path, model.driveModel(), speed * speed,
+  return estimateDuration(*found.value().front().path, model.driveModel(found.value().front().pieces), speed * speed,
                           kEstimateGridPoints);
 }
 
@@ -294,8 +294,26 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
   MotionPlanner planner;
   planner.model_ = model;
   planner.path_planners_.reserve(model.scenes.size());
-  for (const Scene& scene : model.scenes) planner.path_planners_.emplace_back(model, scene);
+  const double band_width = model.planner.search.offset_band_clearances * model.clearance_m;
+  for (const Scene& scene : model.scenes) {
+    std::vector<PathPlanner>& bands = planner.path_planners_.emplace_back();
+    bands.emplace_back(model, scene);
+    const JointRange& range = scene.offset_range_m;
+    const double span = range.max - range.min;
+    if (span <= 0.0 || scene.obstacles.empty()) continue;
+    const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, 1e-3))));
+    for (int k = 0; k < count; ++k) {
+      bands.emplace_back(model, scene,
+                         JointRange{range.min + span * k / count, k + 1 == count ? range.max : range.min + span * (k + 1) / count});
+    }
+  }
   return planner;
+}
+
+std::vector<JointRange> MotionPlanner::offsetBands(int scene) const {
+  std::vector<JointRange> out;
+  for (const PathPlanner& band : path_planners_[static_cast<size_t>(scene)]) out.push_back(band.band());
+  return out;
 }
 
 Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
@@ -306,7 +324,22 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   if (!request.start_velocity.allFinite()) {
     return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
   }
-  const PathPlanner& paths = path_planners_[static_cast<size_t>(request.scene)];
+  // Offsets: the scene as drawn, or a band's grids with the worlds of the exact offset.
+  const Scene& scene = model_.scenes[static_cast<size_t>(request.scene)];
+  const double offset = request.scene_offset_m;
+  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, 1e-9)) {
+    return Result<Plan>::failure(PlanStatus::kInvalidInput,
+                                 fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m", offset,
+                                             scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
+  }
+  const std::vector<PathPlanner>& bands = path_planners_[static_cast<size_t>(request.scene)];
+  std::optional<PathPlanner> shifted;
+  if (offset != 0.0 && !scene.obstacles.empty()) {
+    auto band = std::find_if(bands.begin() + 1, bands.end(),
+                             [&](const PathPlanner& p) { return p.band().contains(offset, 1e-9); });
+    shifted = (band == bands.end() ? bands.back() : *band).atOffset(offset);
+  }
+  const PathPlanner& paths = shifted ? *shifted : bands.front();
   const bool moving = weightedNorm(request.start_velocity, model_.planner.metric) > 0.0;
   Result<Plan> chosen = inconsistent();
   if (!moving) {

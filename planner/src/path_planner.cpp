@@ -191,17 +191,37 @@ std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<i
 
 }  // namespace
 
-PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene) : model_(model), scene_(scene) {
+PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band)
+    : model_(model), scene_(scene), band_(band) {
   const int sets = model_.pieceSetCount();
+  auto grids = std::make_shared<Grids>();
   worlds_.reserve(static_cast<size_t>(sets));
-  grids_.reserve(static_cast<size_t>(sets));
-  grid_build_ms_.assign(static_cast<size_t>(sets), 0.0);
+  grids->grids.reserve(static_cast<size_t>(sets));
+  grids->build_ms.assign(static_cast<size_t>(sets), 0.0);
+  const double centre = 0.5 * (band.min + band.max);
   for (int set = 0; set < sets; ++set) {
     const Clock::time_point t0 = Clock::now();
-    worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set));
-    grids_.push_back(CSpaceGrid::build(worlds_.back(), model_));
-    grid_build_ms_[static_cast<size_t>(set)] = millisecondsSince(t0);
+    const HeldPieces pieces = HeldPieces::fromIndex(set);
+    // A band wider than one offset searches the world swept over it; its checks use one offset.
+    if (band.max > band.min) {
+      grids->grids.push_back(CSpaceGrid::build(CollisionWorld(model_, scene_, pieces, band), model_));
+      worlds_.emplace_back(model_, scene_, pieces, centre);
+    } else {
+      worlds_.emplace_back(model_, scene_, pieces, centre);
+      grids->grids.push_back(CSpaceGrid::build(worlds_.back(), model_));
+    }
+    grids->build_ms[static_cast<size_t>(set)] = millisecondsSince(t0);
   }
+  grids_ = std::move(grids);
+}
+
+PathPlanner PathPlanner::atOffset(double scene_offset_m) const {
+  PathPlanner out(*this);
+  out.worlds_.clear();
+  for (int set = 0; set < model_.pieceSetCount(); ++set) {
+    out.worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), scene_offset_m);
+  }
+  return out;
 }
 
 Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
@@ -221,7 +241,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
                       "goal " + poseText(model_, goal) + " is outside the joint limits: " + rangeText(model_));
   }
   const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
-  const CSpaceGrid& grid = grids_[static_cast<size_t>(pieces.index())];
+  const CSpaceGrid& grid = this->grid(pieces);
   const double clearance = model_.clearance_m;
   const JointVector& metric = model_.planner.metric;
   const SmoothingSettings& smoothing = model_.planner.smoothing;
@@ -236,6 +256,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
 
   const Clock::time_point t_search = Clock::now();
   PlannedPath out;
+  out.pieces = pieces;
   const double start_speed = weightedNorm(start_velocity, metric);
   if (weightedNorm(goal - start, metric) < kSamePose && start_speed == 0.0) {
     const std::vector<JointVector> single{start};
@@ -342,7 +363,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const bool done = smooth(polyline, "", out);
   std::vector<PlannedPath> candidates;
   if (done) candidates.push_back(out);
-  const DriveModel drives = model_.driveModel();
+  const DriveModel drives = model_.driveModel(pieces);
   const double b_start = start_speed * start_speed;
   // The shape search from `knots` (through which `fastest` runs), put first when it is faster.
   // `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid

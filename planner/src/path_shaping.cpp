@@ -21,7 +21,7 @@ class ShapeSearch {
               const CollisionWorld& world, const RobotModel& model, double b_start, int bumps, int grid_points)
       : world_(world),
         model_(model),
-        drives_(model.driveModel()),
+        drives_(model.driveModel(world.pieces())),
         start_velocity_(start_velocity),
         b_start_(b_start),
         bumps_(bumps),

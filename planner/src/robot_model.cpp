@@ -22,6 +22,38 @@ int RobotModel::jointIndex(const std::string& joint_name) const {
   return -1;
 }
 
+DriveModel RobotModel::driveModel(HeldPieces held) const {
+  if (drive_kind == DriveKind::kFeedforward) return DriveModel(joints, drives);
+  std::array<LinkInertia, kJointCount> moving = bodies;
+  for (size_t i = 0; i < pieces.size() && i < piece_inertias.size(); ++i) {
+    if (!held.holds(static_cast<int>(i))) continue;
+    LinkInertia& body = moving[static_cast<size_t>(pieces[i].joint)];
+    body = combine(body, piece_inertias[i]);
+  }
+  return DriveModel(drives, ChainDynamics(joints, moving));
+}
+
+std::optional<HeldPieces> RobotModel::piecesNamed(std::string_view names, std::string* error) const {
+  HeldPieces held;
+  if (names.empty() || names == "none") return held;
+  while (true) {
+    const size_t end = names.find_first_of(",+");
+    const std::string name(names.substr(0, end));
+    const int piece = pieceIndex(name);
+    if (piece < 0) {
+      if (error) {
+        std::string known;
+        for (const GamePiece& p : pieces) known += (known.empty() ? "" : ", ") + p.name;
+        *error = "unknown game piece \"" + name + "\" (this robot's: " + (known.empty() ? "none" : known) + ")";
+      }
+      return std::nullopt;
+    }
+    held = held.with(piece);
+    if (end == std::string_view::npos) return held;
+    names.remove_prefix(end + 1);
+  }
+}
+
 std::string RobotModel::pieceSetName(HeldPieces held) const {
   std::string out;
   for (size_t i = 0; i < pieces.size(); ++i) {

@@ -41,7 +41,7 @@ std::optional<JointProfile> ownProfile(const JointVector& from, const JointVecto
 std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const JointVector& to,
                                                  const CollisionWorld& world, const RobotModel& model, double beat_s,
                                                  const SynchronisedSettings& settings) {
-  const DriveModel drives = model.driveModel();
+  const DriveModel drives = model.driveModel(world.pieces());
   // StraightPath's length is in joint units here, so each joint's travel must be worth planning.
   constexpr double kMinTravel = 1e-3;  // m or rad
   for (int j = 0; j < kJointCount; ++j) {

@@ -181,9 +181,10 @@ bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& p
       const PathPoint& p = *samples[place];
       const bool pinned_at_rest = (place == 0 && k == 0 && problem.b_start == 0.0) ||
                                   (place == 1 && k + 1 == intervals && problem.b_end == 0.0);
+      const std::array<PathVoltage, kJointCount> voltages = drives.pathVoltages(p);
       for (int j = 0; j < kJointCount; ++j) {
         const DriveParams& d = drives.drive(j);
-        const PathVoltage pv = drives.pathVoltage(j, p);
+        const PathVoltage& pv = voltages[static_cast<size_t>(j)];
         const double qp = p.dq_ds[j];
         const double qpp = p.d2q_ds2[j];
         // Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and
@@ -205,7 +206,7 @@ bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& p
         }
         const double coulomb_lo = d.kS_volts * sign_lo;
         const double coulomb_hi = d.kS_volts * sign_hi;
-        const double gravity = pv.gravity_volts;
+        const double gravity = pv.offset;
         const auto joint = static_cast<std::int8_t>(j);
 
         // Voltage: V = kS sgn + gravity + alpha a + beta b + gamma c (DriveModel::pathVoltage), |V| <= Vmax.

@@ -52,7 +52,7 @@ void BM_ToppPublicMoves(benchmark::State& state) {
       ToppReport report;
       const auto t0 = std::chrono::steady_clock::now();
       const double c0 = bench::threadCpuMs();
-      const auto result = solver.solve(path, model.driveModel(), 0.0, &report);
+      const auto result = solver.solve(path, model.driveModel({}), 0.0, &report);
       cpu_ms.push_back(bench::threadCpuMs() - c0);
       ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
       refinements.push_back(report.refinements);
@@ -87,7 +87,7 @@ void BM_ToppAnalytic(benchmark::State& state) {
   const auto path = analyticPaths()[static_cast<size_t>(state.range(0))];
   ToppSolver solver;
   for (auto _ : state) {
-    auto result = solver.solve(path, testing::elevatorDrive(), testing::armDrive());
+    auto result = solver.solve(path, testing::referenceDrives());
     benchmark::DoNotOptimize(result);
     if (!result) state.SkipWithError(result.error().reason.c_str());
   }
@@ -100,8 +100,7 @@ void BM_Reachability(benchmark::State& state) {
   topp::LimitMargins margins;
   topp::sampleGrid(*path, 200, problem);
   margins.reset(problem.intervals());
-  const std::array<DriveParams, 2> drives{testing::elevatorDrive(), testing::armDrive()};
-  topp::buildRows(drives, margins, problem, nullptr);
+  topp::buildRows(testing::referenceDrives(), margins, problem, nullptr);
   problem.speed_bound = 1e3 / path->length();
   std::vector<double> b, c;
   for (auto _ : state) {
@@ -118,8 +117,7 @@ void BM_AugmentedLagrangianEvaluation(benchmark::State& state) {
   topp::LimitMargins margins;
   topp::sampleGrid(*path, static_cast<int>(state.range(0)), problem);
   margins.reset(problem.intervals());
-  const std::array<DriveParams, 2> drives{testing::elevatorDrive(), testing::armDrive()};
-  topp::buildRows(drives, margins, problem, nullptr);
+  topp::buildRows(testing::referenceDrives(), margins, problem, nullptr);
   problem.speed_bound = 1e3 / path->length();
   std::vector<double> b, c;
   topp::forwardBackward(problem, b, c);

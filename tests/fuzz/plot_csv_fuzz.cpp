@@ -11,9 +11,16 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > (1u << 20)) return 0;
   static cyber::fuzz::FuzzFile file;
+  // The reference robot's joint names, as its corpus's headers spell the columns.
+  static const cyber::planner::JointChain joints = [] {
+    cyber::planner::JointChain chain;
+    chain[0].name = "elevator";
+    chain[1].name = "arm";
+    return chain;
+  }();
   cyber::plot::TrajectoryPlotData plot;
   std::string error;
-  const bool ok = cyber::tools::readPlanCsv(file.write(data, size), plot, &error);
+  const bool ok = cyber::tools::readPlanCsv(file.write(data, size), joints, plot, &error);
   cyber::fuzz::checkPlotResult(ok, plot, error);
   return 0;
 }

@@ -25,21 +25,13 @@ const planner::PathPlanner& referencePathPlanner() {
 }
 
 planner::HeldPieces referencePieces(const std::string& names) {
-  planner::HeldPieces held;
-  if (names == "none") return held;
-  std::string rest = names;
-  while (!rest.empty()) {
-    const size_t plus = rest.find('+');
-    const std::string name = rest.substr(0, plus);
-    const int index = referenceModel().pieceIndex(name);
-    if (index < 0) {
-      std::fprintf(stderr, "the reference robot has no game piece \"%s\"\n", name.c_str());
-      std::abort();
-    }
-    held = held.with(index);
-    rest = plus == std::string::npos ? std::string() : rest.substr(plus + 1);
+  std::string error;
+  const auto held = referenceModel().piecesNamed(names, &error);
+  if (!held) {
+    std::fprintf(stderr, "%s\n", error.c_str());
+    std::abort();
   }
-  return held;
+  return *held;
 }
 
 }  // namespace cyber::test

@@ -44,6 +44,9 @@ int main(int argc, char** argv) {
     if (scene < 0) return fail(2, "unknown scene \"" + args->scene + "\"");
   }
 
+  const std::optional<planner::HeldPieces> pieces = robot.piecesNamed(args->pieces, &error);
+  if (!pieces) return fail(2, "--pieces: " + error);
+
   auto planner = planner::MotionPlanner::create(robot);
   if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().reason);
 
@@ -51,21 +54,22 @@ int main(int argc, char** argv) {
   request.start = args->from;
   request.goal = args->to;
   request.start_velocity = args->from_velocity;
-  request.pieces = args->pieces;
+  request.pieces = *pieces;
   request.scene = scene;
+  request.scene_offset_m = args->scene_offset_m;
   const auto plan = planner.value().plan(request);
   if (!plan) {
     return fail(planner::exitCodeOf(plan.status()),
                 std::string(planner::toString(plan.status())) + ": " + plan.error().reason);
   }
 
-  if (!args->csv_path.empty() && !tools::writeTrajectoryCsv(*plan.value().trajectory, args->csv_path, &error)) {
+  if (!args->csv_path.empty() && !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error)) {
     return fail(2, error);
   }
   if (!args->plot_path.empty()) {
     const std::string title = "cyber-plan " + poseText(args->from) + " -> " + poseText(args->to) +
-                              (args->pieces.coral ? " +coral" : "") + (args->pieces.algae ? " +algae" : "");
-    if (!plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, args->pieces, title), args->plot_path,
+                              (pieces->empty() ? "" : " +" + robot.pieceSetName(*pieces));
+    if (!plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, *pieces, title), args->plot_path,
                                    &error)) {
       return fail(2, error);
     }

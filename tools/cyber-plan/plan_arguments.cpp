@@ -6,15 +6,17 @@
 namespace cyber::tools {
 
 const char* planUsage() {
-  return "usage: cyber-plan [--config FILE] --from T,THETA --to T,THETA [--coral] [--algae]\n"
-         "                  [--from-velocity VT,VTHETA] [--scene NAME] [--csv FILE] [--json] [--plot FILE.png]\n"
-         "Plans one move of the elevator (T, m) and arm (THETA, rad) and prints a summary.\n"
+  return "usage: cyber-plan [--config FILE] --from Q0,Q1 --to Q0,Q1 [--pieces NAME,...]\n"
+         "                  [--from-velocity V0,V1] [--scene NAME] [--scene-offset METRES] [--csv FILE] [--json]\n"
+         "                  [--plot FILE.png]\n"
+         "Plans one move of the robot's two joints (Q0, Q1 in chain order: m or rad) and prints a summary.\n"
          "  --config FILE       robot description (default: the embedded config/reefscape-2025.toml)\n"
-         "  --coral, --algae    game pieces held during the move\n"
-         "  --from-velocity     start velocity (m/s, rad/s); default at rest\n"
+         "  --pieces NAME,...   game pieces held during the move, as the configuration names them\n"
+         "  --from-velocity     start velocity (joint units per second); default at rest\n"
          "  --scene NAME        obstacle scene of the configuration (default: its first scene)\n"
-         "  --csv FILE          the trajectory at 1 ms: t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,\n"
-         "                      arm_radps2,elevator_volts,arm_volts,elevator_amps,arm_amps\n"
+         "  --scene-offset M    shift of the scene's field elements in x (> 0: the robot further away)\n"
+         "  --csv FILE          the trajectory at 1 ms: t, then per joint NAME_pos,NAME_vel,NAME_acc,\n"
+         "                      NAME_volts,NAME_amps\n"
          "  --json              print one JSON object: duration, stage times, solver residuals, clearance\n"
          "  --plot FILE.png     draw the C-space with the path and the joint signals with their limits\n"
          "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";
@@ -41,18 +43,23 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
   bool have_to = false;
   cli::ArgumentParser parser;
   parser.option("--config", cli::store(&out.config_path));
-  parser.option("--from", [&, pair = jointPair(&out.from, "T,THETA")](const std::string& v) {
+  parser.option("--from", [&, pair = jointPair(&out.from, "Q0,Q1")](const std::string& v) {
     have_from = true;
     return pair(v);
   });
-  parser.option("--to", [&, pair = jointPair(&out.to, "T,THETA")](const std::string& v) {
+  parser.option("--to", [&, pair = jointPair(&out.to, "Q0,Q1")](const std::string& v) {
     have_to = true;
     return pair(v);
   });
-  parser.option("--from-velocity", jointPair(&out.from_velocity, "VT,VTHETA"));
-  parser.flag("--coral", [&] { out.pieces.coral = true; });
-  parser.flag("--algae", [&] { out.pieces.algae = true; });
+  parser.option("--from-velocity", jointPair(&out.from_velocity, "V0,V1"));
+  parser.option("--pieces", cli::store(&out.pieces));
   parser.option("--scene", cli::store(&out.scene));
+  parser.option("--scene-offset", [&](const std::string& value) -> std::string {
+    const auto offset = cli::parseNumber(value);
+    if (!offset) return "expects a finite number of metres, got '" + value + "'";
+    out.scene_offset_m = *offset;
+    return "";
+  });
   parser.option("--csv", cli::store(&out.csv_path));
   parser.option("--plot", cli::store(&out.plot_path));
   parser.flag("--json", [&] { out.json = true; });

@@ -14,8 +14,9 @@ struct PlanArguments {
   planner::JointVector from = planner::JointVector::Zero();
   planner::JointVector to = planner::JointVector::Zero();
   planner::JointVector from_velocity = planner::JointVector::Zero();
-  planner::HeldPieces pieces;
+  std::string pieces;  // names as --pieces gives them; resolved against the robot
   std::string scene;  // empty: the default scene
+  double scene_offset_m = 0.0;
   std::string csv_path;
   std::string plot_path;
   bool json = false;

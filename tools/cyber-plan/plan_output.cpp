@@ -26,19 +26,24 @@ void forEachSample(const planner::Trajectory& trajectory, F&& f) {
 
 }  // namespace
 
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string& path, std::string* error) {
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints, const std::string& path,
+                        std::string* error) {
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!file) {
     *error = path + ": cannot open for writing";
     return false;
   }
-  std::fputs(
-      "t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,"
-      "elevator_amps,arm_amps\n",
-      file.get());
+  std::fputs("t", file.get());
+  for (const planner::ChainJoint& joint : joints) {
+    for (const char* column : plot::kCsvColumns) std::fprintf(file.get(), ",%s", plot::csvColumn(joint.name, column).c_str());
+  }
+  std::fputs("\n", file.get());
   forEachSample(trajectory, [&](const planner::TrajectorySample& s) {
-    std::fprintf(file.get(), "%.6f,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.t, s.q[0], s.qdot[0],
-                 s.qddot[0], s.q[1], s.qdot[1], s.qddot[1], s.volts[0], s.volts[1], s.amps[0], s.amps[1]);
+    std::fprintf(file.get(), "%.6f", s.t);
+    for (int j = 0; j < planner::kJointCount; ++j) {
+      std::fprintf(file.get(), ",%.9g,%.9g,%.9g,%.9g,%.9g", s.q[j], s.qdot[j], s.qddot[j], s.volts[j], s.amps[j]);
+    }
+    std::fputs("\n", file.get());
   });
   if (std::ferror(file.get()) != 0) {
     *error = path + ": write failed";

@@ -4,14 +4,17 @@
 #include <string>
 
 #include "cyber/planner/motion_planner.hpp"
+#include "cyber/plot/trajectory_csv.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
 
 namespace cyber::tools {
 
 inline constexpr double kCsvStepS = 0.001;
 
-// Header and one row per 1 ms sample, plus the final sample at the exact duration.
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const std::string& path, std::string* error);
+// Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per 1 ms sample, plus
+// the final sample at the exact duration.
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints, const std::string& path,
+                        std::string* error);
 
 // One JSON object on one line.
 std::string planSummaryJson(const planner::Plan& plan);

@@ -74,11 +74,11 @@ int main(int argc, char** argv) {
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
-  sim.plants[cyber::planner::kElevator] =
-      cyber::plant::JointPlant::fromDrive(robot.elevator_drive, robot.range(0));
-  sim.plants[cyber::planner::kArm] = cyber::plant::JointPlant::fromDrive(robot.arm_drive, robot.range(1));
-  sim.gains[cyber::planner::kElevator] = options.elevator_gains;
-  sim.gains[cyber::planner::kArm] = options.arm_gains;
+  sim.plants[0] =
+      cyber::plant::JointPlant::fromDrive(robot.drive(0), robot.range(0));
+  sim.plants[1] = cyber::plant::JointPlant::fromDrive(robot.drive(1), robot.range(1));
+  sim.gains[0] = options.elevator_gains;
+  sim.gains[1] = options.arm_gains;
   sim.setpoint_timeout_s = options.setpoint_timeout_s;
 
   // Only the two setpoint ids reach us; the kernel drops everything else.

@@ -222,8 +222,8 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
     return;
   }
   const std::uint8_t device = decoded.value().device;
-  const int joint = device == setup_.elevator_device ? planner::kElevator
-                    : device == setup_.arm_device    ? planner::kArm
+  const int joint = device == setup_.elevator_device ? 0
+                    : device == setup_.arm_device    ? 1
                                                      : -1;
   if (joint < 0) {
     ++counters_.other_frames;
@@ -245,7 +245,7 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
     schedule_.motionStarted(++motions_, real_s);
     sayAt(real_s, "motion %d started (device %u)", motions_, device);
     armFaultTimer();
-  } else if (moving_ && !joint_moving_[planner::kElevator] && !joint_moving_[planner::kArm]) {
+  } else if (moving_ && !joint_moving_[0] && !joint_moving_[1]) {
     moving_ = false;
     say("at rest");
   }
@@ -282,10 +282,10 @@ void Runner::onStateTimer() {
     cyberplanner::arm_state_t msg{};
     msg.utime = realtimeMicros();
     published_utime = msg.utime;
-    msg.elevator_m = sim_.state(planner::kElevator).position;
-    msg.elevator_mps = sim_.state(planner::kElevator).velocity;
-    msg.arm_rad = sim_.state(planner::kArm).position;
-    msg.arm_radps = sim_.state(planner::kArm).velocity;
+    msg.elevator_m = sim_.state(0).position;
+    msg.elevator_mps = sim_.state(0).velocity;
+    msg.arm_rad = sim_.state(1).position;
+    msg.arm_radps = sim_.state(1).velocity;
     msg.held_coral = setup_.options.held_coral;
     msg.held_algae = setup_.options.held_algae;
     if (lcm_.publish(setup_.state_channel, &msg) == 0) {
@@ -369,7 +369,7 @@ void Runner::printSummary() const {
   say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
       "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
-      q[planner::kElevator], q[planner::kArm], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps,
+      q[0], q[1], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps,
       counters_.malformed, counters_.other_frames, counters_.bus_errors, counters_.read_failures,
       counters_.heartbeats_sent, counters_.disables_sent, counters_.write_failures, counters_.states_published,
       counters_.publish_failures, motions_, clock_.freezes(), clock_.frozenSeconds());

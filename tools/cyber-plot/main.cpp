@@ -31,7 +31,7 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
   std::vector<plot::NamedJointPose> poses;
   std::string set_name = "none";
   for (const config::PoseSet& set : config.poses) {
-    if (set.pieces.coral == pieces.coral && set.pieces.algae == pieces.algae) {
+    if (set.pieces == pieces) {
       set_name = set.name;
       for (const config::NamedPose& p : set.poses) poses.push_back({p.name, p.q});
     }
@@ -41,7 +41,9 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
     const planner::JointRange e = robot.range(0), a = robot.range(1);
     for (double f : {0.1, 0.5, 0.9}) {
       const planner::JointVector q(e.min + f * (e.max - e.min), a.min + f * (a.max - a.min));
-      poses.push_back({fmt::format("{:.2f} m, {:.2f} rad", q[0], q[1]), q});
+      poses.push_back({fmt::format("{:.2f} {}, {:.2f} {}", q[0], planner::unitName(robot.joints[0].type), q[1],
+                                   planner::unitName(robot.joints[1].type)),
+                       q});
     }
   }
   const std::string which =
@@ -62,7 +64,6 @@ int main(int argc, char** argv) {
   const tools::PlotArguments& args = parsed.value();
   const std::string& csv = args.csv_path;
   const std::string& out = args.out_path;
-  const planner::HeldPieces pieces = args.pieces;
 
   config::Config config;
   try {
@@ -73,17 +74,21 @@ int main(int argc, char** argv) {
   const planner::RobotModel& robot = config.robot;
   const int scene = args.scene.empty() ? 0 : robot.sceneIndex(args.scene);
   if (scene < 0) return fail("unknown scene \"" + args.scene + "\"");
-  const std::string channel = args.channel.empty() ? config.daemon.channels.trajectory : args.channel;
-  const std::string pieces_label = std::string(pieces.coral ? " +coral" : "") + (pieces.algae ? " +algae" : "");
-  const std::string scene_label = " (scene " + robot.scenes[static_cast<size_t>(scene)].name + ")";
   std::string error;
+  const std::optional<planner::HeldPieces> held = robot.piecesNamed(args.pieces, &error);
+  if (!held) return fail("--pieces: " + error);
+  const planner::HeldPieces pieces = *held;
+  const std::string channel = args.channel.empty() ? config.daemon.channels.trajectory : args.channel;
+  const std::string pieces_label = pieces.empty() ? "" : " +" + robot.pieceSetName(pieces);
+  const std::string scene_label = " (scene " + robot.scenes[static_cast<size_t>(scene)].name + ")";
 
   if (args.preview()) return previewConfig(config, scene, pieces, args.config_path, out);
   if (args.at) {
     const planner::JointVector q = *args.at;
     if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
     const std::string title =
-        fmt::format("{} at {:.3f} m, {:.3f} rad{}{}", robot.name, q[0], q[1], pieces_label, scene_label);
+        fmt::format("{} at {:.3f} {}, {:.3f} {}{}{}", robot.name, q[0], planner::unitName(robot.joints[0].type), q[1],
+                    planner::unitName(robot.joints[1].type), pieces_label, scene_label);
     if (!plot::renderWorldPng(robot, scene, pieces, q, title, out, &error)) return fail(error);
     return 0;
   }
@@ -91,7 +96,7 @@ int main(int argc, char** argv) {
   plot::TrajectoryPlotData data;
   const bool ok = csv.empty()
                       ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
-                      : tools::readPlanCsv(csv, data, &error);
+                      : tools::readPlanCsv(csv, robot.joints, data, &error);
   if (!ok) return fail(error);
   if (data.title.empty()) data.title = "trajectory " + csv;
   data.title += pieces_label;

@@ -7,10 +7,10 @@ namespace cyber::tools {
 
 const char* plotUsage() {
   return "usage: cyber-plot [--config FILE] (--csv FILE | --lcm-log FILE [--channel NAME] [--request-id N])\n"
-         "                  [--coral] [--algae] [--scene NAME] --out FILE.png\n"
-         "       cyber-plot --world [--config FILE] (--at ELEVATOR_M,ARM_RAD | --csv FILE | --lcm-log FILE ...)\n"
-         "                  [--frames N] [--animation FILE.png] [--coral] [--algae] [--scene NAME] --out FILE.png\n"
-         "       cyber-plot --config FILE [--coral] [--algae] [--scene NAME] --out FILE.png\n"
+         "                  [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
+         "       cyber-plot --world [--config FILE] (--at Q0,Q1 | --csv FILE | --lcm-log FILE ...)\n"
+         "                  [--frames N] [--animation FILE.png] [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
+         "       cyber-plot --config FILE [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
          "Draws the C-space (obstacle region of the held pieces) with the path, and position, velocity,\n"
          "voltage and current against time with the limits, like cyber-plan --plot.\n"
          "  --csv FILE        a trajectory written by cyber-plan --csv\n"
@@ -27,8 +27,7 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
   PlotArguments out;
   cli::ArgumentParser parser;
   parser.flag("--world", [&] { out.world = true; });
-  parser.flag("--coral", [&] { out.pieces.coral = true; });
-  parser.flag("--algae", [&] { out.pieces.algae = true; });
+  parser.option("--pieces", cli::store(&out.pieces));
   parser.option("--config", cli::store(&out.config_path));
   parser.option("--csv", cli::store(&out.csv_path));
   parser.option("--lcm-log", cli::store(&out.log_path));
@@ -48,7 +47,7 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
   });
   parser.option("--at", [&](const std::string& value) -> std::string {
     const auto q = cli::parseNumberPair(value);
-    if (!q) return "expects ELEVATOR_M,ARM_RAD, got '" + value + "'";
+    if (!q) return "expects Q0,Q1 (the two joints' positions), got '" + value + "'";
     out.at = planner::JointVector((*q)[0], (*q)[1]);
     out.at_text = value;
     return "";

@@ -24,7 +24,7 @@ struct PlotArguments {
   std::string at_text;                     // --at as given, for messages
   bool world = false;
   int frames = 6;
-  planner::HeldPieces pieces;
+  std::string pieces;  // --pieces as given; resolved against the robot
   bool help = false;
 
   // Only --config (no --world, --csv or --lcm-log): a preview of the description.

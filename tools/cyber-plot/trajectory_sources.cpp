@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyber/plot/trajectory_csv.hpp"
 #include "cyberplanner/arm_trajectory_t.hpp"
 
 namespace cyber::tools {
@@ -24,7 +25,8 @@ std::vector<std::string> split(const std::string& line) {
 
 }  // namespace
 
-bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::string* error) {
+bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plot::TrajectoryPlotData& data,
+                 std::string* error) {
   std::ifstream in(path);
   if (!in) {
     *error = path + ": cannot open";
@@ -35,11 +37,14 @@ bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::s
   const std::vector<std::string> header = split(line);
   std::map<std::string, size_t> column;
   for (size_t i = 0; i < header.size(); ++i) column[header[i]] = i;
-  const char* needed[] = {"t",         "elevator_m",    "elevator_mps", "arm_rad", "arm_radps", "elevator_volts",
-                          "arm_volts", "elevator_amps", "arm_amps"};
-  for (const char* name : needed) {
+  // Per joint: position, velocity, volts, amps (the plot needs no acceleration).
+  std::vector<std::string> needed{"t"};
+  for (const planner::ChainJoint& joint : joints) {
+    for (const char* c : {"pos", "vel", "volts", "amps"}) needed.push_back(plot::csvColumn(joint.name, c));
+  }
+  for (const std::string& name : needed) {
     if (!column.contains(name)) {
-      *error = path + ": no column \"" + name + "\" (expected cyber-plan --csv output)";
+      *error = path + ": no column \"" + name + "\" (expected cyber-plan --csv output for this robot)";
       return false;
     }
   }
@@ -48,27 +53,27 @@ bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::s
     ++row;
     if (line.empty()) continue;
     const std::vector<std::string> cells = split(line);
-    auto value = [&](const char* name, double* out) {
+    auto value = [&](const std::string& name, double* out) {
       const size_t i = column[name];
       char* end = nullptr;
       if (i >= cells.size()) return false;
       *out = std::strtod(cells[i].c_str(), &end);
       return end != cells[i].c_str() && *end == '\0' && std::isfinite(*out);
     };
-    double t, e, ev, a, av, evo, avo, ea, aa;
-    if (!value("t", &t) || !value("elevator_m", &e) || !value("elevator_mps", &ev) || !value("arm_rad", &a) ||
-        !value("arm_radps", &av) || !value("elevator_volts", &evo) || !value("arm_volts", &avo) ||
-        !value("elevator_amps", &ea) || !value("arm_amps", &aa)) {
-      *error = path + ":" + std::to_string(row) + ": not a row of finite numbers";
-      return false;
+    double values[1 + 4 * planner::kJointCount];
+    for (size_t i = 0; i < needed.size(); ++i) {
+      if (!value(needed[i], &values[i])) {
+        *error = path + ":" + std::to_string(row) + ": not a row of finite numbers";
+        return false;
+      }
     }
-    data.time_s.push_back(t);
-    const double values[2][4] = {{e, ev, evo, ea}, {a, av, avo, aa}};
-    for (int j = 0; j < 2; ++j) {
-      data.joints[j].position.push_back(values[j][0]);
-      data.joints[j].velocity.push_back(values[j][1]);
-      data.joints[j].volts.push_back(values[j][2]);
-      data.joints[j].amps.push_back(values[j][3]);
+    data.time_s.push_back(values[0]);
+    for (int j = 0; j < planner::kJointCount; ++j) {
+      const double* joint = values + 1 + 4 * j;
+      data.joints[j].position.push_back(joint[0]);
+      data.joints[j].velocity.push_back(joint[1]);
+      data.joints[j].volts.push_back(joint[2]);
+      data.joints[j].amps.push_back(joint[3]);
     }
   }
   if (data.time_s.empty()) {

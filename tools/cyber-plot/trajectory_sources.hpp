@@ -10,7 +10,8 @@
 namespace cyber::tools {
 
 // Fills time and joint series from a CSV with cyber-plan's columns; sets `error` on failure.
-bool readPlanCsv(const std::string& path, plot::TrajectoryPlotData& data, std::string* error);
+bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plot::TrajectoryPlotData& data,
+                 std::string* error);
 
 // Fills them from the last ARM_TRAJECTORY message on `channel` in an LCM log (or the one with
 // `request_id`). The message carries volts, not amps: amps come from the drives' motor model.

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace cyber::daemon {
 
@@ -56,7 +57,17 @@ planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::
   ValidGoal valid;
   valid.request_id = goal.request_id;
   valid.q = planner::JointVector(goal.elevator_m, goal.arm_rad);
-  valid.pieces = planner::HeldPieces{goal.held_coral, goal.held_algae};
+  // The message's two held flags name the first configuration's pieces until ARM_GOAL carries
+  // names (docs/lcm.md).
+  for (const auto& [held, name] : {std::pair{goal.held_coral, "coral"}, std::pair{goal.held_algae, "algae"}}) {
+    if (!held) continue;
+    const int piece = robot.pieceIndex(name);
+    if (piece < 0) {
+      return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
+                                                 fmt::format("the robot has no game piece named {}", name));
+    }
+    valid.pieces = valid.pieces.with(piece);
+  }
   if (!goal.scene_name.empty()) {
     valid.scene = robot.sceneIndex(goal.scene_name);
     if (valid.scene < 0) {

@@ -6,8 +6,8 @@ JointSetpoints HoldModel::hold(const JointVector& q) const {
   JointSetpoints out;
   out.position = q;
   out.velocity.setZero();
-  // volts(q, 0, 0) = kG * g(q): kS * sgn(0) vanishes at rest.
-  out.volts = JointVector(elevator_.volts(q[planner::kElevator], 0.0, 0.0), arm_.volts(q[planner::kArm], 0.0, 0.0));
+  // At rest only gravity is left: kS * sgn(0) vanishes.
+  out.volts = drives_.volts(q, JointVector::Zero(), JointVector::Zero());
   return out;
 }
 

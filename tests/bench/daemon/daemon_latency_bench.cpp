@@ -28,6 +28,7 @@
 #include "cyberplanner/arm_plan_status_t.hpp"
 #include "cyberplanner/arm_state_t.hpp"
 #include "public_moves.hpp"
+#include "reference_model.hpp"
 
 namespace {
 
@@ -85,8 +86,8 @@ class Rig {
     goal.request_id = id;
     goal.elevator_m = q[0];
     goal.arm_rad = q[1];
-    goal.held_coral = pieces.coral;
-    goal.held_algae = pieces.algae;
+    goal.held_coral = pieces.holds(cyber::test::referenceModel().pieceIndex("coral"));
+    goal.held_algae = pieces.holds(cyber::test::referenceModel().pieceIndex("algae"));
     onLoop([&] { DaemonProbe::lcm(*daemon_).publish("ARM_GOAL", &goal); });
   }
 

@@ -30,18 +30,29 @@ TEST(LoadConfig, EmbeddedDefaultIsTheReferenceRobot) {
   const planner::RobotModel& r = config.robot;
   EXPECT_EQ(r.name, "reefscape-2025");
   EXPECT_DOUBLE_EQ(r.clearance_m, 0.03);
-  EXPECT_DOUBLE_EQ(r.elevator_range_m.max, 2.0);
-  EXPECT_DOUBLE_EQ(r.arm_range_rad.max, 6.108652381980153);
-  EXPECT_NEAR(r.rail.tilt_rad, 80.0 * std::numbers::pi / 180.0, 1e-15);
-  EXPECT_EQ(r.rail.base_m, planner::Point2(-0.4, 0.2));
-  ASSERT_EQ(r.geometry.arm.size(), 1u);
-  EXPECT_EQ(r.geometry.arm[0].size(), 4);
-  EXPECT_EQ(r.geometry.algae[0].size(), 8);
+  EXPECT_DOUBLE_EQ(r.range(0).max, 2.0);
+  EXPECT_DOUBLE_EQ(r.range(1).max, 6.108652381980153);
+  EXPECT_EQ(r.joints[0].name, "elevator");
+  EXPECT_EQ(r.joints[0].type, planner::JointType::kPrismatic);
+  EXPECT_NEAR(r.joints[0].axis_rad, 80.0 * std::numbers::pi / 180.0, 1e-15);
+  EXPECT_EQ(r.joints[0].origin_m, planner::Point2(-0.4, 0.2));
+  EXPECT_EQ(r.joints[1].name, "arm");
+  EXPECT_EQ(r.joints[1].type, planner::JointType::kRevolute);
+  ASSERT_EQ(r.links.size(), 1u);
+  EXPECT_EQ(r.links[0].joint, 1);
+  ASSERT_EQ(r.links[0].polygons.size(), 1u);
+  EXPECT_EQ(r.links[0].polygons[0].size(), 4);
+  ASSERT_GE(r.pieceIndex("algae"), 0);
+  ASSERT_GE(r.pieceIndex("coral"), 0);
+  EXPECT_EQ(r.pieces[static_cast<size_t>(r.pieceIndex("algae"))].polygons[0].size(), 8);
   ASSERT_EQ(r.scenes.size(), 2u);
   EXPECT_EQ(r.scenes[0].name, "reef");
-  EXPECT_EQ(r.scenes[0].obstacles.size(), 8u);
+  EXPECT_EQ(r.scenes[0].obstacles.size(), 6u);
+  EXPECT_EQ(r.scenes[0].fixed.size(), 2u);
+  EXPECT_DOUBLE_EQ(r.scenes[0].offset_range_m.max, 0.3);
+  EXPECT_EQ(r.scenes[1].obstacles.size(), 0u);
   // Robot polygons are clockwise in the file; the model stores them counter-clockwise.
-  const auto& v = r.geometry.arm[0].vertices();
+  const auto& v = r.links[0].polygons[0].vertices();
   double twice_area = 0;
   for (size_t i = 0; i < v.size(); ++i) {
     const auto& a = v[i];
@@ -50,13 +61,13 @@ TEST(LoadConfig, EmbeddedDefaultIsTheReferenceRobot) {
   }
   EXPECT_NEAR(twice_area, 2 * 0.45 * 0.15, 1e-12);  // trapezoid of heights 0.1 and 0.2 over 0.45 m
 
-  const planner::DriveParams& e = r.elevator_drive;
+  const planner::DriveParams& e = r.drive(0);
   EXPECT_EQ(e.motor_count, 2);
   EXPECT_DOUBLE_EQ(e.gearing, 200.0);
   EXPECT_DOUBLE_EQ(e.kV, 3.93);
   EXPECT_DOUBLE_EQ(e.current_limit_amps, 80.0);
   EXPECT_EQ(e.gravity, planner::GravityModel::kConstant);
-  EXPECT_EQ(r.arm_drive.gravity, planner::GravityModel::kCosine);
+  EXPECT_EQ(r.drive(1).gravity, planner::GravityModel::kCosine);
   // Derived motor constants of the Kraken X60 FOC as WPILib gives them.
   EXPECT_NEAR(e.motor.resistanceOhms(), 12.0 / 483.0, 1e-15);
   EXPECT_NEAR(e.motor.kvRadpsPerVolt(), (5800.0 * 2 * std::numbers::pi / 60.0) / (12.0 - 2.0 * 12.0 / 483.0), 1e-9);
@@ -107,6 +118,23 @@ TEST(LoadConfig, TheCancelChannelIsOptionalAndCanBeRenamed) {
       ConfigError);
 }
 
+// A description in the format before joint chains fails naming the keys that replace its own.
+TEST(LoadConfig, TheFormatBeforeChainsIsRefusedNamingTheNewKeys) {
+  const std::string old_format =
+      "name = \"old\"\nclearance_m = 0.03\n[joints.elevator]\nmin_m = 0.0\nmax_m = 2.0\ntilt_deg = 80.0\n"
+      "base_m = [-0.4, 0.2]\n[joints.arm]\nmin_rad = 0.0\nmax_rad = 6.1\n[robot]\narm = [[[0, 0], [1, 0], [0, 1]]]\n";
+  try {
+    (void)parseConfig(old_format, "old.toml");
+    FAIL() << "the old format was accepted";
+  } catch (const ConfigError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(e.key(), "joints");
+    for (const char* key : {"[[joints]]", "type", "origin_m", "axis_deg", "[links.NAME]", "[pieces.NAME]"}) {
+      EXPECT_NE(message.find(key), std::string::npos) << key << " not named: " << message;
+    }
+  }
+}
+
 TEST(LoadConfig, MissingFileIsAnError) {
   try {
     (void)loadConfigFile("/nonexistent/robot.toml");
@@ -145,13 +173,28 @@ const BadCase kBadCases[] = {
     {"UnknownTopKey", "clearance_m = 0.03", "clearance_m = 0.03\nclearence = 1", "clearence", "unknown key"},
     {"UnknownNestedKey", "kS_volts = 0.15", "kS_volts = 0.15\nks = 0.1", "drives.elevator.ks", "unknown key"},
     {"MissingKey", "clearance_m = 0.03\n", "", "clearance_m", "missing key"},
-    {"MissingNestedKey", "tilt_deg = 80.0\n", "", "joints.elevator.tilt_deg", "missing key"},
+    {"MissingNestedKey", "axis_deg = 80.0\n", "", "joints[0].axis_deg", "missing key"},
     {"WrongType", "clearance_m = 0.03", "clearance_m = \"thin\"", "clearance_m", "expected a number"},
     {"WrongTypeInteger", "count = 2", "count = 2.5", "drives.elevator.count", "expected an integer"},
     {"NotANumber", "kV = 3.93", "kV = nan", "drives.elevator.kV", "finite"},
-    {"Infinite", "max_m = 2.0", "max_m = inf", "joints.elevator.max_m", "finite"},
+    {"Infinite", "max = 2.0", "max = inf", "joints[0].max", "finite"},
     {"NegativeClearance", "clearance_m = 0.03", "clearance_m = -0.01", "clearance_m", "out of range"},
-    {"InvertedRange", "max_m = 2.0", "max_m = -1.0", "joints.elevator.max_m", "out of range"},
+    {"InvertedRange", "max = 2.0", "max = -1.0", "joints[0].max", "out of range"},
+    {"UnknownJointType", "type = \"prismatic\"", "type = \"telescopic\"", "joints[0].type", "expected \"prismatic\""},
+    {"OneJoint", "[[joints]]\nname = \"arm\"", "[joints_removed]\nname = \"arm\"", "joints", "exactly two"},
+    {"SameJointNames", "name = \"arm\"\ntype", "name = \"elevator\"\ntype", "joints[1].name", "different names"},
+    {"UnknownJointOfLink", "[links.arm]\njoint = \"arm\"", "[links.arm]\njoint = \"wrist\"", "links.arm.joint",
+     "unknown joint \"wrist\""},
+    {"UnknownJointOfPiece", "[pieces.coral]\njoint = \"arm\"", "[pieces.coral]\njoint = \"claw\"",
+     "pieces.coral.joint", "unknown joint"},
+    {"PieceNameWithPlus", "[pieces.coral]", "[pieces.\"co+ral\"]", "pieces.co+ral", "'+'"},
+    {"MissingDrive", "[drives.arm]", "[drives.wrist]", "drives.arm", "every joint needs a drive"},
+    {"UnknownDriveKind", "kind = \"feedforward\"\nmotor = \"kraken_x60_foc\"\ncount = 1",
+     "kind = \"magic\"\nmotor = \"kraken_x60_foc\"\ncount = 1", "drives.arm.kind", "expected \"feedforward\""},
+    {"OffsetRangeWithoutZero", "offset_range_m = [0.0, 0.3]", "offset_range_m = [0.1, 0.3]", "scenes[0].offset_range_m",
+     "min <= 0 <= max"},
+    {"UnknownFixedObstacle", "fixed = [\"drivetrain_keepout\", \"floor\"]\noffset",
+     "fixed = [\"drivetrain_keepout\", \"flor\"]\noffset", "scenes[0].fixed", "unknown obstacle \"flor\""},
     {"ZeroGearing", "gearing = 200.0", "gearing = 0.0", "drives.elevator.gearing", "out of range"},
     {"StreamRate", "stream_rate_hz = 200.0", "stream_rate_hz = 0.0", "daemon.stream_rate_hz", "out of range"},
     {"FullRateEchoType", "setpoint_echo_full_rate = false", "setpoint_echo_full_rate = 1",
@@ -166,13 +209,13 @@ const BadCase kBadCases[] = {
      "not convex"},
     {"TwoVertices", "l4_post = [[0.03, 1.637], [0.072, 1.637], [0.072, 1.81], [0.03, 1.81]]",
      "l4_post = [[0.03, 1.637], [0.072, 1.637]]", "obstacles.l4_post", "at least 3 vertices"},
-    {"BadVertex", "[0.25, 0.1], [0.25, -0.1]", "[0.25, 0.1, 0.3], [0.25, -0.1]", "robot.arm[0][1]", "pair"},
-    {"EmptyRobot", "arm = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "arm = []", "robot.arm",
-     "at least one polygon"},
-    {"UnknownObstacleInScene", "obstacles = [\"drivetrain_keepout\", \"floor\"]",
-     "obstacles = [\"drivetrain_keepout\", \"flor\"]", "scenes[1].obstacles", "unknown obstacle \"flor\""},
+    {"BadVertex", "[0.25, 0.1], [0.25, -0.1]", "[0.25, 0.1, 0.3], [0.25, -0.1]", "links.arm.polygons[0][1]", "pair"},
+    {"EmptyLink", "polygons = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "polygons = []",
+     "links.arm.polygons", "at least one polygon"},
+    {"UnknownObstacleInScene", "obstacles = [\"l1_trough\",", "obstacles = [\"l1_trouf\",", "scenes[0].obstacles",
+     "unknown obstacle \"l1_trouf\""},
     {"UnknownMotor", "motor = \"kraken_x60_foc\"", "motor = \"neo\"", "drives.elevator.motor", "unknown motor"},
-    {"WrongGravity", "gravity = \"cosine\"", "gravity = \"constant\"", "drives.arm.gravity", "cosine"},
+    {"WrongGravity", "gravity = \"cosine\"", "gravity = \"tangent\"", "drives.arm.gravity", "\"sine\""},
     {"CannotHold", "current_limit_amps = 60.0", "current_limit_amps = 0.5", "drives.arm.current_limit_amps", "hold"},
     {"BadLogLevel", "log_level = \"info\"", "log_level = \"loud\"", "daemon.log_level", "expected one of"},
     {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},

@@ -6,6 +6,7 @@
 
 #include "cyber/config/load_config.hpp"
 #include "public_moves.hpp"
+#include "reference_model.hpp"
 
 namespace cyber::config {
 namespace {
@@ -13,12 +14,12 @@ namespace {
 TEST(NamedPoses, ReferenceRobotNamesThePublicPoses) {
   const Config config = loadEmbeddedDefaultConfig();
   ASSERT_EQ(config.poses.size(), 3u);
-  const char* sets[] = {"none", "coral", "algae"};
-  for (size_t i = 0; i < 3; ++i) {
-    const PoseSet& set = config.poses[i];
-    EXPECT_EQ(set.name, sets[i]);
-    EXPECT_EQ(set.pieces.coral, set.name == "coral");
-    EXPECT_EQ(set.pieces.algae, set.name == "algae");
+  for (const char* name : {"none", "coral", "algae"}) {
+    const auto found =
+        std::find_if(config.poses.begin(), config.poses.end(), [&](const PoseSet& s) { return s.name == name; });
+    ASSERT_NE(found, config.poses.end()) << name;
+    const PoseSet& set = *found;
+    EXPECT_EQ(set.pieces, test::referencePieces(set.name));
     const auto& expected = test::publicPoses(set.name);
     ASSERT_EQ(set.poses.size(), expected.size()) << set.name;
     for (const auto& pose : expected) {
@@ -62,7 +63,15 @@ TEST(NamedPoses, BadPoseTablesAreErrors) {
   expectError(withPoses("[poses.none]\nUP = [0.5, -1.0]"), "poses.none.UP", "outside the joint ranges");
   expectError(withPoses("[poses.none]\nUP = [0.5]"), "poses.none.UP", "");
   expectError(withPoses("[poses.none]\nUP = \"high\""), "poses.none.UP", "");
-  expectError(withPoses("[poses.cone]\nUP = [0.5, 1.0]"), "poses.cone", "unknown key");
+  expectError(withPoses("[poses.cone]\nUP = [0.5, 1.0]"), "poses.cone", "unknown game piece \"cone\"");
+  expectError(withPoses("[poses.\"coral+cone\"]\nUP = [0.5, 1.0]"), "poses.coral+cone", "unknown game piece \"cone\"");
+}
+
+TEST(NamedPoses, ASetOfSeveralPiecesIsNamedByJoiningThemWithPlus) {
+  const Config config = parseConfig(withPoses("[poses.\"coral+algae\"]\nA = [0.5, 1.0]"), "test.toml");
+  ASSERT_EQ(config.poses.size(), 1u);
+  EXPECT_EQ(config.poses[0].pieces, test::referencePieces("coral+algae"));
+  EXPECT_EQ(config.robot.pieceSetName(config.poses[0].pieces), "algae+coral");
 }
 
 }  // namespace

@@ -37,7 +37,7 @@ TEST(GoalCoordinator, AGoalAtRestIsAcceptedPlannedExecutedAndDone) {
   EXPECT_EQ(r.mode, StreamMode::kHolding);
   EXPECT_TRUE(r.setpoints.position.isApprox(kHigh));
   EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
-  EXPECT_DOUBLE_EQ(r.setpoints.volts[1], h.robot.arm_drive.kG_volts * std::cos(r.setpoints.position[1]));
+  EXPECT_DOUBLE_EQ(r.setpoints.volts[1], h.robot.drive(1).kG_volts * std::cos(r.setpoints.position[1]));
   EXPECT_EQ(h.coordinator().counters().goals_done, 1);
   EXPECT_TRUE(h.coordinator().idle());
 }

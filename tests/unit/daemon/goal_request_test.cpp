@@ -24,8 +24,7 @@ TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
   ASSERT_TRUE(valid) << valid.error().reason;
   EXPECT_EQ(valid.value().request_id, 7);
   EXPECT_EQ(valid.value().q, planner::JointVector(1.0, 1.5));
-  EXPECT_TRUE(valid.value().pieces.coral);
-  EXPECT_FALSE(valid.value().pieces.algae);
+  EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral"));
   EXPECT_EQ(valid.value().scene, 0);
 }
 

@@ -31,8 +31,8 @@ TEST_F(ProgramTest, WithoutSegmentsItHoldsWithGravityFeedforward) {
   EXPECT_FALSE(s.moving);
   EXPECT_EQ(s.setpoints.position, q);
   EXPECT_EQ(s.setpoints.velocity, JointVector::Zero());
-  EXPECT_DOUBLE_EQ(s.setpoints.volts[0], robot.elevator_drive.kG_volts);
-  EXPECT_DOUBLE_EQ(s.setpoints.volts[1], robot.arm_drive.kG_volts * std::cos(0.6));
+  EXPECT_DOUBLE_EQ(s.setpoints.volts[0], robot.drive(0).kG_volts);
+  EXPECT_DOUBLE_EQ(s.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(0.6));
   EXPECT_EQ(program.endNs(), kNever);
   EXPECT_EQ(program.restPosition(), q);
 }

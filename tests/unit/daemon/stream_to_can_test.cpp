@@ -104,9 +104,9 @@ TEST_F(StreamToCan, EveryPeriodCarriesOneFramePerJointAndTheStatusComesAt10Hz) {
   const auto hold = can::decodeSetpoint(arm.back().frame).value().setpoint;
   EXPECT_NEAR(hold.position, 1.57, 1e-5);
   EXPECT_EQ(hold.velocity, 0.0);
-  EXPECT_NEAR(hold.feedforward_volts, robot.arm_drive.kG_volts * std::cos(1.57), 1e-3);
+  EXPECT_NEAR(hold.feedforward_volts, robot.drive(1).kG_volts * std::cos(1.57), 1e-3);
   const auto elevator_hold = can::decodeSetpoint(elevator.back().frame).value().setpoint;
-  EXPECT_NEAR(elevator_hold.feedforward_volts, robot.elevator_drive.kG_volts, 1e-3);
+  EXPECT_NEAR(elevator_hold.feedforward_volts, robot.drive(0).kG_volts, 1e-3);
 }
 
 TEST_F(StreamToCan, AStaleHeartbeatStopsSetpointFramesWithinOnePeriodButNotTheStatus) {

@@ -110,8 +110,8 @@ TEST_F(StreamerTest, StreamsNothingBeforeAnyState) {
 TEST_F(StreamerTest, FirstFreshStateHoldsTheMeasuredPositionWithGravityFeedforward) {
   const JointVector measured(0.7, 0.9);
   const TickOutput out = expectEnabledHoldAt(measured);
-  EXPECT_DOUBLE_EQ(out.setpoints.volts[0], robot.elevator_drive.kG_volts);
-  EXPECT_DOUBLE_EQ(out.setpoints.volts[1], robot.arm_drive.kG_volts * std::cos(0.9));
+  EXPECT_DOUBLE_EQ(out.setpoints.volts[0], robot.drive(0).kG_volts);
+  EXPECT_DOUBLE_EQ(out.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(0.9));
   ASSERT_EQ(events.size(), 1u);
   EXPECT_EQ(events[0].kind, StreamEventKind::kHolding);
   EXPECT_EQ(events[0].hold_cause, HoldCause::kEnabled);
@@ -136,7 +136,7 @@ TEST_F(StreamerTest, RunsAProgramFromRestToItsEndAndHoldsThere) {
   EXPECT_EQ(last.mode, StreamMode::kHolding);
   EXPECT_TRUE(last.setpoints.position.isApprox(b));
   EXPECT_EQ(last.setpoints.velocity, JointVector::Zero());
-  EXPECT_DOUBLE_EQ(last.setpoints.volts[1], robot.arm_drive.kG_volts * std::cos(last.setpoints.position[1]));
+  EXPECT_DOUBLE_EQ(last.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(last.setpoints.position[1]));
   EXPECT_EQ(last.request_id, 11);  // the held target still belongs to request 11
   EXPECT_EQ(kinds(), (std::vector<StreamEventKind>{StreamEventKind::kHolding, StreamEventKind::kAdopted,
                                                    StreamEventKind::kExecuting, StreamEventKind::kDone}));

@@ -20,8 +20,8 @@ const RobotModel& model() { return test::referenceModel(); }
 const Scene& scene() { return model().scenes.front(); }
 
 JointVector randomPose(std::mt19937& rng) {
-  std::uniform_real_distribution<double> t(model().elevator_range_m.min, model().elevator_range_m.max);
-  std::uniform_real_distribution<double> th(model().arm_range_rad.min, model().arm_range_rad.max);
+  std::uniform_real_distribution<double> t(model().range(0).min, model().range(0).max);
+  std::uniform_real_distribution<double> th(model().range(1).min, model().range(1).max);
   const double t_m = t(rng);  // drawn in sequence: argument order is unspecified
   return JointVector(t_m, th(rng));
 }
@@ -35,16 +35,19 @@ std::vector<Point2> normalsOf(const std::vector<Point2>& v) {
   return n;
 }
 
-// Every robot polygon moved to the world by hand, every pair computed without pruning.
+// Every robot polygon moved to the world by hand (rotation matrices, not LinkFrame), every pair
+// computed without pruning.
 double bruteForceDistance(const JointVector& q, HeldPieces pieces) {
-  const double tilt = model().rail.tilt_rad;
-  const Point2 pivot = model().rail.base_m + q[0] * Point2(std::cos(tilt), std::sin(tilt));
+  const ChainJoint& rail = model().joints[0];
+  const Point2 pivot = rail.origin_m + q[0] * Point2(std::cos(rail.axis_rad), std::sin(rail.axis_rad));
   std::vector<const ConvexPolygon*> robot;
-  for (const auto& p : model().geometry.arm) robot.push_back(&p);
-  if (pieces.coral)
-    for (const auto& p : model().geometry.coral) robot.push_back(&p);
-  if (pieces.algae)
-    for (const auto& p : model().geometry.algae) robot.push_back(&p);
+  for (const LinkGeometry& link : model().links) {
+    for (const auto& p : link.polygons) robot.push_back(&p);
+  }
+  for (size_t i = 0; i < model().pieces.size(); ++i) {
+    if (!pieces.holds(static_cast<int>(i))) continue;
+    for (const auto& p : model().pieces[i].polygons) robot.push_back(&p);
+  }
   double best = std::numeric_limits<double>::infinity();
   for (const ConvexPolygon* polygon : robot) {
     std::vector<Point2> world;
@@ -53,52 +56,23 @@ double bruteForceDistance(const JointVector& q, HeldPieces pieces) {
                          pivot.y() + std::sin(q[1]) * p.x() + std::cos(q[1]) * p.y());
     }
     const std::vector<Point2> world_normals = normalsOf(world);
-    for (const NamedPolygon& obstacle : scene().obstacles) {
-      const std::vector<Point2>& ov = obstacle.polygon.vertices();
-      const std::vector<Point2> on = normalsOf(ov);
-      const PairDistance d =
-          signedDistance(WorldPolygonView{world.data(), world_normals.data(), static_cast<int>(world.size())},
-                         WorldPolygonView{ov.data(), on.data(), static_cast<int>(ov.size())});
-      best = std::min(best, d.value);
+    for (const auto* list : {&scene().obstacles, &scene().fixed}) {
+      for (const NamedPolygon& obstacle : *list) {
+        const std::vector<Point2>& ov = obstacle.polygon.vertices();
+        const std::vector<Point2> on = normalsOf(ov);
+        const PairDistance d =
+            signedDistance(WorldPolygonView{world.data(), world_normals.data(), static_cast<int>(world.size())},
+                           WorldPolygonView{ov.data(), on.data(), static_cast<int>(ov.size())});
+        best = std::min(best, d.value);
+      }
     }
   }
   return best;
 }
 
-TEST(PoseTransform, PivotMovesAlongTheTiltedRailAndTheArmRotates) {
-  Rail rail;
-  rail.base_m = Point2(-0.4, 0.2);
-  rail.tilt_rad = 80.0 * std::numbers::pi / 180.0;
-  const ArmPose pose = armPose(rail, JointVector(1.5, std::numbers::pi / 2));
-  EXPECT_NEAR(pose.pivot.x(), -0.4 + 1.5 * std::cos(rail.tilt_rad), 1e-15);
-  EXPECT_NEAR(pose.pivot.y(), 0.2 + 1.5 * std::sin(rail.tilt_rad), 1e-15);
-  // Straight up: the arm's +x points along world +y.
-  const Point2 tip = pose.toWorld(Point2(0.25, 0.0));
-  EXPECT_NEAR(tip.x(), pose.pivot.x(), 1e-15);
-  EXPECT_NEAR(tip.y(), pose.pivot.y() + 0.25, 1e-15);
-}
-
-TEST(PoseTransform, PointJacobianMatchesDifferences) {
-  const Rail& rail = model().rail;
-  const Point2 p_arm(0.3, -0.07);
-  std::mt19937 rng(3);
-  for (int trial = 0; trial < 50; ++trial) {
-    const JointVector q = randomPose(rng);
-    const ArmPose pose = armPose(rail, q);
-    const Eigen::Matrix2d jacobian = pose.pointJacobian(pose.toWorld(p_arm));
-    const double h = 1e-6;
-    for (int j = 0; j < 2; ++j) {
-      JointVector dq = JointVector::Zero();
-      dq[j] = h;
-      const Point2 diff = (armPose(rail, q + dq).toWorld(p_arm) - armPose(rail, q - dq).toWorld(p_arm)) / (2 * h);
-      EXPECT_NEAR((diff - jacobian.col(j)).norm(), 0.0, 1e-8);
-    }
-  }
-}
-
 TEST(CollisionWorld, AgreesWithBruteForceOverAllPairs) {
   std::mt19937 rng(11);
-  for (int set = 0; set < kPieceSetCount; ++set) {
+  for (int set = 0; set < model().pieceSetCount(); ++set) {
     const HeldPieces pieces = HeldPieces::fromIndex(set);
     const CollisionWorld world(model(), scene(), pieces);
     for (int trial = 0; trial < 500; ++trial) {
@@ -134,7 +108,7 @@ TEST(CollisionWorld, CutoffGivesExactValuesBelowItAndLowerBoundsAbove) {
 
 TEST(CollisionWorld, HeldPiecesOnlyAddGeometry) {
   std::vector<CollisionWorld> worlds;
-  for (int set = 0; set < kPieceSetCount; ++set) worlds.emplace_back(model(), scene(), HeldPieces::fromIndex(set));
+  for (int set = 0; set < model().pieceSetCount(); ++set) worlds.emplace_back(model(), scene(), HeldPieces::fromIndex(set));
   EXPECT_EQ(worlds[0].robotPolygonCount(), 1);
   EXPECT_EQ(worlds[3].robotPolygonCount(), 3);
   std::mt19937 rng(13);
@@ -151,13 +125,13 @@ TEST(CollisionWorld, HeldPiecesOnlyAddGeometry) {
     if (both < none - 1e-6) ++strictly_closer;
   }
   EXPECT_GT(strictly_closer, 100);  // the pieces matter, they are not ignored
-  EXPECT_GT(worlds[3].reach_m(), worlds[0].reach_m());
+  EXPECT_GT(worlds[3].pointSpeedBound()[1], worlds[0].pointSpeedBound()[1]);
 }
 
 TEST(CollisionWorld, GradientMatchesCentralDifferences) {
   std::mt19937 rng(14);
   int checked = 0, penetrating = 0;
-  for (int set = 0; set < kPieceSetCount; ++set) {
+  for (int set = 0; set < model().pieceSetCount(); ++set) {
     const CollisionWorld world(model(), scene(), HeldPieces::fromIndex(set));
     for (int trial = 0; trial < 400; ++trial) {
       const JointVector q = randomPose(rng);
@@ -187,7 +161,7 @@ TEST(CollisionWorld, GradientMatchesCentralDifferences) {
 }
 
 TEST(CollisionWorld, EmptySceneIsInfinitelyFarAway) {
-  const CollisionWorld world(model(), Scene{"empty", {}}, HeldPieces{});
+  const CollisionWorld world(model(), Scene{"empty", {}, {}, {}}, HeldPieces{});
   const SignedDistance d = world.distance(JointVector(1.0, 1.0));
   EXPECT_FALSE(d.exact);
   EXPECT_TRUE(std::isinf(d.value));

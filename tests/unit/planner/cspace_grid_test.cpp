@@ -24,7 +24,7 @@ struct Grids {
 const Grids& grids() {
   static const Grids g = [] {
     Grids out;
-    for (int set = 0; set < kPieceSetCount; ++set) {
+    for (int set = 0; set < model().pieceSetCount(); ++set) {
       out.worlds.emplace_back(model(), model().scenes.front(), HeldPieces::fromIndex(set));
     }
     for (const CollisionWorld& world : out.worlds) out.grids.push_back(CSpaceGrid::build(world, model()));
@@ -34,13 +34,13 @@ const Grids& grids() {
 }
 
 TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheClearance) {
-  for (int set = 0; set < kPieceSetCount; ++set) {
+  for (int set = 0; set < model().pieceSetCount(); ++set) {
     const CSpaceGrid& grid = grids().grids[static_cast<size_t>(set)];
     const CollisionWorld& world = grids().worlds[static_cast<size_t>(set)];
     EXPECT_EQ(grid.clearance_m(), model().clearance_m);
     EXPECT_GT(grid.checkedStepCount(), 0);
-    EXPECT_LE(grid.firstAxis().step, model().planner.grid.elevator_step_m);
-    EXPECT_LE(grid.secondAxis().step, model().planner.grid.arm_step_rad);
+    EXPECT_LE(grid.firstAxis().step, model().planner.grid.step[0]);
+    EXPECT_LE(grid.secondAxis().step, model().planner.grid.step[1]);
     for (int c = 0; c < grid.cellCount(); c += 7) {
       EXPECT_EQ(grid.blocked(c), world.distance(grid.node(c)).value < model().clearance_m) << c;
       if (grid.blocked(c)) {
@@ -57,7 +57,7 @@ TEST(CSpaceGrid, BlockedNodesAreThoseCloserThanTheClearance) {
 
 TEST(CSpaceGrid, FreeStepsKeepTheClearanceAlongTheirLength) {
   std::mt19937 rng(31);
-  for (int set = 0; set < kPieceSetCount; ++set) {
+  for (int set = 0; set < model().pieceSetCount(); ++set) {
     const CSpaceGrid& grid = grids().grids[static_cast<size_t>(set)];
     const CollisionWorld& world = grids().worlds[static_cast<size_t>(set)];
     std::uniform_int_distribution<int> any(0, grid.cellCount() - 1);

@@ -54,6 +54,36 @@ TEST(JointChain, LinkFramesAreTheProductOfTheJointTransformsForEveryJointTypePai
   EXPECT_EQ(checked, 800);
 }
 
+TEST(JointChain, PointJacobianMatchesCentralDifferencesForEveryJointTypePair) {
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  for (const JointType first : {JointType::kPrismatic, JointType::kRevolute}) {
+    for (const JointType second : {JointType::kPrismatic, JointType::kRevolute}) {
+      for (int trial = 0; trial < 50; ++trial) {
+        JointChain chain;
+        chain[0] = ChainJoint{"a", first, Point2(u(rng), u(rng)), u(rng), {}};
+        chain[1] = ChainJoint{"b", second, Point2(u(rng), u(rng)), u(rng), {}};
+        const JointVector q(u(rng), u(rng));
+        const Point2 p(u(rng), u(rng));
+        const ChainPose pose = chainPose(chain, q);
+        for (int link = 0; link < kJointCount; ++link) {
+          const Eigen::Matrix2d jacobian =
+              pose.pointJacobian(link, pose.frames[static_cast<size_t>(link)].toWorld(p));
+          constexpr double h = 1e-6;
+          for (int j = 0; j < kJointCount; ++j) {
+            JointVector dq = JointVector::Zero();
+            dq[j] = h;
+            const Point2 diff = (linkFrames(chain, q + dq)[static_cast<size_t>(link)].toWorld(p) -
+                                 linkFrames(chain, q - dq)[static_cast<size_t>(link)].toWorld(p)) /
+                                (2 * h);
+            EXPECT_LT((diff - jacobian.col(j)).norm(), 1e-8) << "link " << link << " joint " << j;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(JointChain, AnElevatorKeepsTheWorldsOrientationAndItsArmAngleIsMeasuredFromX) {
   JointChain chain;
   chain[0] = ChainJoint{"lift", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * M_PI / 180.0, {0.0, 2.0}};

@@ -80,7 +80,7 @@ TEST(SmoothingObjective, GradientMatchesCentralDifferences) {
 TEST(SmoothingObjective, BandedHessianIsThatOfTheQuadraticPart) {
   // Without obstacles J is quadratic inside the limits, so gradient differences along any
   // direction v equal H v exactly.
-  const CollisionWorld empty(model(), Scene{"empty", {}}, HeldPieces{});
+  const CollisionWorld empty(model(), Scene{"empty", {}, {}, {}}, HeldPieces{});
   const std::vector<JointVector> prior = wavyPath(12);
   const SmoothingObjective objective(empty, prior, 2, model(), model().planner.smoothing);
   const int m = objective.freeCount();
@@ -132,7 +132,7 @@ TEST(OptimizePath, KeepsWaypointsInsideTheLimits) {
   for (int k = 0; k <= 20; ++k) prior.emplace_back(2.0, 1.0 + 0.05 * k);
   const SmoothingResult result = optimizePath(world, prior, 1, model(), model().planner.smoothing);
   for (size_t k = 1; k + 1 < result.waypoints.size(); ++k) {
-    EXPECT_LE(result.waypoints[k][0], model().elevator_range_m.max - kJointLimitMargin + 1e-12);
+    EXPECT_LE(result.waypoints[k][0], model().range(0).max - kJointLimitMargin + 1e-12);
   }
 }
 

@@ -73,8 +73,8 @@ class Components {
  public:
   explicit Components(const CollisionWorld& world) {
     const double slack = world.lipschitzBound(JointVector(0.5 * kStep, 0.5 * kStep));
-    ni_ = static_cast<int>(std::ceil((model().elevator_range_m.max - model().elevator_range_m.min) / kStep)) + 1;
-    nj_ = static_cast<int>(std::ceil((model().arm_range_rad.max - model().arm_range_rad.min) / kStep)) + 1;
+    ni_ = static_cast<int>(std::ceil((model().range(0).max - model().range(0).min) / kStep)) + 1;
+    nj_ = static_cast<int>(std::ceil((model().range(1).max - model().range(1).min) / kStep)) + 1;
     label_.assign(static_cast<size_t>(ni_ * nj_), -2);  // -2 blocked, -1 free and unlabelled
     for (int i = 0; i < ni_; ++i) {
       for (int j = 0; j < nj_; ++j) {
@@ -104,8 +104,8 @@ class Components {
     }
   }
   [[nodiscard]] int of(const JointVector& q) const {
-    const int i = static_cast<int>(std::lround((q[0] - model().elevator_range_m.min) / step(0)));
-    const int j = static_cast<int>(std::lround((q[1] - model().arm_range_rad.min) / step(1)));
+    const int i = static_cast<int>(std::lround((q[0] - model().range(0).min) / step(0)));
+    const int j = static_cast<int>(std::lround((q[1] - model().range(1).min) / step(1)));
     return label_[index(i, j)];
   }
 
@@ -116,7 +116,7 @@ class Components {
     return (r.max - r.min) / ((joint == 0 ? ni_ : nj_) - 1);
   }
   [[nodiscard]] JointVector node(int i, int j) const {
-    return JointVector(model().elevator_range_m.min + i * step(0), model().arm_range_rad.min + j * step(1));
+    return JointVector(model().range(0).min + i * step(0), model().range(1).min + j * step(1));
   }
   [[nodiscard]] size_t index(int i, int j) const { return static_cast<size_t>(i * nj_ + j); }
   int ni_ = 0, nj_ = 0;
@@ -124,7 +124,7 @@ class Components {
 };
 
 const Components& components(HeldPieces pieces) {
-  static std::vector<std::unique_ptr<Components>> cache(kPieceSetCount);
+  static std::vector<std::unique_ptr<Components>> cache(static_cast<size_t>(model().pieceSetCount()));
   auto& slot = cache[static_cast<size_t>(pieces.index())];
   if (!slot) slot = std::make_unique<Components>(planner().world(pieces));
   return *slot;
@@ -182,7 +182,7 @@ TEST(PathPlanner, EveryPublicMoveWithTheDefaultSmoothingSettings) { checkEveryPu
 // public moves between INTAKE and STOW, for one), and a synchronised one before that when it is
 // faster still; the others keep their one straight candidate.
 TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
-  const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
+  const DriveModel drives = model().driveModel({});
   int shaped = 0, straight = 0, synchronised = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
     const auto found = planner().candidates(move.from, move.to, move.pieces);
@@ -281,13 +281,12 @@ TEST(PathPlanner, BadInputsGiveTypedErrors) {
 TEST(PathPlanner, CagedGoalIsNoPath) {
   // Two bars just above and below the arm pointing forward at t = 1: the pose keeps the
   // clearance, but any motion out of it comes closer than the clearance.
-  const double tilt = model().rail.tilt_rad;
-  const Point2 pivot = model().rail.base_m + 1.0 * Point2(std::cos(tilt), std::sin(tilt));
+  const Point2 pivot = linkFrames(model().joints, JointVector(1.0, 0.0))[1].origin_m;
   auto box = [](double x0, double y0, double x1, double y1) {
     std::string error;
     return ConvexPolygon::fromVertices({Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)}, &error);
   };
-  Scene scene{"cage", {}};
+  Scene scene{"cage", {}, {}, {}};
   scene.obstacles.push_back({"floor", box(-2.0, -1.0, 2.0, 0.0)});
   scene.obstacles.push_back({"upper bar", box(-0.1, pivot.y() + 0.15, 0.3, pivot.y() + 0.2)});
   scene.obstacles.push_back({"lower bar", box(-0.1, pivot.y() - 0.2, 0.3, pivot.y() - 0.15)});
@@ -391,10 +390,10 @@ TEST(PathPlanner, HeldPiecesShapeThePath) {
   // A held piece makes the robot bigger: its grid blocks more, and a path planned for the bare
   // arm can come closer than the clearance once the piece is held, while the piece's path does not.
   EXPECT_GT(planner().grid(test::referencePieces("algae")).blockedCount(), planner().grid(HeldPieces{}).blockedCount());
-  const HeldPieces coral{true, false};
+  const HeldPieces coral = test::referencePieces("coral");
   int bare_path_too_close = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
-    if (!move.pieces.coral || bare_path_too_close > 0) continue;
+    if (move.pieces != coral || bare_path_too_close > 0) continue;
     const auto with_coral = planner().plan(move.from, move.to, coral);
     const auto bare = planner().plan(move.from, move.to, HeldPieces{});
     if (!with_coral.ok() || !bare.ok()) continue;

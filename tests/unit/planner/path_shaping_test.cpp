@@ -33,7 +33,7 @@ using ShapeSearch = ShapedPath (*)(std::span<const JointVector>, int, const Join
 template <class Settings>
 std::array<int, 2> checkOnPublicMoves(ShapeSearch<Settings> search, const Settings& settings) {
   const int max_evaluations = settings.max_evaluations, grid_points = settings.grid_points;
-  const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
+  const DriveModel drives = model().driveModel({});
   int shaped = 0, much_faster = 0, checked = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
     // The search's own smoothed path alone, not yet chosen for time.

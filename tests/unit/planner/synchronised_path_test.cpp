@@ -30,7 +30,7 @@ const PathPlanner& planner() { return test::referencePathPlanner(); }
 // The slower joint moving alone, timed independently of the search: a straight one-joint path on
 // a fine grid.
 double slowerJointAloneS(const JointVector& from, const JointVector& to) {
-  const std::array<DriveParams, kJointCount> drives{model().elevator_drive, model().arm_drive};
+  const DriveModel drives = model().driveModel({});
   double slower = 0.0;
   for (int j = 0; j < kJointCount; ++j) {
     JointVector direction = JointVector::Zero();
@@ -99,8 +99,8 @@ TEST(SynchronisedPath, NothingWhereEveryPairingHitsTheReef) {
 
 TEST(SynchronisedPath, SeededRandomFreeMovesAreSound) {
   std::mt19937 rng(20261202);
-  std::uniform_real_distribution<double> elevator(model().elevator_range_m.min, model().elevator_range_m.max);
-  std::uniform_real_distribution<double> arm(model().arm_range_rad.min, model().arm_range_rad.max);
+  std::uniform_real_distribution<double> elevator(model().range(0).min, model().range(0).max);
+  std::uniform_real_distribution<double> arm(model().range(1).min, model().range(1).max);
   const CollisionWorld& world = planner().world(HeldPieces{});
   auto free_pose = [&] {
     for (;;) {

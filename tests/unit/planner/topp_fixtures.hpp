@@ -55,6 +55,21 @@ inline DriveParams armDrive() {
   return d;
 }
 
+// The reference robot's chain (a carriage on a rail tilted 80 degrees carrying an arm): only the
+// joint types and axes matter to the drives (the gravity angle of each joint).
+inline JointChain referenceChain() {
+  JointChain chain;
+  chain[0] = ChainJoint{"elevator", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * std::numbers::pi / 180.0, {0.0, 2.0}};
+  chain[1] = ChainJoint{"arm", JointType::kRevolute, Point2::Zero(), 0.0, {0.0, 6.108652381980153}};
+  return chain;
+}
+
+// Both drives on the reference chain.
+inline DriveModel drivesOf(const DriveParams& first, const DriveParams& second) {
+  return DriveModel(referenceChain(), {first, second});
+}
+inline DriveModel referenceDrives() { return drivesOf(elevatorDrive(), armDrive()); }
+
 inline const JointVector kMetric(1.0, 0.1);  // Sigma of the reference configuration
 
 inline double weightedNorm(const JointVector& v) { return std::sqrt(v.dot(kMetric.cwiseProduct(v))); }

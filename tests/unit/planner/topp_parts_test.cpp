@@ -107,8 +107,7 @@ topp::Problem makeProblem(int points, double b_start = 0.0) {
   topp::sampleGrid(path, points, problem);
   topp::LimitMargins margins;
   margins.reset(problem.intervals());
-  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
-  EXPECT_TRUE(topp::buildRows(drives, margins, problem, nullptr));
+  EXPECT_TRUE(topp::buildRows(testing::referenceDrives(), margins, problem, nullptr));
   problem.speed_bound = 1e3 / path.length();
   return problem;
 }
@@ -158,8 +157,7 @@ TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
   topp::sampleGrid(path, 100, even);
   topp::LimitMargins margins;
   margins.reset(even.intervals());
-  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
-  ASSERT_TRUE(topp::buildRows(drives, margins, even, nullptr));
+  ASSERT_TRUE(topp::buildRows(testing::referenceDrives(), margins, even, nullptr));
   std::vector<double> b, controllable;
   ASSERT_EQ(topp::forwardBackward(even, b, controllable).status, topp::ReachabilityStatus::kOk);
   topp::Problem timed;
@@ -186,39 +184,62 @@ TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
   for (int k = 0; k < steady.intervals(); ++k) EXPECT_NEAR(steady.ds(k), 1.0 / 49.0, 1e-9);
 }
 
-TEST(ToppProblem, RowsAreTheDriveModelAtTheirSamplePoints) {
-  // On a line whose joints never change direction each row is the drive's own volts or amps.
+// Each row at its sample point, for a given drive model: the volts or amps of that model's own
+// volts() at random path speeds and accelerations (a line whose joints never change direction).
+void expectRowsAreTheDriveModel(const DriveModel& drives) {
   const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.8, 4.0));
   topp::Problem p;
   p.b_start = 0.0;
   topp::sampleGrid(path, 20, p);
   topp::LimitMargins margins;
   margins.reset(p.intervals());
-  const std::array<DriveParams, 2> drives{elevatorDrive(), armDrive()};
   ASSERT_TRUE(topp::buildRows(drives, margins, p, nullptr));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.1, 3.0), ua(-20.0, 20.0);
   const double length = path.length();
+  int checked = 0;
   for (const topp::LinearRow& row : p.rows) {
     if (row.interval == 0 && row.at == 0.0) continue;  // pinned at rest: Coulomb band, checked elsewhere
+    if (row.kind != topp::LimitKind::kVoltage && row.kind != topp::LimitKind::kCurrent) continue;
     const double s = (p.s[static_cast<size_t>(row.interval)] + row.at * p.ds(row.interval)) * length;
     const PathPoint pt = path.at(s);
-    const DriveParams& d = drives[static_cast<size_t>(row.joint)];
+    const DriveParams& d = drives.drive(row.joint);
     // Physical speed sdot and path acceleration sddot; the problem's b = sdot^2 / L^2, a = sddot / L.
     const double sdot = u(rng), sddot = ua(rng);
     const double b = sdot * sdot / (length * length), a = sddot / length, c = std::sqrt(b);
-    const double qdot = pt.dq_ds[row.joint] * sdot;
-    const double qddot = pt.d2q_ds2[row.joint] * sdot * sdot + pt.dq_ds[row.joint] * sddot;
-    const double v = d.volts(pt.q[row.joint], qdot, qddot);
+    const JointVector qdot = pt.dq_ds * sdot;
+    const JointVector qddot = pt.d2q_ds2 * sdot * sdot + pt.dq_ds * sddot;
+    const double v = drives.volts(pt.q, qdot, qddot)[row.joint];
     const double scale =
         row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : d.motor.resistanceOhms() * d.current_limit_amps;
     const double value = row.value(a, b, b, c, c) * scale;  // b, c equal at both nodes: the sample's own
-    const double physical = row.kind == topp::LimitKind::kVoltage ? v : d.amps(v, qdot) * d.motor.resistanceOhms();
+    const double physical =
+        row.kind == topp::LimitKind::kVoltage ? v : drives.amps(drives.volts(pt.q, qdot, qddot), qdot)[row.joint] *
+                                                        d.motor.resistanceOhms();
     // value = physical - (constant terms), the constants sit in the bounds: compare the bounds.
     EXPECT_NEAR(row.hi * scale - value,
                 (row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : scale) - physical,
                 1e-9 * (1.0 + std::abs(physical)));
+    ++checked;
   }
+  EXPECT_GT(checked, 100);
+}
+
+TEST(ToppProblem, RowsAreTheFeedforwardAtTheirSamplePoints) { expectRowsAreTheDriveModel(testing::referenceDrives()); }
+
+// The coupled model: a double-jointed arm whose shoulder load depends on the elbow.
+TEST(ToppProblem, RowsAreTheRigidBodyDynamicsAtTheirSamplePoints) {
+  JointChain chain;
+  chain[0] = ChainJoint{"shoulder", JointType::kRevolute, Point2(0.0, 0.654), 0.0, {0.0, 3.2}};
+  chain[1] = ChainJoint{"elbow", JointType::kRevolute, Point2(0.686, 0.0), 0.0, {0.5, 5.8}};
+  const std::array<LinkInertia, kJointCount> bodies{LinkInertia{1.036, Point2(0.4318, 0.0), 0.08},
+                                                    LinkInertia{3.76, Point2(0.769, 0.02), 0.28}};
+  DriveParams shoulder = testing::armDrive();
+  shoulder.kS_volts = 0.2;
+  shoulder.gearing = 197.0;
+  DriveParams elbow = testing::armDrive();
+  elbow.gearing = 200.0;
+  expectRowsAreTheDriveModel(DriveModel({shoulder, elbow}, ChainDynamics(chain, bodies)));
 }
 
 TEST(ToppReachability, ProfileSatisfiesEveryRowAndIsControllable) {

@@ -29,7 +29,7 @@ TEST(ToppPublicMoves, EveryPlannedMoveMeetsTheLimitsAndTheReference) {
     SCOPED_TRACE(move.label);
     const auto& path = planned.value().path;
     ToppReport report;
-    const Result<Trajectory> result = solver.solve(path, model.driveModel(), 0.0, &report);
+    const Result<Trajectory> result = solver.solve(path, model.driveModel({}), 0.0, &report);
     ASSERT_TRUE(result.ok()) << result.error().reason;
     const Trajectory& trajectory = result.value();
     ++solved;
@@ -51,7 +51,7 @@ TEST(ToppPublicMoves, EveryPlannedMoveMeetsTheLimitsAndTheReference) {
         ASSERT_LE(std::abs(d.amps(v, s.qdot[j])), 1.005 * d.current_limit_amps) << "t=" << s.t;
       }
     }
-    const double reference = testing::FineReference(*path, model.driveModel(), 2001).duration(0.0);
+    const double reference = testing::FineReference(*path, model.drive(0), model.drive(1), 2001).duration(0.0);
     const double ratio = trajectory.duration_s() / reference;
     worst_ratio = std::max(worst_ratio, ratio);
     EXPECT_LE(ratio, 1.02) << trajectory.duration_s() << " s against " << reference << " s";

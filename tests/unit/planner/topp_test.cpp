@@ -19,7 +19,9 @@ namespace {
 
 using testing::ArcPath;
 using testing::armDrive;
+using testing::drivesOf;
 using testing::elevatorDrive;
+using testing::referenceDrives;
 using testing::FineReference;
 using testing::LinePath;
 using testing::WigglePath;
@@ -134,7 +136,7 @@ TEST(Topp, TypicalPathsMeetEveryLimitAndTheFineReference) {
   for (const Case& c : typicalPaths()) {
     SCOPED_TRACE(c.name);
     ToppReport report;
-    const Result<Trajectory> result = solver.solve(c.path, elevatorDrive(), armDrive(), 0.0, &report);
+    const Result<Trajectory> result = solver.solve(c.path, referenceDrives(), 0.0, &report);
     ASSERT_TRUE(result.ok()) << result.error().reason;
     const Trajectory& trajectory = result.value();
     checkTrajectory(trajectory, *c.path, elevatorDrive(), armDrive(), 0.0);
@@ -155,7 +157,7 @@ TEST(Topp, TypicalPathsMeetEveryLimitAndTheFineReference) {
 TEST(Topp, SolverReportsItsOwnCheckOfTheLimits) {
   const auto path = std::make_shared<LinePath>(JointVector(0.20, 1.57), JointVector(1.97, 5.17));
   ToppReport report;
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {}, 0.0, &report);
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {}, 0.0, &report);
   ASSERT_TRUE(result.ok());
   const Checked checked = checkTrajectory(result.value(), *path, elevatorDrive(), armDrive(), 0.0);
   // A time-optimal move runs into its limits: both peaks are at the limit, not below it.
@@ -171,13 +173,13 @@ TEST(Topp, VelocityAndAccelerationLimitsHoldAtOneMillisecond) {
   elevator.velocity_limit = 1.2;  // m/s, well below the voltage-limited 2.9 m/s
   arm.acceleration_limit = 25.0;  // rad/s^2, well below the current-limited ~200 rad/s^2
   const auto path = std::make_shared<LinePath>(JointVector(0.2, 0.5), JointVector(1.9, 5.5));
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevator, arm, {});
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, drivesOf(elevator, arm), {});
   ASSERT_TRUE(result.ok()) << result.error().reason;
   const Checked checked = checkTrajectory(result.value(), *path, elevator, arm, 0.0);
   EXPECT_GT(checked.peak_velocity_ratio, 0.99);
   EXPECT_GT(checked.peak_acceleration_ratio, 0.99);
   // Slower than without these limits.
-  const Result<Trajectory> free = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {});
+  const Result<Trajectory> free = parameterizeTimeOptimal(path, referenceDrives(), {});
   ASSERT_TRUE(free.ok());
   EXPECT_GT(result.value().duration_s(), 1.2 * free.value().duration_s());
 }
@@ -194,7 +196,7 @@ TEST(Topp, VelocityCapsOverMostOfTheMoveSolveInFewIterations) {
       std::make_shared<WigglePath>(JointVector(1.9, 5.1), JointVector(0.2, 0.2), JointVector(0.05, 0.4), 3.0, 2.5);
   ToppSolver solver;
   ToppReport report;
-  const Result<Trajectory> result = solver.solve(path, elevator, arm, 0.0, &report);
+  const Result<Trajectory> result = solver.solve(path, drivesOf(elevator, arm), 0.0, &report);
   ASSERT_TRUE(result.ok()) << result.error().reason;
   const Checked checked = checkTrajectory(result.value(), *path, elevator, arm, 0.0);
   EXPECT_GT(checked.peak_velocity_ratio, 0.99);
@@ -206,13 +208,13 @@ TEST(Topp, MovingStartBeginsWithExactlyThatVelocity) {
   const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(1.8, 4.0));
   ToppSolver solver;
   ToppReport rest_report;
-  const Result<Trajectory> rest = solver.solve(path, elevatorDrive(), armDrive(), 0.0, &rest_report);
+  const Result<Trajectory> rest = solver.solve(path, referenceDrives(), 0.0, &rest_report);
   ASSERT_TRUE(rest.ok());
   ASSERT_GT(rest_report.controllable_start_b, 1.0);
   for (double fraction : {0.05, 0.3, 0.7, 0.999}) {
     SCOPED_TRACE(fraction);
     const double b_start = fraction * rest_report.controllable_start_b;
-    const Result<Trajectory> moving = solver.solve(path, elevatorDrive(), armDrive(), b_start);
+    const Result<Trajectory> moving = solver.solve(path, referenceDrives(), b_start);
     ASSERT_TRUE(moving.ok()) << moving.error().reason;
     checkTrajectory(moving.value(), *path, elevatorDrive(), armDrive(), b_start);
     const TrajectorySample first = moving.value().sample(0.0);
@@ -229,15 +231,15 @@ TEST(Topp, StartSpeedThatCannotBeStoppedIsATypedFailure) {
   const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(0.6, 1.4));
   ToppReport report;
   ToppSolver solver;
-  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.0, &report).ok());
+  ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.0, &report).ok());
   const double limit = report.controllable_start_b;
   // The independent reference agrees on where the controllable set ends (within the grid error).
   EXPECT_NEAR(limit, FineReference(*path, elevatorDrive(), armDrive(), 501).controllableStart(), 0.03 * limit);
-  const Result<Trajectory> too_fast = solver.solve(path, elevatorDrive(), armDrive(), 1.5 * limit, &report);
+  const Result<Trajectory> too_fast = solver.solve(path, referenceDrives(), 1.5 * limit, &report);
   ASSERT_FALSE(too_fast.ok());
   EXPECT_EQ(too_fast.status(), PlanStatus::kInfeasibleStart);
   EXPECT_NE(too_fast.error().reason.find("cannot be brought to rest"), std::string::npos) << too_fast.error().reason;
-  EXPECT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.95 * limit).ok());
+  EXPECT_TRUE(solver.solve(path, referenceDrives(), 0.95 * limit).ok());
 }
 
 // A splice from one of the solver's own trajectories cruising at a limit can sit just past the new
@@ -248,16 +250,16 @@ TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
   const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(0.6, 1.4));
   ToppSolver solver;
   ToppReport report;
-  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.0, &report).ok());
+  ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.0, &report).ok());
   // C_0 of a moving start (a start at rest pins the first node to qdot = 0, which changes its rows).
-  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.5 * report.controllable_start_b, &report).ok());
+  ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.5 * report.controllable_start_b, &report).ok());
   EXPECT_EQ(report.start_speed_ratio, 1.0);
   const double limit = report.controllable_start_b;
   const double tolerance = ToppSettings{}.limit_check_tolerance;
   for (double speed_factor : {1.0005, 1.002, 0.999 + tolerance}) {
     SCOPED_TRACE(speed_factor);
     const double b_start = limit * speed_factor * speed_factor;
-    const Result<Trajectory> result = solver.solve(path, elevatorDrive(), armDrive(), b_start, &report);
+    const Result<Trajectory> result = solver.solve(path, referenceDrives(), b_start, &report);
     ASSERT_TRUE(result.ok()) << result.error().reason;
     // The grid follows each start's own profile (algorithm.md section 3, "Grid"), so the edge
     // moves with the grid by far less than the tolerance; the start sits on this solve's edge.
@@ -269,11 +271,11 @@ TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
     EXPECT_LE(std::max(checked.peak_voltage_ratio, checked.peak_current_ratio), 1.0 + tolerance);
   }
   const double beyond = 1.001 + tolerance;
-  const Result<Trajectory> too_fast = solver.solve(path, elevatorDrive(), armDrive(), limit * beyond * beyond, &report);
+  const Result<Trajectory> too_fast = solver.solve(path, referenceDrives(), limit * beyond * beyond, &report);
   ASSERT_FALSE(too_fast.ok());
   EXPECT_EQ(too_fast.status(), PlanStatus::kInfeasibleStart);
   // Below the edge nothing changes: the start speed is the one asked for.
-  ASSERT_TRUE(solver.solve(path, elevatorDrive(), armDrive(), 0.99 * limit, &report).ok());
+  ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.99 * limit, &report).ok());
   EXPECT_EQ(report.start_speed_ratio, 1.0);
 }
 
@@ -286,7 +288,7 @@ TEST(Topp, NonConvergenceIsReportedWithResiduals) {
   settings.solver.primal_tolerance = 1e-15;
   settings.solver.dual_tolerance = 1e-15;
   ToppReport report;
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), settings, 0.0, &report);
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), settings, 0.0, &report);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.status(), PlanStatus::kSolverNotConverged);
   EXPECT_NE(result.error().reason.find("primal residual"), std::string::npos) << result.error().reason;
@@ -301,7 +303,7 @@ TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
   ToppSettings settings;
   settings.solver.max_outer_iterations = 1000;
   ToppReport report;
-  ASSERT_TRUE(parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), settings, 0.0, &report).ok());
+  ASSERT_TRUE(parameterizeTimeOptimal(path, referenceDrives(), settings, 0.0, &report).ok());
   EXPECT_LT(report.outer_iterations, 20);
   EXPECT_LE(report.primal_residual, settings.solver.primal_tolerance);
   EXPECT_LE(report.dual_residual, settings.solver.dual_tolerance);
@@ -309,7 +311,7 @@ TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
 
 TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
   const auto path = std::make_shared<LinePath>(JointVector(0.7, 2.0), JointVector(0.7, 2.0));
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {});
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
   ASSERT_TRUE(result.ok()) << result.error().reason;
   EXPECT_EQ(result.value().duration_s(), 0.0);
   for (double t : {-1.0, 0.0, 0.5}) {
@@ -318,7 +320,7 @@ TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
     EXPECT_EQ(s.qdot, JointVector::Zero());
     EXPECT_NEAR(s.volts[test::kElevator], 0.37, 1e-12);  // holds against gravity
   }
-  const Result<Trajectory> moving = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {}, 0.5);
+  const Result<Trajectory> moving = parameterizeTimeOptimal(path, referenceDrives(), {}, 0.5);
   ASSERT_FALSE(moving.ok());
   EXPECT_EQ(moving.status(), PlanStatus::kInfeasibleStart);
 }
@@ -327,7 +329,7 @@ TEST(Topp, VeryShortPathsGiveValidTrajectories) {
   for (double length : {1e-9, 1e-6, 1e-4, 1e-3, 1e-2}) {
     SCOPED_TRACE(length);
     const auto path = std::make_shared<LinePath>(JointVector(0.5, 1.0), JointVector(0.5 + length, 1.0));
-    const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {});
+    const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
     ASSERT_TRUE(result.ok()) << result.error().reason;
     EXPECT_GT(result.value().duration_s(), 0.0);
     EXPECT_LT(result.value().duration_s(), 0.05);
@@ -343,7 +345,7 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   // The arm goes out and back while the elevator rises: q'_arm crosses zero mid-path.
   const auto path =
       std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2);
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), {});
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
   ASSERT_TRUE(result.ok()) << result.error().reason;
   const Trajectory& trajectory = result.value();
   checkTrajectory(trajectory, *path, elevatorDrive(), armDrive(), 0.0);
@@ -366,7 +368,7 @@ TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {
   ToppSettings settings;
   settings.grid_points = 12;
   ToppReport report;
-  const Result<Trajectory> result = parameterizeTimeOptimal(path, elevatorDrive(), armDrive(), settings, 0.0, &report);
+  const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), settings, 0.0, &report);
   ASSERT_TRUE(result.ok()) << result.error().reason;
   EXPECT_GT(report.refinements, 0);
   EXPECT_GT(report.grid_points, 12);
@@ -377,10 +379,10 @@ TEST(Topp, ResultsAreDeterministicAndTheSolverIsReusable) {
   const auto a = std::make_shared<ArcPath>(JointVector(1.0, 3.0), 0.8, 0.0, 3.0);
   const auto b = std::make_shared<LinePath>(JointVector(1.97, 5.17), JointVector(0.16, 0.10));
   ToppSolver reused;
-  const double first = reused.solve(a, elevatorDrive(), armDrive()).value().duration_s();
-  const double other = reused.solve(b, elevatorDrive(), armDrive()).value().duration_s();
-  EXPECT_EQ(reused.solve(a, elevatorDrive(), armDrive()).value().duration_s(), first);
-  EXPECT_EQ(parameterizeTimeOptimal(b, elevatorDrive(), armDrive(), {}).value().duration_s(), other);
+  const double first = reused.solve(a, referenceDrives()).value().duration_s();
+  const double other = reused.solve(b, referenceDrives()).value().duration_s();
+  EXPECT_EQ(reused.solve(a, referenceDrives()).value().duration_s(), first);
+  EXPECT_EQ(parameterizeTimeOptimal(b, referenceDrives(), {}).value().duration_s(), other);
 }
 
 // A path that returns garbage.
@@ -401,23 +403,23 @@ class BrokenPath final : public GeometricPath {
 TEST(Topp, BadInputsAreTypedErrors) {
   const auto good = std::make_shared<LinePath>(JointVector(0.2, 1.0), JointVector(1.0, 2.0));
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(parameterizeTimeOptimal(nullptr, elevatorDrive(), armDrive(), {}).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(parameterizeTimeOptimal(good, elevatorDrive(), armDrive(), {}, nan).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(parameterizeTimeOptimal(good, elevatorDrive(), armDrive(), {}, -1.0).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(parameterizeTimeOptimal(std::make_shared<BrokenPath>(1.0), elevatorDrive(), armDrive(), {}).status(),
+  EXPECT_EQ(parameterizeTimeOptimal(nullptr, referenceDrives(), {}).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(parameterizeTimeOptimal(good, referenceDrives(), {}, nan).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(parameterizeTimeOptimal(good, referenceDrives(), {}, -1.0).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(parameterizeTimeOptimal(std::make_shared<BrokenPath>(1.0), referenceDrives(), {}).status(),
             PlanStatus::kInvalidInput);
-  EXPECT_EQ(parameterizeTimeOptimal(std::make_shared<BrokenPath>(nan), elevatorDrive(), armDrive(), {}).status(),
+  EXPECT_EQ(parameterizeTimeOptimal(std::make_shared<BrokenPath>(nan), referenceDrives(), {}).status(),
             PlanStatus::kInvalidInput);
   DriveParams no_current = elevatorDrive();
   no_current.current_limit_amps = 0.0;
-  EXPECT_EQ(parameterizeTimeOptimal(good, no_current, armDrive(), {}).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(parameterizeTimeOptimal(good, drivesOf(no_current, armDrive()), {}).status(), PlanStatus::kInvalidInput);
   DriveParams nan_gain = armDrive();
   nan_gain.kV = nan;
-  EXPECT_EQ(parameterizeTimeOptimal(good, elevatorDrive(), nan_gain, {}).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(parameterizeTimeOptimal(good, drivesOf(elevatorDrive(), nan_gain), {}).status(), PlanStatus::kInvalidInput);
   // Gravity alone above the voltage limit: no motion can follow the path.
   DriveParams weak = elevatorDrive();
   weak.kG_volts = 13.0;
-  const Result<Trajectory> hopeless = parameterizeTimeOptimal(good, weak, armDrive(), {});
+  const Result<Trajectory> hopeless = parameterizeTimeOptimal(good, drivesOf(weak, armDrive()), {});
   EXPECT_EQ(hopeless.status(), PlanStatus::kInvalidInput);
   EXPECT_FALSE(hopeless.error().reason.empty());
 }

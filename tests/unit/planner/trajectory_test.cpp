@@ -21,7 +21,9 @@ namespace cyber::planner {
 namespace {
 
 using testing::armDrive;
+using testing::drivesOf;
 using testing::elevatorDrive;
+using testing::referenceDrives;
 using testing::LinePath;
 using testing::WigglePath;
 
@@ -34,15 +36,15 @@ Trajectory makeTrajectory(std::shared_ptr<const GeometricPath> path) {
   const double l = path->length();
   std::vector<double> s{0.0, 0.1 * l, 0.25 * l, 0.5 * l, 0.8 * l, 0.95 * l, l};
   std::vector<double> b{0.0, 0.8, 2.0, 2.5, 1.5, 0.4, 0.0};
-  return Trajectory::create(std::move(path), elevatorDrive(), armDrive(), s, b).value();
+  return Trajectory::create(std::move(path), referenceDrives(), s, b).value();
 }
 
 TEST(Trajectory, InvalidProfilesAreTypedErrors) {
   const auto path = std::make_shared<LinePath>(JointVector(0.0, 0.0), JointVector(1.0, 0.0));
   auto make = [&](std::vector<double> s, std::vector<double> b) {
-    return Trajectory::create(path, elevatorDrive(), armDrive(), std::move(s), std::move(b)).status();
+    return Trajectory::create(path, referenceDrives(), std::move(s), std::move(b)).status();
   };
-  EXPECT_EQ(Trajectory::create(nullptr, elevatorDrive(), armDrive(), {0.0, 1.0}, {0.0, 0.0}).status(),
+  EXPECT_EQ(Trajectory::create(nullptr, referenceDrives(), {0.0, 1.0}, {0.0, 0.0}).status(),
             PlanStatus::kInvalidInput);
   EXPECT_EQ(make({}, {}), PlanStatus::kInvalidInput);
   EXPECT_EQ(make({0.0, 1.0}, {0.0}), PlanStatus::kInvalidInput);
@@ -166,7 +168,7 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
     arm.current_limit_amps = 1e6;
     DriveParams elevator = elevatorDrive();
     elevator.voltage_limit_volts = elevator.current_limit_amps = 1e6;
-    return Trajectory::create(path, elevator, arm, reference.sGrid(), reference.bGrid()).value();
+    return Trajectory::create(path, drivesOf(elevator, arm), reference.sGrid(), reference.bGrid()).value();
   };
   const double limit = armDrive().voltage_limit_volts * peak;
   EXPECT_TRUE(withinDriveLimits(withArmLimit(1.001 * limit), step, 0.0));
@@ -176,7 +178,7 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
   capped.voltage_limit_volts = capped.current_limit_amps = 1e6;
   capped.acceleration_limit = 1e-3;
   EXPECT_FALSE(withinDriveLimits(
-      Trajectory::create(path, elevatorDrive(), capped, reference.sGrid(), reference.bGrid()).value(), step, 0.0));
+      Trajectory::create(path, drivesOf(elevatorDrive(), capped), reference.sGrid(), reference.bGrid()).value(), step, 0.0));
 }
 
 TEST(Trajectory, SlowedDownFollowsTheSamePathWithVelocitiesOverTheFactor) {

@@ -25,14 +25,14 @@ JointState run(const JointPlant& plant, JointState state, double volts, double d
 }
 
 TEST(JointModel, CopiesTheDriveFigures) {
-  const auto& drive = test::referenceModel().arm_drive;
+  const auto& drive = test::referenceModel().drive(1);
   const JointPlant plant = referencePlant(test::kArm);
   EXPECT_EQ(plant.kS_volts, drive.kS_volts);
   EXPECT_EQ(plant.kG_volts, drive.kG_volts);
   EXPECT_EQ(plant.kV, drive.kV);
   EXPECT_EQ(plant.kA, drive.kA);
   EXPECT_EQ(plant.voltage_limit_volts, drive.voltage_limit_volts);
-  EXPECT_EQ(plant.range.max, test::referenceModel().arm_range_rad.max);
+  EXPECT_EQ(plant.range.max, test::referenceModel().range(1).max);
   EXPECT_DOUBLE_EQ(plant.gravityFactor(0.3), std::cos(0.3));
   EXPECT_EQ(referencePlant(test::kElevator).gravityFactor(0.3), 1.0);
 }
@@ -40,7 +40,7 @@ TEST(JointModel, CopiesTheDriveFigures) {
 // The feedforward of a constant velocity keeps that velocity: the model is the inverse of
 // DriveParams::volts.
 TEST(JointModel, FeedforwardOfAConstantVelocityHoldsIt) {
-  const auto& drive = test::referenceModel().elevator_drive;
+  const auto& drive = test::referenceModel().drive(0);
   const JointPlant plant = referencePlant(test::kElevator);
   for (double v : {-1.5, -0.2, 0.3, 2.0}) {
     JointState state{1.0, v};

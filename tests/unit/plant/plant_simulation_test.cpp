@@ -19,8 +19,8 @@ constexpr double kStreamPeriod_s = 0.005;  // the daemon's default 200 Hz
 SimulationSettings referenceSettings() {
   const auto& model = test::referenceModel();
   SimulationSettings settings;
-  settings.plants[test::kElevator] = JointPlant::fromDrive(model.elevator_drive, model.range(0));
-  settings.plants[test::kArm] = JointPlant::fromDrive(model.arm_drive, model.range(1));
+  settings.plants[test::kElevator] = JointPlant::fromDrive(model.drive(0), model.range(0));
+  settings.plants[test::kArm] = JointPlant::fromDrive(model.drive(1), model.range(1));
   settings.gains[test::kElevator] = kDefaultElevatorGains;
   settings.gains[test::kArm] = kDefaultArmGains;
   return settings;
@@ -163,7 +163,7 @@ TEST(PlantSimulation, ExtrapolatesTheLatestSetpointUntilItTimesOut) {
 TEST(PlantSimulation, GoesNeutralAfterTheSetpointTimeout) {
   const auto& model = test::referenceModel();
   PlantSimulation sim(referenceSettings(), planner::JointVector(1.0, 1.57));
-  const JointCommand hold{1.0, 0.0, model.elevator_drive.volts(1.0, 0.0, 0.0)};
+  const JointCommand hold{1.0, 0.0, model.drive(0).volts(1.0, 0.0, 0.0)};
   for (int k = 0; k < 20; ++k) sim.receiveSetpoint(test::kElevator, hold, k * kStreamPeriod_s);
   const double last_s = 19 * kStreamPeriod_s;
   sim.advanceTo(last_s + 0.099);

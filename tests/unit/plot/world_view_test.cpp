@@ -17,9 +17,10 @@
 
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/collision_world.hpp"
-#include "cyber/planner/pose_transform.hpp"
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/plot/world_view.hpp"
 #include "public_moves.hpp"
+#include "reference_model.hpp"
 
 namespace cyber::plot {
 namespace {
@@ -118,37 +119,40 @@ TEST_F(WorldView, ReefObstacleVerticesAreWhereTheConfigPutsThem) {
 }
 
 // At every public pose of the coral set, the arm's tip corners and the coral's far end are drawn
-// where planner::armPose puts them.
+// where planner::linkFrames puts them.
 TEST_F(WorldView, ArmTipAndHeldCoralAreWhereTheGeometryPutsThem) {
   const WorldCanvas c = worldPngCanvas(robot_);
-  const planner::ConvexPolygon& arm = robot_.geometry.arm.front();
-  const planner::ConvexPolygon& coral = robot_.geometry.coral.front();
+  const planner::ConvexPolygon& arm = robot_.links.front().polygons.front();
+  const int coral_index = robot_.pieceIndex("coral");
+  const planner::ConvexPolygon& coral = robot_.pieces[static_cast<size_t>(coral_index)].polygons.front();
+  const auto& arm_color = kWorldColors.links[1];
+  const auto& coral_color = kWorldColors.pieces[coral_index];
   const Point2 coral_mid = centroid(coral.vertices());
   for (const auto& pose : test::publicPoses("coral")) {
     const std::string path = tempPath("world_" + pose.name);
     std::string error;
-    ASSERT_TRUE(renderWorldPng(robot_, 0, {true, false}, pose.q, pose.name, path, &error)) << error;
+    ASSERT_TRUE(renderWorldPng(robot_, 0, test::referencePieces("coral"), pose.q, pose.name, path, &error)) << error;
     const Image image(path);
     ASSERT_TRUE(image.ok());
-    const planner::ArmPose p = planner::armPose(robot_.rail, pose.q);
+    const planner::LinkFrame p = planner::linkFrames(robot_.joints, pose.q)[1];
     // The arm's tip corners: (0.25, +-0.1) in the arm frame; the coral covers the tip's middle.
     std::vector<Point2> arm_world;
     for (const Point2& v : arm.vertices()) arm_world.push_back(p.toWorld(v));
     for (size_t i = 0; i < arm_world.size(); ++i) {
       if (arm.vertices()[i].x() < 0.2) continue;
       const Point2 in = corner(c, arm_world, i, 2.5);
-      EXPECT_TRUE(near(image.at(in.x(), in.y()), kWorldColors.arm))
+      EXPECT_TRUE(near(image.at(in.x(), in.y()), arm_color))
           << pose.name << " arm corner " << arm.vertices()[i].transpose();
       const Point2 out = corner(c, arm_world, i, -4.0);
-      EXPECT_FALSE(near(image.at(out.x(), out.y()), kWorldColors.arm))
+      EXPECT_FALSE(near(image.at(out.x(), out.y()), arm_color))
           << pose.name << " arm corner " << arm.vertices()[i].transpose();
     }
     const Point2 end = p.toWorld(Point2(coral.vertices()[1].x(), 0.0));  // middle of the coral's far end
     const Point2 in = inset(c, end, p.toWorld(coral_mid), 3.0);
-    EXPECT_TRUE(near(image.at(in.x(), in.y()), kWorldColors.coral)) << pose.name;
+    EXPECT_TRUE(near(image.at(in.x(), in.y()), coral_color)) << pose.name;
     const Point2 out = inset(c, end, p.toWorld(coral_mid), -4.0);
-    EXPECT_FALSE(near(image.at(out.x(), out.y()), kWorldColors.coral)) << pose.name;
-    EXPECT_FALSE(near(image.at(out.x(), out.y()), kWorldColors.arm)) << pose.name;
+    EXPECT_FALSE(near(image.at(out.x(), out.y()), coral_color)) << pose.name;
+    EXPECT_FALSE(near(image.at(out.x(), out.y()), arm_color)) << pose.name;
     std::filesystem::remove(path);
   }
 }

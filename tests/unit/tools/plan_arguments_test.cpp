@@ -11,17 +11,19 @@ auto parse = [](const std::vector<std::string>& args) { return parsePlanArgument
 
 TEST(PlanArguments, BothSpellingsOfAValueMeanTheSame) {
   for (const auto& args : {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity",
-                                                    "-0.2,1", "--scene", "open", "--csv", "m.csv", "--coral", "--json"},
+                                                    "-0.2,1", "--scene", "open", "--scene-offset", "0.1", "--csv", "m.csv",
+                                                    "--pieces", "coral", "--json"},
                            std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1",
-                                                    "--scene=open", "--csv=m.csv", "--coral", "--json"}}) {
+                                                    "--scene=open", "--scene-offset=0.1", "--csv=m.csv", "--pieces=coral",
+                                                    "--json"}}) {
     const PlanArguments a = parsedOk(parse, args);
     EXPECT_EQ(a.from, planner::JointVector(0.2, 1.57));
     EXPECT_EQ(a.to, planner::JointVector(1.97, 5.17));
     EXPECT_EQ(a.from_velocity, planner::JointVector(-0.2, 1.0));
     EXPECT_EQ(a.scene, "open");
     EXPECT_EQ(a.csv_path, "m.csv");
-    EXPECT_TRUE(a.pieces.coral);
-    EXPECT_FALSE(a.pieces.algae);
+    EXPECT_EQ(a.pieces, "coral");
+    EXPECT_DOUBLE_EQ(a.scene_offset_m, 0.1);
     EXPECT_TRUE(a.json);
   }
 }
@@ -38,6 +40,7 @@ TEST(PlanArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, with({"--json=1"})), "--json takes no value, got '--json=1'");
   EXPECT_EQ(parseError(parse, {"--from", "0,0"}), "missing --to (see --help)");
   EXPECT_EQ(parseError(parse, {"--to", "0,0"}), "missing --from (see --help)");
+  EXPECT_EQ(parseError(parse, with({"--scene-offset", "near"})), "--scene-offset expects a finite number of metres, got 'near'");
   for (const char* bad : {"1", "1,2,3", "1,nan", "1,2x"}) {
     EXPECT_EQ(
         parseError(parse, with({"--from-velocity", bad})),

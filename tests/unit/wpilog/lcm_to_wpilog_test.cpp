@@ -14,7 +14,7 @@
 #include <random>
 
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/pose_transform.hpp"
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/wpilog/lcm_to_wpilog.hpp"
 #include "cyber/wpilog/pose3d.hpp"
 #include "cyber/wpilog/wpilog_reader.hpp"
@@ -392,31 +392,33 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
 }
 
 // The 3-D components are the carriage at the pivot and the arm turned by its angle about the
-// pivot, as planner::armPose places them; the Mechanism2d ligaments add up to the same angles.
+// pivot, as planner::linkFrames places them; the Mechanism2d ligaments, named by the joints, add up
+// to the same angles.
 TEST_F(LcmToWpilog, MechanismFollowsTheMeasuredState) {
   const auto poses = records("Mechanism3d/Measured", "struct:Pose3d[]");
   ASSERT_EQ(poses.size(), s_.states.size());
   ASSERT_TRUE(log_.find("/.schema/struct:Pose3d"));
-  const auto rail = records("Mechanism2d/Measured/Rail/Elevator/angle", "double");
-  const auto arm = records("Mechanism2d/Measured/Rail/Elevator/Arm/angle", "double");
-  const auto length = records("Mechanism2d/Measured/Rail/Elevator/length", "double");
+  const auto rail = records("Mechanism2d/Measured/Base/elevator/angle", "double");
+  const auto arm = records("Mechanism2d/Measured/Base/elevator/arm/angle", "double");
+  const auto length = records("Mechanism2d/Measured/Base/elevator/length", "double");
   EXPECT_EQ(asString(log_.payload(*records("Mechanism2d/Measured/.type", "string").front())), "Mechanism2d");
   for (size_t i = 0; i < poses.size(); ++i) {
     const State& m = s_.states[i].second;
-    const planner::ArmPose pose = planner::armPose(config_.robot.rail, planner::JointVector(m.elevator_m, m.arm_rad));
+    const planner::LinkFrame pose =
+        planner::linkFrames(config_.robot.joints, planner::JointVector(m.elevator_m, m.arm_rad))[1];
     std::vector<Pose3d> p;
     ASSERT_TRUE(unpackPose3dArray(log_.payload(*poses[i]), &p));
     ASSERT_EQ(p.size(), 2u);
     for (const Pose3d& c : p) {
-      EXPECT_NEAR(c.x, pose.pivot.x(), 1e-12);
-      EXPECT_NEAR(c.z, pose.pivot.y(), 1e-12);
+      EXPECT_NEAR(c.x, pose.origin_m.x(), 1e-12);
+      EXPECT_NEAR(c.z, pose.origin_m.y(), 1e-12);
       EXPECT_EQ(c.y, 0.0);
     }
     EXPECT_EQ(p[0].qw, 1.0);
     // The arm's +x axis rotated by the quaternion: (1 - 2(qy^2 + qz^2), ..., 2(qx qz - qw qy)).
     const Pose3d& a = p[1];
-    EXPECT_NEAR(1 - 2 * (a.qy * a.qy + a.qz * a.qz), pose.cos_theta, 1e-12);
-    EXPECT_NEAR(2 * (a.qx * a.qz - a.qw * a.qy), pose.sin_theta, 1e-12);
+    EXPECT_NEAR(1 - 2 * (a.qy * a.qy + a.qz * a.qz), pose.cos_angle, 1e-12);
+    EXPECT_NEAR(2 * (a.qx * a.qz - a.qw * a.qy), pose.sin_angle, 1e-12);
     EXPECT_NEAR((*asDouble(log_.payload(*rail[i])) + *asDouble(log_.payload(*arm[i]))) * M_PI / 180, m.arm_rad, 1e-12);
     EXPECT_EQ(asDouble(log_.payload(*length[i])), m.elevator_m);
   }

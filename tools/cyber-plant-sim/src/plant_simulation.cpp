@@ -36,11 +36,11 @@ std::optional<JointCommand> PlantSimulation::effectiveCommand(int joint, double 
 }
 
 planner::JointVector PlantSimulation::positions() const {
-  return {states_[planner::kElevator].position, states_[planner::kArm].position};
+  return {states_[0].position, states_[1].position};
 }
 
 planner::JointVector PlantSimulation::velocities() const {
-  return {states_[planner::kElevator].velocity, states_[planner::kArm].velocity};
+  return {states_[0].velocity, states_[1].velocity};
 }
 
 void PlantSimulation::step() {

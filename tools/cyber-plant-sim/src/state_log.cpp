@@ -30,10 +30,10 @@ std::string stateLogHeader() {
 
 std::string stateLogRow(const StateLogRow& row) {
   std::string out = fmt::format("{:.6f},{}", row.t_s, row.utime);
-  for (int joint : {planner::kElevator, planner::kArm}) {
+  for (int joint : {0, 1}) {
     fmt::format_to(std::back_inserter(out), ",{:.6f},{:.6f}", row.state[joint].position, row.state[joint].velocity);
   }
-  for (int joint : {planner::kElevator, planner::kArm}) {
+  for (int joint : {0, 1}) {
     appendCommand(out, row.command[joint]);
     fmt::format_to(std::back_inserter(out), ",{:.4f}", row.applied_volts[joint]);
   }

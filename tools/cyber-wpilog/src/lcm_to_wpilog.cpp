@@ -197,36 +197,51 @@ class Converter {
     e_.putDouble(key(j, "PlannedVolts"), t, volts);
   }
 
-  // The arm as AdvantageScope draws logged mechanisms: a Mechanism2d (rail and arm as ligaments,
-  // angles in degrees, each relative to its parent) and the robot-frame poses of the carriage
-  // and the arm as 3-D components (x forward, z up; the side view's y is z).
-  void mechanism(const std::string& which, uint64_t t, double elevator_m, double arm_rad) {
+  // The mechanism as AdvantageScope draws logged mechanisms: a Mechanism2d (one ligament per joint,
+  // named as the robot description names it, angles in degrees, each relative to its parent) and
+  // each link frame's robot-frame pose as a 3-D component (x forward, z up; the side view's y is z).
+  void mechanism(const std::string& which, uint64_t t, double q0, double q1) {
+    const planner::JointVector q(q0, q1);
     const std::string m = "Mechanism2d/" + which + "/";
+    const std::string first = m + "Base/" + g_.chain[0].name + "/";
+    const std::string second = first + g_.chain[1].name + "/";
     if (!e_.started(m + ".type")) {
       e_.putString(m + ".type", t, "Mechanism2d");
       e_.putBoolean(m + ".controllable", t, false);
       e_.putDoubles(m + "dims", t, {kMechanismWidthM, kMechanismHeightM});
       e_.putString(m + "backgroundColor", t, "#000020");
-      e_.putDouble(m + "Rail/x", t, g_.rail_base_x_m + kMechanismOriginXM);
-      e_.putDouble(m + "Rail/y", t, g_.rail_base_y_m);
-      e_.putString(m + "Rail/Elevator/.type", t, "line");
-      e_.putString(m + "Rail/Elevator/color", t, "#3070FF");
-      e_.putDouble(m + "Rail/Elevator/weight", t, 8.0);
-      e_.putString(m + "Rail/Elevator/Arm/.type", t, "line");
-      e_.putString(m + "Rail/Elevator/Arm/color", t, which == "Measured" ? "#FF8020" : "#20FF80");
-      e_.putDouble(m + "Rail/Elevator/Arm/weight", t, 6.0);
-      e_.putDouble(m + "Rail/Elevator/Arm/length", t, g_.arm_length_m);
+      e_.putDouble(m + "Base/x", t, g_.chain[0].origin_m.x() + kMechanismOriginXM);
+      e_.putDouble(m + "Base/y", t, g_.chain[0].origin_m.y());
+      e_.putString(first + ".type", t, "line");
+      e_.putString(first + "color", t, "#3070FF");
+      e_.putDouble(first + "weight", t, 8.0);
+      e_.putString(second + ".type", t, "line");
+      e_.putString(second + "color", t, which == "Measured" ? "#FF8020" : "#20FF80");
+      e_.putDouble(second + "weight", t, 6.0);
     }
-    const double tilt_deg = g_.rail_tilt_rad * kRadToDeg;
-    e_.putDouble(m + "Rail/Elevator/angle", t, tilt_deg);
-    e_.putDouble(m + "Rail/Elevator/length", t, elevator_m);
-    e_.putDouble(m + "Rail/Elevator/Arm/angle", t, arm_rad * kRadToDeg - tilt_deg);
+    // A ligament points along its link's x axis (a prismatic joint's along its travel) and is as
+    // long as the travel (prismatic) or the link's outline (revolute).
+    const auto frames = planner::linkFrames(g_.chain, q);
+    std::array<double, planner::kJointCount> angle_rad{}, length_m{};
+    double parent_rad = 0.0;
+    for (int j = 0; j < planner::kJointCount; ++j) {
+      const planner::ChainJoint& joint = g_.chain[static_cast<size_t>(j)];
+      const bool slides = joint.type == planner::JointType::kPrismatic;
+      angle_rad[static_cast<size_t>(j)] = slides ? parent_rad + joint.axis_rad : frames[static_cast<size_t>(j)].angle_rad();
+      length_m[static_cast<size_t>(j)] = (slides ? q[j] : 0.0) + g_.link_length_m[static_cast<size_t>(j)];
+      parent_rad = frames[static_cast<size_t>(j)].angle_rad();
+    }
+    e_.putDouble(first + "angle", t, angle_rad[0] * kRadToDeg);
+    e_.putDouble(first + "length", t, length_m[0]);
+    e_.putDouble(second + "angle", t, (angle_rad[1] - angle_rad[0]) * kRadToDeg);
+    e_.putDouble(second + "length", t, length_m[1]);
 
-    const double px = g_.rail_base_x_m + elevator_m * std::cos(g_.rail_tilt_rad);
-    const double pz = g_.rail_base_y_m + elevator_m * std::sin(g_.rail_tilt_rad);
-    // A rotation by -theta about +y turns +x up toward +z by theta.
-    const std::array<Pose3d, 2> poses{Pose3d{px, 0, pz, 1, 0, 0, 0},
-                                      Pose3d{px, 0, pz, std::cos(-arm_rad / 2), 0, std::sin(-arm_rad / 2), 0}};
+    // A rotation by -angle about +y turns +x up toward +z by angle.
+    std::array<Pose3d, planner::kJointCount> poses;
+    for (size_t k = 0; k < poses.size(); ++k) {
+      const double a = frames[k].angle_rad();
+      poses[k] = Pose3d{frames[k].origin_m.x(), 0, frames[k].origin_m.y(), std::cos(-a / 2), 0, std::sin(-a / 2), 0};
+    }
     e_.putPoses("Mechanism3d/" + which, t, poses);
   }
 
@@ -262,11 +277,25 @@ bool decode(const Event& event, Message* m) {
 
 MechanismGeometry mechanismGeometry(const planner::RobotModel& robot) {
   MechanismGeometry g;
-  g.rail_base_x_m = robot.rail.base_m.x();
-  g.rail_base_y_m = robot.rail.base_m.y();
-  g.rail_tilt_rad = robot.rail.tilt_rad;
-  for (const planner::ConvexPolygon& p : robot.geometry.arm) {
-    for (const planner::Point2& v : p.vertices()) g.arm_length_m = std::max(g.arm_length_m, v.x());
+  g.chain = robot.joints;
+  for (const planner::LinkGeometry& link : robot.links) {
+    for (const planner::ConvexPolygon& p : link.polygons) {
+      for (const planner::Point2& v : p.vertices()) {
+        double& length = g.link_length_m[static_cast<size_t>(link.joint)];
+        length = std::max(length, v.x());
+      }
+    }
+  }
+  // A revolute link that carries the next joint reaches at least to it.
+  for (int j = 0; j + 1 < planner::kJointCount; ++j) {
+    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kRevolute) {
+      double& length = g.link_length_m[static_cast<size_t>(j)];
+      length = std::max(length, g.chain[static_cast<size_t>(j) + 1].origin_m.x());
+    }
+  }
+  // A prismatic link's ligament is its travel alone (the carriage's outline is not along it).
+  for (int j = 0; j < planner::kJointCount; ++j) {
+    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kPrismatic) g.link_length_m[static_cast<size_t>(j)] = 0;
   }
   return g;
 }

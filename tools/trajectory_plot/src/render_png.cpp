@@ -221,7 +221,7 @@ void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const 
 void detail::drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x,
                                  double y, double w, double h) {
   const Axes ax = drawCSpaceMap(cr, map, Box{x, y, w, h});
-  for (const NamedJointPose& p : poses) marker(cr, ax, p.q[planner::kArm], p.q[planner::kElevator], p.name);
+  for (const NamedJointPose& p : poses) marker(cr, ax, p.q[1], p.q[0], p.name);
 }
 
 bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, std::string* error) {

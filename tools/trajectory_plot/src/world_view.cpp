@@ -42,16 +42,36 @@ struct Surface {
   Surface& operator=(const Surface&) = delete;
 };
 
-std::vector<const ConvexPolygon*> robotPolygons(const planner::RobotModel& robot, planner::HeldPieces pieces) {
-  std::vector<const ConvexPolygon*> out;
-  for (const auto& p : robot.geometry.arm) out.push_back(&p);
-  if (pieces.coral) {
-    for (const auto& p : robot.geometry.coral) out.push_back(&p);
+// A robot polygon with the link it moves with and the colour it is drawn in.
+struct RobotPart {
+  int link = 0;
+  const ConvexPolygon* polygon = nullptr;
+  const uint8_t* color = nullptr;
+};
+
+// Every link outline, then the held pieces', as CollisionWorld sees them.
+std::vector<RobotPart> robotParts(const planner::RobotModel& robot, planner::HeldPieces pieces) {
+  std::vector<RobotPart> out;
+  for (const planner::LinkGeometry& link : robot.links) {
+    for (const ConvexPolygon& p : link.polygons) out.push_back({link.joint, &p, kWorldColors.links[link.joint]});
   }
-  if (pieces.algae) {
-    for (const auto& p : robot.geometry.algae) out.push_back(&p);
+  for (size_t i = 0; i < robot.pieces.size(); ++i) {
+    if (!pieces.holds(static_cast<int>(i))) continue;
+    const planner::GamePiece& piece = robot.pieces[i];
+    for (const ConvexPolygon& p : piece.polygons) out.push_back({piece.joint, &p, kWorldColors.pieces[i % 4]});
   }
   return out;
+}
+
+// The farthest point along the last link's x axis of what moves with it: the tip traced and
+// labelled.
+double lastLinkReach(const planner::RobotModel& robot, planner::HeldPieces pieces) {
+  double reach = 0;
+  for (const RobotPart& part : robotParts(robot, pieces)) {
+    if (part.link != planner::kJointCount - 1) continue;
+    for (const Point2& v : part.polygon->vertices()) reach = std::max(reach, v.x());
+  }
+  return reach;
 }
 
 void polygonPath(cairo_t* cr, const WorldCanvas& c, const std::vector<Point2>& world) {
@@ -82,19 +102,26 @@ void drawScene(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& rob
   setColor(cr, rgb(kWorldColors.sky));
   cairo_paint(cr);
   if (scene >= 0 && scene < static_cast<int>(robot.scenes.size())) {
-    for (const auto& o : robot.scenes[static_cast<size_t>(scene)].obstacles) {
-      polygonPath(cr, c, o.polygon.vertices());
-      fillOutlined(cr, rgb(kWorldColors.obstacle), 1.0);
+    const planner::Scene& drawn = robot.scenes[static_cast<size_t>(scene)];
+    for (const auto* list : {&drawn.obstacles, &drawn.fixed}) {
+      for (const auto& o : *list) {
+        polygonPath(cr, c, o.polygon.vertices());
+        fillOutlined(cr, rgb(kWorldColors.obstacle), 1.0);
+      }
     }
   }
-  const Point2 dir(std::cos(robot.rail.tilt_rad), std::sin(robot.rail.tilt_rad));
-  const Point2 a = robot.rail.base_m + robot.range(0).min * dir;
-  const Point2 b = robot.rail.base_m + robot.range(0).max * dir;
-  setColor(cr, kRail, 0.5);
-  cairo_set_line_width(cr, 5.0);
-  cairo_move_to(cr, c.px(a.x()), c.py(a.y()));
-  cairo_line_to(cr, c.px(b.x()), c.py(b.y()));
-  cairo_stroke(cr);
+  // A first joint that slides is drawn as its rail (a later one moves with the links).
+  const planner::ChainJoint& first = robot.joints[0];
+  if (first.type == planner::JointType::kPrismatic) {
+    const Point2 dir(std::cos(first.axis_rad), std::sin(first.axis_rad));
+    const Point2 a = first.origin_m + first.range.min * dir;
+    const Point2 b = first.origin_m + first.range.max * dir;
+    setColor(cr, kRail, 0.5);
+    cairo_set_line_width(cr, 5.0);
+    cairo_move_to(cr, c.px(a.x()), c.py(a.y()));
+    cairo_line_to(cr, c.px(b.x()), c.py(b.y()));
+    cairo_stroke(cr);
+  }
   cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
   for (double x = std::ceil(c.x0 * 2) / 2; x <= c.x1; x += 0.5)
     text(cr, c.px(x), c.box_y + c.box_h - 4, fmt::format("{:.1f}", x), 10, true);
@@ -112,21 +139,19 @@ void endScene(cairo_t* cr, const WorldCanvas& c) {
 
 void drawRobot(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces,
                const JointVector& q, double alpha) {
-  const planner::ArmPose pose = planner::armPose(robot.rail, q);
-  auto draw = [&](const std::vector<ConvexPolygon>& polygons, const uint8_t(&color)[3]) {
-    for (const ConvexPolygon& p : polygons) {
-      std::vector<Point2> world;
-      for (const Point2& v : p.vertices()) world.push_back(pose.toWorld(v));
-      polygonPath(cr, c, world);
-      fillOutlined(cr, rgb(color), alpha);
-    }
-  };
-  draw(robot.geometry.arm, kWorldColors.arm);
-  if (pieces.coral) draw(robot.geometry.coral, kWorldColors.coral);
-  if (pieces.algae) draw(robot.geometry.algae, kWorldColors.algae);
+  const auto frames = planner::linkFrames(robot.joints, q);
+  for (const RobotPart& part : robotParts(robot, pieces)) {
+    std::vector<Point2> world;
+    for (const Point2& v : part.polygon->vertices()) world.push_back(frames[static_cast<size_t>(part.link)].toWorld(v));
+    polygonPath(cr, c, world);
+    fillOutlined(cr, Rgb{part.color[0] / 255.0, part.color[1] / 255.0, part.color[2] / 255.0}, alpha);
+  }
+  // The joints: each link frame's origin.
   setColor(cr, kOutline, alpha);
-  cairo_arc(cr, c.px(pose.pivot.x()), c.py(pose.pivot.y()), 3.0, 0, 2 * M_PI);
-  cairo_fill(cr);
+  for (const planner::LinkFrame& frame : frames) {
+    cairo_arc(cr, c.px(frame.origin_m.x()), c.py(frame.origin_m.y()), 3.0, 0, 2 * M_PI);
+    cairo_fill(cr);
+  }
 }
 
 void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point, const Point2& obstacle_point,
@@ -144,17 +169,14 @@ void drawClearance(cairo_t* cr, const WorldCanvas& c, const Point2& robot_point,
   text(cr, c.px(mid.x()) + 8, c.py(mid.y()) - 6, fmt::format("{}{:.3f} m", label, distance_m), 12);
 }
 
-// The farthest robot point along the arm's x axis, traced over the move.
+// The farthest robot point along the last link's x axis, traced over the move.
 void drawTipTrace(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& robot, planner::HeldPieces pieces,
                   const Move& move) {
-  double reach = 0;
-  for (const ConvexPolygon* p : robotPolygons(robot, pieces)) {
-    for (const Point2& v : p->vertices()) reach = std::max(reach, v.x());
-  }
+  const double reach = lastLinkReach(robot, pieces);
   setColor(cr, Rgb{0.05, 0.55, 0.15}, 0.8);
   cairo_set_line_width(cr, 1.5);
   for (size_t k = 0; k < move.q.size(); ++k) {
-    const Point2 tip = planner::armPose(robot.rail, move.q[k]).toWorld(Point2(reach, 0));
+    const Point2 tip = planner::linkFrames(robot.joints, move.q[k])[1].toWorld(Point2(reach, 0));
     if (k == 0) {
       cairo_move_to(cr, c.px(tip.x()), c.py(tip.y()));
     } else {
@@ -247,18 +269,29 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
 }  // namespace
 
 WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_y, double box_w, double box_h) {
-  double reach = 0;
-  for (const ConvexPolygon* p : robotPolygons(robot, robot.allPieces())) {
-    for (const Point2& v : p->vertices()) reach = std::max(reach, v.norm());
-  }
-  const Point2 dir(std::cos(robot.rail.tilt_rad), std::sin(robot.rail.tilt_rad));
-  const Point2 a = robot.rail.base_m + robot.range(0).min * dir;
-  const Point2 b = robot.rail.base_m + robot.range(0).max * dir;
+  // Everything the robot can sweep: its polygons (every piece held) over a grid of joint values.
+  constexpr int kSamples = 9;
   constexpr double kMargin = 0.1;
-  double x0 = std::min(a.x(), b.x()) - reach - kMargin, x1 = std::max(a.x(), b.x()) + reach + kMargin;
-  double y0 = std::min(-kMargin, std::min(a.y(), b.y()) - reach - kMargin),
-         y1 = std::max(a.y(), b.y()) + reach + kMargin;
-  y0 = std::max(y0, -kMargin);  // below the floor there is nothing to see
+  Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity());
+  Point2 hi = -lo;
+  const std::vector<RobotPart> parts = robotParts(robot, robot.allPieces());
+  for (int i = 0; i < kSamples; ++i) {
+    for (int k = 0; k < kSamples; ++k) {
+      const double f0 = static_cast<double>(i) / (kSamples - 1), f1 = static_cast<double>(k) / (kSamples - 1);
+      const JointVector q(robot.range(0).min + f0 * (robot.range(0).max - robot.range(0).min),
+                          robot.range(1).min + f1 * (robot.range(1).max - robot.range(1).min));
+      const auto frames = planner::linkFrames(robot.joints, q);
+      for (const RobotPart& part : parts) {
+        for (const Point2& v : part.polygon->vertices()) {
+          const Point2 w = frames[static_cast<size_t>(part.link)].toWorld(v);
+          lo = lo.cwiseMin(w);
+          hi = hi.cwiseMax(w);
+        }
+      }
+    }
+  }
+  double x0 = lo.x() - kMargin, x1 = hi.x() + kMargin;
+  double y0 = std::max(lo.y() - kMargin, -kMargin), y1 = hi.y() + kMargin;  // below the floor is nothing to see
   const double scale = std::min(box_w / (x1 - x0), box_h / (y1 - y0));
   const double cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   WorldCanvas c;
@@ -366,14 +399,11 @@ bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner
   Surface s(kW, kH);
   const WorldCanvas c = fitWorld(robot, 20, 60, 620, kH - 80);
   drawScene(s.cr, c, robot, scene);
-  double reach = 0;
-  for (const ConvexPolygon* p : robotPolygons(robot, pieces)) {
-    for (const Point2& v : p->vertices()) reach = std::max(reach, v.x());
-  }
+  const double reach = lastLinkReach(robot, pieces);
   for (const NamedJointPose& p : poses) drawRobot(s.cr, c, robot, pieces, p.q, 0.55);
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   for (const NamedJointPose& p : poses) {
-    const Point2 tip = planner::armPose(robot.rail, p.q).toWorld(Point2(reach + 0.03, 0));
+    const Point2 tip = planner::linkFrames(robot.joints, p.q)[1].toWorld(Point2(reach + 0.03, 0));
     text(s.cr, c.px(tip.x()), c.py(tip.y()), p.name, 11, true);
   }
   endScene(s.cr, c);

@@ -30,6 +30,10 @@ class CollisionWorld {
   // Robot polygons: every link's, plus those of the held pieces (a held piece only adds geometry).
   // The scene's field elements are shifted by scene_offset_m in x, its fixed obstacles are not.
   CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, double scene_offset_m = 0.0);
+  // The field elements swept over every offset of `band` (ConvexPolygon::sweptAlongX): a world no
+  // closer to the robot than the scene at any of those offsets (the grids of a band of offsets,
+  // docs/algorithm.md section 2, "Scene offsets").
+  CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, const JointRange& band);
 
   // Signed distance of the pose q: minimum over robot polygon x obstacle pairs. Pairs whose cheap
   // lower bound (bounding circle against bounding box, then the separating-axis gap) cannot beat
@@ -54,7 +58,6 @@ class CollisionWorld {
   [[nodiscard]] int robotPolygonCount() const { return static_cast<int>(robot_.size()); }
   [[nodiscard]] int obstacleCount() const { return static_cast<int>(obstacles_.size()); }
   [[nodiscard]] ChainPose poseAt(const JointVector& q) const { return chainPose(chain_, q); }
-  [[nodiscard]] double sceneOffsetM() const { return scene_offset_m_; }
 
  private:
   struct RobotPart {  // in its link's frame
@@ -84,7 +87,6 @@ class CollisionWorld {
                                   SignedDistance& out) const;
 
   HeldPieces pieces_;
-  double scene_offset_m_ = 0.0;
   JointChain chain_;
   std::vector<RobotPart> robot_;
   std::vector<Obstacle> obstacles_;

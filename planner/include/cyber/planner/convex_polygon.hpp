@@ -17,6 +17,11 @@ class ConvexPolygon {
   // `error` is set to the reason on failure (and the returned polygon is empty).
   static ConvexPolygon fromVertices(std::vector<Point2> vertices, std::string* error);
 
+  // Everything the polygon covers while it slides along x from lo_m to hi_m (lo_m <= hi_m): the
+  // convex hull of its two end copies (a Minkowski sum with a segment). For lo_m == hi_m, the
+  // polygon moved by lo_m.
+  [[nodiscard]] ConvexPolygon sweptAlongX(double lo_m, double hi_m) const;
+
   [[nodiscard]] const std::vector<Point2>& vertices() const { return vertices_; }
   [[nodiscard]] int size() const { return static_cast<int>(vertices_.size()); }
   [[nodiscard]] bool empty() const { return vertices_.empty(); }

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 
+#include "cyber/planner/chain_dynamics.hpp"
 #include "cyber/planner/geometric_path.hpp"
 #include "cyber/planner/joint_chain.hpp"
 #include "cyber/planner/motor_params.hpp"
@@ -38,22 +39,24 @@ struct DriveParams {
   [[nodiscard]] double amps(double volts, double qdot) const;
 };
 
-// Along a path q(s) with path speed^2 b = sdot^2 and path acceleration a = sddot, a joint's
-// voltage is alpha a + beta b + gamma sqrt(b) + gravity_volts + kS sgn(qdot) (algorithm.md
-// section 3); its current times R is the same with gamma less the back-EMF's G q' / Kv.
-struct PathVoltage {
-  double alpha = 0.0;
-  double beta = 0.0;
-  double gamma = 0.0;
-  double gravity_volts = 0.0;
-};
+// How the joints' voltages follow from their motion (docs/algorithm.md section 3): each joint's
+// WPILib feedforward on its own, or the coupled rigid-body dynamics of the chain.
+enum class DriveKind { kFeedforward, kRigidBody };
 
-// Both joints' drives with what their gravity terms need of the chain (no names: copying it
-// allocates nothing).
+// Both joints' drives with what their voltages need of the chain (no names: copying it allocates
+// nothing). Along a path a joint's voltage is alpha a + beta b + gamma sqrt(b) + offset +
+// kS sgn(qdot) for either kind (PathVoltage, chain_dynamics.hpp); its current times R is the same
+// with gamma less the back-EMF's G q' / Kv.
 class DriveModel {
  public:
   DriveModel() = default;
+  // WPILib feedforward per joint.
   DriveModel(const JointChain& chain, const std::array<DriveParams, kJointCount>& drives);
+  // Coupled rigid-body dynamics: the drives' motors, gearing, kS and limits (their kG, kV, kA are
+  // not used) driving `dynamics`.
+  DriveModel(const std::array<DriveParams, kJointCount>& drives, const ChainDynamics& dynamics);
+
+  [[nodiscard]] DriveKind kind() const { return dynamics_ ? DriveKind::kRigidBody : DriveKind::kFeedforward; }
 
   [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[static_cast<size_t>(joint)]; }
   [[nodiscard]] const std::array<DriveParams, kJointCount>& drives() const { return drives_; }
@@ -63,10 +66,14 @@ class DriveModel {
   [[nodiscard]] double gravityAngle(int joint, const JointVector& q) const;
   [[nodiscard]] JointVector volts(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const;
   [[nodiscard]] JointVector amps(const JointVector& volts, const JointVector& qdot) const;
-  [[nodiscard]] PathVoltage pathVoltage(int joint, const PathPoint& p) const;
+  // Both joints' path coefficients at one path point.
+  [[nodiscard]] std::array<PathVoltage, kJointCount> pathVoltages(const PathPoint& p) const;
 
  private:
+  [[nodiscard]] RigidBodyDrive rigidBodyDrive(int joint) const;
+
   std::array<DriveParams, kJointCount> drives_{};
+  std::optional<ChainDynamics> dynamics_;
   std::array<JointType, kJointCount> types_{JointType::kRevolute, JointType::kRevolute};
   std::array<double, kJointCount> axes_rad_{};
 };

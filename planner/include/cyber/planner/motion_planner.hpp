@@ -5,6 +5,7 @@
 // plan() is const and keeps no state between calls, so several threads may share one planner.
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cyber/planner/path_planner.hpp"
@@ -22,6 +23,9 @@ struct PlanRequest {
   JointVector start_velocity = JointVector::Zero();  // (m/s, rad/s); zero: start at rest
   HeldPieces pieces;
   int scene = 0;  // index into RobotModel::scenes
+  // Shift of the scene's field elements in x (> 0: the robot further from them), within the
+  // scene's offset_range_m (docs/algorithm.md section 2, "Scene offsets").
+  double scene_offset_m = 0.0;
 };
 
 using SolverReport = ToppReport;
@@ -44,12 +48,18 @@ class MotionPlanner {
   [[nodiscard]] Result<Plan> plan(const PlanRequest& request) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
-  [[nodiscard]] const PathPlanner& pathPlanner(int scene) const { return path_planners_[static_cast<size_t>(scene)]; }
+  // The path stage of a scene as drawn (offset 0).
+  [[nodiscard]] const PathPlanner& pathPlanner(int scene) const {
+    return path_planners_[static_cast<size_t>(scene)].front();
+  }
+  // The bands of scene offsets a scene's grids were built for (the first is the offset 0 alone).
+  [[nodiscard]] std::vector<JointRange> offsetBands(int scene) const;
 
  private:
   MotionPlanner() = default;
   RobotModel model_;
-  std::vector<PathPlanner> path_planners_;  // by scene index
+  // By scene index: the scene as drawn, then one planner per band of offsets.
+  std::vector<std::vector<PathPlanner>> path_planners_;
 };
 
 }  // namespace cyber::planner

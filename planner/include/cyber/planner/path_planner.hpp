@@ -4,7 +4,10 @@
 // interpolate them with a C^2 spline and check the spline's clearance continuously, with
 // fallbacks when the check fails.
 //
-// Constructed once per scene: builds the collision worlds and grids of all four game-piece sets.
+// Constructed once per scene and band of scene offsets: builds the collision worlds and grids of
+// every game-piece set. atOffset() gives the planner of one offset in the band: the band's grids
+// (conservative for every offset in it) with the exact offset's worlds, which every clearance check
+// uses (docs/algorithm.md section 2, "Scene offsets").
 // plan() is const and keeps no state between calls, so one planner may serve several threads.
 
 #include <array>
@@ -36,11 +39,17 @@ struct PlannedPath {
   int search_expanded = 0;
   int optimizer_iterations = 0;
   std::string method;  // which attempt produced the path (e.g. "optimised", "prior")
+  HeldPieces pieces;   // held along it (its collision world's, and its drives' under rigid-body dynamics)
 };
 
 class PathPlanner {
  public:
-  PathPlanner(const RobotModel& model, const Scene& scene);
+  // `band`: the scene offsets the grids serve; {0, 0} (the scene as drawn) by default.
+  PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band = {});
+  // The same grids with the worlds at scene_offset_m (inside the band). Copies the model and
+  // makes the worlds: a few microseconds, no grid is built.
+  [[nodiscard]] PathPlanner atOffset(double scene_offset_m) const;
+  [[nodiscard]] const JointRange& band() const { return band_; }
 
   // start_velocity (joint units/s) only shapes the start of the path: the spline leaves along it
   // with unit Sigma-speed, after a straight lead-in. Typed errors, never an exception.
@@ -60,17 +69,24 @@ class PathPlanner {
   [[nodiscard]] const CollisionWorld& world(HeldPieces pieces) const {
     return worlds_[static_cast<size_t>(pieces.index())];
   }
-  [[nodiscard]] const CSpaceGrid& grid(HeldPieces pieces) const { return grids_[static_cast<size_t>(pieces.index())]; }
+  [[nodiscard]] const CSpaceGrid& grid(HeldPieces pieces) const {
+    return grids_->grids[static_cast<size_t>(pieces.index())];
+  }
   [[nodiscard]] double gridBuildMs(HeldPieces pieces) const {
-    return grid_build_ms_[static_cast<size_t>(pieces.index())];
+    return grids_->build_ms[static_cast<size_t>(pieces.index())];
   }
 
  private:
+  struct Grids {  // by HeldPieces::index(), shared by the planners of every offset in the band
+    std::vector<CSpaceGrid> grids;
+    std::vector<double> build_ms;
+  };
+
   RobotModel model_;
   Scene scene_;
-  std::vector<CollisionWorld> worlds_;  // by HeldPieces::index()
-  std::vector<CSpaceGrid> grids_;
-  std::vector<double> grid_build_ms_;
+  JointRange band_;
+  std::vector<CollisionWorld> worlds_;  // by HeldPieces::index(), at one offset
+  std::shared_ptr<const Grids> grids_;
 };
 
 }  // namespace cyber::planner

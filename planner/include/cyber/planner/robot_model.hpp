@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cyber/planner/convex_polygon.hpp"
@@ -52,6 +53,11 @@ struct GridSettings {
 struct SearchSettings {
   double potential_weight = 2.0;  // weight of the potential in the A* step cost
   double potential_range = 0.15;  // weighted C-space distance over which the potential decays
+  // Width of a band of scene offsets that shares one set of grids, in clearances: the grids of a
+  // band search the field elements swept across it, so a path may keep up to this much more than
+  // the clearance near them; narrower bands cost start-up time and memory (a set of grids per
+  // band; docs/algorithm.md section 2, "Scene offsets").
+  double offset_band_clearances = 2.0;
 };
 
 // Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
@@ -101,6 +107,11 @@ struct RobotModel {
   std::vector<Scene> scenes;        // scenes.front() is the default
   double clearance_m = 0.0;
   std::array<DriveParams, kJointCount> drives;
+  DriveKind drive_kind = DriveKind::kFeedforward;
+  // Rigid-body drives: what moves with each link's frame (index = joint), and each piece's mass
+  // data by piece index (massless unless the description gives it).
+  std::array<LinkInertia, kJointCount> bodies{};
+  std::vector<LinkInertia> piece_inertias;
   PlannerSettings planner;
 
   [[nodiscard]] const JointRange& range(int joint) const { return joints[static_cast<size_t>(joint)].range; }
@@ -115,11 +126,15 @@ struct RobotModel {
   // The number of distinct held sets (every subset of the pieces).
   [[nodiscard]] int pieceSetCount() const { return HeldPieces::setCount(static_cast<int>(pieces.size())); }
   [[nodiscard]] HeldPieces allPieces() const { return HeldPieces::fromIndex(pieceSetCount() - 1); }
+  // The held set of the named pieces: names separated by ',' or '+', or "" / "none" for none.
+  // Nothing, with `error` naming the piece, when a name is not one of `pieces`.
+  [[nodiscard]] std::optional<HeldPieces> piecesNamed(std::string_view names, std::string* error) const;
   // "none", or the held pieces' names joined by '+' in declaration order.
   [[nodiscard]] std::string pieceSetName(HeldPieces held) const;
 
-  // The voltage model of both joints (drive_model.hpp).
-  [[nodiscard]] DriveModel driveModel() const { return DriveModel(joints, drives); }
+  // The voltage model of both joints with these pieces held (drive_model.hpp; a held piece adds
+  // its mass to its link under the rigid-body model).
+  [[nodiscard]] DriveModel driveModel(HeldPieces held) const;
 };
 
 }  // namespace cyber::planner

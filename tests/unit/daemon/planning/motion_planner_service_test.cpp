@@ -32,7 +32,7 @@ TEST(MotionPlannerService, FeedforwardStaysWithinTheVoltageLimitOtherwiseFollows
   ASSERT_TRUE(service.ok()) << service.error().reason;
   auto planner = planner::MotionPlanner::create(model);
   ASSERT_TRUE(planner.ok());
-  const double limits[2] = {model.elevator_drive.voltage_limit_volts, model.arm_drive.voltage_limit_volts};
+  const double limits[2] = {model.drive(0).voltage_limit_volts, model.drive(1).voltage_limit_volts};
   int raw_beyond = 0;
   for (const char* label : {"none:L4->ALGAE_LOW", "none:PROCESSOR->L4", "coral:L1->NET"}) {
     SCOPED_TRACE(label);

@@ -15,13 +15,12 @@ namespace cyber::daemon::test {
 class HermiteTrajectory final : public SetpointSource {
  public:
   HermiteTrajectory(JointVector start, JointVector start_velocity, JointVector goal, double duration_s,
-                    const planner::DriveParams& elevator, const planner::DriveParams& arm)
+                    const planner::DriveModel& drives)
       : p0_(std::move(start)),
         v0_(std::move(start_velocity)),
         p1_(std::move(goal)),
         duration_s_(duration_s),
-        elevator_(elevator),
-        arm_(arm) {}
+        drives_(drives) {}
 
   [[nodiscard]] double durationS() const override { return duration_s_; }
 
@@ -29,7 +28,7 @@ class HermiteTrajectory final : public SetpointSource {
     JointSetpoints out;
     if (duration_s_ <= 0.0) {
       out.position = p1_;
-      out.volts = JointVector(elevator_.volts(p1_[0], 0, 0), arm_.volts(p1_[1], 0, 0));
+      out.volts = drives_.volts(p1_, JointVector::Zero(), JointVector::Zero());
       return out;
     }
     const double T = duration_s_;
@@ -41,15 +40,14 @@ class HermiteTrajectory final : public SetpointSource {
     out.position = h00 * p0_ + h10 * T * v0_ + h01 * p1_;
     out.velocity = d00 * p0_ + d10 * v0_ + d01 * p1_;
     const JointVector acceleration = a00 * p0_ + a10 * v0_ + a01 * p1_;
-    out.volts = JointVector(elevator_.volts(out.position[0], out.velocity[0], acceleration[0]),
-                            arm_.volts(out.position[1], out.velocity[1], acceleration[1]));
+    out.volts = drives_.volts(out.position, out.velocity, acceleration);
     return out;
   }
 
  private:
   JointVector p0_, v0_, p1_;
   double duration_s_;
-  planner::DriveParams elevator_, arm_;
+  planner::DriveModel drives_;
 };
 
 // A trajectory that holds `position` and turns its elevator setpoint to NaN after nan_after_s: a
@@ -72,8 +70,7 @@ class NanAfterTrajectory final : public SetpointSource {
 
 inline SharedSetpointSource makeHermite(const JointVector& start, const JointVector& start_velocity,
                                         const JointVector& goal, double duration_s, const planner::RobotModel& robot) {
-  return std::make_shared<HermiteTrajectory>(start, start_velocity, goal, duration_s, robot.elevator_drive,
-                                             robot.arm_drive);
+  return std::make_shared<HermiteTrajectory>(start, start_velocity, goal, duration_s, robot.driveModel({}));
 }
 
 }  // namespace cyber::daemon::test

@@ -1,6 +1,6 @@
 #pragma once
-// Hold setpoints: target position, zero velocity and the gravity feedforward kG*g(q) of each joint
-// (WPILib feedforward at rest, algorithm.md section 3 with qdot = qddot = 0).
+// Hold setpoints: target position, zero velocity and the gravity feedforward of each joint (the
+// drive model at rest, algorithm.md section 3 with qdot = qddot = 0).
 
 #include "cyber/daemon/setpoint_source.hpp"
 #include "cyber/planner/robot_model.hpp"
@@ -9,14 +9,15 @@ namespace cyber::daemon {
 
 class HoldModel {
  public:
-  HoldModel(const planner::DriveParams& elevator, const planner::DriveParams& arm) : elevator_(elevator), arm_(arm) {}
-  explicit HoldModel(const planner::RobotModel& robot) : HoldModel(robot.elevator_drive, robot.arm_drive) {}
+  explicit HoldModel(const planner::DriveModel& drives) : drives_(drives) {}
+  // Holds with nothing held: the gravity a held piece adds under rigid-body dynamics is left to
+  // the controllers' feedback (docs/design.md).
+  explicit HoldModel(const planner::RobotModel& robot) : HoldModel(robot.driveModel({})) {}
 
   [[nodiscard]] JointSetpoints hold(const JointVector& q) const;
 
  private:
-  planner::DriveParams elevator_;
-  planner::DriveParams arm_;
+  planner::DriveModel drives_;
 };
 
 }  // namespace cyber::daemon

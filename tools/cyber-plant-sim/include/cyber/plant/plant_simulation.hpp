@@ -15,7 +15,7 @@
 
 namespace cyber::plant {
 
-inline constexpr int kJointCount = 2;  // planner::kElevator, planner::kArm
+inline constexpr int kJointCount = planner::kJointCount;  // joint 0, joint 1 in chain order
 
 struct SimulationSettings {
   std::array<JointPlant, kJointCount> plants;

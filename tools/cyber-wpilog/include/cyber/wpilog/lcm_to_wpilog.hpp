@@ -4,6 +4,7 @@
 // receive times in µs from the log's first event; trajectory samples are placed on that clock
 // through the offset between the message's receive time and its utime.
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -14,10 +15,11 @@
 namespace cyber::wpilog {
 
 // What the mechanism views need of the robot: the rail and the arm's reach.
+// What the logged mechanism drawings need of the robot: its chain and how far each link's
+// outline reaches along its own x axis.
 struct MechanismGeometry {
-  double rail_base_x_m = 0, rail_base_y_m = 0;
-  double rail_tilt_rad = 0;
-  double arm_length_m = 0;  // farthest arm-polygon vertex along the arm
+  planner::JointChain chain;
+  std::array<double, planner::kJointCount> link_length_m{};
 };
 MechanismGeometry mechanismGeometry(const planner::RobotModel& robot);
 
