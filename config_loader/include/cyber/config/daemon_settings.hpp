@@ -20,6 +20,10 @@ struct ChannelNames {
   std::string daemon_status = "ARM_DAEMON_STATUS";
 };
 
+// Which robot controller sends the heartbeat that gates motion: its layout differs in one bit
+// (docs/can-protocol.md, "Robot heartbeat").
+enum class RobotController { kRoboRio, kSystemcore };
+
 struct DaemonSettings {
   std::string lcm_url = "udpm://239.255.76.67:7667?ttl=0";
   std::string can_interface = "can0";
@@ -27,7 +31,9 @@ struct DaemonSettings {
   double state_timeout_s = 0.25;      // ARM_STATE older than this is stale: no motion
   double heartbeat_timeout_s = 0.1;   // robot-enabled gate (design.md: 100 ms)
   bool require_robot_enabled = true;  // false only for bench use without a roboRIO
-  double planning_budget_s = 0.03;    // how far ahead a mid-motion replan starts
+  // Optional key, default Systemcore: its reading of the heartbeat is the safe one on either.
+  RobotController robot_controller = RobotController::kSystemcore;
+  double planning_budget_s = 0.03;  // how far ahead a mid-motion replan starts
   // The most the measured budget may grow to (a slow coprocessor or an emulated one plans
   // slower). Optional key, default 1 s.
   double max_planning_budget_s = 1.0;
