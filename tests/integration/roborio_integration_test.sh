@@ -33,7 +33,7 @@ ip netns exec "$ns" "$daemon" --config "$tmp/sim.toml" --can none >"$tmp/daemon.
 daemon_pid=$!
 
 rc=0
-ip netns exec "$ns" "$java" -Dcyber.lcm.url='udpm://239.255.76.67:7667?ttl=0' \
+ip netns exec "$ns" "$java" -Dcyber.lcm.url='udpm://239.255.76.67:5810?ttl=0' \
   -Dcyber.state_timeout_s="$state_timeout_s" -Dcyber.daemon_log="$tmp/daemon.log" -jar "$junit" \
   --class-path "$classpath" --scan-class-path "$tests_jar" --include-tag daemon \
   --disable-banner --details=tree --disable-ansi-colors --fail-if-no-tests || rc=$?

@@ -71,5 +71,5 @@ spy_check() {
   echo "lcm_spy: $name: all six channels decoded by lcm-spy (table and screenshot in $dir)"
 }
 
-spy_check default "$spy" 'udpm://239.255.76.67:7667?ttl=0'  # LCM's default URL
+spy_check default "$spy" 'udpm://239.255.76.67:5810?ttl=0'  # the daemon's default URL (docs/lcm.md)
 spy_check aside "$spy_aside" 'udpm://239.255.76.67:7668?ttl=0'
