@@ -26,8 +26,8 @@
 
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
-#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyber/config/daemon_settings.hpp"
+#include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
