@@ -40,6 +40,11 @@ commands
 # Systemcore's C library and C++ runtime: glibc 2.42 and libstdc++ of GCC 14.3.0 (Buildroot
 # 2025.11.3, docs/operations.md, "Systemcore"). Its kernel uses 16 KiB pages.
 target_glibc=2.42 target_glibcxx=3.4.33 target_cxxabi=1.3.15 page_bytes=$((16 * 1024))
+# The libraries of its toolchain that Buildroot installs there (GLIBC_LIBS_LIB of
+# package/glibc/glibc.mk at 2025.11.3, and libstdc++, which WPILib's C++ robot programs link):
+# fewer than Debian's libc6 has (no libnsl, libBrokenLocale, ...), so a need outside this list would
+# run in the bare root here and fail on the controller.
+target_sonames='^(ld-linux-aarch64\.so\.1|libanl\.so\.1|libc\.so\.6|libdl\.so\.2|libgcc_s\.so\.1|libm\.so\.6|libpthread\.so\.0|libresolv\.so\.2|librt\.so\.1|libutil\.so\.1|libmvec\.so\.1|libnss_(files|dns)\.so\.2|libstdc\+\+\.so\.6)$'
 programs=(cyber-plannerd cyber-plan)
 
 ipks=("$build"/package/cyber-planner_*_aarch64.ipk)
@@ -105,8 +110,10 @@ for elf in "${elves[@]}"; do
   name=${elf#"$root"}
   [[ $(readelf -h "$elf" | sed -n 's/^ *Machine: *//p') == AArch64 ]] || fail "$name is not AArch64"
   for soname in $(readelf -d "$elf" | sed -n 's/.*(NEEDED).*\[\(.*\)\]$/\1/p'); do
-    [[ -e $root/usr/lib/cyber-planner/$soname || -e $root/lib/aarch64-linux-gnu/$soname ||
-       -e $root/usr/lib/aarch64-linux-gnu/$soname ]] || fail "$name needs $soname, which is neither bundled nor in the root"
+    [[ -e $root/usr/lib/cyber-planner/$soname ]] && continue
+    [[ -e $root/lib/aarch64-linux-gnu/$soname || -e $root/usr/lib/aarch64-linux-gnu/$soname ]] ||
+      fail "$name needs $soname, which is neither bundled nor in the root"
+    grep -qE "$target_sonames" <<<"$soname" || fail "$name needs $soname, which Systemcore's Buildroot does not install"
   done
   all_versions+=$(readelf -V --wide "$elf")$'\n'
   while read -r align; do
