@@ -135,7 +135,8 @@ echo "bundle: ${#elves[@]} AArch64 files ($bundled bundled libraries); newest ve
 
 # The configuration: the reference robot with the three Systemcore settings, nothing else changed.
 config=$root/etc/cyber-planner/robot.toml
-for setting in 'lcm_url = "udpm://239.255.76.67:5810?ttl=0"' 'can_interface = "can_s0"' 'setpoint_echo_full_rate = true'; do
+for setting in 'lcm_url = "udpm://239.255.76.67:5810?ttl=0"' 'can_interface = "can_s0"' 'setpoint_echo_full_rate = true' \
+    'robot_controller = "systemcore"'; do
   grep -qF "$setting  #" "$config" || fail "robot.toml lacks '$setting'"
 done
 changed=$(diff config/reefscape-2025.toml "$config" | grep -c '^>' || true)
