@@ -133,14 +133,14 @@ done
 echo "bundle: ${#elves[@]} AArch64 files ($bundled bundled libraries); newest versions needed GLIBC_$glibc," \
      "GLIBCXX_$glibcxx, CXXABI_$cxxabi (Systemcore: $target_glibc, $target_glibcxx, $target_cxxabi)"
 
-# The configuration: the reference robot with the three Systemcore settings, nothing else changed.
+# The configuration: the reference robot with the four Systemcore settings, nothing else changed.
 config=$root/etc/cyber-planner/robot.toml
 for setting in 'lcm_url = "udpm://239.255.76.67:5810?ttl=0"' 'can_interface = "can_s0"' 'setpoint_echo_full_rate = true' \
     'robot_controller = "systemcore"'; do
   grep -qF "$setting  #" "$config" || fail "robot.toml lacks '$setting'"
 done
 changed=$(diff config/reefscape-2025.toml "$config" | grep -c '^>' || true)
-[[ $changed -eq 3 ]] || fail "robot.toml differs from config/reefscape-2025.toml in $changed lines, expected 3"
+[[ $changed -eq 4 ]] || fail "robot.toml differs from config/reefscape-2025.toml in $changed lines, expected 4"
 
 # The unit and its drop-in, as systemd reads them (the units they name taken from this machine,
 # ip for ExecStartPre).
