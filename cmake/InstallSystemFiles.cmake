@@ -22,8 +22,8 @@ file(INSTALL DESTINATION ${CMAKE_INSTALL_PREFIX}/lib/systemd/system TYPE FILE
 # ttl=0, so tests and a developer's desktop stay on their host. Never overwrite one that is there
 # (the package's copy is a conffile, which dpkg handles itself; its staging root is always fresh).
 file(READ ${cyber_source_dir}/config/reefscape-2025.toml robot_toml)
-set(host_url [[lcm_url = "udpm://239.255.76.67:7667?ttl=0"]])
-set(lan_url [[lcm_url = "udpm://239.255.76.67:7667?ttl=1"]])
+set(host_url [[lcm_url = "udpm://239.255.76.67:5810?ttl=0"]])
+set(lan_url [[lcm_url = "udpm://239.255.76.67:5810?ttl=1"]])
 string(FIND "${robot_toml}" "${host_url}" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "config/reefscape-2025.toml has no line '${host_url}' to turn into ttl=1")

@@ -84,6 +84,16 @@ DaemonSettings readDaemon(TableReader d) {
   s.state_timeout_s = d.number("state_timeout_s", Bounds{0.001, 10.0});
   s.heartbeat_timeout_s = d.number("heartbeat_timeout_s", Bounds{0.001, 10.0});
   s.require_robot_enabled = d.boolean("require_robot_enabled");
+  if (d.has("robot_controller")) {
+    const std::string controller = d.string("robot_controller");
+    if (controller == "roborio") {
+      s.robot_controller = RobotController::kRoboRio;
+    } else if (controller == "systemcore") {
+      s.robot_controller = RobotController::kSystemcore;
+    } else {
+      d.fail("robot_controller", "expected \"roborio\" or \"systemcore\"");
+    }
+  }
   s.planning_budget_s = d.number("planning_budget_s", Bounds{0.0, 1.0});
   if (d.has("max_planning_budget_s")) {
     s.max_planning_budget_s = d.number("max_planning_budget_s", Bounds{s.planning_budget_s, 10.0});

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "cyber/can/bus_error.hpp"
 #include "cyber/can/frame_kind.hpp"
@@ -37,7 +38,9 @@ void checkReceived(const Frame& frame) {
   const FrameKind kind = classify(frame);
   const auto setpoint = decodeSetpoint(frame);
   const auto status = decodeStatus(frame);
-  const auto heartbeat = decodeHeartbeat(frame);
+  const auto heartbeat = decodeHeartbeat(frame, HeartbeatLayout::kRoboRio);
+  const auto heartbeat_systemcore = decodeHeartbeat(frame, HeartbeatLayout::kSystemcore);
+  CYBER_FUZZ_CHECK(heartbeat.ok() == heartbeat_systemcore.ok());
   const auto bus_error = decodeBusError(frame);
   CYBER_FUZZ_CHECK(!setpoint || kind == FrameKind::kSetpoint);
   CYBER_FUZZ_CHECK(!status || kind == FrameKind::kStatus);
@@ -64,10 +67,18 @@ void checkReceived(const Frame& frame) {
     CYBER_FUZZ_CHECK(again && again.value() == expected);
   }
   if (heartbeat) {
-    // encodeHeartbeat writes byte 4 only, and only the five flags decode reads.
-    const Frame again = encodeHeartbeat(heartbeat.value());
-    CYBER_FUZZ_CHECK(again.id == frame.id && again.extended && again.dlc == frame.dlc);
-    CYBER_FUZZ_CHECK(decodeHeartbeat(again).value() == heartbeat.value());
+    // encodeHeartbeat writes what decode reads (the flags, the replay number, Systemcore's
+    // override) and zeros elsewhere; the two layouts differ only in byte 5's top bit.
+    for (const auto& [layout, decoded] : {std::pair{HeartbeatLayout::kRoboRio, heartbeat.value()},
+                                          std::pair{HeartbeatLayout::kSystemcore, heartbeat_systemcore.value()}}) {
+      const Frame again = encodeHeartbeat(decoded, layout);
+      CYBER_FUZZ_CHECK(again.id == frame.id && again.extended && again.dlc == frame.dlc);
+      CYBER_FUZZ_CHECK(decodeHeartbeat(again, layout).value() == decoded);
+    }
+    Heartbeat flags_only = heartbeat_systemcore.value();
+    flags_only.replay_number = heartbeat.value().replay_number;
+    flags_only.ftc_motor_override = false;
+    CYBER_FUZZ_CHECK(flags_only == heartbeat.value());
   }
 }
 
@@ -122,7 +133,7 @@ void checkEncode(cyber::fuzz::FuzzInput& in) {
 
   const auto flags = in.take<std::uint8_t>();
   const Heartbeat heartbeat{(flags & 1) != 0, (flags & 2) != 0, (flags & 4) != 0, (flags & 8) != 0, (flags & 16) != 0};
-  const auto decoded = decodeHeartbeat(encodeHeartbeat(heartbeat));
+  const auto decoded = decodeHeartbeat(encodeHeartbeat(heartbeat), HeartbeatLayout::kRoboRio);
   CYBER_FUZZ_CHECK(decoded && decoded.value() == heartbeat);
 
   const double seconds = in.take<double>();

@@ -19,13 +19,13 @@ sleep 0.8
 # heartbeat remote request and frames with other ids (dropped by the daemon's receive filter), a
 # setpoint id of the wrong length (counted by the simulator).
 cansend "$CAN_IFACE" 7FF#47415242
-cansend "$CAN_IFACE" 01011840#00000000480000
+cansend "$CAN_IFACE" 01011840#00000000120000
 cansend "$CAN_IFACE" 01011840#
 cansend "$CAN_IFACE" 01011840#00000000
 cansend "$CAN_IFACE" 01011840#R
 cansend "$CAN_IFACE" 123#DEADBEEF
 cansend "$CAN_IFACE" 1FFFFFFF#0011223344556677
-cansend "$CAN_IFACE" 040#0000000048000000
+cansend "$CAN_IFACE" 040#0000000012000000
 cansend "$CAN_IFACE" 0A080401#0102
 cansend "$CAN_IFACE" 0A080803#00
 cansend "$CAN_IFACE" 7FF#454E44

@@ -147,7 +147,7 @@ def check(out):
                 f"fault {kind} applied once, {late * 1e3:.1f} ms after motion+{offset} s (limit 20 ms + guest stall {stall * 1e3:.0f} ms)")
         applied[kind] = hits[0] if hits else offset
 
-    # Heartbeat: every 20 ms, enabled + watchdog (0x48) except in the disabled window, and a gap.
+    # Heartbeat: every 20 ms, enabled + watchdog (0x12, docs/can-protocol.md) except in the disabled window, and a gap.
     beats = [f for f in frames if f.extended and f.id == hil.HEARTBEAT_ID]
     c.check(all(len(f.data) == 8 for f in beats), f"{len(beats)} heartbeats, all 8 bytes")
     periods = [b.t - a.t for a, b in zip(beats, beats[1:])]
@@ -157,10 +157,10 @@ def check(out):
     c.check(silent_window(c, "heartbeat", [f.t - motion_t for f in beats],
                           (applied["heartbeat-stop"], applied["heartbeat-resume"]), reference),
             "no heartbeat between heartbeat-stop and heartbeat-resume, heartbeats right before and after")
-    off = [f.t - motion_t for f in beats if f.data[4] != 0x48]
-    on_inside = [f.t - motion_t for f in beats if f.data[4] == 0x48 and
+    off = [f.t - motion_t for f in beats if f.data[4] != 0x12]
+    on_inside = [f.t - motion_t for f in beats if f.data[4] == 0x12 and
                  applied["heartbeat-disabled"] + 0.002 < f.t - motion_t < applied["heartbeat-enabled"] - 0.002]
-    c.check(all(f.data[4] in (0x48, 0x00) for f in beats) and off and not on_inside and
+    c.check(all(f.data[4] in (0x12, 0x00) for f in beats) and off and not on_inside and
             applied["heartbeat-disabled"] <= min(off) and max(off) <= applied["heartbeat-enabled"] + 0.002,
             f"{len(off)} heartbeats without the enabled/watchdog bits, all between heartbeat-disabled and -enabled")
     c.check(summary["heartbeats"] == len(beats), f"simulator sent {summary['heartbeats']:.0f} heartbeats, capture has {len(beats)}")

@@ -26,6 +26,7 @@
 
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
+#include "cyber/config/daemon_settings.hpp"
 #include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
@@ -41,8 +42,8 @@ volatile std::sig_atomic_t g_stop = 0;
 
 struct Args {
   std::string command;
-  std::string lcm_url;
-  std::vector<std::pair<double, double>> targets;  // --to / --at
+  std::string lcm_url = cyber::config::kDefaultLcmUrl;  // the daemon's default (docs/lcm.md)
+  std::vector<std::pair<double, double>> targets;       // --to / --at
   double rate_hz = 100.0;
   double seconds = 1e9;
   long long first_id = 1;

@@ -32,6 +32,7 @@
 #include <thread>
 #include <vector>
 
+#include "cyber/config/daemon_settings.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
@@ -51,7 +52,7 @@ struct Args {
   double sample_s = 1.0;
   std::string csv_path;
   unsigned seed = 1;
-  std::string lcm_url;
+  std::string lcm_url = cyber::config::kDefaultLcmUrl;  // the daemon's default (docs/lcm.md)
   long rss_slack_kib = 2048;
   double answer_timeout_s = 30.0;
 };

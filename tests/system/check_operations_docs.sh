@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # system.operations_docs: the commands docs/operations.md shows in the sections this checks
-# (install, systemd, CAN, lcm-spy, AdvantageScope, arm64) are exactly the commands the system tests run, as each test
+# (install, systemd, CAN, lcm-spy, AdvantageScope, arm64, Systemcore) are exactly the commands the system tests run, as each test
 # prints them with --print-doc-commands (build dir "build"): none shown that no test runs, none
 # run that the page does not show. Other sections of the page are not checked here.
 set -euo pipefail
@@ -8,10 +8,12 @@ cd "$(dirname "$0")/../.."
 doc=docs/operations.md
 [[ -f $doc ]] || { echo "check_operations_docs: $doc missing" >&2; exit 1; }
 checked_sections=("## Install and package" "## Running under systemd" "## CAN interface with systemd-networkd"
-                  "## lcm-spy, recording and replay" "## AdvantageScope" "## arm64 coprocessors")
+                  "## lcm-spy, recording and replay" "## AdvantageScope" "## arm64 coprocessors"
+                  "## Systemcore")
 
 declare -A run_by_test=()
-for script in system/package system/unit_files system/lcm_spy system/lcm_record_replay arm64/package_run; do
+for script in system/package system/unit_files system/lcm_spy system/lcm_record_replay arm64/package_run \
+              arm64/systemcore_bundle; do
   printed=$("tests/$script.sh" --print-doc-commands) ||
     { echo "check_operations_docs: $script.sh --print-doc-commands failed" >&2; exit 1; }
   while IFS= read -r command; do

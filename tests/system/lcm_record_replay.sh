@@ -11,9 +11,10 @@ set -euo pipefail
 source "$(dirname "$0")/lib.sh"
 
 # The commands as docs/operations.md shows them.
-record='lcm-logger --channel='"'"'ARM_.*'"'"' --force arm-session.lcmlog'
-replay='lcm-logplayer arm-session.lcmlog'
-replay_some='lcm-logplayer --speed=4 --regexp='"'"'ARM_(SETPOINT|TRAJECTORY)'"'"' arm-session.lcmlog'
+# The daemon's URL (docs/lcm.md), not LCM's own default (port 7667), so the commands name it.
+record='lcm-logger --lcm-url='"'"'udpm://239.255.76.67:5810?ttl=0'"'"' --channel='"'"'ARM_.*'"'"' --force arm-session.lcmlog'
+replay='lcm-logplayer --lcm-url='"'"'udpm://239.255.76.67:5810?ttl=0'"'"' arm-session.lcmlog'
+replay_some='lcm-logplayer --lcm-url='"'"'udpm://239.255.76.67:5810?ttl=0'"'"' --speed=4 --regexp='"'"'ARM_(SETPOINT|TRAJECTORY)'"'"' arm-session.lcmlog'
 replay_aside='lcm-logplayer --lcm-url='"'"'udpm://239.255.76.67:7668?ttl=0'"'"' arm-session.lcmlog'
 convert='build/tools/cyber-wpilog/cyber-wpilog arm-session.lcmlog arm-session.wpilog'
 list='build/tools/cyber-wpilog/cyber-wpilog --list arm-session.wpilog'
@@ -25,7 +26,7 @@ fi
 system_setup "$1"
 enter_netns "$src/tests/system/lcm_record_replay.sh" "$@"
 
-url='udpm://239.255.76.67:7667?ttl=0'  # LCM's default, which the commands above use
+url='udpm://239.255.76.67:5810?ttl=0'  # the daemon's default, which the commands above name
 traffic=$build_abs/tests/system/lcm_traffic
 work=$build_abs/system/record_replay
 rm -rf "$work"

@@ -77,7 +77,7 @@ done
 run_shown "$unpack"
 root=$build/package/root
 # The installed robot.toml is the default with the robot-LAN URL (ttl=1), and nothing else changed.
-sed 's|^lcm_url = "udpm://239.255.76.67:7667?ttl=0"$|lcm_url = "udpm://239.255.76.67:7667?ttl=1"|' \
+sed 's|^lcm_url = "udpm://239.255.76.67:5810?ttl=0"$|lcm_url = "udpm://239.255.76.67:5810?ttl=1"|' \
   config/reefscape-2025.toml >"$build/package/robot-lan.toml"
 grep -q 'ttl=1"$' "$build/package/robot-lan.toml" || fail "config/reefscape-2025.toml has no ttl=0 lcm_url line"
 cmp -s "$root/etc/cyber-planner/robot.toml" "$build/package/robot-lan.toml" ||

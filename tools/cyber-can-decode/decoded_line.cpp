@@ -151,7 +151,8 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
       break;
     }
     case can::FrameKind::kHeartbeat: {
-      const auto decoded = can::decodeHeartbeat(frame);
+      // The flags printed are the same in both controllers' layouts (docs/can-protocol.md).
+      const auto decoded = can::decodeHeartbeat(frame, can::HeartbeatLayout::kRoboRio);
       if (decoded) {
         fillHeartbeat(decoded.value(), row, text);
       } else {

@@ -10,6 +10,9 @@ std::string goalUsage() {
          "                  [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
          "Publishes one ARM_GOAL and prints each ARM_PLAN_STATUS of its request id until the final one.\n"
          "First waits for cyber-plannerd's ARM_DAEMON_STATUS (unless --no-wait-daemon).\n"
+         "--lcm-url defaults to " +
+         std::string(config::kDefaultLcmUrl) +
+         ", the daemon's default.\n"
          "Exit: 0 done, 3 rejected, 4 failed, 5 cancelled, 6 timed out, 2 bad arguments, 1 LCM error.\n";
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cyber/cli/parsed.hpp"
+#include "cyber/config/daemon_settings.hpp"
 
 namespace cyber::tools {
 
@@ -15,8 +16,8 @@ struct GoalArguments {
   bool coral = false;
   bool algae = false;
   std::string scene;
-  std::int64_t request_id = -1;  // -1: derive one from the clock
-  std::string lcm_url;           // "": LCM's default
+  std::int64_t request_id = -1;                  // -1: derive one from the clock
+  std::string lcm_url = config::kDefaultLcmUrl;  // the daemon's default (docs/lcm.md)
   double timeout_s = 10.0;
   bool wait_for_daemon = true;
   bool help = false;

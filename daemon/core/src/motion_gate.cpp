@@ -8,6 +8,7 @@ std::string_view toString(GateReason reason) {
     case GateReason::kNoState: return "no ARM_STATE received yet";
     case GateReason::kStateStale: return "ARM_STATE is stale";
     case GateReason::kRobotDisabled: return "robot disabled (heartbeat without system-watchdog bit)";
+    case GateReason::kMotorOverride: return "robot disabled (heartbeat with FTC motor override)";
     case GateReason::kNoHeartbeat: return "no fresh roboRIO heartbeat";
     case GateReason::kBroadcastDisable: return "broadcast disable received";
     case GateReason::kFault: return "fault: a setpoint was not finite or did not fit its frame";
@@ -17,8 +18,8 @@ std::string_view toString(GateReason reason) {
 }
 
 bool isRobotDisabledReason(GateReason reason) {
-  return reason == GateReason::kRobotDisabled || reason == GateReason::kNoHeartbeat ||
-         reason == GateReason::kBroadcastDisable;
+  return reason == GateReason::kRobotDisabled || reason == GateReason::kMotorOverride ||
+         reason == GateReason::kNoHeartbeat || reason == GateReason::kBroadcastDisable;
 }
 
 GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettings& settings) {
@@ -28,6 +29,9 @@ GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettin
     if (inputs.heartbeat_ns == kNever || now - inputs.heartbeat_ns >= heartbeat_timeout) {
       return {GateReason::kNoHeartbeat};
     }
+    // The override first: with it the watchdog bit can be set for a hardware client's motors
+    // while the robot program, and so this daemon, must stay still.
+    if (inputs.heartbeat_motor_override) return {GateReason::kMotorOverride};
     if (!inputs.heartbeat_watchdog) return {GateReason::kRobotDisabled};
     // Only an enabled heartbeat that arrived after the disable lifts it.
     if (disabled_seen && inputs.broadcast_disable_ns >= inputs.heartbeat_ns) return {GateReason::kBroadcastDisable};

@@ -12,13 +12,14 @@ int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int 
     ++count;
     switch (can::classify(frame)) {
       case can::FrameKind::kHeartbeat: {
-        const auto heartbeat = can::decodeHeartbeat(frame);
+        const auto heartbeat = can::decodeHeartbeat(frame, link.heartbeat_layout);
         if (!heartbeat) {
           ++link.bad_heartbeats;
           break;
         }
         link.heartbeat_ns = now;
         link.heartbeat_watchdog = heartbeat.value().system_watchdog;
+        link.heartbeat_motor_override = heartbeat.value().ftc_motor_override;
         break;
       }
       case can::FrameKind::kBroadcastDisable:
@@ -34,6 +35,7 @@ int drainRobotFrames(RobotFrameSource& source, MonoNs now, RobotLink& link, int 
 void applyRobotLink(const RobotLink& link, RobotInputs& inputs) {
   inputs.heartbeat_ns = link.heartbeat_ns;
   inputs.heartbeat_watchdog = link.heartbeat_watchdog;
+  inputs.heartbeat_motor_override = link.heartbeat_motor_override;
   inputs.broadcast_disable_ns = link.broadcast_disable_ns;
   inputs.broadcast_disable_count = link.broadcast_disable_count;
 }

@@ -31,6 +31,11 @@ GateSettings gateOf(const DaemonOptions& options) {
   return gate;
 }
 
+can::HeartbeatLayout heartbeatLayoutOf(config::RobotController controller) {
+  return controller == config::RobotController::kRoboRio ? can::HeartbeatLayout::kRoboRio
+                                                         : can::HeartbeatLayout::kSystemcore;
+}
+
 StreamerSettings streamerSettingsOf(const DaemonOptions& options) {
   StreamerSettings settings;
   settings.gate = gateOf(options);
@@ -124,7 +129,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       goals_(robot_, goalSettingsOf(options), bridge_, worker_, channels_, loop_),
       can_input_(can_ ? std::make_unique<CanInput>(*can_, loop_) : nullptr),
       status_(StatusPublisher::Sources{channels_, goals_, lcm_input_, can_input_.get(), bridge_}, gate_) {
-  streamer_thread_.setRobotFrameSource(robot_source_.get());
+  streamer_thread_.setRobotFrameSource(robot_source_.get(), heartbeatLayoutOf(options.settings.robot_controller));
   loop_.add(bridge_.fd(), [this] { bridge_.handleReady(kMaxMessagesPerWake); });
   if (signals_ != nullptr) loop_.add(signals_->fd(), [this] { onSignal(); });
   loop_.add(worker_.wakeFd(), [this] { goals_.onPlanDone(); });
@@ -154,10 +159,12 @@ Daemon::~Daemon() {
 
 int Daemon::run() {
   const auto& s = options_.settings;
-  spdlog::info("cyber-plannerd: robot '{}', LCM '{}', CAN {}, {} Hz streaming, robot-enabled gate {}", robot_.name,
-               s.lcm_url,
-               options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'",
-               s.stream_rate_hz, gate_.require_robot_enabled ? "on" : "off");
+  spdlog::info(
+      "cyber-plannerd: robot '{}', LCM '{}', CAN {}, {} Hz streaming, robot-enabled gate {}", robot_.name, s.lcm_url,
+      options_.simulate_can ? "none (simulation: frames are discarded)" : "'" + s.can_interface + "'", s.stream_rate_hz,
+      !gate_.require_robot_enabled                              ? "off"
+      : s.robot_controller == config::RobotController::kRoboRio ? "on (roboRIO heartbeat)"
+                                                                : "on (Systemcore heartbeat)");
   // Opens the service manager's socket here, not on the streaming thread (no-op without systemd).
   notify::notifyStatus("starting");
   const auto watchdog = notify::watchdogInterval();

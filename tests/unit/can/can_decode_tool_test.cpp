@@ -132,7 +132,7 @@ TEST(CanDecodeTool, CsvOutput) {
   EXPECT_EQ(out[3],
             "1700000000.100000,vcan0,status,3,,42,,,,moving,1234,850,0x00,,,,,,0A080803,"
             "02D204520300002A,");
-  EXPECT_EQ(out[4], "1700000000.020000,vcan0,heartbeat,,,,,,,,,,,0,1,0,0,1,01011840,0000000048000000,");
+  EXPECT_EQ(out[4], "1700000000.020000,vcan0,heartbeat,,,,,,,,,,,0,1,0,0,1,01011840,0000000012000000,");
   const std::size_t columns = splitCsv(out[0]).size();
   for (std::size_t i = 1; i < out.size(); ++i) {
     EXPECT_EQ(splitCsv(out[i]).size(), columns) << out[i];

@@ -25,7 +25,7 @@ constexpr const char* kElevatorLine = "(1700000000.000000) can0 0A080401#40E201F
 constexpr const char* kArmLine = "(1700000000.000050) can0 0A080402#B03CFF1EFB12FDFF";
 constexpr const char* kHoldLine = "(1700000000.005000) can0 0A080402#B03CFF000012FD00";
 constexpr const char* kStatusLine = "(1700000000.100000) can0 0A080803#02D204520300002A";
-constexpr const char* kHeartbeatLine = "(1700000000.020000) can0 01011840#0000000048000000";
+constexpr const char* kHeartbeatLine = "(1700000000.020000) can0 01011840#0000000012000000";
 constexpr const char* kDisableLine = "(1700000000.040000) can0 00000000#";
 
 std::string line(std::uint64_t s, std::uint32_t us, const Frame& frame) {
@@ -77,10 +77,13 @@ TEST(ProtocolExamples, ExamplesDecodeBack) {
   const auto status = decodeStatus(parseLogLine(kStatusLine).value().frame);
   ASSERT_TRUE(status.ok());
   EXPECT_EQ(status.value().status, (Status{Mode::kMoving, 1234, 850, 0, 42}));
-  const auto heartbeat = decodeHeartbeat(parseLogLine(kHeartbeatLine).value().frame);
-  ASSERT_TRUE(heartbeat.ok());
-  EXPECT_TRUE(heartbeat.value().enabled);
-  EXPECT_TRUE(heartbeat.value().system_watchdog);
+  for (const HeartbeatLayout layout : {HeartbeatLayout::kRoboRio, HeartbeatLayout::kSystemcore}) {
+    const auto heartbeat = decodeHeartbeat(parseLogLine(kHeartbeatLine).value().frame, layout);
+    ASSERT_TRUE(heartbeat.ok());
+    EXPECT_TRUE(heartbeat.value().enabled);
+    EXPECT_TRUE(heartbeat.value().system_watchdog);
+    EXPECT_FALSE(heartbeat.value().ftc_motor_override);
+  }
   EXPECT_EQ(classify(parseLogLine(kDisableLine).value().frame), FrameKind::kBroadcastDisable);
 }
 

@@ -12,53 +12,119 @@
 namespace cyber::can {
 namespace {
 
-Frame heartbeatWithFlags(std::uint8_t flags) {
+Frame heartbeatWith(std::uint8_t flags, std::uint8_t byte5 = 0x00) {
   Frame frame;
   frame.id = 0x01011840u;
   frame.extended = true;
   frame.dlc = 8;
-  frame.data = {0x11, 0x22, 0x33, 0x44, flags, 0x66, 0x77, 0x88};  // other bytes are ignored
+  frame.data = {0x11, 0x22, 0x33, 0x44, flags, byte5, 0x77, 0x88};  // the other bytes are ignored
   return frame;
 }
 
-TEST(Heartbeat, EachBitFromTheMostSignificant) {
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x80)).value(), (Heartbeat{true, false, false, false, false}));
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x40)).value(), (Heartbeat{false, true, false, false, false}));
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x20)).value(), (Heartbeat{false, false, true, false, false}));
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x10)).value(), (Heartbeat{false, false, false, true, false}));
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x08)).value(), (Heartbeat{false, false, false, false, true}));
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0x07)).value(), Heartbeat{});  // low bits unused
-  EXPECT_EQ(decodeHeartbeat(heartbeatWithFlags(0xF8)).value(), (Heartbeat{true, true, true, true, true}));
+constexpr HeartbeatLayout kBothLayouts[] = {HeartbeatLayout::kRoboRio, HeartbeatLayout::kSystemcore};
+
+Heartbeat flags(bool red, bool enabled, bool autonomous, bool test, bool watchdog) {
+  return Heartbeat{red, enabled, autonomous, test, watchdog};
 }
 
-TEST(Heartbeat, AllFlagCombinationsRoundTrip) {
-  for (int bits = 0; bits < 32; ++bits) {
-    const Heartbeat in{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0, (bits & 16) != 0};
-    const Frame frame = encodeHeartbeat(in);
-    EXPECT_EQ(frame.id, kHeartbeatId);
-    EXPECT_TRUE(frame.extended);
-    EXPECT_EQ(frame.dlc, 8);
-    EXPECT_TRUE(isWellFormed(frame));
-    EXPECT_EQ(decodeHeartbeat(frame).value(), in);
+// docs/can-protocol.md, "Robot heartbeat": the flags sit in byte 4 from its least significant bit
+// (the 64-bit word is sent most significant byte first), the tournament type above them.
+TEST(Heartbeat, FlagsFromTheLeastSignificantBitOfByte4InBothLayouts) {
+  for (const HeartbeatLayout layout : kBothLayouts) {
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x01), layout).value(), flags(true, false, false, false, false));
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x02), layout).value(), flags(false, true, false, false, false));
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x04), layout).value(), flags(false, false, true, false, false));
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x08), layout).value(), flags(false, false, false, true, false));
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x10), layout).value(), flags(false, false, false, false, true));
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0xE0), layout).value(), Heartbeat{});  // tournament type
+    EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x1F), layout).value(), flags(true, true, true, true, true));
   }
+}
+
+// A roboRIO enabled with the system watchdog sends byte 4 = 0x13 on the red alliance
+// (tests/vectors/heartbeat_frames.txt); read from the most significant bit that would be test mode
+// without the watchdog, and 0x48 would be "enabled + watchdog" when it is test mode.
+TEST(Heartbeat, ARealEnabledFrameHasTheWatchdogBitAnd0x48DoesNot) {
+  for (const HeartbeatLayout layout : kBothLayouts) {
+    const Heartbeat enabled = decodeHeartbeat(heartbeatWith(0x13), layout).value();
+    EXPECT_TRUE(enabled.system_watchdog);
+    EXPECT_TRUE(enabled.enabled);
+    EXPECT_FALSE(enabled.test);
+    const Heartbeat test_mode = decodeHeartbeat(heartbeatWith(0x48), layout).value();
+    EXPECT_FALSE(test_mode.system_watchdog);
+    EXPECT_FALSE(test_mode.enabled);
+    EXPECT_TRUE(test_mode.test);
+  }
+}
+
+// The bit added for 2027: byte 5's top bit is Systemcore's FTC motor override, and the top bit of
+// the roboRIO's 6-bit replay number.
+TEST(Heartbeat, Byte5TopBitIsTheOverrideOnSystemcoreAndAReplayBitOnTheRoboRio) {
+  const Frame frame = heartbeatWith(0x12, 0x80);
+  const Heartbeat systemcore = decodeHeartbeat(frame, HeartbeatLayout::kSystemcore).value();
+  EXPECT_TRUE(systemcore.ftc_motor_override);
+  EXPECT_EQ(systemcore.replay_number, 0);
+  EXPECT_TRUE(systemcore.system_watchdog);
+  const Heartbeat roborio = decodeHeartbeat(frame, HeartbeatLayout::kRoboRio).value();
+  EXPECT_FALSE(roborio.ftc_motor_override);
+  EXPECT_EQ(roborio.replay_number, 32);
+  // The replay number starts at bit 2 of byte 5; bits 0 and 1 belong to the match number.
+  EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x00, 0xFF), HeartbeatLayout::kRoboRio).value().replay_number, 63);
+  EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x00, 0xFF), HeartbeatLayout::kSystemcore).value().replay_number, 31);
+  EXPECT_EQ(decodeHeartbeat(heartbeatWith(0x00, 0x03), HeartbeatLayout::kSystemcore).value(), Heartbeat{});
+}
+
+TEST(Heartbeat, EveryRepresentableHeartbeatRoundTripsInItsLayout) {
+  for (const HeartbeatLayout layout : kBothLayouts) {
+    const int replays = layout == HeartbeatLayout::kRoboRio ? 64 : 32;
+    const int overrides = layout == HeartbeatLayout::kRoboRio ? 1 : 2;
+    for (int bits = 0; bits < 32; ++bits) {
+      for (int replay = 0; replay < replays; ++replay) {
+        for (int override_flag = 0; override_flag < overrides; ++override_flag) {
+          Heartbeat in = flags((bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0, (bits & 16) != 0);
+          in.replay_number = static_cast<std::uint8_t>(replay);
+          in.ftc_motor_override = override_flag != 0;
+          const Frame frame = encodeHeartbeat(in, layout);
+          ASSERT_EQ(frame.id, kHeartbeatId);
+          ASSERT_TRUE(frame.extended);
+          ASSERT_EQ(frame.dlc, 8);
+          ASSERT_TRUE(isWellFormed(frame));
+          ASSERT_EQ(decodeHeartbeat(frame, layout).value(), in);
+        }
+      }
+    }
+  }
+}
+
+TEST(Heartbeat, EncodingCutsFieldsToTheLayout) {
+  Heartbeat h;
+  h.ftc_motor_override = true;
+  h.replay_number = 63;
+  EXPECT_EQ(encodeHeartbeat(h, HeartbeatLayout::kRoboRio).data[5], 0xFC);     // no override bit
+  EXPECT_EQ(encodeHeartbeat(h, HeartbeatLayout::kSystemcore).data[5], 0xFC);  // 31 and the override
+  h.ftc_motor_override = false;
+  EXPECT_EQ(encodeHeartbeat(h, HeartbeatLayout::kSystemcore).data[5], 0x7C);
+  EXPECT_EQ(encodeHeartbeat(Heartbeat{}), encodeHeartbeat(Heartbeat{}, HeartbeatLayout::kRoboRio));
 }
 
 TEST(Heartbeat, RejectsWrongLengthIdAndFlags) {
-  for (std::uint8_t dlc = 0; dlc < 8; ++dlc) {
-    Frame frame = heartbeatWithFlags(0x48);
-    frame.dlc = dlc;
-    EXPECT_EQ(decodeHeartbeat(frame).error(), CodecError::kWrongLength) << int{dlc};
+  for (const HeartbeatLayout layout : kBothLayouts) {
+    for (std::uint8_t dlc = 0; dlc < 8; ++dlc) {
+      Frame frame = heartbeatWith(0x12);
+      frame.dlc = dlc;
+      EXPECT_EQ(decodeHeartbeat(frame, layout).error(), CodecError::kWrongLength) << int{dlc};
+    }
+    Frame wrong_id = heartbeatWith(0x12);
+    wrong_id.id = 0x01011841u;
+    EXPECT_EQ(decodeHeartbeat(wrong_id, layout).error(), CodecError::kWrongId);
+    Frame standard = heartbeatWith(0x12);
+    standard.extended = false;
+    standard.id = 0x040;
+    EXPECT_EQ(decodeHeartbeat(standard, layout).error(), CodecError::kNotExtended);
+    Frame remote = heartbeatWith(0x12);
+    remote.remote = true;
+    EXPECT_EQ(decodeHeartbeat(remote, layout).error(), CodecError::kRemoteFrame);
   }
-  Frame wrong_id = heartbeatWithFlags(0x48);
-  wrong_id.id = 0x01011841u;
-  EXPECT_EQ(decodeHeartbeat(wrong_id).error(), CodecError::kWrongId);
-  Frame standard = heartbeatWithFlags(0x48);
-  standard.extended = false;
-  standard.id = 0x040;
-  EXPECT_EQ(decodeHeartbeat(standard).error(), CodecError::kNotExtended);
-  Frame remote = heartbeatWithFlags(0x48);
-  remote.remote = true;
-  EXPECT_EQ(decodeHeartbeat(remote).error(), CodecError::kRemoteFrame);
 }
 
 TEST(BroadcastDisable, IdZeroInEitherFormat) {

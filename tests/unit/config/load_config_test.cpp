@@ -101,6 +101,18 @@ TEST(LoadConfig, SetpointEchoFullRateIsOptionalAndOffByDefault) {
                   .daemon.setpoint_echo_full_rate);
 }
 
+// Optional; without it the heartbeat is read in Systemcore's layout, the safe reading on either
+// controller (docs/can-protocol.md, "Robot heartbeat").
+TEST(LoadConfig, RobotControllerIsOptionalAndSystemcoreByDefault) {
+  EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.robot_controller, RobotController::kRoboRio);
+  const std::string line = "robot_controller = \"roborio\"";
+  ASSERT_NE(defaultText().find(line), std::string::npos);
+  EXPECT_EQ(parseConfig(mutated(line, ""), "robot.toml").daemon.robot_controller, RobotController::kSystemcore);
+  EXPECT_EQ(DaemonSettings{}.robot_controller, RobotController::kSystemcore);
+  EXPECT_EQ(parseConfig(mutated(line, "robot_controller = \"systemcore\""), "robot.toml").daemon.robot_controller,
+            RobotController::kSystemcore);
+}
+
 TEST(LoadConfig, MaxPlanningBudgetIsOptionalWithADefaultOfOneSecond) {
   EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.max_planning_budget_s, 1.0);
   const std::string with =
@@ -218,6 +230,8 @@ const BadCase kBadCases[] = {
     {"WrongGravity", "gravity = \"cosine\"", "gravity = \"tangent\"", "drives.arm.gravity", "\"sine\""},
     {"CannotHold", "current_limit_amps = 60.0", "current_limit_amps = 0.5", "drives.arm.current_limit_amps", "hold"},
     {"BadLogLevel", "log_level = \"info\"", "log_level = \"loud\"", "daemon.log_level", "expected one of"},
+    {"BadRobotController", "robot_controller = \"roborio\"", "robot_controller = \"rio\"", "daemon.robot_controller",
+     "expected \"roborio\" or \"systemcore\""},
     {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
     {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},
 };

@@ -61,6 +61,25 @@ TEST(MotionGate, HeartbeatWithoutWatchdogBitIsDisabled) {
   EXPECT_EQ(evaluateGate(inputs, now, enabledGate()).reason, GateReason::kRobotDisabled);
 }
 
+// Systemcore's FTC motor override (docs/can-protocol.md, "Robot heartbeat"): a hardware client
+// may have the watchdog bit set for its motors while the robot program is disabled.
+TEST(MotionGate, MotorOverrideClosesEvenWithTheWatchdogBit) {
+  const MonoNs now = 1000 * kMs;
+  RobotInputs inputs = freshInputs(now);
+  inputs.heartbeat_motor_override = true;
+  EXPECT_EQ(evaluateGate(inputs, now, enabledGate()).reason, GateReason::kMotorOverride);
+  inputs.heartbeat_watchdog = false;
+  EXPECT_EQ(evaluateGate(inputs, now, enabledGate()).reason, GateReason::kMotorOverride);
+  EXPECT_TRUE(isRobotDisabledReason(GateReason::kMotorOverride));
+  EXPECT_FALSE(toString(GateReason::kMotorOverride).empty());
+  // A broadcast disable is not lifted by a heartbeat with the override.
+  inputs.heartbeat_watchdog = true;
+  inputs.broadcast_disable_ns = now - 10 * kMs;
+  EXPECT_EQ(evaluateGate(inputs, now, enabledGate()).reason, GateReason::kMotorOverride);
+  inputs.heartbeat_motor_override = false;
+  EXPECT_TRUE(evaluateGate(inputs, now, enabledGate()).open());
+}
+
 TEST(MotionGate, BroadcastDisableHoldsUntilALaterEnabledHeartbeat) {
   const MonoNs now = 1000 * kMs;
   RobotInputs inputs = freshInputs(now);

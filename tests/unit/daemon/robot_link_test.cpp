@@ -61,6 +61,40 @@ TEST(RobotLink, HeartbeatsAndDisablesAreTakenInAtTheTick) {
   EXPECT_FALSE(link.heartbeat_watchdog);
 }
 
+// The link reads heartbeats in the configured controller's layout (docs/can-protocol.md, "Robot
+// heartbeat"): the bit that is Systemcore's FTC motor override is a replay-number bit on a roboRIO.
+TEST(RobotLink, TheConfiguredLayoutDecidesWhatTheOverrideBitMeans) {
+  can::Heartbeat h;
+  h.enabled = true;
+  h.system_watchdog = true;
+  h.ftc_motor_override = true;
+  const can::Frame frame = can::encodeHeartbeat(h, can::HeartbeatLayout::kSystemcore);
+  ASSERT_EQ(frame.data[5], 0x80);
+  GateSettings settings;
+  settings.require_robot_enabled = true;
+
+  RobotLink systemcore;  // the default: Systemcore's reading
+  EXPECT_EQ(systemcore.heartbeat_layout, can::HeartbeatLayout::kSystemcore);
+  QueueSource source;
+  source.frames = {frame};
+  EXPECT_EQ(drainRobotFrames(source, 10 * kMs, systemcore), 1);
+  EXPECT_TRUE(systemcore.heartbeat_watchdog);
+  EXPECT_TRUE(systemcore.heartbeat_motor_override);
+  RobotInputs inputs;
+  inputs.state_ns = 10 * kMs;
+  applyRobotLink(systemcore, inputs);
+  EXPECT_EQ(evaluateGate(inputs, 10 * kMs, settings).reason, GateReason::kMotorOverride);
+
+  RobotLink roborio;
+  roborio.heartbeat_layout = can::HeartbeatLayout::kRoboRio;  // replay number 32: no override
+  source.frames.push_back(frame);
+  EXPECT_EQ(drainRobotFrames(source, 10 * kMs, roborio), 1);
+  EXPECT_TRUE(roborio.heartbeat_watchdog);
+  EXPECT_FALSE(roborio.heartbeat_motor_override);
+  applyRobotLink(roborio, inputs);
+  EXPECT_TRUE(evaluateGate(inputs, 10 * kMs, settings).open());
+}
+
 TEST(RobotLink, MalformedHeartbeatsAndOtherFramesChangeNothing) {
   QueueSource source;
   can::Frame short_heartbeat = heartbeat(true);

@@ -5,6 +5,11 @@
 
 namespace cyber::config {
 
+// The project's LCM URL: the team-use port 5810, this host only (ttl=0). The installed robot.toml
+// has ttl=1 so the traffic reaches the robot's network (docs/lcm.md, "URL and port"). The project's
+// programs default to it rather than to LCM's own default (port 7667).
+inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:5810?ttl=0";
+
 struct DeviceNumbers {
   int elevator = 1;  // setpoint frames of the elevator controller
   int arm = 2;       // setpoint frames of the arm controller
@@ -21,14 +26,20 @@ struct ChannelNames {
   std::string daemon_status = "ARM_DAEMON_STATUS";
 };
 
+// Which robot controller sends the heartbeat that gates motion: its layout differs in one bit
+// (docs/can-protocol.md, "Robot heartbeat").
+enum class RobotController { kRoboRio, kSystemcore };
+
 struct DaemonSettings {
-  std::string lcm_url = "udpm://239.255.76.67:7667?ttl=0";
+  std::string lcm_url = kDefaultLcmUrl;
   std::string can_interface = "can0";
   double stream_rate_hz = 200.0;
   double state_timeout_s = 0.25;      // ARM_STATE older than this is stale: no motion
   double heartbeat_timeout_s = 0.1;   // robot-enabled gate (design.md: 100 ms)
   bool require_robot_enabled = true;  // false only for bench use without a roboRIO
-  double planning_budget_s = 0.03;    // how far ahead a mid-motion replan starts
+  // Optional key, default Systemcore: its reading of the heartbeat is the safe one on either.
+  RobotController robot_controller = RobotController::kSystemcore;
+  double planning_budget_s = 0.03;  // how far ahead a mid-motion replan starts
   // The most the measured budget may grow to (a slow coprocessor or an emulated one plans
   // slower). Optional key, default 1 s.
   double max_planning_budget_s = 1.0;

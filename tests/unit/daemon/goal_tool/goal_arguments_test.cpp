@@ -21,16 +21,23 @@ std::string error(const std::vector<std::string>& args) {
 
 TEST(GoalArguments, ParsesEveryOption) {
   const GoalArguments a = ok({"--to", "1.25,-0.5", "--coral", "--algae", "--scene", "open", "--id", "42", "--lcm-url",
-                              "udpm://239.255.76.67:7667?ttl=0", "--timeout", "2.5", "--no-wait-daemon"});
+                              "udpm://239.255.76.67:5810?ttl=1", "--timeout", "2.5", "--no-wait-daemon"});
   EXPECT_EQ(a.elevator_m, 1.25);
   EXPECT_EQ(a.arm_rad, -0.5);
   EXPECT_TRUE(a.coral);
   EXPECT_TRUE(a.algae);
   EXPECT_EQ(a.scene, "open");
   EXPECT_EQ(a.request_id, 42);
-  EXPECT_EQ(a.lcm_url, "udpm://239.255.76.67:7667?ttl=0");
+  EXPECT_EQ(a.lcm_url, "udpm://239.255.76.67:5810?ttl=1");
   EXPECT_EQ(a.timeout_s, 2.5);
   EXPECT_FALSE(a.wait_for_daemon);
+}
+
+// Not LCM's default (port 7667): the daemon's, the team-use port (docs/lcm.md).
+TEST(GoalArguments, TheLcmUrlDefaultsToTheDaemons) {
+  EXPECT_EQ(ok({"--to", "1,1"}).lcm_url, "udpm://239.255.76.67:5810?ttl=0");
+  EXPECT_EQ(ok({"--to", "1,1"}).lcm_url, config::DaemonSettings{}.lcm_url);
+  EXPECT_NE(goalUsage().find("5810"), std::string::npos);
 }
 
 TEST(GoalArguments, NonFiniteTargetsPassThroughForTheDaemonToReject) {

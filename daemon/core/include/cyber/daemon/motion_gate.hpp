@@ -1,8 +1,9 @@
 #pragma once
 // The motion gate: may the daemon stream motion at "now"? Closed without fresh measured state,
-// while the roboRIO heartbeat lacks the system-watchdog bit or is older than its timeout, and after
-// a broadcast disable, and while the robot program has taken the joints over (ARM_CANCEL's release,
-// docs/design.md, "The motion gate").
+// while the robot controller's heartbeat lacks the system-watchdog bit, carries Systemcore's FTC
+// motor override or is older than its timeout, after a broadcast disable, and while the robot
+// program has taken the joints over (ARM_CANCEL's release) (docs/design.md, "The motion gate";
+// docs/can-protocol.md, "Robot heartbeat").
 
 #include <cstdint>
 #include <string_view>
@@ -23,9 +24,10 @@ struct RobotInputs {
   MonoNs state_ns = kNever;  // arrival of the latest valid ARM_STATE
   planner::JointVector measured_q = planner::JointVector::Zero();
   planner::JointVector measured_qdot = planner::JointVector::Zero();
-  MonoNs heartbeat_ns = kNever;          // arrival of the latest roboRIO heartbeat
-  bool heartbeat_watchdog = false;       // its system-watchdog bit
-  MonoNs broadcast_disable_ns = kNever;  // arrival of the latest broadcast disable
+  MonoNs heartbeat_ns = kNever;           // arrival of the latest robot controller heartbeat
+  bool heartbeat_watchdog = false;        // its system-watchdog bit
+  bool heartbeat_motor_override = false;  // its FTC motor override flag (Systemcore only)
+  MonoNs broadcast_disable_ns = kNever;   // arrival of the latest broadcast disable
   // Broadcast disables seen so far. The streamer latches each new one as an event: a disable
   // followed within a period by an enabled heartbeat would otherwise be lifted before any tick saw it.
   std::uint32_t broadcast_disable_count = 0;
@@ -41,6 +43,8 @@ enum class GateReason {
   kNoState,           // no ARM_STATE yet
   kStateStale,        // the latest ARM_STATE is older than state_timeout_s
   kRobotDisabled,     // the latest heartbeat lacks the system-watchdog bit
+  kMotorOverride,     // the latest heartbeat has the FTC motor override flag: a hardware client
+                      // drives the motors and the robot program is disabled
   kNoHeartbeat,       // no heartbeat, or it is older than heartbeat_timeout_s
   kBroadcastDisable,  // a broadcast disable arrived and no enabled heartbeat since
   kFault,             // not from evaluateGate: the streamer stopped on a setpoint it could not send
@@ -60,9 +64,10 @@ struct GateVerdict {
 };
 
 // With require_robot_enabled, a broadcast disable holds until a heartbeat with the watchdog bit
-// arrives after it; without (bench use, no roboRIO), until heartbeat_timeout_s has passed since
-// the latest disable. Robot reasons take precedence over state reasons, and both over a release
-// (kReleased means "everything else is open", so a goal that ends the release may be accepted).
+// (and no motor override) arrives after it; without (bench use, no roboRIO), until
+// heartbeat_timeout_s has passed since the latest disable. Robot reasons take precedence over state
+// reasons, and both over a release (kReleased means "everything else is open", so a goal that ends
+// the release may be accepted).
 GateVerdict evaluateGate(const RobotInputs& inputs, MonoNs now, const GateSettings& settings);
 
 }  // namespace cyber::daemon

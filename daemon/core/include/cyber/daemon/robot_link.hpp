@@ -9,6 +9,7 @@
 
 #include "cyber/can/frame.hpp"
 #include "cyber/can/io_result.hpp"
+#include "cyber/can/robot_frames.hpp"
 #include "cyber/daemon/mono_time.hpp"
 #include "cyber/daemon/motion_gate.hpp"
 
@@ -23,8 +24,13 @@ class RobotFrameSource {
 };
 
 struct RobotLink {
-  MonoNs heartbeat_ns = kNever;     // when the streamer took in the latest valid heartbeat
-  bool heartbeat_watchdog = false;  // its system-watchdog bit
+  // How heartbeats are read: the config's [daemon] robot_controller (docs/can-protocol.md, "Robot
+  // heartbeat"). Systemcore's reading is the default: on a roboRIO it can only close the gate more
+  // often, never open it.
+  can::HeartbeatLayout heartbeat_layout = can::HeartbeatLayout::kSystemcore;
+  MonoNs heartbeat_ns = kNever;           // when the streamer took in the latest valid heartbeat
+  bool heartbeat_watchdog = false;        // its system-watchdog bit
+  bool heartbeat_motor_override = false;  // its FTC motor override flag (Systemcore only)
   MonoNs broadcast_disable_ns = kNever;
   std::uint32_t broadcast_disable_count = 0;
   std::int64_t bad_heartbeats = 0;  // heartbeat-id frames with a bad payload (ARM_DAEMON_STATUS.decode_errors)

@@ -93,9 +93,12 @@ class StreamerThread {
   StreamerThread(const StreamerThread&) = delete;
   StreamerThread& operator=(const StreamerThread&) = delete;
 
-  // The streamer's source of heartbeats and disables (null: none, as without a CAN bus). Set
-  // before start().
-  void setRobotFrameSource(RobotFrameSource* source) { robot_source_ = source; }
+  // The streamer's source of heartbeats and disables (null: none, as without a CAN bus), and the
+  // layout its heartbeats are read in (docs/can-protocol.md, "Robot heartbeat"). Set before start().
+  void setRobotFrameSource(RobotFrameSource* source, can::HeartbeatLayout layout) {
+    robot_source_ = source;
+    robot_link_.heartbeat_layout = layout;
+  }
   void start();
   // Ends after the current period and joins.
   void stop();
