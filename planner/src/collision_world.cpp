@@ -41,7 +41,6 @@ double farthestFromFirstAxis(const ChainJoint& second, const Point2& p) {
 CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, double scene_offset_m)
     : CollisionWorld(model, scene, pieces, JointRange{scene_offset_m, scene_offset_m}) {}
 
-
 CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, const JointRange& band)
     : pieces_(pieces), chain_(model.joints) {
   double reach_first_m = 0.0;   // of joint 0's axis (links 0 and 1)

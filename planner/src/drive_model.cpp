@@ -72,7 +72,8 @@ std::array<PathVoltage, kJointCount> DriveModel::pathVoltages(const PathPoint& p
   std::array<PathVoltage, kJointCount> out;
   if (dynamics_) {
     const PathTorque torque = dynamics_->alongPath(p.q, p.dq_ds, p.d2q_ds2);
-    for (int j = 0; j < kJointCount; ++j) out[static_cast<size_t>(j)] = pathVoltage(rigidBodyDrive(j), torque, p.dq_ds, j);
+    for (int j = 0; j < kJointCount; ++j)
+      out[static_cast<size_t>(j)] = pathVoltage(rigidBodyDrive(j), torque, p.dq_ds, j);
     return out;
   }
   // qdot = q' c and qddot = q' a + q'' b, so kV qdot + kA qddot = kA q' a + kA q'' b + kV q' c.

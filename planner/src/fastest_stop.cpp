@@ -37,8 +37,8 @@ double distanceToLimits(const RobotModel& model, const JointVector& start, const
 
 // Where braking as hard as the rows at each node allow brings b_start to rest on a line of
 // `length` (an outer bound on the admissible deceleration, so an estimate from below).
-double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives,
-                            double b_start, topp::Problem& problem, topp::LimitMargins& margins) {
+double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives, double b_start, topp::Problem& problem,
+                            topp::LimitMargins& margins) {
   const double length = line.length();
   topp::sampleGrid(line, kEstimatePoints, problem);
   margins.reset(problem.intervals());
@@ -60,8 +60,9 @@ double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives,
 // every interval, checked at the solver's step like the optimiser's result. kInfeasibleStart when
 // b_start cannot be stopped on `line` as asked, kSolverNotConverged when the check fails.
 Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& line, const RobotModel& model,
-                                  const DriveModel& drives, double b_start, int points, topp::Problem& problem, topp::LimitMargins& margins,
-                                  std::vector<double>& profile, std::vector<double>& controllable) {
+                                  const DriveModel& drives, double b_start, int points, topp::Problem& problem,
+                                  topp::LimitMargins& margins, std::vector<double>& profile,
+                                  std::vector<double>& controllable) {
   using R = Result<Trajectory>;
   const double length = line->length();
   topp::sampleGrid(*line, points, problem);

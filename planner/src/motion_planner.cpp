@@ -118,8 +118,7 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
     const PlannedPath& path = found[i];
     const auto topp_start = std::chrono::steady_clock::now();
     Plan plan;
-    Result<Trajectory> trajectory =
-        solver.solve(path.path, model.driveModel(path.pieces), speed * speed, &plan.solver);
+    Result<Trajectory> trajectory = solver.solve(path.path, model.driveModel(path.pieces), speed * speed, &plan.solver);
     topp_ms += msSince(topp_start);
     if (!trajectory) {
       if (i == 0) fallback = trajectory.error();
@@ -303,8 +302,9 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
     if (span <= 0.0 || scene.obstacles.empty()) continue;
     const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, 1e-3))));
     for (int k = 0; k < count; ++k) {
-      bands.emplace_back(model, scene,
-                         JointRange{range.min + span * k / count, k + 1 == count ? range.max : range.min + span * (k + 1) / count});
+      bands.emplace_back(
+          model, scene,
+          JointRange{range.min + span * k / count, k + 1 == count ? range.max : range.min + span * (k + 1) / count});
     }
   }
   return planner;
@@ -329,8 +329,8 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const double offset = request.scene_offset_m;
   if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, 1e-9)) {
     return Result<Plan>::failure(PlanStatus::kInvalidInput,
-                                 fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m", offset,
-                                             scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
+                                 fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m",
+                                             offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
   }
   const std::vector<PathPlanner>& bands = path_planners_[static_cast<size_t>(request.scene)];
   std::optional<PathPlanner> shifted;

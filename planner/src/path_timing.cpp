@@ -17,8 +17,7 @@ constexpr double kEstimateControllableTolerance = 1e-3;
 
 }  // namespace
 
-TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& drives,
-                                 double b_start, int grid_points) {
+TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& drives, double b_start, int grid_points) {
   TimedFractions out;
   const double length = path.length();
   if (!(length > 0.0)) {
@@ -50,8 +49,7 @@ TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& dr
   return out;
 }
 
-double estimateDuration(const GeometricPath& path, const DriveModel& drives, double b_start,
-                        int grid_points) {
+double estimateDuration(const GeometricPath& path, const DriveModel& drives, double b_start, int grid_points) {
   const TimedFractions times = reachabilityTimes(path, drives, b_start, grid_points);
   return times.time_s.empty() ? std::numeric_limits<double>::infinity() : times.time_s.back();
 }

@@ -165,8 +165,7 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
   out.speed_bound = in.speed_bound * time_scale_s;
 }
 
-bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem,
-               std::string* error) {
+bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem, std::string* error) {
   const int intervals = problem.intervals();
   problem.rows.clear();
   problem.row_begin.assign(static_cast<size_t>(intervals) + 1, 0);

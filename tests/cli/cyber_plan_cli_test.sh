@@ -36,7 +36,7 @@ expect_in "json keys" "$tmp/out" '"duration_s":'
 for key in grid_ms search_ms smooth_ms topp_ms total_ms primal_residual dual_residual min_clearance_m; do
   expect_in "json $key" "$tmp/out" "\"$key\":"
 done
-header='t,elevator_m,elevator_mps,elevator_mps2,arm_rad,arm_radps,arm_radps2,elevator_volts,arm_volts,elevator_amps,arm_amps'
+header='t,elevator_pos,elevator_vel,elevator_acc,elevator_volts,elevator_amps,arm_pos,arm_vel,arm_acc,arm_volts,arm_amps'
 if [ "$(head -n 1 "$tmp/t.csv")" != "$header" ]; then
   echo "FAIL csv header: $(head -n 1 "$tmp/t.csv")"; failures=$((failures + 1))
 fi
@@ -49,15 +49,15 @@ t = [float(r['t']) for r in rows]
 gaps = [b - a for a, b in zip(t, t[1:])]
 assert t[0] == 0.0 and max(gaps) <= 0.0010001 and min(gaps) > 0, 'rows are not 1 ms apart'
 assert abs(t[-1] - summary['duration_s']) < 1e-6, (t[-1], summary['duration_s'])
-assert abs(float(rows[-1]['elevator_m']) - 1.97) < 1e-4 and abs(float(rows[-1]['arm_rad']) - 5.17) < 1e-4
+assert abs(float(rows[-1]['elevator_pos']) - 1.97) < 1e-4 and abs(float(rows[-1]['arm_pos']) - 5.17) < 1e-4
 assert summary['min_clearance_m'] >= 0.03 - 1e-9, summary
 print('ok   csv: %d rows, %.3f s' % (len(rows), t[-1]))
 PY
-check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.27,5.79 --coral --plot "$tmp/p.png"
+check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.27,5.79 --pieces coral --plot "$tmp/p.png"
 if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a" ]; then
   echo "FAIL plot: not a PNG"; failures=$((failures + 1))
 fi
-check "embedded default config" 0 --from 0.58,2.97 --to 1.93,1.71 --algae
+check "embedded default config" 0 --from 0.58,2.97 --to 1.93,1.71 --pieces algae
 check "moving start" 0 --config "$config" --from 0.8,1.57 --to 1.5,1.57 --from-velocity 0.5,0.0
 check "joined values" 0 --config="$config" --from=0.8,1.57 --to=1.5,1.57 --from-velocity=-0.2,1
 check "zero-length move" 0 --config "$config" --from 0.2,1.57 --to 0.2,1.57
@@ -68,6 +68,10 @@ check "inf goal" 2 --config "$config" --from 0.2,1.57 --to 1.97,inf
 check "malformed pair" 2 --config "$config" --from 0.2 --to 1.97,5.17
 check "missing --to" 2 --config "$config" --from 0.2,1.57
 check "unknown argument" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --fast
+check "unknown piece" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --pieces cone
+check "scene offset out of range" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene-offset 0.5
+check "scene offset in range" 0 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene-offset 0.1
+check "another robot" 0 --config "$(dirname "$config")/chargedup-2023-double-jointed.toml" --from 1.5708,3.1416 --to 1.3257,3.929
 check "empty joined value" 2 --config= --from 0.2,1.57 --to 1.97,5.17
 expect_in "empty value named" "$tmp/err" "--config needs a value"
 check "missing config" 2 --config "$tmp/none.toml" --from 0.2,1.57 --to 1.97,5.17
@@ -77,7 +81,7 @@ check "unknown scene" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scen
 check "goal out of range" 3 --config "$config" --from 0.2,1.57 --to 2.5,1.57
 check "start out of range" 3 --config "$config" --from 0.2,-1 --to 1.97,5.17
 # Coral L4 of the public poses lies in a pocket no other coral pose reaches (issue 2 note).
-check "unreachable goal" 3 --config "$config" --from 0.20,1.57 --to 1.98,5.39 --coral
+check "unreachable goal" 3 --config "$config" --from 0.20,1.57 --to 1.98,5.39 --pieces coral
 expect_in "no path reason" "$tmp/err" "no path"
 check "goal in collision" 3 --config "$config" --from 0.2,1.57 --to 0.0,0.0
 expect_in "collision reason" "$tmp/err" "collision"

@@ -15,8 +15,8 @@ expect() {  # expect NAME WANT_EXIT CMD...
   if [ "$got" -eq "$want" ]; then passes=$((passes + 1)); echo "ok   $name"
   else failures=$((failures + 1)); echo "FAIL $name: exit $got, want $want: $(cat "$tmp/err")"; fi
 }
-"$plan" --from 0.20,1.57 --to 1.27,5.79 --coral --csv "$tmp/move.csv" >/dev/null || { echo "FAIL cyber-plan"; exit 1; }
-expect "csv to png" 0 "$plot" --csv "$tmp/move.csv" --coral --out "$tmp/csv.png"
+"$plan" --from 0.20,1.57 --to 1.27,5.79 --pieces coral --csv "$tmp/move.csv" >/dev/null || { echo "FAIL cyber-plan"; exit 1; }
+expect "csv to png" 0 "$plot" --csv "$tmp/move.csv" --pieces coral --out "$tmp/csv.png"
 is_png "$tmp/csv.png" || { failures=$((failures + 1)); echo "FAIL csv.png is not a PNG"; }
 "$writer" "$tmp/traj.lcmlog" || { echo "FAIL writing the log"; exit 1; }
 expect "lcm log to png" 0 "$plot" --lcm-log "$tmp/traj.lcmlog" --out "$tmp/log.png"
@@ -27,12 +27,12 @@ grep -q "undecodable" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL gar
 expect "wrong channel" 2 "$plot" --lcm-log "$tmp/traj.lcmlog" --channel OTHER --out "$tmp/x.png"
 expect "world at a pose" 0 "$plot" --world --at 1.22,5.69 --out "$tmp/pose.png"
 is_png "$tmp/pose.png" || { failures=$((failures + 1)); echo "FAIL pose.png is not a PNG"; }
-expect "world filmstrip and animation" 0 "$plot" --world --csv "$tmp/move.csv" --coral --frames 4 --out "$tmp/film.png" --animation "$tmp/anim.png"
+expect "world filmstrip and animation" 0 "$plot" --world --csv "$tmp/move.csv" --pieces coral --frames 4 --out "$tmp/film.png" --animation "$tmp/anim.png"
 is_png "$tmp/film.png" && is_png "$tmp/anim.png" || { failures=$((failures + 1)); echo "FAIL film.png or anim.png is not a PNG"; }
 grep -q acTL "$tmp/anim.png" || { failures=$((failures + 1)); echo "FAIL anim.png is not animated (no acTL)"; }
 expect "world from the lcm log" 0 "$plot" --world --lcm-log "$tmp/traj.lcmlog" --out "$tmp/film-log.png"
 src=$(cd "$(dirname "$0")/../.." && pwd)
-expect "config preview" 0 "$plot" --config "$src/config/reefscape-2025.toml" --coral --out "$tmp/preview.png"
+expect "config preview" 0 "$plot" --config "$src/config/reefscape-2025.toml" --pieces coral --out "$tmp/preview.png"
 is_png "$tmp/preview.png" || { failures=$((failures + 1)); echo "FAIL preview.png is not a PNG"; }
 sed '/^\[poses/,/^\[daemon\]/{/^\[daemon\]/!d}' "$src/config/reefscape-2025.toml" >"$tmp/no-poses.toml"
 expect "config preview without named poses" 0 "$plot" --config "$tmp/no-poses.toml" --out "$tmp/preview2.png"

@@ -20,7 +20,11 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-std::string poseText(const cyber::planner::JointVector& q) { return fmt::format("({:.3f} m, {:.3f} rad)", q[0], q[1]); }
+// The pose in its joints' units (m or rad).
+std::string poseText(const cyber::planner::RobotModel& robot, const cyber::planner::JointVector& q) {
+  return fmt::format("({:.3f} {}, {:.3f} {})", q[0], cyber::planner::unitName(robot.joints[0].type), q[1],
+                     cyber::planner::unitName(robot.joints[1].type));
+}
 
 }  // namespace
 
@@ -63,11 +67,12 @@ int main(int argc, char** argv) {
                 std::string(planner::toString(plan.status())) + ": " + plan.error().reason);
   }
 
-  if (!args->csv_path.empty() && !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error)) {
+  if (!args->csv_path.empty() &&
+      !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error)) {
     return fail(2, error);
   }
   if (!args->plot_path.empty()) {
-    const std::string title = "cyber-plan " + poseText(args->from) + " -> " + poseText(args->to) +
+    const std::string title = "cyber-plan " + poseText(robot, args->from) + " -> " + poseText(robot, args->to) +
                               (pieces->empty() ? "" : " +" + robot.pieceSetName(*pieces));
     if (!plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, *pieces, title), args->plot_path,
                                    &error)) {
@@ -79,8 +84,8 @@ int main(int argc, char** argv) {
   } else {
     const auto& p = plan.value();
     std::printf("planned %s -> %s: %.3f s, min clearance %.4f m, plan %.2f ms (search %.2f, smooth %.2f, topp %.2f)\n",
-                poseText(args->from).c_str(), poseText(args->to).c_str(), p.trajectory->duration_s(), p.min_clearance_m,
-                p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
+                poseText(robot, args->from).c_str(), poseText(robot, args->to).c_str(), p.trajectory->duration_s(),
+                p.min_clearance_m, p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
   }
   return 0;
 }

@@ -15,7 +15,7 @@ struct PlanArguments {
   planner::JointVector to = planner::JointVector::Zero();
   planner::JointVector from_velocity = planner::JointVector::Zero();
   std::string pieces;  // names as --pieces gives them; resolved against the robot
-  std::string scene;  // empty: the default scene
+  std::string scene;   // empty: the default scene
   double scene_offset_m = 0.0;
   std::string csv_path;
   std::string plot_path;

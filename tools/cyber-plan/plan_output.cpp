@@ -26,8 +26,8 @@ void forEachSample(const planner::Trajectory& trajectory, F&& f) {
 
 }  // namespace
 
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints, const std::string& path,
-                        std::string* error) {
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
+                        const std::string& path, std::string* error) {
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!file) {
     *error = path + ": cannot open for writing";
@@ -35,7 +35,8 @@ bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::Jo
   }
   std::fputs("t", file.get());
   for (const planner::ChainJoint& joint : joints) {
-    for (const char* column : plot::kCsvColumns) std::fprintf(file.get(), ",%s", plot::csvColumn(joint.name, column).c_str());
+    for (const char* column : plot::kCsvColumns)
+      std::fprintf(file.get(), ",%s", plot::csvColumn(joint.name, column).c_str());
   }
   std::fputs("\n", file.get());
   forEachSample(trajectory, [&](const planner::TrajectorySample& s) {

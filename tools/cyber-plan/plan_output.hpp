@@ -13,8 +13,8 @@ inline constexpr double kCsvStepS = 0.001;
 
 // Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per 1 ms sample, plus
 // the final sample at the exact duration.
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints, const std::string& path,
-                        std::string* error);
+bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
+                        const std::string& path, std::string* error);
 
 // One JSON object on one line.
 std::string planSummaryJson(const planner::Plan& plan);

@@ -74,8 +74,7 @@ int main(int argc, char** argv) {
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
-  sim.plants[0] =
-      cyber::plant::JointPlant::fromDrive(robot.drive(0), robot.range(0));
+  sim.plants[0] = cyber::plant::JointPlant::fromDrive(robot.drive(0), robot.range(0));
   sim.plants[1] = cyber::plant::JointPlant::fromDrive(robot.drive(1), robot.range(1));
   sim.gains[0] = options.elevator_gains;
   sim.gains[1] = options.arm_gains;

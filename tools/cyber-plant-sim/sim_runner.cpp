@@ -222,9 +222,7 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
     return;
   }
   const std::uint8_t device = decoded.value().device;
-  const int joint = device == setup_.elevator_device ? 0
-                    : device == setup_.arm_device    ? 1
-                                                     : -1;
+  const int joint = device == setup_.elevator_device ? 0 : device == setup_.arm_device ? 1 : -1;
   if (joint < 0) {
     ++counters_.other_frames;
     return;
@@ -369,10 +367,10 @@ void Runner::printSummary() const {
   say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
       "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
-      q[0], q[1], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps,
-      counters_.malformed, counters_.other_frames, counters_.bus_errors, counters_.read_failures,
-      counters_.heartbeats_sent, counters_.disables_sent, counters_.write_failures, counters_.states_published,
-      counters_.publish_failures, motions_, clock_.freezes(), clock_.frozenSeconds());
+      q[0], q[1], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps, counters_.malformed,
+      counters_.other_frames, counters_.bus_errors, counters_.read_failures, counters_.heartbeats_sent,
+      counters_.disables_sent, counters_.write_failures, counters_.states_published, counters_.publish_failures,
+      motions_, clock_.freezes(), clock_.frozenSeconds());
 }
 
 }  // namespace

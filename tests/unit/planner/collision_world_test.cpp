@@ -108,7 +108,8 @@ TEST(CollisionWorld, CutoffGivesExactValuesBelowItAndLowerBoundsAbove) {
 
 TEST(CollisionWorld, HeldPiecesOnlyAddGeometry) {
   std::vector<CollisionWorld> worlds;
-  for (int set = 0; set < model().pieceSetCount(); ++set) worlds.emplace_back(model(), scene(), HeldPieces::fromIndex(set));
+  for (int set = 0; set < model().pieceSetCount(); ++set)
+    worlds.emplace_back(model(), scene(), HeldPieces::fromIndex(set));
   EXPECT_EQ(worlds[0].robotPolygonCount(), 1);
   EXPECT_EQ(worlds[3].robotPolygonCount(), 3);
   std::mt19937 rng(13);

@@ -23,10 +23,12 @@ ConvexPolygon randomPolygon(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const int n = 3 + static_cast<int>(u(rng) * 6);
   const Point2 centre(4 * u(rng) - 2, 4 * u(rng) - 2);
+  // Points on an ellipse in increasing angle: always convex.
+  const Point2 radii(0.1 + u(rng), 0.1 + u(rng));
   std::vector<Point2> v;
   for (int i = 0; i < n; ++i) {
     const double angle = 2 * M_PI * (i + 0.5 * u(rng)) / n;
-    v.push_back(centre + (0.1 + u(rng)) * Point2(std::cos(angle), std::sin(angle)));
+    v.push_back(centre + Point2(radii.x() * std::cos(angle), radii.y() * std::sin(angle)));
   }
   std::string error;
   return ConvexPolygon::fromVertices(v, &error);

@@ -67,8 +67,7 @@ TEST(JointChain, PointJacobianMatchesCentralDifferencesForEveryJointTypePair) {
         const Point2 p(u(rng), u(rng));
         const ChainPose pose = chainPose(chain, q);
         for (int link = 0; link < kJointCount; ++link) {
-          const Eigen::Matrix2d jacobian =
-              pose.pointJacobian(link, pose.frames[static_cast<size_t>(link)].toWorld(p));
+          const Eigen::Matrix2d jacobian = pose.pointJacobian(link, pose.frames[static_cast<size_t>(link)].toWorld(p));
           constexpr double h = 1e-6;
           for (int j = 0; j < kJointCount; ++j) {
             JointVector dq = JointVector::Zero();

@@ -59,7 +59,8 @@ inline DriveParams armDrive() {
 // joint types and axes matter to the drives (the gravity angle of each joint).
 inline JointChain referenceChain() {
   JointChain chain;
-  chain[0] = ChainJoint{"elevator", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * std::numbers::pi / 180.0, {0.0, 2.0}};
+  chain[0] =
+      ChainJoint{"elevator", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * std::numbers::pi / 180.0, {0.0, 2.0}};
   chain[1] = ChainJoint{"arm", JointType::kRevolute, Point2::Zero(), 0.0, {0.0, 6.108652381980153}};
   return chain;
 }

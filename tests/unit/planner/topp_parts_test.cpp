@@ -214,8 +214,9 @@ void expectRowsAreTheDriveModel(const DriveModel& drives) {
         row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : d.motor.resistanceOhms() * d.current_limit_amps;
     const double value = row.value(a, b, b, c, c) * scale;  // b, c equal at both nodes: the sample's own
     const double physical =
-        row.kind == topp::LimitKind::kVoltage ? v : drives.amps(drives.volts(pt.q, qdot, qddot), qdot)[row.joint] *
-                                                        d.motor.resistanceOhms();
+        row.kind == topp::LimitKind::kVoltage
+            ? v
+            : drives.amps(drives.volts(pt.q, qdot, qddot), qdot)[row.joint] * d.motor.resistanceOhms();
     // value = physical - (constant terms), the constants sit in the bounds: compare the bounds.
     EXPECT_NEAR(row.hi * scale - value,
                 (row.kind == topp::LimitKind::kVoltage ? d.voltage_limit_volts : scale) - physical,

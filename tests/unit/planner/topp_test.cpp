@@ -21,9 +21,9 @@ using testing::ArcPath;
 using testing::armDrive;
 using testing::drivesOf;
 using testing::elevatorDrive;
-using testing::referenceDrives;
 using testing::FineReference;
 using testing::LinePath;
+using testing::referenceDrives;
 using testing::WigglePath;
 
 constexpr double kLimitTolerance = 0.005;    // the 0.5 %
@@ -355,7 +355,8 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   for (double dt : {-0.004, 0.004}) {
     const TrajectorySample s = trajectory.sample(turn_t + dt);
     ASSERT_NE(s.qdot[test::kArm], 0.0);
-    const double without_friction = arm.kG_volts * std::cos(s.q[test::kArm]) + arm.kV * s.qdot[test::kArm] + arm.kA * s.qddot[test::kArm];
+    const double without_friction =
+        arm.kG_volts * std::cos(s.q[test::kArm]) + arm.kV * s.qdot[test::kArm] + arm.kA * s.qddot[test::kArm];
     EXPECT_NEAR(s.volts[test::kArm] - without_friction, std::copysign(arm.kS_volts, s.qdot[test::kArm]), 1e-12);
   }
   EXPECT_GT(trajectory.sample(turn_t - 0.004).qdot[test::kArm], 0.0);

@@ -23,8 +23,8 @@ namespace {
 using testing::armDrive;
 using testing::drivesOf;
 using testing::elevatorDrive;
-using testing::referenceDrives;
 using testing::LinePath;
+using testing::referenceDrives;
 using testing::WigglePath;
 
 std::shared_ptr<const GeometricPath> wiggle() {
@@ -44,8 +44,7 @@ TEST(Trajectory, InvalidProfilesAreTypedErrors) {
   auto make = [&](std::vector<double> s, std::vector<double> b) {
     return Trajectory::create(path, referenceDrives(), std::move(s), std::move(b)).status();
   };
-  EXPECT_EQ(Trajectory::create(nullptr, referenceDrives(), {0.0, 1.0}, {0.0, 0.0}).status(),
-            PlanStatus::kInvalidInput);
+  EXPECT_EQ(Trajectory::create(nullptr, referenceDrives(), {0.0, 1.0}, {0.0, 0.0}).status(), PlanStatus::kInvalidInput);
   EXPECT_EQ(make({}, {}), PlanStatus::kInvalidInput);
   EXPECT_EQ(make({0.0, 1.0}, {0.0}), PlanStatus::kInvalidInput);
   EXPECT_EQ(make({0.0, 0.5}, {0.0, 1.0}), PlanStatus::kInvalidInput);                      // does not reach the end
@@ -141,7 +140,8 @@ TEST(Trajectory, VoltsAndAmpsFollowTheDriveModel) {
     const TrajectorySample s = t.sample(t.duration_s() * i / 100.0);
     EXPECT_DOUBLE_EQ(s.volts[test::kArm], armDrive().volts(s.q[test::kArm], s.qdot[test::kArm], s.qddot[test::kArm]));
     EXPECT_DOUBLE_EQ(s.amps[test::kArm], armDrive().amps(s.volts[test::kArm], s.qdot[test::kArm]));
-    EXPECT_DOUBLE_EQ(s.volts[test::kElevator], elevatorDrive().volts(s.q[test::kElevator], s.qdot[test::kElevator], s.qddot[test::kElevator]));
+    EXPECT_DOUBLE_EQ(s.volts[test::kElevator],
+                     elevatorDrive().volts(s.q[test::kElevator], s.qdot[test::kElevator], s.qddot[test::kElevator]));
   }
 }
 
@@ -178,7 +178,8 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
   capped.voltage_limit_volts = capped.current_limit_amps = 1e6;
   capped.acceleration_limit = 1e-3;
   EXPECT_FALSE(withinDriveLimits(
-      Trajectory::create(path, drivesOf(elevatorDrive(), capped), reference.sGrid(), reference.bGrid()).value(), step, 0.0));
+      Trajectory::create(path, drivesOf(elevatorDrive(), capped), reference.sGrid(), reference.bGrid()).value(), step,
+      0.0));
 }
 
 TEST(Trajectory, SlowedDownFollowsTheSamePathWithVelocitiesOverTheFactor) {

@@ -171,7 +171,8 @@ TEST(PlantSimulation, GoesNeutralAfterTheSetpointTimeout) {
   EXPECT_NEAR(sim.positions()[test::kElevator], 1.0, 0.001);
   sim.advanceTo(last_s + 0.3);
   EXPECT_EQ(sim.appliedVolts(test::kElevator), 0.0);
-  EXPECT_NEAR(sim.velocities()[test::kElevator], neutralSlideVelocity(sim.settings().plants[test::kElevator], 1.0), 1e-6);
+  EXPECT_NEAR(sim.velocities()[test::kElevator], neutralSlideVelocity(sim.settings().plants[test::kElevator], 1.0),
+              1e-6);
   EXPECT_LT(sim.positions()[test::kElevator], 0.995);
 }
 

@@ -97,7 +97,9 @@ TEST_F(WorldView, ReefObstacleVerticesAreWhereTheConfigPutsThem) {
   ASSERT_TRUE(image.ok());
   const WorldCanvas c = worldPngCanvas(robot_);
   int checked = 0;
-  for (const auto& o : robot_.scenes[0].obstacles) {
+  std::vector<planner::NamedPolygon> drawn = robot_.scenes[0].obstacles;
+  drawn.insert(drawn.end(), robot_.scenes[0].fixed.begin(), robot_.scenes[0].fixed.end());
+  for (const auto& o : drawn) {
     const auto& vertices = o.polygon.vertices();
     for (size_t i = 0; i < vertices.size(); ++i) {
       const Point2& v = vertices[i];

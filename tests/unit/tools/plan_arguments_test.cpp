@@ -10,12 +10,11 @@ namespace {
 auto parse = [](const std::vector<std::string>& args) { return parsePlanArguments(args); };
 
 TEST(PlanArguments, BothSpellingsOfAValueMeanTheSame) {
-  for (const auto& args : {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity",
-                                                    "-0.2,1", "--scene", "open", "--scene-offset", "0.1", "--csv", "m.csv",
-                                                    "--pieces", "coral", "--json"},
-                           std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1",
-                                                    "--scene=open", "--scene-offset=0.1", "--csv=m.csv", "--pieces=coral",
-                                                    "--json"}}) {
+  for (const auto& args :
+       {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity", "-0.2,1", "--scene",
+                                 "open", "--scene-offset", "0.1", "--csv", "m.csv", "--pieces", "coral", "--json"},
+        std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1", "--scene=open",
+                                 "--scene-offset=0.1", "--csv=m.csv", "--pieces=coral", "--json"}}) {
     const PlanArguments a = parsedOk(parse, args);
     EXPECT_EQ(a.from, planner::JointVector(0.2, 1.57));
     EXPECT_EQ(a.to, planner::JointVector(1.97, 5.17));
@@ -40,11 +39,12 @@ TEST(PlanArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, with({"--json=1"})), "--json takes no value, got '--json=1'");
   EXPECT_EQ(parseError(parse, {"--from", "0,0"}), "missing --to (see --help)");
   EXPECT_EQ(parseError(parse, {"--to", "0,0"}), "missing --from (see --help)");
-  EXPECT_EQ(parseError(parse, with({"--scene-offset", "near"})), "--scene-offset expects a finite number of metres, got 'near'");
+  EXPECT_EQ(parseError(parse, with({"--scene-offset", "near"})),
+            "--scene-offset expects a finite number of metres, got 'near'");
   for (const char* bad : {"1", "1,2,3", "1,nan", "1,2x"}) {
     EXPECT_EQ(
         parseError(parse, with({"--from-velocity", bad})),
-        std::string("--from-velocity expects VT,VTHETA as two finite numbers separated by a comma, got '") + bad + "'");
+        std::string("--from-velocity expects V0,V1 as two finite numbers separated by a comma, got '") + bad + "'");
   }
 }
 

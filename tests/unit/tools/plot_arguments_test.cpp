@@ -31,9 +31,9 @@ TEST(PlotArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, {"--csv=", "--out", "p.png"}), "--csv needs a value");
   EXPECT_EQ(parseError(parse, {"--csv", "m.csv"}), "missing --out FILE.png");
   EXPECT_EQ(parseError(parse, {"--world", "--at", "1,2,3", "--out", "p.png"}),
-            "--at expects ELEVATOR_M,ARM_RAD, got '1,2,3'");
+            "--at expects Q0,Q1 (the two joints' positions), got '1,2,3'");
   EXPECT_EQ(parseError(parse, {"--world", "--at=1,inf", "--out", "p.png"}),
-            "--at expects ELEVATOR_M,ARM_RAD, got '1,inf'");
+            "--at expects Q0,Q1 (the two joints' positions), got '1,inf'");
   EXPECT_EQ(parseError(parse, {"--world", "--csv", "m.csv", "--frames=1", "--out", "p.png"}),
             "--frames expects 2 to 20, got '1'");
   EXPECT_EQ(parseError(parse, {"--at", "1,2", "--out", "p.png"}), "--animation and --at need --world");

@@ -35,13 +35,9 @@ std::optional<JointCommand> PlantSimulation::effectiveCommand(int joint, double 
   return command;
 }
 
-planner::JointVector PlantSimulation::positions() const {
-  return {states_[0].position, states_[1].position};
-}
+planner::JointVector PlantSimulation::positions() const { return {states_[0].position, states_[1].position}; }
 
-planner::JointVector PlantSimulation::velocities() const {
-  return {states_[0].velocity, states_[1].velocity};
-}
+planner::JointVector PlantSimulation::velocities() const { return {states_[0].velocity, states_[1].velocity}; }
 
 void PlantSimulation::step() {
   const double now_s = time_s();

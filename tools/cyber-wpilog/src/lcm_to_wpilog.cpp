@@ -227,7 +227,8 @@ class Converter {
     for (int j = 0; j < planner::kJointCount; ++j) {
       const planner::ChainJoint& joint = g_.chain[static_cast<size_t>(j)];
       const bool slides = joint.type == planner::JointType::kPrismatic;
-      angle_rad[static_cast<size_t>(j)] = slides ? parent_rad + joint.axis_rad : frames[static_cast<size_t>(j)].angle_rad();
+      angle_rad[static_cast<size_t>(j)] =
+          slides ? parent_rad + joint.axis_rad : frames[static_cast<size_t>(j)].angle_rad();
       length_m[static_cast<size_t>(j)] = (slides ? q[j] : 0.0) + g_.link_length_m[static_cast<size_t>(j)];
       parent_rad = frames[static_cast<size_t>(j)].angle_rad();
     }
@@ -295,7 +296,8 @@ MechanismGeometry mechanismGeometry(const planner::RobotModel& robot) {
   }
   // A prismatic link's ligament is its travel alone (the carriage's outline is not along it).
   for (int j = 0; j < planner::kJointCount; ++j) {
-    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kPrismatic) g.link_length_m[static_cast<size_t>(j)] = 0;
+    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kPrismatic)
+      g.link_length_m[static_cast<size_t>(j)] = 0;
   }
   return g;
 }

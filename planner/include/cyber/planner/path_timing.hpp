@@ -13,8 +13,7 @@ namespace cyber::planner {
 
 // Seconds from path speed^2 b_start (path units) to rest at the end; infinity when the profile
 // does not exist (a limit that cannot hold, a start that cannot be stopped).
-double estimateDuration(const GeometricPath& path, const DriveModel& drives, double b_start,
-                        int grid_points);
+double estimateDuration(const GeometricPath& path, const DriveModel& drives, double b_start, int grid_points);
 
 // The same profile's times: at each grid point, the fraction of the path's length reached and the
 // seconds it took (both start at 0; the last fraction is 1 and the last time estimateDuration).
@@ -23,7 +22,6 @@ struct TimedFractions {
   std::vector<double> fraction;
   std::vector<double> time_s;
 };
-TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& drives,
-                                 double b_start, int grid_points);
+TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& drives, double b_start, int grid_points);
 
 }  // namespace cyber::planner

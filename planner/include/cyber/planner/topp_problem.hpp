@@ -110,17 +110,15 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 // middle of every interval. The Coulomb term kS*sgn(qdot) uses every sign qdot takes on the
 // interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with
 // `error` set when a limit cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
-bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem,
-               std::string* error);
+bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem, std::string* error);
 
 // The trajectory along `path` of a speed profile on `problem`'s unit-length grid: s scales by the
 // path's length and b by b_scale (the length squared, over the time scale squared when time was
 // scaled). unit_b(k) is the profile at node k, clamped at 0. The ends are set exactly: to b_start,
 // the move's own (scaling it there and back would round it), and to rest.
 template <class UnitB>
-Result<Trajectory> unitProfileTrajectory(std::shared_ptr<const GeometricPath> path,
-                                         const DriveModel& drives, const Problem& problem,
-                                         UnitB&& unit_b, double b_scale, double b_start) {
+Result<Trajectory> unitProfileTrajectory(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
+                                         const Problem& problem, UnitB&& unit_b, double b_scale, double b_start) {
   const double length = path->length();
   std::vector<double> s_grid(problem.s.size()), b_grid(problem.s.size());
   for (size_t k = 0; k < s_grid.size(); ++k) {

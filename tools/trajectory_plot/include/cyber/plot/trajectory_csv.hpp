@@ -1,5 +1,5 @@
 #pragma once
-// The columns of a trajectory CSV (docs/design.md, "Trajectory CSV"): t, then for each joint in
+// The columns of a trajectory CSV (docs/design.md, the cyber-plan command line): t, then for each joint in
 // chain order NAME_pos, NAME_vel, NAME_acc, NAME_volts, NAME_amps, the joint named as the robot
 // description names it. cyber-plan writes it, cyber-plot reads it.
 

@@ -34,7 +34,7 @@ WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_
 struct WorldColors {
   uint8_t sky[3] = {246, 247, 252};
   uint8_t obstacle[3] = {110, 116, 130};
-  uint8_t links[2][3] = {{70, 110, 200}, {230, 115, 25}};                       // by joint
+  uint8_t links[2][3] = {{70, 110, 200}, {230, 115, 25}};                                    // by joint
   uint8_t pieces[4][3] = {{240, 236, 215}, {40, 170, 140}, {200, 60, 160}, {230, 200, 40}};  // by piece index
 };
 inline constexpr WorldColors kWorldColors{};
