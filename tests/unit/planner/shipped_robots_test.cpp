@@ -1,0 +1,167 @@
+// The three shipped robots (config/*.toml): every ordered pair of their named poses, per held set,
+// is planned within its stored ceiling (or refused where the table says so), and every plan keeps
+// the clearance and the drive limits at 1 ms; scene offsets move the field elements and the plan
+// with them (docs/algorithm.md section 2, "Scene offsets").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/motion_planner.hpp"
+#include "public_moves.hpp"
+#include "reference_model.hpp"
+#include "shipped_move_durations.hpp"
+
+namespace cyber::planner {
+namespace {
+
+struct ShippedRobot {
+  config::Config config;
+  MotionPlanner planner;
+};
+
+const ShippedRobot& shipped(const std::string& robot) {
+  static std::map<std::string, std::unique_ptr<ShippedRobot>> cache;
+  auto& slot = cache[robot];
+  if (!slot) {
+    config::Config config = config::loadConfigFile(std::string(CYBER_SOURCE_DIR) + "/config/" + robot + ".toml");
+    auto planner = MotionPlanner::create(config.robot);
+    EXPECT_TRUE(planner.ok()) << robot;
+    slot = std::make_unique<ShippedRobot>(ShippedRobot{std::move(config), std::move(planner).value()});
+  }
+  return *slot;
+}
+
+JointVector namedPose(const config::Config& config, const std::string& set, const std::string& name) {
+  for (const config::PoseSet& poses : config.poses) {
+    if (poses.name != set) continue;
+    for (const config::NamedPose& pose : poses.poses) {
+      if (pose.name == name) return pose.q;
+    }
+  }
+  ADD_FAILURE() << "no pose " << set << ":" << name;
+  return JointVector::Zero();
+}
+
+// Clearance at the scene offset and the drive limits at every 1 ms sample.
+void expectSound(const RobotModel& model, const Trajectory& trajectory, HeldPieces pieces, double offset_m,
+                 const std::string& label) {
+  const CollisionWorld world(model, model.scenes.front(), pieces, offset_m);
+  for (double t = 0.0; t <= trajectory.duration_s(); t += 0.001) {
+    const double d = world.distance(trajectory.sampleMotion(t).q).value;
+    ASSERT_GE(d, model.clearance_m - 1e-6) << label << " at t = " << t;
+  }
+  EXPECT_TRUE(withinDriveLimits(trajectory, model.planner.topp)) << label;
+}
+
+TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
+  int planned = 0, refused = 0;
+  for (const test::ShippedMoveCeiling& move : test::kShippedMoveCeilings) {
+    const ShippedRobot& robot = shipped(move.robot);
+    const RobotModel& model = robot.config.robot;
+    const std::string label = std::string(move.robot) + " " + move.pieces + ":" + move.from + "->" + move.to;
+    std::string error;
+    const auto pieces = model.piecesNamed(move.pieces, &error);
+    ASSERT_TRUE(pieces) << error;
+    PlanRequest request;
+    request.start = namedPose(robot.config, move.pieces, move.from);
+    request.goal = namedPose(robot.config, move.pieces, move.to);
+    request.pieces = *pieces;
+    const auto plan = robot.planner.plan(request);
+    if (move.ceiling_s == test::kRefused) {
+      EXPECT_FALSE(plan.ok()) << label << " is now planned: update the table";
+      ++refused;
+      continue;
+    }
+    ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().reason;
+    EXPECT_LE(plan.value().trajectory->duration_s(), move.ceiling_s) << label;
+    expectSound(model, *plan.value().trajectory, *pieces, 0.0, label);
+    ++planned;
+  }
+  EXPECT_EQ(planned + refused, static_cast<int>(std::size(test::kShippedMoveCeilings)));
+  EXPECT_GT(planned, 100);
+}
+
+TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
+  const RobotModel& model = shipped("chargedup-2023-double-jointed").config.robot;
+  EXPECT_EQ(model.drive_kind, DriveKind::kRigidBody);
+  // The shoulder's gravity load depends on the elbow: the same shoulder angle, two elbow angles.
+  const DriveModel drives = model.driveModel({});
+  const JointVector rest = JointVector::Zero();
+  EXPECT_GT(
+      std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[0] - drives.volts(JointVector(0.5, 3.0), rest, rest)[0]),
+      0.1);
+  // A held cone adds its weight.
+  const HeldPieces cone = model.piecesNamed("cone", nullptr).value();
+  EXPECT_GT(std::abs(model.driveModel(cone).volts(JointVector(0.5, 1.0), rest, rest)[1]),
+            std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[1]));
+}
+
+// A scene offset that moves the reef into the path planned at offset 0 gives another plan, which
+// keeps the clearance at that offset. Of the public moves, two are such cases (their ends stay clear
+// and the reef, moved 0.1-0.3 m away, crosses the plan of offset 0).
+TEST(ShippedRobots, AnOffsetThatMovesTheReefIntoThePlanYieldsAnotherPlanThatKeepsTheClearance) {
+  const RobotModel& model = test::referenceModel();
+  const auto planner = MotionPlanner::create(model);
+  ASSERT_TRUE(planner.ok());
+  int moved_into = 0;
+  for (const test::PublicMove& move : test::publicMoves()) {
+    PlanRequest request;
+    request.start = move.from;
+    request.goal = move.to;
+    request.pieces = move.pieces;
+    const auto at_zero = planner.value().plan(request);
+    if (!at_zero.ok()) continue;
+    for (const double offset : {0.1, 0.2, 0.3}) {
+      const CollisionWorld world(model, model.scenes.front(), move.pieces, offset);
+      if (world.distance(move.from).value < model.clearance_m || world.distance(move.to).value < model.clearance_m) {
+        continue;  // the offset moves the reef onto an end of the move
+      }
+      double closest = 1e9;
+      for (double t = 0.0; t <= at_zero.value().trajectory->duration_s(); t += 0.001) {
+        closest = std::min(closest, world.distance(at_zero.value().trajectory->sampleMotion(t).q).value);
+      }
+      if (closest >= model.clearance_m) continue;
+      request.scene_offset_m = offset;
+      const std::string label = move.label + " at offset " + std::to_string(offset);
+      const auto shifted = planner.value().plan(request);
+      ASSERT_TRUE(shifted.ok()) << label << ": " << shifted.error().reason;
+      expectSound(model, *shifted.value().trajectory, move.pieces, offset, label);
+      ++moved_into;
+      break;
+    }
+  }
+  EXPECT_GE(moved_into, 2);
+  PlanRequest outside;
+  outside.start = JointVector(0.20, 1.57);
+  outside.goal = JointVector(1.22, 5.69);
+  outside.scene_offset_m = 0.31;
+  EXPECT_EQ(planner.value().plan(outside).status(), PlanStatus::kInvalidInput);
+}
+
+TEST(ShippedRobots, EachBandOfOffsetsIsAtMostItsWidthAndTheyCoverTheRange) {
+  const RobotModel& model = test::referenceModel();
+  const auto planner = MotionPlanner::create(model);
+  ASSERT_TRUE(planner.ok());
+  const std::vector<JointRange> bands = planner.value().offsetBands(0);
+  ASSERT_GE(bands.size(), 2u);
+  EXPECT_EQ(bands.front().min, 0.0);
+  EXPECT_EQ(bands.front().max, 0.0);
+  const double width = model.planner.search.offset_band_clearances * model.clearance_m;
+  EXPECT_DOUBLE_EQ(bands[1].min, model.scenes.front().offset_range_m.min);
+  EXPECT_DOUBLE_EQ(bands.back().max, model.scenes.front().offset_range_m.max);
+  for (size_t k = 1; k < bands.size(); ++k) {
+    EXPECT_LE(bands[k].max - bands[k].min, width + 1e-12);
+    if (k > 1) {
+      EXPECT_DOUBLE_EQ(bands[k].min, bands[k - 1].max);
+    }
+  }
+  EXPECT_EQ(planner.value().offsetBands(1).size(), 1u);  // the open scene has no field elements
+}
+
+}  // namespace
+}  // namespace cyber::planner
