@@ -87,7 +87,7 @@ start_bus_capture() {
 }
 
 start_lcm_log() {
-  lcm-logger -f -q -l 'udpm://239.255.76.67:5810?ttl=0' "$work/lcm.log" &  # the daemon's URL (docs/lcm.md)
+  lcm-logger -f -q --lcm-url='udpm://239.255.76.67:5810?ttl=0' "$work/lcm.log" &  # the daemon's URL (docs/lcm.md)
   logger=$!
 }
 

@@ -21,7 +21,7 @@ until grep -qs " $CAN_IFACE $sync_frame\$" "$bus"; do
   cansend "$CAN_IFACE" "$sync_frame"
   sleep 0.05
 done
-lcm-logger -f -q -l 'udpm://239.255.76.67:5810?ttl=0' "$work/lcm.log" &  # the daemon's URL (docs/lcm.md)
+lcm-logger -f -q --lcm-url='udpm://239.255.76.67:5810?ttl=0' "$work/lcm.log" &  # the daemon's URL (docs/lcm.md)
 logger=$!
 
 cyber-plant-sim --can "$CAN_IFACE" --realtime 40 --initial 0.5,1.57 --log "$work/plant.csv" --duration 30 \
