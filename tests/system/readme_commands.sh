@@ -15,7 +15,7 @@ cd "$work"
 for c in "${commands[@]}"; do
   run_shown "$c"
 done
-[[ $(head -n 1 move.csv) == t,elevator_m,* ]] || fail "move.csv has no header"
+[[ $(head -n 1 move.csv) == t,elevator_pos,* ]] || fail "move.csv has no header"
 [[ $(head -c 4 move.png | od -An -c | tr -d ' ') == '211PNG' ]] || fail "move.png is not a PNG"
 [[ $(head -c 4 move-world.png | od -An -c | tr -d ' ') == '211PNG' ]] || fail "move-world.png is not a PNG"
 grep -q acTL move-world-anim.png || fail "move-world-anim.png is not an animated PNG"
