@@ -220,17 +220,17 @@ class Converter {
       e_.putDouble(second + "weight", t, 6.0);
     }
     // A ligament points along its link's x axis (a prismatic joint's along its travel) and is as
-    // long as the travel (prismatic) or the link's outline (revolute).
+    // long as the travel (prismatic) or the link's outline (revolute). Angles are summed along the
+    // chain, not wrapped: a ligament turns on as its joint does.
     const auto frames = planner::linkFrames(g_.chain, q);
     std::array<double, planner::kJointCount> angle_rad{}, length_m{};
     double parent_rad = 0.0;
     for (int j = 0; j < planner::kJointCount; ++j) {
       const planner::ChainJoint& joint = g_.chain[static_cast<size_t>(j)];
       const bool slides = joint.type == planner::JointType::kPrismatic;
-      angle_rad[static_cast<size_t>(j)] =
-          slides ? parent_rad + joint.axis_rad : frames[static_cast<size_t>(j)].angle_rad();
+      angle_rad[static_cast<size_t>(j)] = parent_rad + joint.axis_rad + (slides ? 0.0 : q[j]);
       length_m[static_cast<size_t>(j)] = (slides ? q[j] : 0.0) + g_.link_length_m[static_cast<size_t>(j)];
-      parent_rad = frames[static_cast<size_t>(j)].angle_rad();
+      if (!slides) parent_rad = angle_rad[static_cast<size_t>(j)];
     }
     e_.putDouble(first + "angle", t, angle_rad[0] * kRadToDeg);
     e_.putDouble(first + "length", t, length_m[0]);
