@@ -194,6 +194,9 @@ class DaemonIntegrationTest {
         arm.cancel(move);
         for (int i = 0; i < 400 && !move.isFinished(); ++i) loop.runFor(LOOP_S);
         boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+        // The daemon holds once its stop (or, when no stop could be spliced in time, the running
+        // motion) has ended: a slow daemon (a sanitizer build) reports HOLDING later, not never.
+        for (int i = 0; i < 1000 && client.daemonMode() != DaemonMode.HOLDING; ++i) loop.runFor(LOOP_S);
         DaemonMode mode = client.daemonMode();
         return () -> {
           assertEquals(MoveState.EXECUTING, before, move.toString());
