@@ -281,7 +281,7 @@ bool requestError(PlanStatus status) {
 
 }  // namespace
 
-Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
+Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection) {
   if (model.scenes.empty()) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no scene");
   bool has_polygon = false;
   for (const LinkGeometry& link : model.links) has_polygon = has_polygon || !link.polygons.empty();
@@ -294,17 +294,23 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model) {
   planner.model_ = model;
   planner.path_planners_.reserve(model.scenes.size());
   const double band_width = model.planner.search.offset_band_clearances * model.clearance_m;
-  for (const Scene& scene : model.scenes) {
+  for (size_t index = 0; index < model.scenes.size(); ++index) {
+    const Scene& scene = model.scenes[index];
     std::vector<PathPlanner>& bands = planner.path_planners_.emplace_back();
-    bands.emplace_back(model, scene);
+    if (selection.scene >= 0 && selection.scene != static_cast<int>(index)) continue;
+    const bool moves = !scene.obstacles.empty();
+    const std::optional<double>& only = selection.scene_offset_m;
+    if (!only || *only == 0.0 || !moves) bands.emplace_back(model, scene);
     const JointRange& range = scene.offset_range_m;
     const double span = range.max - range.min;
-    if (span <= 0.0 || scene.obstacles.empty()) continue;
+    if (span <= 0.0 || !moves) continue;
     const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, 1e-3))));
     for (int k = 0; k < count; ++k) {
-      bands.emplace_back(
-          model, scene,
-          JointRange{range.min + span * k / count, k + 1 == count ? range.max : range.min + span * (k + 1) / count});
+      const JointRange band{range.min + span * k / count,
+                            k + 1 == count ? range.max : range.min + span * (k + 1) / count};
+      if (only && (*only == 0.0 || !band.contains(*only))) continue;
+      bands.emplace_back(model, scene, band);
+      if (only) break;
     }
   }
   return planner;
@@ -332,14 +338,21 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
                                  fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m",
                                              offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
   }
+  // The scene as drawn, or the band of grids that holds the offset with the exact offset's worlds.
   const std::vector<PathPlanner>& bands = path_planners_[static_cast<size_t>(request.scene)];
-  std::optional<PathPlanner> shifted;
-  if (offset != 0.0 && !scene.obstacles.empty()) {
-    auto band = std::find_if(bands.begin() + 1, bands.end(),
-                             [&](const PathPlanner& p) { return p.band().contains(offset, 1e-9); });
-    shifted = (band == bands.end() ? bands.back() : *band).atOffset(offset);
+  const bool drawn = offset == 0.0 || scene.obstacles.empty();
+  const auto base = std::find_if(bands.begin(), bands.end(), [&](const PathPlanner& p) {
+    const JointRange& band = p.band();
+    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, 1e-9);
+  });
+  if (base == bands.end()) {
+    return Result<Plan>::failure(
+        PlanStatus::kInvalidInput,
+        fmt::format("this planner was built without the grids of scene {} at offset {:.4f} m", scene.name, offset));
   }
-  const PathPlanner& paths = shifted ? *shifted : bands.front();
+  std::optional<PathPlanner> shifted;
+  if (!drawn) shifted = base->atOffset(offset);
+  const PathPlanner& paths = shifted ? *shifted : *base;
   const bool moving = weightedNorm(request.start_velocity, model_.planner.metric) > 0.0;
   Result<Plan> chosen = inconsistent();
   if (!moving) {

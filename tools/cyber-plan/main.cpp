@@ -51,7 +51,8 @@ int main(int argc, char** argv) {
   const std::optional<planner::HeldPieces> pieces = robot.piecesNamed(args->pieces, &error);
   if (!pieces) return fail(2, "--pieces: " + error);
 
-  auto planner = planner::MotionPlanner::create(robot);
+  // Only the grids this move needs: the start-up is most of a cyber-plan run.
+  auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m});
   if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().reason);
 
   planner::PlanRequest request;

@@ -163,5 +163,31 @@ TEST(ShippedRobots, EachBandOfOffsetsIsAtMostItsWidthAndTheyCoverTheRange) {
   EXPECT_EQ(planner.value().offsetBands(1).size(), 1u);  // the open scene has no field elements
 }
 
+// A planner built for one scene and offset only (cyber-plan's) plans that move as the full one does
+// and refuses what it has no grids for.
+TEST(ShippedRobots, APlannerOfOneSceneAndOffsetPlansItsMovesAsTheFullOneDoes) {
+  const RobotModel& model = test::referenceModel();
+  const auto full = MotionPlanner::create(model);
+  ASSERT_TRUE(full.ok());
+  PlanRequest request;
+  request.start = JointVector(0.20, 1.57);
+  request.goal = JointVector(1.22, 5.69);
+  for (const double offset : {0.0, 0.2}) {
+    request.scene_offset_m = offset;
+    const auto selected = MotionPlanner::create(model, {0, offset});
+    ASSERT_TRUE(selected.ok());
+    const auto a = full.value().plan(request);
+    const auto b = selected.value().plan(request);
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_EQ(a.value().trajectory->duration_s(), b.value().trajectory->duration_s()) << offset;
+    PlanRequest elsewhere = request;
+    elsewhere.scene_offset_m = offset == 0.0 ? 0.2 : 0.0;
+    EXPECT_EQ(selected.value().plan(elsewhere).status(), PlanStatus::kInvalidInput) << offset;
+    elsewhere = request;
+    elsewhere.scene = 1;
+    EXPECT_EQ(selected.value().plan(elsewhere).status(), PlanStatus::kInvalidInput) << offset;
+  }
+}
+
 }  // namespace
 }  // namespace cyber::planner

@@ -43,12 +43,18 @@ class MotionPlanner {
  public:
   // Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
   // has no scene or no arm geometry.
-  static Result<MotionPlanner> create(const RobotModel& model);
+  // Which grids create() builds: every one (the daemon, which must answer any goal without
+  // building one), or only those one move needs (cyber-plan, whose start-up is most of its run).
+  struct GridSelection {
+    int scene = -1;                        // -1: every scene
+    std::optional<double> scene_offset_m;  // set: only the grids of this offset; unset: every band
+  };
+  static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = {});
 
   [[nodiscard]] Result<Plan> plan(const PlanRequest& request) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
-  // The path stage of a scene as drawn (offset 0).
+  // The path stage of a scene as drawn (offset 0; built unless a GridSelection left it out).
   [[nodiscard]] const PathPlanner& pathPlanner(int scene) const {
     return path_planners_[static_cast<size_t>(scene)].front();
   }
