@@ -39,17 +39,18 @@ struct Plan {
   std::string path_method;       // which path attempt succeeded (see PlannedPath::method)
 };
 
+// Which grids create() builds: every one (the daemon, which must answer any goal without
+// building one), or only those one move needs (cyber-plan, whose start-up is most of its run).
+struct GridSelection {
+  int scene = -1;                        // -1: every scene
+  std::optional<double> scene_offset_m;  // set: only the grids of this offset; unset: every band
+};
+
 class MotionPlanner {
  public:
   // Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
   // has no scene or no arm geometry.
-  // Which grids create() builds: every one (the daemon, which must answer any goal without
-  // building one), or only those one move needs (cyber-plan, whose start-up is most of its run).
-  struct GridSelection {
-    int scene = -1;                        // -1: every scene
-    std::optional<double> scene_offset_m;  // set: only the grids of this offset; unset: every band
-  };
-  static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = {});
+  static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = GridSelection{});
 
   [[nodiscard]] Result<Plan> plan(const PlanRequest& request) const;
 
