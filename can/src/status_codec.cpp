@@ -8,7 +8,7 @@
 namespace cyber::can {
 
 namespace {
-bool isDefinedMode(std::uint8_t mode) { return mode <= static_cast<std::uint8_t>(Mode::kReleased); }
+bool isDefinedMode(std::uint8_t mode) { return mode <= static_cast<std::uint8_t>(kLastMode); }
 }  // namespace
 
 std::string_view toString(Mode mode) {

@@ -27,6 +27,8 @@ enum class Mode : std::uint8_t {
   kRobotDisabled = 4,  // heartbeat says disabled, is stale, or a broadcast disable arrived
   kReleased = 5,       // manual override (ARM_CANCEL release): no setpoints until the next goal
 };
+// The highest defined mode: a status frame with a larger byte 0 is refused.
+inline constexpr Mode kLastMode = Mode::kReleased;
 
 // "no-state", "holding", "moving", "fault", "robot-disabled", "released".
 std::string_view toString(Mode mode);
