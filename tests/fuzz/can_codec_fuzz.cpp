@@ -125,7 +125,8 @@ void checkEncode(cyber::fuzz::FuzzInput& in) {
   status.sequence = in.take<std::uint8_t>();
   const auto status_frame = encodeStatus(status_device, status);
   CYBER_FUZZ_CHECK(status_frame.ok() ==
-                   (status_device <= kMaxDeviceNumber && static_cast<std::uint8_t>(status.mode) <= static_cast<std::uint8_t>(kLastMode)));
+                   (status_device <= kMaxDeviceNumber &&
+                    static_cast<std::uint8_t>(status.mode) <= static_cast<std::uint8_t>(kLastMode)));
   if (status_frame) {
     const auto decoded = decodeStatus(status_frame.value());
     CYBER_FUZZ_CHECK(decoded && decoded.value().device == status_device && decoded.value().status == status);
