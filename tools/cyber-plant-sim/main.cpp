@@ -1,6 +1,6 @@
 // cyber-plant-sim: the elevator and arm motor controllers and their mechanism, simulated on a CAN
 // interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
-// options; sim_runner.cpp is the event loop, cyber/plant/joint_model.hpp the model.
+// options; sim_runner.cpp is the event loop, cyber/plant/mechanism_plant.hpp the model.
 
 #include <sys/stat.h>
 #include <fcntl.h>
@@ -74,10 +74,11 @@ int main(int argc, char** argv) {
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
-  sim.plants[0] = cyber::plant::JointPlant::fromDrive(robot.drive(0), robot.range(0));
-  sim.plants[1] = cyber::plant::JointPlant::fromDrive(robot.drive(1), robot.range(1));
-  sim.gains[0] = options.elevator_gains;
-  sim.gains[1] = options.arm_gains;
+  sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot),
+                                         options.controller_bandwidth_radps);
+  for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {
+    if (options.joint_gains[joint]) sim.gains[joint] = *options.joint_gains[joint];
+  }
   sim.setpoint_timeout_s = options.setpoint_timeout_s;
 
   // Only the two setpoint ids reach us; the kernel drops everything else.

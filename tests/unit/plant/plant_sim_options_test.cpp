@@ -35,8 +35,9 @@ TEST(SimOptions, DefaultsWithoutArguments) {
   EXPECT_FALSE(o.log_path);
   EXPECT_EQ(o.duration_s, 0.0);
   EXPECT_EQ(o.setpoint_timeout_s, 0.1);
-  EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, kDefaultElevatorGains.kp_volts_per_unit);
-  EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, kDefaultArmGains.kd_volts_per_unit_per_s);
+  EXPECT_EQ(o.controller_bandwidth_radps, kDefaultControllerBandwidth_radps);
+  EXPECT_FALSE(o.joint_gains[0]);
+  EXPECT_FALSE(o.joint_gains[1]);
   EXPECT_EQ(o.realtime_priority, 0);
   EXPECT_FALSE(o.control_path);
 }
@@ -65,9 +66,11 @@ TEST(SimOptions, EveryOption) {
                              "7.5",
                              "--setpoint-timeout",
                              "0.25",
-                             "--elevator-gains",
+                             "--bandwidth",
+                             "60",
+                             "--joint0-gains",
                              "200,2",
-                             "--arm-gains",
+                             "--joint1-gains",
                              "40,0",
                              "--realtime",
                              "40",
@@ -88,10 +91,11 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.log_path, "out.csv");
   EXPECT_EQ(o.duration_s, 7.5);
   EXPECT_EQ(o.setpoint_timeout_s, 0.25);
-  EXPECT_EQ(o.elevator_gains.kp_volts_per_unit, 200.0);
-  EXPECT_EQ(o.elevator_gains.kd_volts_per_unit_per_s, 2.0);
-  EXPECT_EQ(o.arm_gains.kp_volts_per_unit, 40.0);
-  EXPECT_EQ(o.arm_gains.kd_volts_per_unit_per_s, 0.0);
+  EXPECT_EQ(o.controller_bandwidth_radps, 60.0);
+  EXPECT_EQ(o.joint_gains[0]->kp_volts_per_unit, 200.0);
+  EXPECT_EQ(o.joint_gains[0]->kd_volts_per_unit_per_s, 2.0);
+  EXPECT_EQ(o.joint_gains[1]->kp_volts_per_unit, 40.0);
+  EXPECT_EQ(o.joint_gains[1]->kd_volts_per_unit_per_s, 0.0);
   EXPECT_EQ(o.realtime_priority, 40);
   EXPECT_EQ(o.control_path, "ctl.fifo");
 }
@@ -119,8 +123,12 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--fault"},
       {"--duration", "-1"},
       {"--setpoint-timeout", "0"},
-      {"--elevator-gains", "1"},
-      {"--arm-gains", "-1,0"},
+      {"--joint0-gains", "1"},
+      {"--joint1-gains", "-1,0"},
+      {"--elevator-gains", "1,0"},
+      {"--bandwidth", "0"},
+      {"--bandwidth", "-5"},
+      {"--bandwidth", "fast"},
       {"--log"},
       {"--control"},
       {"--realtime", "0"},

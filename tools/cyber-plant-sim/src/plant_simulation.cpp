@@ -5,9 +5,15 @@
 
 namespace cyber::plant {
 
+SimulationSettings::SimulationSettings(const MechanismPlant& mechanism, double controller_bandwidth_radps)
+    : plant(mechanism) {
+  for (int joint = 0; joint < kJointCount; ++joint)
+    gains[joint] = derivedGains(plant, joint, controller_bandwidth_radps);
+}
+
 PlantSimulation::PlantSimulation(const SimulationSettings& settings, const planner::JointVector& initial_q)
     : settings_(settings) {
-  for (int joint = 0; joint < kJointCount; ++joint) states_[joint].position = initial_q[joint];
+  state_.q = initial_q;
 }
 
 void PlantSimulation::advanceTo(double t_s) {
@@ -35,19 +41,18 @@ std::optional<JointCommand> PlantSimulation::effectiveCommand(int joint, double 
   return command;
 }
 
-planner::JointVector PlantSimulation::positions() const { return {states_[0].position, states_[1].position}; }
-
-planner::JointVector PlantSimulation::velocities() const { return {states_[0].velocity, states_[1].velocity}; }
-
 void PlantSimulation::step() {
   const double now_s = time_s();
+  std::array<bool, kJointCount> latched{};
   for (int joint = 0; joint < kJointCount; ++joint) {
-    if (!latest_[joint]) continue;  // resting at the initial pose until its first setpoint
-    const JointPlant& plant = settings_.plants[joint];
+    latched[joint] = !latest_[joint];  // resting at the initial pose until its first setpoint
     const auto command = effectiveCommand(joint, now_s);
-    applied_volts_[joint] = command ? controllerVolts(plant, settings_.gains[joint], *command, states_[joint]) : 0.0;
-    states_[joint] = stepPlant(plant, states_[joint], applied_volts_[joint], settings_.step_s);
+    applied_volts_[joint] = command ? controllerVolts(settings_.plant.voltageLimit(joint), settings_.gains[joint],
+                                                      *command, state_.q[joint], state_.qdot[joint])
+                                    : 0.0;
   }
+  state_ = settings_.plant.step(state_, planner::JointVector(applied_volts_[0], applied_volts_[1]), settings_.step_s,
+                                latched);
   ++steps_;
 }
 

@@ -28,8 +28,10 @@ constexpr std::string_view kUsage =
     "  --log FILE               write the simulated state as CSV, one row per ARM_STATE period\n"
     "  --duration S             stop after S seconds (default: run until SIGINT/SIGTERM)\n"
     "  --setpoint-timeout S     controllers go neutral after S without a setpoint (default 0.1)\n"
-    "  --elevator-gains KP,KD   elevator PD gains, V/m and V/(m/s) (default 150,1)\n"
-    "  --arm-gains KP,KD        arm PD gains, V/rad and V/(rad/s) (default 60,0.1)\n"
+    "  --bandwidth RADPS        closed-loop bandwidth the controllers' PD gains are derived for\n"
+    "                           from the config's drives (default 100 rad/s)\n"
+    "  --joint0-gains KP,KD     joint 0's PD gains instead, V/unit and V/(unit/s) (unit: m or rad)\n"
+    "  --joint1-gains KP,KD     joint 1's PD gains instead\n"
     "  --realtime PRIO          run under SCHED_FIFO at PRIO 1..99 (needs CAP_SYS_NICE; tests\n"
     "                           use it so the heartbeat keeps its period on a busy machine)\n"
     "  --help                   this text\n"
@@ -54,7 +56,7 @@ cli::ValueHandler seconds(double* into, bool zero_allowed) {
   };
 }
 
-cli::ValueHandler gains(PdGains* into) {
+cli::ValueHandler gains(std::optional<PdGains>* into) {
   return [into](const std::string& value) -> std::string {
     const auto g = parseGains(value);
     if (!g) return "must be KP,KD with both >= 0, got '" + value + "'";
@@ -99,8 +101,14 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
   });
   parser.option("--duration", seconds(&o.duration_s, true));
   parser.option("--setpoint-timeout", seconds(&o.setpoint_timeout_s, false));
-  parser.option("--elevator-gains", gains(&o.elevator_gains));
-  parser.option("--arm-gains", gains(&o.arm_gains));
+  parser.option("--bandwidth", [&](const std::string& v) -> std::string {
+    const auto radps = cli::parseNumber(v);
+    if (!radps || *radps <= 0.0 || *radps > 1000.0) return "must be 0..1000 rad/s (not 0), got '" + v + "'";
+    o.controller_bandwidth_radps = *radps;
+    return "";
+  });
+  parser.option("--joint0-gains", gains(&o.joint_gains[0]));
+  parser.option("--joint1-gains", gains(&o.joint_gains[1]));
   parser.option("--realtime", [&](const std::string& v) -> std::string {
     const auto prio = cli::parseInteger(v);
     if (!prio || *prio < 1 || *prio > 99) return "must be a priority 1..99, got '" + v + "'";

@@ -1,5 +1,5 @@
 #pragma once
-// The simulated elevator and arm with their motor controllers, stepped on a fixed time grid.
+// The simulated mechanism with its two motor controllers, stepped on a fixed time grid.
 // Each controller tracks the latest setpoint it received, its position advanced by its velocity
 // since it arrived (the frames come every 5 ms; holding the position still would lag by v * 5 ms).
 // A controller that has heard nothing for setpoint_timeout_s, or that saw a broadcast disable since
@@ -11,24 +11,25 @@
 #include <optional>
 
 #include "cyber/planner/types.hpp"
-#include "cyber/plant/joint_model.hpp"
+#include "cyber/plant/mechanism_plant.hpp"
 
 namespace cyber::plant {
 
-inline constexpr int kJointCount = planner::kJointCount;  // joint 0, joint 1 in chain order
+// The closed-loop bandwidth the simulated controllers' gains are derived for (derivedGains): a
+// position loop on a 1 kHz motor controller, well below that loop's rate and the motors'
+// electrical time constants. The reference robot's hand-tuned gains gave 63 and 104 rad/s.
+inline constexpr double kDefaultControllerBandwidth_radps = 100.0;
 
 struct SimulationSettings {
-  std::array<JointPlant, kJointCount> plants;
-  std::array<PdGains, kJointCount> gains;
-  double step_s = 0.001;            // controller and integration step (a 1 kHz loop)
-  double setpoint_timeout_s = 0.1;  // no setpoint for longer: neutral
-};
+  SimulationSettings() = default;  // no plant: only to be assigned over
+  explicit SimulationSettings(const MechanismPlant& mechanism,
+                              double controller_bandwidth_radps = kDefaultControllerBandwidth_radps);
 
-// Default feedback gains of the simulated controllers. With the reference drives they give error
-// dynamics kA e'' + (kV + Kd) e' + Kp e = 0 close to critically damped (elevator 63 rad/s, arm
-// 104 rad/s) and a friction dead band kS / Kp of 1 mm and 2.5 mrad.
-inline constexpr PdGains kDefaultElevatorGains{150.0, 1.0};
-inline constexpr PdGains kDefaultArmGains{60.0, 0.1};
+  MechanismPlant plant;
+  std::array<PdGains, kJointCount> gains{};  // derived from the plant at the bandwidth given
+  double step_s = 0.001;                     // controller and integration step (a 1 kHz loop)
+  double setpoint_timeout_s = 0.1;           // no setpoint for longer: neutral
+};
 
 struct ReceivedSetpoint {
   JointCommand command;
@@ -53,9 +54,10 @@ class PlantSimulation {
   [[nodiscard]] std::optional<JointCommand> effectiveCommand(int joint, double t_s) const;
 
   [[nodiscard]] double time_s() const { return static_cast<double>(steps_) * settings_.step_s; }
-  [[nodiscard]] const JointState& state(int joint) const { return states_[joint]; }
-  [[nodiscard]] planner::JointVector positions() const;
-  [[nodiscard]] planner::JointVector velocities() const;
+  [[nodiscard]] const MechanismState& state() const { return state_; }
+  [[nodiscard]] JointState state(int joint) const { return {state_.q[joint], state_.qdot[joint]}; }
+  [[nodiscard]] const planner::JointVector& positions() const { return state_.q; }
+  [[nodiscard]] const planner::JointVector& velocities() const { return state_.qdot; }
   // Voltage the controller applied during the latest step.
   [[nodiscard]] double appliedVolts(int joint) const { return applied_volts_[joint]; }
   [[nodiscard]] const std::optional<ReceivedSetpoint>& latestSetpoint(int joint) const { return latest_[joint]; }
@@ -66,7 +68,7 @@ class PlantSimulation {
 
   SimulationSettings settings_;
   long long steps_ = 0;  // time = steps_ * step_s, so long runs do not accumulate rounding
-  std::array<JointState, kJointCount> states_{};
+  MechanismState state_;
   std::array<double, kJointCount> applied_volts_{};
   std::array<std::optional<ReceivedSetpoint>, kJointCount> latest_{};
   std::array<bool, kJointCount> disabled_{};

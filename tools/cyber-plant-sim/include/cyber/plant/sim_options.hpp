@@ -1,6 +1,7 @@
 #pragma once
 // The command line of cyber-plant-sim (docs/testing.md, "Plant simulator").
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -24,12 +25,13 @@ struct SimOptions {
   bool heartbeat = true;                                              // --no-heartbeat turns it off from the start
   std::vector<FaultEvent> faults;                                     // --fault KIND@WHEN, repeatable
   std::optional<std::string> log_path;                                // --log FILE: CSV of the simulated state
-  std::optional<std::string> control_path;         // --control FIFO: fault kinds, one per line, applied at once
-  double duration_s = 0.0;                         // --duration S; 0 runs until SIGINT/SIGTERM
-  double setpoint_timeout_s = 0.1;                 // --setpoint-timeout S
-  PdGains elevator_gains = kDefaultElevatorGains;  // --elevator-gains KP,KD
-  PdGains arm_gains = kDefaultArmGains;            // --arm-gains KP,KD
-  int realtime_priority = 0;                       // --realtime PRIO: SCHED_FIFO 1..99 (0: normal scheduling)
+  std::optional<std::string> control_path;  // --control FIFO: fault kinds, one per line, applied at once
+  double duration_s = 0.0;                  // --duration S; 0 runs until SIGINT/SIGTERM
+  double setpoint_timeout_s = 0.1;          // --setpoint-timeout S
+  // --bandwidth RADPS: the closed-loop bandwidth the controllers' gains are derived for.
+  double controller_bandwidth_radps = kDefaultControllerBandwidth_radps;
+  std::array<std::optional<PdGains>, kJointCount> joint_gains;  // --joint0-gains / --joint1-gains KP,KD
+  int realtime_priority = 0;  // --realtime PRIO: SCHED_FIFO 1..99 (0: normal scheduling)
 };
 
 struct SimArguments {

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "cyber/plant/joint_model.hpp"
+#include "cyber/plant/mechanism_plant.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 
 namespace cyber::plant {
