@@ -105,7 +105,7 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
   if (waiting_ && !waiting_->stop) {
     finish(waiting_->goal.request_id, GoalStatus::kCancelled, superseded(goal.request_id));
   }
-  waiting_ = Attempt{valid.value(), 0, false, false, false};
+  waiting_ = Attempt{valid.value(), 0, false, false, false, {}};
   startPlanning(now);
 }
 
@@ -197,6 +197,26 @@ void GoalCoordinator::replan(const Attempt& attempt, bool late, MonoNs now, cons
   startPlanning(now);
 }
 
+bool GoalCoordinator::retryFromRest(const Attempt& attempt, const planner::PlanError& error) {
+  // A rejection is the goal's own fault (bad input, a goal out of range or in collision): no
+  // start changes it.
+  if (statusOfPlanError(error.status) != GoalStatus::kFailed) return false;
+  const std::string what = std::string(planner::toString(error.status)) + ": " + error.reason;
+  if (waiting_) {
+    // A newer goal is already waiting: it is planned instead, from the same motion.
+    finish(attempt.goal.request_id, GoalStatus::kCancelled, superseded(waiting_->goal.request_id));
+    return true;
+  }
+  Attempt next = attempt;
+  ++next.attempt;
+  next.from_rest = true;
+  next.moving_start_failure = what;
+  sink_.note(NoteLevel::kInfo, "request " + std::to_string(attempt.goal.request_id) + ": from the moving start " +
+                                   what + "; finishing the running motion and planning from where it ends");
+  waiting_ = std::move(next);  // the caller starts planning it
+  return true;
+}
+
 void GoalCoordinator::onPlanResult(std::uint64_t job_id, planner::Result<PlannedMotion> result, double plan_time_s,
                                    MonoNs now) {
   auto* planning = std::get_if<Planning>(&stage_);
@@ -230,8 +250,11 @@ void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> res
       // The running motion is collision-free and ends at rest: finishing it is the safe answer.
       sink_.note(NoteLevel::kWarn, "ARM_CANCEL hold: no admissible stop for request " + std::to_string(id) + " (" +
                                        what + "); the running motion continues to its end at rest");
-    } else {
-      finish(id, statusOfPlanError(error.status), what);
+    } else if (job.floating || !retryFromRest(job.attempt, error)) {
+      const std::string why = job.attempt.moving_start_failure.empty()
+                                  ? what
+                                  : what + " (from the moving start: " + job.attempt.moving_start_failure + ")";
+      finish(id, statusOfPlanError(error.status), why);
     }
     startPlanning(now);
     return;

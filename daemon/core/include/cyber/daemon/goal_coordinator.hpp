@@ -106,6 +106,8 @@ class GoalCoordinator {
     bool from_rest = false;  // fall-back: start where the running motion ends (a stop: give up)
     bool stop = false;       // ARM_CANCEL's hold: the fastest stop of the running motion
     bool cancelled = false;  // ARM_CANCEL ended it at the worker or the streamer: never posted again
+    // Why planning from the moving start failed, when this attempt starts where the motion ends.
+    std::string moving_start_failure;
   };
 
   // The stream region: what the streamer does, as its events report it.
@@ -153,6 +155,10 @@ class GoalCoordinator {
   void onAdopted(Posted posted, const StreamEvent& event, MonoNs now);   // Posted -> Idle
   void onRejected(Posted posted, const StreamEvent& event, MonoNs now);  // Posted -> Idle
   void replan(const Attempt& attempt, bool late, MonoNs now, const std::string& why);
+  // A goal whose plan from the moving start failed: planned again from where the running motion
+  // ends at rest (the motion is collision-free and ends inside the limits). False when the
+  // failure is the goal's own, which no other start changes.
+  bool retryFromRest(const Attempt& attempt, const planner::PlanError& error);
   // Fills a stop's request and world from the motion at the branch; false when there is nothing to
   // brake (at rest by then) or it must not be braked (no world known, given up after late plans).
   bool prepareStop(Attempt& stop, const ProgramSample& at_branch);
