@@ -18,8 +18,8 @@ constexpr int kHeight = 1000;
 using detail::Rgb;
 using detail::setColor;
 using detail::text;
-constexpr Rgb kElevatorColor{0.10, 0.35, 0.75};
-constexpr Rgb kArmColor{0.85, 0.35, 0.10};
+constexpr Rgb kJoint0Color{0.10, 0.35, 0.75};
+constexpr Rgb kJoint1Color{0.85, 0.35, 0.10};
 constexpr Rgb kLimitColor{0.80, 0.10, 0.10};
 
 struct Box {
@@ -134,34 +134,34 @@ std::pair<double, double> rangeOf(std::initializer_list<const std::vector<double
   return {lo - pad, hi + pad};
 }
 
-void legend(cairo_t* cr, const Box& box, const std::string& elevator, const std::string& arm) {
+void legend(cairo_t* cr, const Box& box, const std::array<std::string, 2>& labels) {
   const double x = box.x + box.w - 170;
   const double y = box.y + 14;
   for (int i = 0; i < 2; ++i) {
-    setColor(cr, i == 0 ? kElevatorColor : kArmColor);
+    setColor(cr, i == 0 ? kJoint0Color : kJoint1Color);
     cairo_set_line_width(cr, 2.5);
     cairo_move_to(cr, x, y + 16 * i - 4);
     cairo_line_to(cr, x + 22, y + 16 * i - 4);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    text(cr, x + 28, y + 16 * i, i == 0 ? elevator : arm, 11);
+    text(cr, x + 28, y + 16 * i, labels[static_cast<size_t>(i)], 11);
   }
 }
 
-// The map's frame and blocked cells: arm angle on x, carriage travel on y, so the reef reads like
-// the robot's side view.
+// The map's frame and blocked cells: joint 1 on x, joint 0 on y, so a cascade's carried joint reads
+// across (for an elevator carrying an arm, the robot's side view).
 Axes drawCSpaceMap(cairo_t* cr, const CSpaceMap& m, const Box& box) {
-  Axes ax{box, m.arm_rad.min, m.arm_rad.max, m.elevator_m.min, m.elevator_m.max};
+  Axes ax{box, m.range[1].min, m.range[1].max, m.range[0].min, m.range[0].max};
   if (!(ax.x1 > ax.x0) || !(ax.y1 > ax.y0)) ax = Axes{box, 0, 1, 0, 1};
-  drawFrame(cr, ax, "configuration space (grey: closer than the clearance)", "arm angle [rad]", "elevator travel [m]");
-  if (m.elevator_cells > 0 && m.arm_cells > 0 &&
-      m.blocked.size() == static_cast<size_t>(m.elevator_cells * m.arm_cells)) {
-    const double cw = box.w / m.arm_cells;
-    const double ch = box.h / m.elevator_cells;
+  drawFrame(cr, ax, "configuration space (grey: closer than the clearance)", m.names[1] + " [" + m.units[1] + "]",
+            m.names[0] + " [" + m.units[0] + "]");
+  if (m.cells[0] > 0 && m.cells[1] > 0 && m.blocked.size() == static_cast<size_t>(m.cells[0] * m.cells[1])) {
+    const double cw = box.w / m.cells[1];
+    const double ch = box.h / m.cells[0];
     cairo_set_source_rgba(cr, 0.35, 0.35, 0.40, 0.75);
-    for (int i = 0; i < m.elevator_cells; ++i) {
-      for (int j = 0; j < m.arm_cells; ++j) {
-        if (m.blocked[static_cast<size_t>(i * m.arm_cells + j)] != 0) {
+    for (int i = 0; i < m.cells[0]; ++i) {
+      for (int j = 0; j < m.cells[1]; ++j) {
+        if (m.blocked[static_cast<size_t>(i * m.cells[1] + j)] != 0) {
           cairo_rectangle(cr, box.x + j * cw, box.y + box.h - (i + 1) * ch, cw + 0.5, ch + 0.5);
         }
       }
@@ -171,12 +171,12 @@ Axes drawCSpaceMap(cairo_t* cr, const CSpaceMap& m, const Box& box) {
   return ax;
 }
 
-void marker(cairo_t* cr, const Axes& ax, double arm_rad, double elevator_m, const std::string& label) {
+void marker(cairo_t* cr, const Axes& ax, double q1, double q0, const std::string& label) {
   cairo_set_source_rgb(cr, 0.05, 0.4, 0.1);
-  cairo_arc(cr, ax.px(arm_rad), ax.py(elevator_m), 6, 0, 2 * M_PI);
+  cairo_arc(cr, ax.px(q1), ax.py(q0), 6, 0, 2 * M_PI);
   cairo_fill(cr);
   cairo_set_source_rgb(cr, 0, 0, 0);
-  text(cr, ax.px(arm_rad) + 9, ax.py(elevator_m) - 8, label, 13);
+  text(cr, ax.px(q1) + 9, ax.py(q0) - 8, label, 13);
 }
 
 void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
@@ -192,8 +192,7 @@ void drawCSpace(cairo_t* cr, const TrajectoryPlotData& d, const Box& box) {
 
 void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const std::string& title,
                 const std::string& ylabel, const std::function<const std::vector<double>&(const JointSeries&)>& pick,
-                const std::array<double, 2>* limits, const std::string& elevator_name, const std::string& arm_name,
-                bool with_xlabel) {
+                const std::array<double, 2>* limits, const std::array<std::string, 2>& labels, bool with_xlabel) {
   const auto& s0 = pick(d.joints[0]);
   const auto& s1 = pick(d.joints[1]);
   // Both joints' limits stay in view (zero when there are none).
@@ -211,9 +210,9 @@ void drawSignal(cairo_t* cr, const TrajectoryPlotData& d, const Box& box, const 
       hline(cr, ax, -(*limits)[1], Rgb{0.6, 0.2, 0.6});
     }
   }
-  polyline(cr, ax, d.time_s, s0, kElevatorColor);
-  polyline(cr, ax, d.time_s, s1, kArmColor);
-  legend(cr, box, elevator_name, arm_name);
+  polyline(cr, ax, d.time_s, s0, kJoint0Color);
+  polyline(cr, ax, d.time_s, s1, kJoint1Color);
+  legend(cr, box, labels);
 }
 
 }  // namespace
@@ -236,25 +235,30 @@ bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, s
   drawCSpace(cr, d, Box{80, 70, 640, 860});
   const double x = 860, w = 700, h = 170, gap = 62;
   double y = 70;
+  // Each joint's signal labelled with its name and unit (per second for velocity).
+  const auto labels = [&](const std::string& unit0, const std::string& unit1) {
+    return std::array<std::string, 2>{d.cspace.names[0] + " [" + unit0 + "]", d.cspace.names[1] + " [" + unit1 + "]"};
+  };
+  const std::array<std::string, 2>& units = d.cspace.units;
   drawSignal(
-      cr, d, Box{x, y, w, h}, "position", "m | rad",
-      [](const JointSeries& s) -> const std::vector<double>& { return s.position; }, nullptr, "elevator [m]",
-      "arm [rad]", false);
+      cr, d, Box{x, y, w, h}, "position", units[0] + " | " + units[1],
+      [](const JointSeries& s) -> const std::vector<double>& { return s.position; }, nullptr,
+      labels(units[0], units[1]), false);
   y += h + gap;
   drawSignal(
-      cr, d, Box{x, y, w, h}, "velocity", "m/s | rad/s",
-      [](const JointSeries& s) -> const std::vector<double>& { return s.velocity; }, nullptr, "elevator [m/s]",
-      "arm [rad/s]", false);
+      cr, d, Box{x, y, w, h}, "velocity", units[0] + "/s | " + units[1] + "/s",
+      [](const JointSeries& s) -> const std::vector<double>& { return s.velocity; }, nullptr,
+      labels(units[0] + "/s", units[1] + "/s"), false);
   y += h + gap;
   drawSignal(
       cr, d, Box{x, y, w, h}, "feedforward voltage (dashed: limits)", "V",
       [](const JointSeries& s) -> const std::vector<double>& { return s.volts; }, &d.voltage_limit_volts,
-      "elevator [V]", "arm [V]", false);
+      labels("V", "V"), false);
   y += h + gap;
   drawSignal(
       cr, d, Box{x, y, w, h}, "current per motor (dashed: limits)", "A",
-      [](const JointSeries& s) -> const std::vector<double>& { return s.amps; }, &d.current_limit_amps, "elevator [A]",
-      "arm [A]", true);
+      [](const JointSeries& s) -> const std::vector<double>& { return s.amps; }, &d.current_limit_amps,
+      labels("A", "A"), true);
 
   cairo_destroy(cr);
   const bool ok = detail::writePng(surface, path, error);

@@ -361,7 +361,7 @@ bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::He
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   text(s.cr, width / 2.0, 30, title, 16, true);
   text(s.cr, width / 2.0, kPanelH + 78,
-       fmt::format("smallest clearance {:.3f} m at t = {:.2f} s (red frame); green: path of the arm tip",
+       fmt::format("smallest clearance {:.3f} m at t = {:.2f} s (red frame); green: path of the chain's tip",
                    smallest.distance_m, smallest.time_s - move.time_s.front()),
        13, true);
   return detail::writePng(s.surface, path, error);

@@ -11,12 +11,13 @@
 
 namespace cyber::plot {
 
+// Joint 0 on the map's y axis, joint 1 on its x axis (for a cascade the carried joint reads across).
 struct CSpaceMap {
-  planner::JointRange elevator_m;
-  planner::JointRange arm_rad;
-  int elevator_cells = 0;
-  int arm_cells = 0;
-  std::vector<uint8_t> blocked;  // elevator-major: blocked[i * arm_cells + j]
+  std::array<planner::JointRange, 2> range;
+  std::array<std::string, 2> names;  // the config's joint names
+  std::array<std::string, 2> units;  // "m" or "rad"
+  std::array<int, 2> cells{};
+  std::vector<uint8_t> blocked;  // joint-0-major: blocked[i * cells[1] + j]
 };
 
 // One joint signal per column of the cyber-plan CSV.
@@ -28,7 +29,7 @@ struct TrajectoryPlotData {
   std::string title;
   CSpaceMap cspace;
   std::vector<double> time_s;
-  std::array<JointSeries, 2> joints;  // elevator, arm
+  std::array<JointSeries, 2> joints;  // joint 0, joint 1 (names and units: cspace)
   std::array<double, 2> voltage_limit_volts{};
   std::array<double, 2> current_limit_amps{};
 };
