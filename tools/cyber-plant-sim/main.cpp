@@ -61,16 +61,25 @@ int main(int argc, char** argv) {
         program, {"--initial " + std::to_string(options.initial_q[0]) + "," + std::to_string(options.initial_q[1]) +
                   " is outside the joint ranges of " + robot.name});
   }
+  for (const std::string& piece : options.pieces) {
+    if (robot.pieceIndex(piece) < 0) {
+      std::string error;
+      (void)robot.piecesNamed(piece, &error);
+      return cyber::cli::reportBadUsage(program, {"--pieces: " + error});
+    }
+  }
   const auto& devices = config.daemon.devices;
-  if (!validDevice(devices.elevator) || !validDevice(devices.arm) || devices.elevator == devices.arm) {
-    std::cerr << "cyber-plant-sim: [daemon.devices] elevator and arm must be distinct numbers 0..63\n";
+  if (!validDevice(devices.joints[0]) || !validDevice(devices.joints[1]) || devices.joints[0] == devices.joints[1]) {
+    std::cerr << "cyber-plant-sim: [daemon.devices] " << robot.joints[0].name << " and " << robot.joints[1].name
+              << " must be distinct numbers 0..63\n";
     return 2;
   }
 
   cyber::plant::RunnerSetup setup;
   setup.options = options;
-  setup.elevator_device = static_cast<std::uint8_t>(devices.elevator);
-  setup.arm_device = static_cast<std::uint8_t>(devices.arm);
+  for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
+    setup.joint_devices[j] = static_cast<std::uint8_t>(devices.joints[j]);
+  }
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
@@ -84,10 +93,10 @@ int main(int argc, char** argv) {
   cyber::can::SocketOptions socket_options;
   socket_options.filters = std::vector<cyber::can::IdFilter>{
       cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.elevator_device),
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[0]),
           true),
       cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.arm_device),
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[1]),
           true)};
   auto socket = cyber::can::CanSocket::open(setup.can_interface, socket_options);
   if (!socket) {

@@ -18,8 +18,7 @@ struct SimOptions {
   std::optional<std::string> can_interface;  // --can; the config's [daemon] can_interface otherwise
   std::optional<std::string> lcm_url;        // --lcm-url; the config's [daemon] lcm_url otherwise
   planner::JointVector initial_q = planner::JointVector(0.20, 1.57);  // --initial T,THETA (STOW)
-  bool held_coral = false;                                            // --coral
-  bool held_algae = false;                                            // --algae
+  std::vector<std::string> pieces;  // --pieces NAME[,NAME...]: game pieces reported as held in ARM_STATE
   double state_rate_hz = 100.0;                                       // --state-rate HZ
   bool heartbeat = true;                                              // --no-heartbeat turns it off from the start
   std::vector<FaultEvent> faults;                                     // --fault KIND@WHEN, repeatable
