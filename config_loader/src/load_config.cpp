@@ -93,8 +93,8 @@ void readDevices(TableReader dev, const RobotModel& robot, DeviceNumbers& device
   devices.status = static_cast<int>(dev.integer("status", 0, 62));
   if (devices.joints[0] == devices.joints[1] || devices.status == devices.joints[0] ||
       devices.status == devices.joints[1]) {
-    dev.fail("status", "the device numbers of " + robot.joints[0].name + ", " + robot.joints[1].name +
-                           " and status must differ");
+    dev.fail("status",
+             "the device numbers of " + robot.joints[0].name + ", " + robot.joints[1].name + " and status must differ");
   }
   dev.finish();
 }

@@ -84,7 +84,8 @@ std::optional<std::string> readPieces(const GoalRequest& goal, const planner::Ro
 }  // namespace
 
 planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
-  if (!isName(goal.scene_name)) return Failure::failure(PlanStatus::kInvalidInput, notAName("scene_name", goal.scene_name));
+  if (!isName(goal.scene_name))
+    return Failure::failure(PlanStatus::kInvalidInput, notAName("scene_name", goal.scene_name));
   if (auto problem = checkPosition(goal.position, robot)) return Failure::failure(problem->status, problem->reason);
   ValidGoal valid;
   valid.request_id = goal.request_id;

@@ -237,10 +237,11 @@ const BadCase kBadCases[] = {
     {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
     // [daemon.devices] is keyed by the config's joint names (and status), nothing else.
     {"DeviceOfNoJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nelevator = 1\nwrist = 4\n",
-     "daemon.devices.wrist", "not a joint of this robot; [daemon.devices] takes one key per joint, `elevator`, `arm`, "
+     "daemon.devices.wrist",
+     "not a joint of this robot; [daemon.devices] takes one key per joint, `elevator`, `arm`, "
      "and `status`"},
-    {"DeviceOfARenamedJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nlift = 1\n",
-     "daemon.devices.lift", "not a joint of this robot"},
+    {"DeviceOfARenamedJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nlift = 1\n", "daemon.devices.lift",
+     "not a joint of this robot"},
     {"DeviceOfAJointMissing", "arm = 2\nstatus = 3", "status = 3", "daemon.devices.arm",
      "missing: [daemon.devices] takes one key per joint, `elevator`, `arm`, and `status`"},
     {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},

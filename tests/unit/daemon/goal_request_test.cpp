@@ -12,8 +12,8 @@ namespace {
 
 using planner::PlanStatus;
 
-// The reference robot: joint 0 "elevator" (m, [0, 2]), joint 1 "arm" (rad); pieces coral and
-// algae; scenes reef (offset range [0, 0.3] m) and open (no offsets).
+// The reference robot: joint 0 "elevator" (m, [0, 2]), joint 1 "arm" (rad); pieces algae and
+// coral (in the config's order); scenes reef (offset range [0, 0.3] m) and open (no offsets).
 GoalRequest goalAt(double q0, double q1, std::string scene = {}) {
   GoalRequest goal;
   goal.request_id = 7;
@@ -62,10 +62,9 @@ TEST(ValidateGoal, PiecesComeByTheConfigsNamesInAnyOrder) {
 TEST(ValidateGoal, RejectsNonFiniteValuesNamingTheJoint) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  for (const auto& [goal, field] :
-       {std::pair{goalAt(nan, 1.0), "position[0] (elevator) is not finite (nan)"},
-        std::pair{goalAt(0.5, inf), "position[1] (arm) is not finite (inf)"},
-        std::pair{goalAt(-inf, 1.0), "position[0] (elevator) is not finite (-inf)"}}) {
+  for (const auto& [goal, field] : {std::pair{goalAt(nan, 1.0), "position[0] (elevator) is not finite (nan)"},
+                                    std::pair{goalAt(0.5, inf), "position[1] (arm) is not finite (inf)"},
+                                    std::pair{goalAt(-inf, 1.0), "position[0] (elevator) is not finite (-inf)"}}) {
     EXPECT_NE(refused(goal).find(field), std::string::npos) << refused(goal);
   }
 }
@@ -82,7 +81,7 @@ TEST(ValidateGoal, RejectsOutOfRangeJointsWithTheLimitsInTheJointsUnit) {
 
 TEST(ValidateGoal, RejectsAnUnknownPieceListingTheConfigsPieces) {
   const std::string reason = refused(holding({"coral", "cone"}));
-  EXPECT_NE(reason.find("unknown game piece 'cone' in pieces[1] (this robot's: coral, algae)"), std::string::npos)
+  EXPECT_NE(reason.find("unknown game piece 'cone' in pieces[1] (this robot's: algae, coral)"), std::string::npos)
       << reason;
   // The old message's words are not names: "none" is not a piece either.
   EXPECT_NE(refused(holding({"none"})).find("unknown game piece 'none'"), std::string::npos);

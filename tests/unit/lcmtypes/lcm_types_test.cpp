@@ -337,9 +337,9 @@ std::int32_t getInt32(const std::vector<std::uint8_t>& bytes, std::size_t offset
 
 // Where the length and count fields sit in message version 2 (after the 8-byte fingerprint):
 // safeDecode walks to them; these tests corrupt them there.
-constexpr std::size_t kGoalPieceCountAt = 8 + 4 * 8;           // utime, request_id, position[2]
+constexpr std::size_t kGoalPieceCountAt = 8 + 4 * 8;                   // utime, request_id, position[2]
 constexpr std::size_t kGoalSceneNameLengthAt = kGoalPieceCountAt + 1;  // with no pieces
-constexpr std::size_t kStatePieceCountAt = 8 + 5 * 8;          // utime, position[2], velocity[2]
+constexpr std::size_t kStatePieceCountAt = 8 + 5 * 8;                  // utime, position[2], velocity[2]
 constexpr std::size_t kPlanStatusReasonLengthAt = 8 + 2 * 8 + 1;
 constexpr std::size_t kDaemonStatusNameLengthAt = 8 + 8 + 1;  // utime, mode, then joint_names[0]
 constexpr std::size_t kTrajectoryCountAt = 8 + 5 * 8;

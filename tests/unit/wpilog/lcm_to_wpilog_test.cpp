@@ -296,8 +296,7 @@ TEST_F(LcmToWpilog, Setpoints) {
                                  [](const Setpoint& m) { return m.velocity[0]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Elevator/FeedforwardVolts",
                                  [](const Setpoint& m) { return m.volts[0]; });
-  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence",
-                                  [](const Setpoint& m) { return m.sequence[0]; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence", [](const Setpoint& m) { return m.sequence[0]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Arm/SetpointRadians", [](const Setpoint& m) { return m.position[1]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Arm/VelocityRadiansPerSecond",
                                  [](const Setpoint& m) { return m.velocity[1]; });
@@ -382,9 +381,10 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
   }
   // Sample k is commanded at start_utime + t_s[k], which is (start_utime - utime) after the
   // message's own time (5 ms in the synthetic log), until the next trajectory starts.
-  const Column planned[] = {{"Elevator/PlannedMeters", &T::position, 0},  {"Elevator/PlannedMetersPerSecond", &T::velocity, 0},
-                            {"Elevator/PlannedVolts", &T::volts, 0},     {"Arm/PlannedRadians", &T::position, 1},
-                            {"Arm/PlannedRadiansPerSecond", &T::velocity, 1}, {"Arm/PlannedVolts", &T::volts, 1}};
+  const Column planned[] = {
+      {"Elevator/PlannedMeters", &T::position, 0},      {"Elevator/PlannedMetersPerSecond", &T::velocity, 0},
+      {"Elevator/PlannedVolts", &T::volts, 0},          {"Arm/PlannedRadians", &T::position, 1},
+      {"Arm/PlannedRadiansPerSecond", &T::velocity, 1}, {"Arm/PlannedVolts", &T::volts, 1}};
   for (const auto& [name, table, joint] : planned) {
     const auto rs = records(name, "double");
     size_t r = 0, replaced = 0;

@@ -248,9 +248,8 @@ TEST_F(DaemonMemq, BadGoalsAreRejectedWithReasons) {
   goal(2, 5.0, 1.0);
   goal(3, 0.5, 0.01);  // the fake planner says: in collision
   goal(4, 0.5, 1.0, {"coral", "cone"});
-  ASSERT_TRUE(listener.waitFor([&] {
-    return listener.finalFor(1) && listener.finalFor(2) && listener.finalFor(3) && listener.finalFor(4);
-  }));
+  ASSERT_TRUE(listener.waitFor(
+      [&] { return listener.finalFor(1) && listener.finalFor(2) && listener.finalFor(3) && listener.finalFor(4); }));
   using S = cyberplanner::arm_plan_status_t;
   std::lock_guard<std::mutex> lock(listener.mutex);
   EXPECT_EQ(listener.statusesOf(1), std::vector<std::int8_t>{S::STATUS_REJECTED});
@@ -263,7 +262,7 @@ TEST_F(DaemonMemq, BadGoalsAreRejectedWithReasons) {
   const auto unknown_piece = std::find_if(listener.statuses.begin(), listener.statuses.end(),
                                           [](const auto& status) { return status.request_id == 4; });
   ASSERT_NE(unknown_piece, listener.statuses.end());
-  EXPECT_NE(unknown_piece->reason.find("unknown game piece 'cone' in pieces[1] (this robot's: coral, algae)"),
+  EXPECT_NE(unknown_piece->reason.find("unknown game piece 'cone' in pieces[1] (this robot's: algae, coral)"),
             std::string::npos)
       << unknown_piece->reason;
   EXPECT_EQ(listener.statuses.back().reason, "goal in collision: arm in the floor");

@@ -20,7 +20,8 @@ Message roundTrip(const Message& message) {
   std::vector<std::uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
   EXPECT_EQ(message.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
   Message decoded{};
-  EXPECT_EQ(lcmtypes::safeDecode(decoded, bytes.data(), static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  EXPECT_EQ(lcmtypes::safeDecode(decoded, bytes.data(), static_cast<int>(bytes.size())),
+            static_cast<int>(bytes.size()));
   return decoded;
 }
 

@@ -22,7 +22,7 @@ struct FrameWriterSettings {
 
 // Setpoints as they went on the wire, decoded back (quantised), for ARM_SETPOINT.
 struct WireSetpoints {
-  bool written = false;  // both frames accepted by the port
+  bool written = false;                   // both frames accepted by the port
   std::array<can::Setpoint, 2> joints{};  // by joint index
 };
 
