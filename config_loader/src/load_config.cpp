@@ -73,7 +73,33 @@ void readPlanner(TableReader p, planner::PlannerSettings& s) {
   p.finish();
 }
 
-DaemonSettings readDaemon(TableReader d) {
+// [daemon.devices]: a key per joint, by the joint's name, and `status`; nothing else, so a
+// configuration written for another robot's joints fails here rather than driving the wrong ones.
+void readDevices(TableReader dev, const RobotModel& robot, DeviceNumbers& devices) {
+  std::string expected;
+  for (const auto& joint : robot.joints) expected += "`" + joint.name + "`, ";
+  expected += "and `status`";
+  for (const std::string& key : dev.keys()) {
+    if (key != "status" && robot.jointIndex(key) < 0) {
+      dev.fail(key, "not a joint of this robot; [daemon.devices] takes one key per joint, " + expected);
+    }
+  }
+  // FRC CAN device numbers are 6 bits; 63 is the broadcast device.
+  for (size_t j = 0; j < devices.joints.size(); ++j) {
+    const std::string& name = robot.joints[j].name;
+    if (!dev.has(name)) dev.fail(name, "missing: [daemon.devices] takes one key per joint, " + expected);
+    devices.joints[j] = static_cast<int>(dev.integer(name, 0, 62));
+  }
+  devices.status = static_cast<int>(dev.integer("status", 0, 62));
+  if (devices.joints[0] == devices.joints[1] || devices.status == devices.joints[0] ||
+      devices.status == devices.joints[1]) {
+    dev.fail("status",
+             "the device numbers of " + robot.joints[0].name + ", " + robot.joints[1].name + " and status must differ");
+  }
+  dev.finish();
+}
+
+DaemonSettings readDaemon(TableReader d, const RobotModel& robot) {
   DaemonSettings s;
   s.lcm_url = d.string("lcm_url");
   s.can_interface = d.string("can_interface");
@@ -107,18 +133,7 @@ DaemonSettings readDaemon(TableReader d) {
   if (std::find(std::begin(kLevels), std::end(kLevels), s.log_level) == std::end(kLevels)) {
     d.fail("log_level", "expected one of trace, debug, info, warn, error, critical, off");
   }
-  {
-    TableReader dev = d.table("devices");
-    // FRC CAN device numbers are 6 bits; 63 is the broadcast device.
-    s.devices.elevator = static_cast<int>(dev.integer("elevator", 0, 62));
-    s.devices.arm = static_cast<int>(dev.integer("arm", 0, 62));
-    s.devices.status = static_cast<int>(dev.integer("status", 0, 62));
-    if (s.devices.elevator == s.devices.arm || s.devices.status == s.devices.arm ||
-        s.devices.status == s.devices.elevator) {
-      dev.fail("status", "elevator, arm and status device numbers must differ");
-    }
-    dev.finish();
-  }
+  readDevices(d.table("devices"), robot, s.devices);
   {
     TableReader ch = d.table("channels");
     for (auto [key, field] :
@@ -152,7 +167,7 @@ Config readRoot(const toml::table& root_table) {
   detail::readScenes(root, root.table("obstacles"), robot);
   detail::readDrives(root.table("motors"), root.table("drives"), robot);
   readPlanner(root.table("planner"), robot.planner);
-  config.daemon = readDaemon(root.table("daemon"));
+  config.daemon = readDaemon(root.table("daemon"), robot);
   if (root.has("poses")) config.poses = detail::readPoses(root.table("poses"), robot);
   root.finish();
   return config;

@@ -92,7 +92,7 @@ constexpr int kShapeCheckGridPoints = 100;
 // The shape search goes on with more bumps and evaluations (path_shaping.hpp) when its shape is
 // still estimated this much slower than the slower joint alone (40 grid points each). On the
 // public moves 53 pass (50 are refined: three are direct paths with too few knots); at 1.10 two
-// moves (coral L1 -> NET, none NET -> L1) stayed above 1.03 of the best known.
+// moves (one with a piece held, one without) stayed above 1.03 of the best known.
 constexpr double kRefineRatio = 1.05;
 // A direct path is shaped from this many knots along its straight segment, when its estimate (on
 // this many grid points) is this much above its slower joint's alone: on the public moves those
@@ -439,7 +439,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
       };
       // Without a hole the other way round is the search with the first path's band blocked;
       // with holes, the other side of each (the band also blocks a narrow corridor both ways share,
-      // leaving coral L1 for example, and finds nothing).
+      // leaving a low pose with a piece held for example, and finds nothing).
       const std::vector<GridHole>& holes = grid.holes();
       if (holes.empty()) {
         const std::vector<std::uint8_t> band = bandAround(grid, first_cells, kBandRadius);

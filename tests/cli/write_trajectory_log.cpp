@@ -20,15 +20,17 @@ int main(int argc, char** argv) {
   m.duration_s = 1.0;
   m.dt_s = 0.01;
   m.num_samples = 101;
+  // position, velocity and volts are [joint][sample].
+  for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);
   for (int k = 0; k < m.num_samples; ++k) {
     const double t = k * m.dt_s;
     m.t_s.push_back(t);
-    m.elevator_m.push_back(0.2 + 0.5 * (1 - std::cos(M_PI * t)));
-    m.elevator_mps.push_back(0.5 * M_PI * std::sin(M_PI * t));
-    m.arm_rad.push_back(1.57 + 1.0 * (1 - std::cos(M_PI * t)));
-    m.arm_radps.push_back(M_PI * std::sin(M_PI * t));
-    m.elevator_volts.push_back(0.37 + 3.93 * m.elevator_mps.back());
-    m.arm_volts.push_back(0.21 * std::cos(m.arm_rad.back()) + 1.18 * m.arm_radps.back());
+    m.position[0].push_back(0.2 + 0.5 * (1 - std::cos(M_PI * t)));
+    m.velocity[0].push_back(0.5 * M_PI * std::sin(M_PI * t));
+    m.position[1].push_back(1.57 + 1.0 * (1 - std::cos(M_PI * t)));
+    m.velocity[1].push_back(M_PI * std::sin(M_PI * t));
+    m.volts[0].push_back(0.37 + 3.93 * m.velocity[0].back());
+    m.volts[1].push_back(0.21 * std::cos(m.position[1].back()) + 1.18 * m.velocity[1].back());
   }
   std::vector<char> buffer(static_cast<size_t>(m.getEncodedSize()));
   m.encode(buffer.data(), 0, static_cast<int>(buffer.size()));

@@ -118,7 +118,7 @@ class Run:
         # same guest, takes it in about as late.
         self.state_logged = [t * 1e-6 for t, ch, _ in self.events if ch == "ARM_STATE"]
         self.setpoints = {}  # joint index -> [(t, position, velocity, volts, sequence)]
-        for j, device in enumerate((DEVICES["elevator"], DEVICES["arm"])):
+        for j, device in enumerate(DEVICES[joint["name"]] for joint in CONFIG["joints"]):
             self.setpoints[j] = [(f.t,) + hil.decode_setpoint(f) for f in self.frames
                                  if f.extended and f.id == hil.setpoint_id(device) and len(f.data) == 8 and not f.remote]
         self.heartbeats = [f for f in self.frames if f.extended and f.id == hil.HEARTBEAT_ID]
@@ -185,9 +185,9 @@ class Trajectory:
         self.start = message["start_utime"] * 1e-6
         self.duration = message["duration_s"]
         self.t = message["t_s"]
-        self.q = (message["elevator_m"], message["arm_rad"])
-        self.v = (message["elevator_mps"], message["arm_radps"])
-        self.u = (message["elevator_volts"], message["arm_volts"])
+        self.q = tuple(message["position"])  # [joint][sample]
+        self.v = tuple(message["velocity"])
+        self.u = tuple(message["volts"])
         t = self.t
         self.a = tuple([(v[i + 1] - v[i]) / (t[i + 1] - t[i]) for i in range(len(t) - 1)] for v in self.v)
 
@@ -546,18 +546,18 @@ def hold_fit(hold, states, t, window_s, step_s=0.001):
     window_s before t: (score, state, carried_s); a score <= 1 fits. Besides each state as
     logged, the newest is carried forward along its own velocity, in steps of step_s, up to t or
     MAX_CARRY_S."""
-    def score(elevator_m, arm_rad):
-        return max(abs(hold[0] - elevator_m) / HOLD_TOLERANCE[0], abs(hold[1] - arm_rad) / HOLD_TOLERANCE[1])
+    def score(q0, q1):
+        return max(abs(hold[0] - q0) / HOLD_TOLERANCE[0], abs(hold[1] - q1) / HOLD_TOLERANCE[1])
 
     recent = [m for m in states if t - window_s <= m["utime"] * 1e-6 <= t]
     if not recent:
         return math.inf, None, 0.0
-    fits = [(score(m["elevator_m"], m["arm_rad"]), m, 0.0) for m in recent]
+    fits = [(score(*m["position"]), m, 0.0) for m in recent]
     m = max(recent, key=lambda m: m["utime"])
     carry_s = min(t - m["utime"] * 1e-6, MAX_CARRY_S)
     for k in range(1, int(carry_s / step_s) + 1):
         dt = k * step_s
-        fits.append((score(m["elevator_m"] + m["elevator_mps"] * dt, m["arm_rad"] + m["arm_radps"] * dt), m, dt))
+        fits.append((score(m["position"][0] + m["velocity"][0] * dt, m["position"][1] + m["velocity"][1] * dt), m, dt))
     return min(fits, key=lambda fit: fit[0])
 
 

@@ -208,6 +208,10 @@ class LcmType:
                     (value,) = struct.unpack_from(">" + LCM_PRIMITIVES[type_name], data, at)
                     values.append(bool(value) if type_name == "boolean" else value)
                     at += struct.calcsize(">" + LCM_PRIMITIVES[type_name])
+            # A [2][num_samples] member comes back as two rows, as lcm-gen's nested vectors.
+            for size in reversed(dims[1:]):
+                n = int(size) if size.isdigit() else out[size]
+                values = [values[i:i + n] for i in range(0, len(values), n)] if n else [[] for _ in values]
             out[name] = values if dims else values[0]
         if at != len(data):
             raise ValueError(f"{self.name}: {len(data) - at} bytes after the last member")

@@ -81,9 +81,10 @@ class LcmMessages(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "truncated"):
             hil.decode_trajectory(events[0])
         t = hil.decode_trajectory(events[1])
-        self.assertEqual((t["request_id"], t["num_samples"], len(t["arm_volts"])), (42, 101, 101))
+        self.assertEqual((t["request_id"], t["num_samples"], len(t["volts"]), len(t["volts"][1])), (42, 101, 2, 101))
         self.assertAlmostEqual(t["t_s"][100], 1.0)
-        self.assertAlmostEqual(t["elevator_m"][100], 1.2)
+        self.assertAlmostEqual(t["position"][0][100], 1.2)
+        self.assertAlmostEqual(t["position"][1][100], 3.57)
         with self.assertRaisesRegex(ValueError, "fingerprint"):
             hil.decode_arm_state(events[1])
         with self.assertRaisesRegex(ValueError, "bytes after"):
@@ -140,9 +141,9 @@ class HoldFit(unittest.TestCase):
     velocity across states the logger missed; an old command or a stale state does not fit."""
 
     @staticmethod
-    def state(t_s, elevator_m, arm_rad, elevator_mps=0.0, arm_radps=0.0):
-        return dict(utime=int(round(t_s * 1e6)), elevator_m=elevator_m, elevator_mps=elevator_mps, arm_rad=arm_rad,
-                    arm_radps=arm_radps)
+    def state(t_s, q0, q1, v0=0.0, v1=0.0):
+        # An ARM_STATE as hil_lib decodes it: joints by index.
+        return dict(utime=int(round(t_s * 1e6)), position=[q0, q1], velocity=[v0, v1], num_pieces=0, pieces=[])
 
     def setUp(self):
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -185,9 +186,9 @@ class StartShift(unittest.TestCase):
         import daemon_check as dc
         # Constant acceleration 2 m/s^2 and 8 rad/s^2 for 0.5 s, sampled every 10 ms from 100 s.
         t = [0.01 * k for k in range(51)]
-        msg = dict(start_utime=100_000_000, duration_s=0.5, t_s=t, elevator_m=[t_ * t_ for t_ in t],
-                   arm_rad=[4 * t_ * t_ for t_ in t], elevator_mps=[2 * t_ for t_ in t], arm_radps=[8 * t_ for t_ in t],
-                   elevator_volts=[0.0] * 51, arm_volts=[0.0] * 51)
+        msg = dict(start_utime=100_000_000, duration_s=0.5, t_s=t,
+                   position=[[t_ * t_ for t_ in t], [4 * t_ * t_ for t_ in t]],
+                   velocity=[[2 * t_ for t_ in t], [8 * t_ for t_ in t]], volts=[[0.0] * 51, [0.0] * 51])
         traj = dc.Trajectory(msg)
         ticks = []
         for k in range(1, 80):

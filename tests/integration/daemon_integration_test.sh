@@ -156,13 +156,21 @@ case "$case_name" in
 
   bad_goals)
     start_daemon
-    expect_goal 3 "rejected: invalid input: elevator_m is not finite" --to nan,1.0 --id 21
-    expect_goal 3 "rejected: invalid input: arm_rad is not finite" --to 0.5,inf --id 22
-    expect_goal 3 "rejected: goal out of range: elevator_m = 5 m is outside" --to 5,1.0 --id 23
+    expect_goal 3 "rejected: invalid input: position\[0\] (elevator) is not finite" --to nan,1.0 --id 21
+    expect_goal 3 "rejected: invalid input: position\[1\] (arm) is not finite" --to 0.5,inf --id 22
+    expect_goal 3 "rejected: goal out of range: position\[0\] (elevator) = 5 m is outside" --to 5,1.0 --id 23
     expect_goal 3 "rejected: invalid input: unknown scene 'moon'" --to 0.5,1.0 --scene moon --id 24
     expect_goal 3 "rejected: goal in collision" --to 0.0,4.71 --id 25
-    # Still serving.
+    # Pieces by the config's names, each once, at most MAX_PIECES; offsets within the scene's range.
+    expect_goal 3 "rejected: invalid input: unknown game piece 'cone' in pieces\[0\] (this robot's: algae, coral)" \
+      --to 0.58,2.97 --pieces cone --id 27
+    expect_goal 3 "rejected: invalid input: game piece 'coral' is named twice" --to 0.58,2.97 --pieces coral,coral --id 28
+    expect_goal 3 "rejected: invalid input: num_pieces = 5 is outside 0..4" --to 0.58,2.97 --pieces a,b,c,d,e --id 29
+    expect_goal 3 "rejected: invalid input: scene_offset_m = 0.5 m is outside scene reef's offset range" \
+      --to 0.58,2.97 --scene reef --scene-offset 0.5 --id 30
+    # Still serving, and a goal at an offset is planned there.
     expect_goal 0 "request 26 done" --to 0.58,2.97 --id 26
+    expect_goal 0 "request 31 done" --to 0.20,1.57 --scene reef --scene-offset 0.2 --id 31
     ;;
 
   flood)

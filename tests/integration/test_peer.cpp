@@ -122,11 +122,11 @@ void paced(lcm::LCM& lcm, double rate_hz, double seconds, Step step, long long m
 }
 
 struct Follower {
-  double elevator_m = 0.0;
-  double arm_rad = 0.0;
+  double q0 = 0.0;  // joint 0, joint 1 as last commanded
+  double q1 = 0.0;
   void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
-    elevator_m = m->elevator_m;
-    arm_rad = m->arm_rad;
+    q0 = m->position[0];
+    q1 = m->position[1];
   }
 };
 
@@ -137,8 +137,8 @@ int runState(lcm::LCM& lcm, const Args& args) {
   paced(lcm, args.rate_hz, args.seconds, [&](long long) {
     cyberplanner::arm_state_t state{};
     state.utime = nowMicros();
-    state.elevator_m = follower.elevator_m;
-    state.arm_rad = follower.arm_rad;
+    state.position[0] = follower.q0;
+    state.position[1] = follower.q1;
     lcm.publish("ARM_STATE", &state);
   });
   return 0;
@@ -154,8 +154,8 @@ int runFlood(lcm::LCM& lcm, const Args& args) {
         goal.utime = nowMicros();
         goal.request_id = args.first_id + k;
         const auto& target = args.targets[static_cast<size_t>(k) % args.targets.size()];
-        goal.elevator_m = target.first;
-        goal.arm_rad = target.second;
+        goal.position[0] = target.first;
+        goal.position[1] = target.second;
         lcm.publish("ARM_GOAL", &goal);
         ++sent;
       },

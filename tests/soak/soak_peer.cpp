@@ -122,7 +122,7 @@ std::optional<ProcessSample> sampleProcess(long pid) {
 // ---- LCM side ----
 
 struct Peer {
-  double elevator_m = 0.20, arm_rad = 1.57;  // STOW until the first setpoint echo
+  double q0 = 0.20, q1 = 1.57;  // joint 0, joint 1: STOW until the first setpoint echo
   std::optional<cyberplanner::arm_daemon_status_t> status;
   Clock::time_point status_at{};
   long long status_messages = 0;
@@ -132,8 +132,8 @@ struct Peer {
   long long foreign_finals = 0;  // finals for ids this run never sent
 
   void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
-    elevator_m = m->elevator_m;
-    arm_rad = m->arm_rad;
+    q0 = m->position[0];
+    q1 = m->position[1];
   }
   void onDaemonStatus(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_daemon_status_t* m) {
     status = *m;
@@ -157,8 +157,8 @@ struct Peer {
 bool publishState(lcm::LCM& lcm, const Peer& peer) {
   cyberplanner::arm_state_t state{};
   state.utime = wallMicros();
-  state.elevator_m = peer.elevator_m;
-  state.arm_rad = peer.arm_rad;
+  state.position[0] = peer.q0;
+  state.position[1] = peer.q1;
   return lcm.publish("ARM_STATE", &state) == 0;
 }
 
@@ -189,18 +189,18 @@ class GoalSender {
     const auto& poses = cyber::test::publicPoses("none");
     const auto& pose = poses[std::uniform_int_distribution<size_t>(0, poses.size() - 1)(random_)];
     cyberplanner::arm_goal_t goal{};
-    goal.elevator_m = pose.q[0];
-    goal.arm_rad = pose.q[1];
+    goal.position[0] = pose.q[0];
+    goal.position[1] = pose.q[1];
     switch (kind) {
       case GoalKind::kPose: publish(goal); return uniform(1.0, 4.0);
       case GoalKind::kMidMotion: publish(goal); return uniform(0.1, 0.6);  // the next one lands mid-motion
       case GoalKind::kOutOfRange:
-        goal.elevator_m = 5.0;
+        goal.position[0] = 5.0;
         publish(goal);
         return uniform(0.2, 1.0);
       case GoalKind::kCollision:
-        goal.elevator_m = 0.0;
-        goal.arm_rad = 4.71;
+        goal.position[0] = 0.0;
+        goal.position[1] = 4.71;
         publish(goal);
         return uniform(0.2, 1.0);
       case GoalKind::kUnknownScene:
@@ -208,7 +208,7 @@ class GoalSender {
         publish(goal);
         return uniform(0.2, 1.0);
       case GoalKind::kNotFinite:
-        goal.arm_rad = std::numeric_limits<double>::quiet_NaN();
+        goal.position[1] = std::numeric_limits<double>::quiet_NaN();
         publish(goal);
         return uniform(0.2, 1.0);
       case GoalKind::kMalformed: malformed(goal); return uniform(0.1, 1.0);
@@ -216,8 +216,8 @@ class GoalSender {
         const int count = std::uniform_int_distribution<int>(10, 40)(random_);
         for (int i = 0; i < count; ++i) {
           const auto& p = poses[static_cast<size_t>(i) % poses.size()];
-          goal.elevator_m = p.q[0];
-          goal.arm_rad = p.q[1];
+          goal.position[0] = p.q[0];
+          goal.position[1] = p.q[1];
           publish(goal);
         }
         ++bursts;

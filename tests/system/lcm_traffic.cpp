@@ -42,18 +42,20 @@ cyberplanner::arm_goal_t goal(std::int64_t utime) {
   cyberplanner::arm_goal_t m{};
   m.utime = utime;
   m.request_id = kRequestId;
-  m.elevator_m = kElevatorM;
-  m.arm_rad = 1.25;
-  m.held_coral = true;
+  m.position[0] = kElevatorM;
+  m.position[1] = 1.25;
+  m.num_pieces = 1;
+  m.pieces = {"coral"};
   m.scene_name = "reef";
+  m.scene_offset_m = 0.125;
   return m;
 }
 
 cyberplanner::arm_state_t state(std::int64_t utime) {
   cyberplanner::arm_state_t m{};
   m.utime = utime;
-  m.elevator_m = kElevatorM;
-  m.arm_rad = 0.5;
+  m.position[0] = kElevatorM;
+  m.position[1] = 0.5;
   return m;
 }
 
@@ -76,15 +78,16 @@ cyberplanner::arm_trajectory_t trajectory(std::int64_t utime) {
   m.duration_s = 0.8;
   m.dt_s = 0.1;
   m.num_samples = 9;
+  for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);  // [joint][sample]
   for (int k = 0; k < m.num_samples; ++k) {
     const double t = k * m.dt_s;
     m.t_s.push_back(t);
-    m.elevator_m.push_back(kElevatorM * t / m.duration_s);
-    m.arm_rad.push_back(1.25 * t / m.duration_s);
-    m.elevator_mps.push_back(kElevatorM / m.duration_s);
-    m.arm_radps.push_back(1.25 / m.duration_s);
-    m.elevator_volts.push_back(1.5);
-    m.arm_volts.push_back(0.5);
+    m.position[0].push_back(kElevatorM * t / m.duration_s);
+    m.position[1].push_back(1.25 * t / m.duration_s);
+    m.velocity[0].push_back(kElevatorM / m.duration_s);
+    m.velocity[1].push_back(1.25 / m.duration_s);
+    m.volts[0].push_back(1.5);
+    m.volts[1].push_back(0.5);
   }
   return m;
 }
@@ -94,8 +97,8 @@ cyberplanner::arm_setpoint_t setpoint(std::int64_t utime) {
   m.utime = utime;
   m.mode = cyberplanner::arm_setpoint_t::MODE_MOVING;
   m.request_id = kRequestId;
-  m.elevator_m = kElevatorM;
-  m.arm_rad = 0.75;
+  m.position[0] = kElevatorM;
+  m.position[1] = 0.75;
   return m;
 }
 
@@ -105,18 +108,27 @@ cyberplanner::arm_daemon_status_t daemonStatus(std::int64_t utime) {
   m.mode = cyberplanner::arm_daemon_status_t::MODE_MOVING;
   m.active_request_id = kRequestId;
   m.goals_received = 1;
+  m.joint_names[0] = "elevator";
+  m.joint_names[1] = "arm";
+  m.joint_units[0] = "m";
+  m.joint_units[1] = "rad";
   return m;
 }
 
 // Each channel's check that a decoded message is the one publish sent.
-bool isOurs(const cyberplanner::arm_goal_t& m) { return m.request_id == kRequestId && m.scene_name == "reef"; }
-bool isOurs(const cyberplanner::arm_state_t& m) { return m.elevator_m == kElevatorM; }
+bool isOurs(const cyberplanner::arm_goal_t& m) {
+  return m.request_id == kRequestId && m.scene_name == "reef" && m.pieces == std::vector<std::string>{"coral"} &&
+         m.scene_offset_m == 0.125;
+}
+bool isOurs(const cyberplanner::arm_state_t& m) { return m.position[0] == kElevatorM; }
 bool isOurs(const cyberplanner::arm_plan_status_t& m) { return m.request_id == kRequestId; }
 bool isOurs(const cyberplanner::arm_trajectory_t& m) {
-  return m.request_id == kRequestId && m.num_samples == 9 && m.elevator_m.back() == kElevatorM;
+  return m.request_id == kRequestId && m.num_samples == 9 && m.position[0].back() == kElevatorM;
 }
 bool isOurs(const cyberplanner::arm_setpoint_t& m) { return m.request_id == kRequestId; }
-bool isOurs(const cyberplanner::arm_daemon_status_t& m) { return m.active_request_id == kRequestId; }
+bool isOurs(const cyberplanner::arm_daemon_status_t& m) {
+  return m.active_request_id == kRequestId && m.joint_names[1] == "arm" && m.joint_units[0] == "m";
+}
 
 struct Counts {
   long received = 0;

@@ -5,10 +5,16 @@
 
 namespace cyber::tools {
 
+namespace {
+constexpr size_t kMaxSentPieces = 127;
+}  // namespace
+
 std::string goalUsage() {
-  return "usage: cyber-goal --to ELEVATOR_M,ARM_RAD [--coral] [--algae] [--scene NAME] [--id N]\n"
-         "                  [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
+  return "usage: cyber-goal --to J0,J1 [--pieces NAME[,NAME...]] [--scene NAME] [--scene-offset METRES]\n"
+         "                  [--id N] [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
          "Publishes one ARM_GOAL and prints each ARM_PLAN_STATUS of its request id until the final one.\n"
+         "--to: targets of joint 0 and joint 1 in the config's [[joints]] order, metres (prismatic) or\n"
+         "radians (revolute). --pieces: held game pieces by the config's names (\"none\": none).\n"
          "First waits for cyber-plannerd's ARM_DAEMON_STATUS (unless --no-wait-daemon).\n"
          "--lcm-url defaults to " +
          std::string(config::kDefaultLcmUrl) +
@@ -20,14 +26,33 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
   GoalArguments out;
   bool have_target = false;
   cli::ArgumentParser parser;
-  parser.flag("--coral", [&] { out.coral = true; });
-  parser.flag("--algae", [&] { out.algae = true; });
+  parser.option("--pieces", [&](const std::string& value) -> std::string {
+    out.pieces.clear();
+    if (value == "none") return "";
+    size_t from = 0;
+    while (true) {
+      const size_t end = value.find(',', from);
+      std::string name = value.substr(from, end == std::string::npos ? std::string::npos : end - from);
+      if (name.empty()) return "expects NAME[,NAME...], got '" + value + "'";
+      out.pieces.push_back(std::move(name));
+      if (end == std::string::npos) break;
+      from = end + 1;
+    }
+    // arm_goal_t counts them in an int8_t; the daemon refuses more than MAX_PIECES itself.
+    if (out.pieces.size() > kMaxSentPieces) return "expects at most 127 names, got '" + value + "'";
+    return "";
+  });
+  parser.option("--scene-offset", [&](const std::string& value) -> std::string {
+    const auto offset = cli::parseNumber(value, cli::NonFinite::kAccept);
+    if (!offset) return "expects metres, got '" + value + "'";
+    out.scene_offset_m = *offset;
+    return "";
+  });
   parser.flag("--no-wait-daemon", [&] { out.wait_for_daemon = false; });
   parser.option("--to", [&](const std::string& value) -> std::string {
     const auto target = cli::parseNumberPair(value, cli::NonFinite::kAccept);
-    if (!target) return "expects ELEVATOR_M,ARM_RAD, got '" + value + "'";
-    out.elevator_m = (*target)[0];
-    out.arm_rad = (*target)[1];
+    if (!target) return "expects J0,J1, got '" + value + "'";
+    out.position = *target;
     have_target = true;
     return "";
   });
@@ -46,7 +71,7 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
     return "";
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
-  if (!have_target) return cli::ArgumentError{"--to ELEVATOR_M,ARM_RAD is required"};
+  if (!have_target) return cli::ArgumentError{"--to J0,J1 is required"};
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Command line of cyber-goal: send one goal to cyber-plannerd and wait for its final status.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,11 +12,10 @@
 namespace cyber::tools {
 
 struct GoalArguments {
-  double elevator_m = 0.0;
-  double arm_rad = 0.0;
-  bool coral = false;
-  bool algae = false;
+  std::array<double, 2> position{0.0, 0.0};  // joint 0, joint 1 (config order), m or rad
+  std::vector<std::string> pieces;           // held pieces by the config's names
   std::string scene;
+  double scene_offset_m = 0.0;
   std::int64_t request_id = -1;                  // -1: derive one from the clock
   std::string lcm_url = config::kDefaultLcmUrl;  // the daemon's default (docs/lcm.md)
   double timeout_s = 10.0;
@@ -23,7 +23,8 @@ struct GoalArguments {
   bool help = false;
 };
 
-// NaN and infinite targets are accepted on purpose (to exercise the daemon's rejection).
+// NaN and infinite targets and offsets, unknown, repeated or too many piece names are accepted on
+// purpose: cyber-goal does not read the config, and the daemon's answer is the one to see.
 cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& args);
 
 std::string goalUsage();

@@ -106,11 +106,12 @@ int main(int argc, char** argv) {
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
           .count();
   goal.request_id = watcher.request_id;
-  goal.elevator_m = args.elevator_m;
-  goal.arm_rad = args.arm_rad;
-  goal.held_coral = args.coral;
-  goal.held_algae = args.algae;
+  goal.position[0] = args.position[0];
+  goal.position[1] = args.position[1];
+  goal.pieces = args.pieces;
+  goal.num_pieces = static_cast<std::int8_t>(goal.pieces.size());
   goal.scene_name = args.scene;
+  goal.scene_offset_m = args.scene_offset_m;
   lcm.publish("ARM_GOAL", &goal);
 
   if (!handleUntil(lcm, deadline, [&] { return watcher.final_status >= 0; })) {

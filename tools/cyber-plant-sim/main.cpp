@@ -31,6 +31,16 @@ using cyber::plant::SimOptions;
 
 bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxDeviceNumber; }
 
+// Where the joints rest before their first setpoint unless --initial says: the config's first
+// named pose (a robot's stowed pose by convention), else the middle of both ranges.
+cyber::planner::JointVector defaultInitialPose(const cyber::config::Config& config) {
+  for (const cyber::config::PoseSet& set : config.poses) {
+    if (!set.poses.empty()) return set.poses.front().q;
+  }
+  const auto& robot = config.robot;
+  return {0.5 * (robot.range(0).min + robot.range(0).max), 0.5 * (robot.range(1).min + robot.range(1).max)};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -56,25 +66,40 @@ int main(int argc, char** argv) {
     return 2;
   }
   const auto& robot = config.robot;
-  if (!robot.withinLimits(options.initial_q)) {
-    return cyber::cli::reportBadUsage(
-        program, {"--initial " + std::to_string(options.initial_q[0]) + "," + std::to_string(options.initial_q[1]) +
-                  " is outside the joint ranges of " + robot.name});
+  const cyber::planner::JointVector initial_q = options.initial_q.value_or(defaultInitialPose(config));
+  if (!robot.withinLimits(initial_q)) {
+    return cyber::cli::reportBadUsage(program, {"--initial " + std::to_string(initial_q[0]) + "," +
+                                                std::to_string(initial_q[1]) + " is outside the joint ranges of " +
+                                                robot.name});
+  }
+  for (const std::string& piece : options.pieces) {
+    if (robot.pieceIndex(piece) < 0) {
+      std::string error;
+      (void)robot.piecesNamed(piece, &error);
+      return cyber::cli::reportBadUsage(program, {"--pieces: " + error});
+    }
   }
   const auto& devices = config.daemon.devices;
-  if (!validDevice(devices.elevator) || !validDevice(devices.arm) || devices.elevator == devices.arm) {
-    std::cerr << "cyber-plant-sim: [daemon.devices] elevator and arm must be distinct numbers 0..63\n";
+  if (!validDevice(devices.joints[0]) || !validDevice(devices.joints[1]) || devices.joints[0] == devices.joints[1]) {
+    std::cerr << "cyber-plant-sim: [daemon.devices] " << robot.joints[0].name << " and " << robot.joints[1].name
+              << " must be distinct numbers 0..63\n";
     return 2;
   }
 
   cyber::plant::RunnerSetup setup;
   setup.options = options;
-  setup.elevator_device = static_cast<std::uint8_t>(devices.elevator);
-  setup.arm_device = static_cast<std::uint8_t>(devices.arm);
+  setup.options.initial_q = initial_q;
+  for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
+    setup.joint_devices[j] = static_cast<std::uint8_t>(devices.joints[j]);
+  }
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
   auto& sim = setup.simulation;
-  sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot),
+  // The held pieces' mass moves with a rigid-body chain (a feedforward drive ignores it).
+  std::string piece_names;
+  for (const std::string& piece : options.pieces) piece_names += (piece_names.empty() ? "" : ",") + piece;
+  const cyber::planner::HeldPieces held = robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
+  sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
                                          options.controller_bandwidth_radps);
   for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {
     if (options.joint_gains[joint]) sim.gains[joint] = *options.joint_gains[joint];
@@ -85,10 +110,10 @@ int main(int argc, char** argv) {
   cyber::can::SocketOptions socket_options;
   socket_options.filters = std::vector<cyber::can::IdFilter>{
       cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.elevator_device),
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[0]),
           true),
       cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.arm_device),
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[1]),
           true)};
   auto socket = cyber::can::CanSocket::open(setup.can_interface, socket_options);
   if (!socket) {

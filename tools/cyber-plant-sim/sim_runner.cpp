@@ -55,7 +55,7 @@ class Runner {
         lcm_(lcm),
         log_(log),
         control_fd_(control_fd),
-        sim_(setup.simulation, setup.options.initial_q),
+        sim_(setup.simulation, *setup.options.initial_q),
         schedule_(withDuration(setup.options)),
         clock_(1.0 / setup.options.state_rate_hz, kFreezeTolerance_s) {
     switches_.heartbeat = setup.options.heartbeat;
@@ -156,8 +156,8 @@ int Runner::run() {
   heartbeat_timer_.startPeriodic(toNs(start_mono_s_), toNs(kHeartbeatPeriod_s));
   state_timer_.startPeriodic(toNs(start_mono_s_), toNs(1.0 / setup_.options.state_rate_hz));
   armFaultTimer();
-  say("running on %s: elevator device %u, arm device %u, ARM_STATE on %s at %g Hz, heartbeat %s",
-      setup_.can_interface.c_str(), setup_.elevator_device, setup_.arm_device, setup_.state_channel.c_str(),
+  say("running on %s: joint 0 device %u, joint 1 device %u, ARM_STATE on %s at %g Hz, heartbeat %s",
+      setup_.can_interface.c_str(), setup_.joint_devices[0], setup_.joint_devices[1], setup_.state_channel.c_str(),
       setup_.options.state_rate_hz, switches_.heartbeat ? "on" : "off");
 
   while (!switches_.exit) {
@@ -222,7 +222,7 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
     return;
   }
   const std::uint8_t device = decoded.value().device;
-  const int joint = device == setup_.elevator_device ? 0 : device == setup_.arm_device ? 1 : -1;
+  const int joint = device == setup_.joint_devices[0] ? 0 : device == setup_.joint_devices[1] ? 1 : -1;
   if (joint < 0) {
     ++counters_.other_frames;
     return;
@@ -280,12 +280,12 @@ void Runner::onStateTimer() {
     cyberplanner::arm_state_t msg{};
     msg.utime = realtimeMicros();
     published_utime = msg.utime;
-    msg.elevator_m = sim_.state(0).position;
-    msg.elevator_mps = sim_.state(0).velocity;
-    msg.arm_rad = sim_.state(1).position;
-    msg.arm_radps = sim_.state(1).velocity;
-    msg.held_coral = setup_.options.held_coral;
-    msg.held_algae = setup_.options.held_algae;
+    for (int j = 0; j < kJointCount; ++j) {
+      msg.position[j] = sim_.state(j).position;
+      msg.velocity[j] = sim_.state(j).velocity;
+    }
+    msg.pieces = setup_.options.pieces;
+    msg.num_pieces = static_cast<std::int8_t>(msg.pieces.size());
     if (lcm_.publish(setup_.state_channel, &msg) == 0) {
       ++counters_.states_published;
       published = true;

@@ -3,6 +3,7 @@
 // and the heartbeat out on timers, faults from the schedule. Single-threaded, epoll on a CAN
 // socket, three timerfds and a signalfd; it sleeps between events.
 
+#include <array>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -19,8 +20,7 @@ namespace cyber::plant {
 struct RunnerSetup {
   SimOptions options;
   SimulationSettings simulation;
-  std::uint8_t elevator_device = 1;
-  std::uint8_t arm_device = 2;
+  std::array<std::uint8_t, 2> joint_devices{1, 2};  // setpoint frames of joint 0 and joint 1
   std::string state_channel = "ARM_STATE";
   std::string can_interface;
 };

@@ -110,14 +110,15 @@ bool readTrajectoryFromLog(const std::string& path, const std::string& channel, 
   for (int k = 0; k < m.num_samples; ++k) {
     const size_t i = static_cast<size_t>(k);
     data.time_s.push_back(m.t_s[i]);
-    const double q[2] = {m.elevator_m[i], m.arm_rad[i]};
-    const double v[2] = {m.elevator_mps[i], m.arm_radps[i]};
-    const double volts[2] = {m.elevator_volts[i], m.arm_volts[i]};
+    // position, velocity and volts are [joint][sample] (safeDecode checked the sizes).
     for (int j = 0; j < 2; ++j) {
-      data.joints[j].position.push_back(q[j]);
-      data.joints[j].velocity.push_back(v[j]);
-      data.joints[j].volts.push_back(volts[j]);
-      data.joints[j].amps.push_back(robot.drive(j).amps(volts[j], v[j]));
+      const auto row = static_cast<size_t>(j);
+      const double v = m.velocity[row][i];
+      const double volts = m.volts[row][i];
+      data.joints[j].position.push_back(m.position[row][i]);
+      data.joints[j].velocity.push_back(v);
+      data.joints[j].volts.push_back(volts);
+      data.joints[j].amps.push_back(robot.drive(j).amps(volts, v));
     }
   }
   data.title = "ARM_TRAJECTORY request " + std::to_string(m.request_id);

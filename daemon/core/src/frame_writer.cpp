@@ -31,21 +31,25 @@ bool FrameWriter::send(const can::Frame& frame, WriteReport& report) {
 WriteReport FrameWriter::write(const TickOutput& tick, std::uint8_t fault_bits) {
   WriteReport report;
   if (tick.send_setpoints) {
-    const can::Setpoint elevator{tick.setpoints.position[0], tick.setpoints.velocity[0], tick.setpoints.volts[0],
-                                 elevator_sequence_++};
-    const can::Setpoint arm{tick.setpoints.position[1], tick.setpoints.velocity[1], tick.setpoints.volts[1],
-                            arm_sequence_++};
-    auto elevator_frame = can::encodeSetpoint(settings_.elevator_device, elevator);
-    auto arm_frame = can::encodeSetpoint(settings_.arm_device, arm);
-    if (elevator_frame && arm_frame) {
-      const bool elevator_ok = send(elevator_frame.value(), report);
-      const bool arm_ok = send(arm_frame.value(), report);
-      auto elevator_wire = can::decodeSetpoint(elevator_frame.value());
-      auto arm_wire = can::decodeSetpoint(arm_frame.value());
-      if (elevator_wire && arm_wire) {
-        report.wire.written = elevator_ok && arm_ok;
-        report.wire.elevator = elevator_wire.value().setpoint;
-        report.wire.arm = arm_wire.value().setpoint;
+    std::array<can::Frame, 2> frames{};
+    bool encoded = true;
+    for (size_t j = 0; j < frames.size(); ++j) {
+      const can::Setpoint setpoint{tick.setpoints.position[static_cast<int>(j)],
+                                   tick.setpoints.velocity[static_cast<int>(j)],
+                                   tick.setpoints.volts[static_cast<int>(j)], joint_sequences_[j]++};
+      auto frame = can::encodeSetpoint(settings_.joint_devices[j], setpoint);
+      if (frame) {
+        frames[j] = frame.value();
+      } else {
+        encoded = false;
+      }
+    }
+    if (encoded) {
+      bool written = true;
+      for (const can::Frame& frame : frames) written = send(frame, report) && written;
+      report.wire.written = written;
+      for (size_t j = 0; j < frames.size(); ++j) {
+        if (auto wire = can::decodeSetpoint(frames[j])) report.wire.joints[j] = wire.value().setpoint;
       }
     } else {
       ++report.encode_errors;  // the streamer's limits are inside the frame's: not expected

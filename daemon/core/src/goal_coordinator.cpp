@@ -130,6 +130,7 @@ void GoalCoordinator::startPlanning(MonoNs now) {
   request.goal = job.attempt.stop ? at_branch.setpoints.position : job.attempt.goal.q;
   request.pieces = job.attempt.goal.pieces;
   request.scene = job.attempt.goal.scene;
+  request.scene_offset_m = job.attempt.goal.scene_offset_m;
   if (!job.attempt.stop && (job.attempt.from_rest || !at_branch.moving)) {
     // From rest: no deadline, the plan starts when it is ready (or when the motion ends).
     job.floating = true;
@@ -171,6 +172,7 @@ bool GoalCoordinator::prepareStop(Attempt& stop, const ProgramSample& at_branch)
   stop.goal.request_id = at_branch.request_id;
   stop.goal.pieces = world->second.pieces;
   stop.goal.scene = world->second.scene;
+  stop.goal.scene_offset_m = world->second.scene_offset_m;
   return true;
 }
 
@@ -283,7 +285,7 @@ void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> res
     it->second.times_ms = motion.times_ms;
     it->second.duration_s = motion.trajectory->durationS();
   }
-  worlds_[id] = World{job.attempt.goal.pieces, job.attempt.goal.scene};
+  worlds_[id] = World{job.attempt.goal.pieces, job.attempt.goal.scene, job.attempt.goal.scene_offset_m};
   if (job.attempt.stop) {
     ++counters_.stops_planned;
     sink_.note(NoteLevel::kInfo, "ARM_CANCEL hold: request " + std::to_string(id) + " brakes to rest in " +

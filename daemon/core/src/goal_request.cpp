@@ -4,79 +4,115 @@
 
 #include <cmath>
 #include <optional>
-#include <utility>
+
+#include "cyber/planner/joint_chain.hpp"
 
 namespace cyber::daemon {
 
 namespace {
 
-std::optional<std::string> checkJoint(const char* name, double value, const planner::JointRange& range,
-                                      const char* unit) {
-  if (value >= range.min && value <= range.max) return std::nullopt;
-  return fmt::format("{} = {:g} {} is outside [{:g}, {:g}] {}", name, value, unit, range.min, range.max, unit);
-}
+using planner::PlanStatus;
+using Failure = planner::Result<ValidGoal>;
 
-// Scene names are short words from the config; anything else is refused without being echoed.
+// Names are short words from the config; anything else is refused without being echoed.
 // A NUL byte matters most: LCM sizes a string by its length but encodes it only up to the first
 // NUL, so echoing one in ARM_PLAN_STATUS would send the uninitialised rest of the send buffer
 // (found by tests/fuzz/lcm_decode; docs/operations.md, "Threat model").
-constexpr std::size_t kMaxSceneNameLength = 64;
+constexpr std::size_t kMaxNameLength = 64;
 
-bool isSceneName(const std::string& name) {
-  if (name.size() > kMaxSceneNameLength) return false;
+bool isName(const std::string& name) {
+  if (name.size() > kMaxNameLength) return false;
   for (const char c : name) {
     if (c < 0x20 || c > 0x7e) return false;
   }
   return true;
 }
 
+std::string notAName(const std::string& field, const std::string& name) {
+  return fmt::format("{} is not a name ({} bytes; at most {} printable ASCII characters)", field, name.size(),
+                     kMaxNameLength);
+}
+
+std::string joinedNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out.empty() ? "none" : out;
+}
+
+std::optional<planner::PlanError> checkPosition(const planner::JointVector& q, const planner::RobotModel& robot) {
+  for (int j = 0; j < planner::kJointCount; ++j) {
+    const planner::ChainJoint& joint = robot.joints[static_cast<size_t>(j)];
+    const char* unit = planner::unitName(joint.type);
+    const double value = q[j];
+    if (!std::isfinite(value)) {
+      return planner::PlanError{PlanStatus::kInvalidInput,
+                                fmt::format("position[{}] ({}) is not finite ({:g})", j, joint.name, value)};
+    }
+    if (value < joint.range.min || value > joint.range.max) {
+      return planner::PlanError{PlanStatus::kGoalOutOfRange,
+                                fmt::format("position[{}] ({}) = {:g} {} is outside [{:g}, {:g}] {}", j, joint.name,
+                                            value, unit, joint.range.min, joint.range.max, unit)};
+    }
+  }
+  return std::nullopt;
+}
+
+// The held set of the named pieces; each name once, each one of the config's.
+std::optional<std::string> readPieces(const GoalRequest& goal, const planner::RobotModel& robot,
+                                      planner::HeldPieces& held) {
+  if (goal.num_pieces < 0 || goal.num_pieces > kMaxGoalPieces) {
+    return fmt::format("num_pieces = {} is outside 0..{}", goal.num_pieces, kMaxGoalPieces);
+  }
+  if (goal.num_pieces != static_cast<int>(goal.pieces.size())) {
+    return fmt::format("num_pieces = {} but {} piece names came", goal.num_pieces, goal.pieces.size());
+  }
+  std::vector<std::string> known;
+  for (const auto& piece : robot.pieces) known.push_back(piece.name);
+  for (size_t i = 0; i < goal.pieces.size(); ++i) {
+    const std::string& name = goal.pieces[i];
+    if (!isName(name)) return notAName(fmt::format("pieces[{}]", i), name);
+    const int piece = robot.pieceIndex(name);
+    if (piece < 0) {
+      return fmt::format("unknown game piece '{}' in pieces[{}] (this robot's: {})", name, i, joinedNames(known));
+    }
+    if (held.holds(piece)) return fmt::format("game piece '{}' is named twice in pieces", name);
+    held = held.with(piece);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
-  using planner::PlanStatus;
-  if (!isSceneName(goal.scene_name)) {
-    return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                               "scene_name is not a name (" + std::to_string(goal.scene_name.size()) +
-                                                   " bytes; at most " + std::to_string(kMaxSceneNameLength) +
-                                                   " printable ASCII characters)");
-  }
-  if (!std::isfinite(goal.elevator_m)) {
-    return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                               fmt::format("elevator_m is not finite ({:g})", goal.elevator_m));
-  }
-  if (!std::isfinite(goal.arm_rad)) {
-    return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                               fmt::format("arm_rad is not finite ({:g})", goal.arm_rad));
-  }
-  if (auto problem = checkJoint("elevator_m", goal.elevator_m, robot.range(0), "m")) {
-    return planner::Result<ValidGoal>::failure(PlanStatus::kGoalOutOfRange, *problem);
-  }
-  if (auto problem = checkJoint("arm_rad", goal.arm_rad, robot.range(1), "rad")) {
-    return planner::Result<ValidGoal>::failure(PlanStatus::kGoalOutOfRange, *problem);
-  }
+  if (!isName(goal.scene_name))
+    return Failure::failure(PlanStatus::kInvalidInput, notAName("scene_name", goal.scene_name));
+  if (auto problem = checkPosition(goal.position, robot)) return Failure::failure(problem->status, problem->reason);
   ValidGoal valid;
   valid.request_id = goal.request_id;
-  valid.q = planner::JointVector(goal.elevator_m, goal.arm_rad);
-  // The message's two held flags name the first configuration's pieces until ARM_GOAL carries
-  // names (docs/lcm.md).
-  for (const auto& [held, name] : {std::pair{goal.held_coral, "coral"}, std::pair{goal.held_algae, "algae"}}) {
-    if (!held) continue;
-    const int piece = robot.pieceIndex(name);
-    if (piece < 0) {
-      return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                                 fmt::format("the robot has no game piece named {}", name));
-    }
-    valid.pieces = valid.pieces.with(piece);
+  valid.q = goal.position;
+  if (auto problem = readPieces(goal, robot, valid.pieces)) {
+    return Failure::failure(PlanStatus::kInvalidInput, *problem);
   }
   if (!goal.scene_name.empty()) {
     valid.scene = robot.sceneIndex(goal.scene_name);
     if (valid.scene < 0) {
-      std::string known;
-      for (const auto& scene : robot.scenes) known += (known.empty() ? "" : ", ") + scene.name;
-      return planner::Result<ValidGoal>::failure(PlanStatus::kInvalidInput,
-                                                 "unknown scene '" + goal.scene_name + "' (known: " + known + ")");
+      std::vector<std::string> known;
+      for (const auto& scene : robot.scenes) known.push_back(scene.name);
+      return Failure::failure(PlanStatus::kInvalidInput,
+                              "unknown scene '" + goal.scene_name + "' (known: " + joinedNames(known) + ")");
     }
   }
+  const planner::Scene& scene = robot.scenes[static_cast<size_t>(valid.scene)];
+  const double offset = goal.scene_offset_m;
+  if (!std::isfinite(offset)) {
+    return Failure::failure(PlanStatus::kInvalidInput, fmt::format("scene_offset_m is not finite ({:g})", offset));
+  }
+  if (!scene.offset_range_m.contains(offset)) {
+    return Failure::failure(PlanStatus::kInvalidInput,
+                            fmt::format("scene_offset_m = {:g} m is outside scene {}'s offset range [{:g}, {:g}] m",
+                                        offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
+  }
+  valid.scene_offset_m = offset;
   return valid;
 }
 

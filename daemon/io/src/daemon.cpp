@@ -47,8 +47,9 @@ MonoNs periodOf(double rate_hz) { return secondsToNs(1.0 / rate_hz); }
 FrameWriterSettings writerSettingsOf(const DaemonOptions& options) {
   const auto& s = options.settings;
   FrameWriterSettings out;
-  out.elevator_device = static_cast<std::uint8_t>(s.devices.elevator);
-  out.arm_device = static_cast<std::uint8_t>(s.devices.arm);
+  for (size_t j = 0; j < out.joint_devices.size(); ++j) {
+    out.joint_devices[j] = static_cast<std::uint8_t>(s.devices.joints[j]);
+  }
   out.status_device = static_cast<std::uint8_t>(s.devices.status);
   out.status_every_ticks = std::max(1, static_cast<int>(std::lround(s.stream_rate_hz / s.status_rate_hz)));
   return out;
@@ -128,7 +129,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
       state_receiver_(*state_lcm_, options.settings.channels.state, lcm_input_),
       goals_(robot_, goalSettingsOf(options), bridge_, worker_, channels_, loop_),
       can_input_(can_ ? std::make_unique<CanInput>(*can_, loop_) : nullptr),
-      status_(StatusPublisher::Sources{channels_, goals_, lcm_input_, can_input_.get(), bridge_}, gate_) {
+      status_(StatusPublisher::Sources{channels_, goals_, lcm_input_, can_input_.get(), bridge_, robot_}, gate_) {
   streamer_thread_.setRobotFrameSource(robot_source_.get(), heartbeatLayoutOf(options.settings.robot_controller));
   loop_.add(bridge_.fd(), [this] { bridge_.handleReady(kMaxMessagesPerWake); });
   if (signals_ != nullptr) loop_.add(signals_->fd(), [this] { onSignal(); });

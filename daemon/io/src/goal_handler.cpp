@@ -1,5 +1,6 @@
 #include "cyber/daemon/io/goal_handler.hpp"
 
+#include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
 #include "cyber/daemon/io/lcm_messages.hpp"
@@ -9,7 +10,8 @@ namespace cyber::daemon::io {
 
 GoalHandler::GoalHandler(const planner::RobotModel& robot, const Settings& settings, LcmBridge& bridge,
                          PlanningWorker& worker, StreamerChannels& channels, EventLoop& loop)
-    : bridge_(bridge),
+    : robot_(robot),
+      bridge_(bridge),
       worker_(worker),
       channels_(channels),
       loop_(loop),
@@ -18,8 +20,10 @@ GoalHandler::GoalHandler(const planner::RobotModel& robot, const Settings& setti
 
 void GoalHandler::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict gate) {
   goal_received_ns_[goal.request_id] = now;
-  spdlog::debug("goal {}: elevator {} m, arm {} rad, coral {}, algae {}, scene '{}'", goal.request_id, goal.elevator_m,
-                goal.arm_rad, goal.held_coral, goal.held_algae, goal.scene_name);
+  spdlog::debug("goal {}: {} {} {}, {} {} {}, pieces [{}], scene '{}' at {} m", goal.request_id, robot_.joints[0].name,
+                goal.position[0], planner::unitName(robot_.joints[0].type), robot_.joints[1].name, goal.position[1],
+                planner::unitName(robot_.joints[1].type), fmt::join(goal.pieces, ", "), goal.scene_name,
+                goal.scene_offset_m);
   coordinator_.onGoal(goal, now, gate);
 }
 
@@ -51,7 +55,9 @@ void GoalHandler::onStreamEvent(const StreamEvent& event, MonoNs now) {
       spdlog::warn("motion stopped: {}", toString(event.gate_reason));
     }
   } else if (event.kind == StreamEventKind::kHolding) {
-    spdlog::info("holding elevator {:.4f} m, arm {:.4f} rad ({})", event.position[0], event.position[1],
+    spdlog::info("holding {} {:.4f} {}, {} {:.4f} {} ({})", robot_.joints[0].name, event.position[0],
+                 planner::unitName(robot_.joints[0].type), robot_.joints[1].name, event.position[1],
+                 planner::unitName(robot_.joints[1].type),
                  event.hold_cause == HoldCause::kShutdown ? "shutdown" : "motion allowed");
   }
   coordinator_.onStreamEvent(event, now);

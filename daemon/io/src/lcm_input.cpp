@@ -32,8 +32,9 @@ void LcmInput::onState(const cyberplanner::arm_state_t& message) {
   const auto state = stateFromMessage(message, robot_);
   if (!state) {
     ++bad_states_;
-    state_warning_.warn(now, "ignoring ARM_STATE with non-finite or out-of-range values (elevator {} m, arm {} rad)",
-                        message.elevator_m, message.arm_rad);
+    state_warning_.warn(now, "ignoring ARM_STATE with non-finite or out-of-range values ({} {} {}, {} {} {})",
+                        robot_.joints[0].name, message.position[0], planner::unitName(robot_.joints[0].type),
+                        robot_.joints[1].name, message.position[1], planner::unitName(robot_.joints[1].type));
     return;
   }
   state_.state_ns = now;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace cyber::daemon::io {
 
@@ -16,11 +17,11 @@ std::int64_t wallMicros() {
 GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message) {
   GoalRequest goal;
   goal.request_id = message.request_id;
-  goal.elevator_m = message.elevator_m;
-  goal.arm_rad = message.arm_rad;
-  goal.held_coral = message.held_coral != 0;
-  goal.held_algae = message.held_algae != 0;
+  goal.position = JointVector(message.position[0], message.position[1]);
+  goal.num_pieces = message.num_pieces;
+  goal.pieces = message.pieces;
   goal.scene_name = message.scene_name;
+  goal.scene_offset_m = message.scene_offset_m;
   return goal;
 }
 
@@ -37,13 +38,10 @@ std::optional<CancelRequest> cancelFromMessage(const cyberplanner::arm_cancel_t&
 
 std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
                                               const planner::RobotModel& robot, double margin) {
-  const double values[] = {message.elevator_m, message.elevator_mps, message.arm_rad, message.arm_radps};
-  for (double v : values) {
-    if (!std::isfinite(v)) return std::nullopt;
-  }
   MeasuredState state;
-  state.q = JointVector(message.elevator_m, message.arm_rad);
-  state.qdot = JointVector(message.elevator_mps, message.arm_radps);
+  state.q = JointVector(message.position[0], message.position[1]);
+  state.qdot = JointVector(message.velocity[0], message.velocity[1]);
+  if (!state.q.allFinite() || !state.qdot.allFinite()) return std::nullopt;
   if (!robot.withinLimits(state.q, margin)) return std::nullopt;
   return state;
 }
@@ -82,21 +80,22 @@ cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const 
   const bool end_off_step = (on_step - 1) * dt < duration - 1e-6;  // else the last step sample moves to the end
   const int count = std::min(kMax, on_step + (end_off_step ? 1 : 0));
   message.num_samples = count;
-  for (auto* column : {&message.t_s, &message.elevator_m, &message.arm_rad, &message.elevator_mps, &message.arm_radps,
-                       &message.elevator_volts, &message.arm_volts}) {
-    column->resize(static_cast<size_t>(count));
+  // position, velocity and volts are [joint][sample]: two rows of `count` each.
+  message.t_s.resize(static_cast<size_t>(count));
+  for (auto* table : {&message.position, &message.velocity, &message.volts}) {
+    table->assign(planner::kJointCount, std::vector<double>(static_cast<size_t>(count)));
   }
   for (int k = 0; k < count; ++k) {
     const double t = k + 1 == count ? duration : std::min(duration, k * dt);
     const JointSetpoints s = trajectory.at(t);
     const auto i = static_cast<size_t>(k);
     message.t_s[i] = t;
-    message.elevator_m[i] = s.position[0];
-    message.arm_rad[i] = s.position[1];
-    message.elevator_mps[i] = s.velocity[0];
-    message.arm_radps[i] = s.velocity[1];
-    message.elevator_volts[i] = s.volts[0];
-    message.arm_volts[i] = s.volts[1];
+    for (int j = 0; j < planner::kJointCount; ++j) {
+      const auto row = static_cast<size_t>(j);
+      message.position[row][i] = s.position[j];
+      message.velocity[row][i] = s.velocity[j];
+      message.volts[row][i] = s.volts[j];
+    }
   }
   return message;
 }
@@ -107,14 +106,13 @@ cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, std
   message.mode = static_cast<std::int8_t>(snapshot.mode);
   message.request_id = snapshot.request_id;
   message.trajectory_t_s = snapshot.mode == StreamMode::kMoving ? snapshot.segment_time_s : 0.0;
-  message.elevator_m = snapshot.elevator.position;
-  message.elevator_mps = snapshot.elevator.velocity;
-  message.elevator_volts = snapshot.elevator.feedforward_volts;
-  message.elevator_sequence = snapshot.elevator.sequence;
-  message.arm_rad = snapshot.arm.position;
-  message.arm_radps = snapshot.arm.velocity;
-  message.arm_volts = snapshot.arm.feedforward_volts;
-  message.arm_sequence = snapshot.arm.sequence;
+  for (size_t j = 0; j < snapshot.joints.size(); ++j) {
+    const can::Setpoint& wire = snapshot.joints[j];
+    message.position[j] = wire.position;
+    message.velocity[j] = wire.velocity;
+    message.volts[j] = wire.feedforward_volts;
+    message.sequence[j] = wire.sequence;
+  }
   return message;
 }
 

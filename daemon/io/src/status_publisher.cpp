@@ -91,6 +91,11 @@ void StatusPublisher::publishDaemonStatus(const StreamSnapshot& snapshot, MonoNs
   cyberplanner::arm_daemon_status_t m{};
   m.utime = wallMicros();
   m.mode = static_cast<std::int8_t>(snapshot.mode);
+  for (int j = 0; j < planner::kJointCount; ++j) {
+    const planner::ChainJoint& joint = s_.robot.joints[static_cast<size_t>(j)];
+    m.joint_names[j] = joint.name;
+    m.joint_units[j] = planner::unitName(joint.type);
+  }
   m.robot_enabled = robotEnabled(snapshot, now);
   m.motion_allowed = snapshot.ticks > 0 && snapshot.gate_reason == GateReason::kOpen;
   m.active_request_id = snapshot.request_id;

@@ -78,8 +78,7 @@ void StreamerThread::run() {
     snapshot.remaining_s = out.remaining_s;
     snapshot.robot_link = robot_link_;
     snapshot.setpoints_written = report.wire.written;
-    snapshot.elevator = report.wire.elevator;
-    snapshot.arm = report.wire.arm;
+    snapshot.joints = report.wire.joints;
     channels_.snapshot.store(snapshot);
     channels_.frames_sent.store(writer_.framesSent(), std::memory_order_relaxed);
     channels_.write_failures.store(writer_.writeFailures(), std::memory_order_relaxed);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
+#include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/fastest_stop.hpp"
 #include "cyber/planner/motion_planner.hpp"
 
@@ -46,6 +48,7 @@ class MotionPlannerService final : public PlanningService {
     plan_request.start_velocity = request.start_velocity;
     plan_request.pieces = request.pieces;
     plan_request.scene = request.scene;
+    plan_request.scene_offset_m = request.scene_offset_m;
     auto plan = planner_.plan(plan_request);
     if (!plan) return plan.error();
     const planner::Plan& value = plan.value();
@@ -67,7 +70,13 @@ class MotionPlannerService final : public PlanningService {
     }
     const auto started = std::chrono::steady_clock::now();
     planner::ToppSolver solver(model.planner.topp);
-    auto stop = planner::fastestStop(model, planner_.pathPlanner(request.scene).world(request.pieces), request.start,
+    // The world the braked motion was planned in: the scene as drawn, or shifted by its offset.
+    const planner::PathPlanner& drawn = planner_.pathPlanner(request.scene);
+    std::optional<planner::CollisionWorld> shifted;
+    if (request.scene_offset_m != 0.0) {
+      shifted.emplace(model, drawn.scene(), request.pieces, request.scene_offset_m);
+    }
+    auto stop = planner::fastestStop(model, shifted ? *shifted : drawn.world(request.pieces), request.start,
                                      request.start_velocity, solver);
     if (!stop) return stop.error();
     PlannedMotion out;

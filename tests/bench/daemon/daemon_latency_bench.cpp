@@ -84,10 +84,13 @@ class Rig {
   void goal(std::int64_t id, const cyber::planner::JointVector& q, const cyber::planner::HeldPieces& pieces) {
     cyberplanner::arm_goal_t goal{};
     goal.request_id = id;
-    goal.elevator_m = q[0];
-    goal.arm_rad = q[1];
-    goal.held_coral = pieces.holds(cyber::test::referenceModel().pieceIndex("coral"));
-    goal.held_algae = pieces.holds(cyber::test::referenceModel().pieceIndex("algae"));
+    goal.position[0] = q[0];
+    goal.position[1] = q[1];
+    const auto& robot = cyber::test::referenceModel();
+    for (size_t i = 0; i < robot.pieces.size(); ++i) {
+      if (pieces.holds(static_cast<int>(i))) goal.pieces.push_back(robot.pieces[i].name);
+    }
+    goal.num_pieces = static_cast<std::int8_t>(goal.pieces.size());
     onLoop([&] { DaemonProbe::lcm(*daemon_).publish("ARM_GOAL", &goal); });
   }
 
@@ -102,8 +105,8 @@ class Rig {
     const auto end = std::chrono::steady_clock::now() + 5s;
     while (std::chrono::steady_clock::now() < end) {
       const auto snapshot = DaemonProbe::channels(*daemon_).snapshot.load();
-      if (snapshot.mode == cyber::daemon::StreamMode::kHolding && std::abs(snapshot.elevator.position - q[0]) < 1e-4 &&
-          std::abs(snapshot.arm.position - q[1]) < 1e-4) {
+      if (snapshot.mode == cyber::daemon::StreamMode::kHolding && std::abs(snapshot.joints[0].position - q[0]) < 1e-4 &&
+          std::abs(snapshot.joints[1].position - q[1]) < 1e-4) {
         break;
       }
       std::this_thread::sleep_for(1ms);
@@ -143,8 +146,10 @@ class Rig {
       if (!paused_) {
         const auto snapshot = DaemonProbe::channels(*daemon_).snapshot.load();
         cyberplanner::arm_state_t state{};
-        state.elevator_m = forced_ || snapshot.ticks == 0 ? forced_q_[0].load() : snapshot.elevator.position;
-        state.arm_rad = forced_ || snapshot.ticks == 0 ? forced_q_[1].load() : snapshot.arm.position;
+        for (int j = 0; j < 2; ++j) {
+          state.position[j] = forced_ || snapshot.ticks == 0 ? forced_q_[static_cast<size_t>(j)].load()
+                                                             : snapshot.joints[static_cast<size_t>(j)].position;
+        }
         onLoop([&] { DaemonProbe::lcmFor(*daemon_, "ARM_STATE").publish("ARM_STATE", &state); });
       }
       std::this_thread::sleep_for(10ms);

@@ -73,7 +73,9 @@ TEST(LoadConfig, EmbeddedDefaultIsTheReferenceRobot) {
   EXPECT_NEAR(e.motor.kvRadpsPerVolt(), (5800.0 * 2 * std::numbers::pi / 60.0) / (12.0 - 2.0 * 12.0 / 483.0), 1e-9);
   EXPECT_FALSE(e.velocity_limit.has_value());
 
-  EXPECT_EQ(config.daemon.devices.elevator, 1);
+  EXPECT_EQ(config.daemon.devices.joints[0], 1);
+  EXPECT_EQ(config.daemon.devices.joints[1], 2);
+  EXPECT_EQ(config.daemon.devices.status, 3);
   EXPECT_EQ(config.daemon.channels.goal, "ARM_GOAL");
   EXPECT_EQ(config.daemon.channels.cancel, "ARM_CANCEL");
   EXPECT_DOUBLE_EQ(config.daemon.stream_rate_hz, 200.0);
@@ -233,6 +235,15 @@ const BadCase kBadCases[] = {
     {"BadRobotController", "robot_controller = \"roborio\"", "robot_controller = \"rio\"", "daemon.robot_controller",
      "expected \"roborio\" or \"systemcore\""},
     {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
+    // [daemon.devices] is keyed by the config's joint names (and status), nothing else.
+    {"DeviceOfNoJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nelevator = 1\nwrist = 4\n",
+     "daemon.devices.wrist",
+     "not a joint of this robot; [daemon.devices] takes one key per joint, `elevator`, `arm`, "
+     "and `status`"},
+    {"DeviceOfARenamedJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nlift = 1\n", "daemon.devices.lift",
+     "not a joint of this robot"},
+    {"DeviceOfAJointMissing", "arm = 2\nstatus = 3", "status = 3", "daemon.devices.arm",
+     "missing: [daemon.devices] takes one key per joint, `elevator`, `arm`, and `status`"},
     {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},
 };
 

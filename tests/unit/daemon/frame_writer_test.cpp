@@ -24,10 +24,10 @@ struct FakeCanPort final : CanPort {
   }
 };
 
-TickOutput moving(double elevator_m, double arm_rad) {
+TickOutput moving(double q0, double q1) {
   TickOutput tick;
   tick.send_setpoints = true;
-  tick.setpoints.position = JointVector(elevator_m, arm_rad);
+  tick.setpoints.position = JointVector(q0, q1);
   tick.setpoints.velocity = JointVector(0.5, -1.25);
   tick.setpoints.volts = JointVector(2.5, -0.75);
   tick.mode = StreamMode::kMoving;
@@ -39,13 +39,13 @@ TickOutput moving(double elevator_m, double arm_rad) {
 
 TEST(FrameWriter, WritesOneSetpointFramePerJointWithItsOwnSequence) {
   FakeCanPort port;
-  FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 20});
+  FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 20});
   for (int i = 0; i < 3; ++i) {
     const WriteReport report = writer.write(moving(1.23456, 2.5), 0);
     EXPECT_EQ(report.frames_written, 2);
     EXPECT_TRUE(report.wire.written);
-    EXPECT_NEAR(report.wire.elevator.position, 1.23456, 1e-9);
-    EXPECT_EQ(report.wire.arm.sequence, i);
+    EXPECT_NEAR(report.wire.joints[0].position, 1.23456, 1e-9);
+    EXPECT_EQ(report.wire.joints[1].sequence, i);
   }
   ASSERT_EQ(port.accepted.size(), 6u);
   auto first = can::decodeSetpoint(port.accepted[0]);
@@ -62,7 +62,7 @@ TEST(FrameWriter, WritesOneSetpointFramePerJointWithItsOwnSequence) {
 
 TEST(FrameWriter, SendsTheStatusFrameEveryNTicksEvenWithoutSetpoints) {
   FakeCanPort port;
-  FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 4});
+  FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 4});
   TickOutput disabled;
   disabled.mode = StreamMode::kRobotDisabled;
   disabled.gate_reason = GateReason::kNoHeartbeat;
@@ -83,7 +83,7 @@ TEST(FrameWriter, SendsTheStatusFrameEveryNTicksEvenWithoutSetpoints) {
 
 TEST(FrameWriter, StatusCarriesModeRequestRemainingTimeAndStaleState) {
   FakeCanPort port;
-  FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 1});
+  FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 1});
   TickOutput tick = moving(0.5, 1.0);
   tick.gate_reason = GateReason::kOpen;
   writer.write(tick, 0);
@@ -102,7 +102,7 @@ TEST(FrameWriter, StatusCarriesModeRequestRemainingTimeAndStaleState) {
 TEST(FrameWriter, WriteFailuresDropFramesAndAreReportedOncePerBurst) {
   for (const int error : {ENOBUFS, ENETDOWN}) {
     FakeCanPort port;
-    FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 1000});
+    FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 1000});
     writer.write(moving(0.5, 1.0), 0);
     port.failure = can::ioResultFromErrno(error);
     int started = 0;
@@ -132,7 +132,7 @@ TEST(FrameWriter, WriteFailuresDropFramesAndAreReportedOncePerBurst) {
 
 TEST(FrameWriter, AFailingBusSetsTheWriteFailedFaultBit) {
   FakeCanPort port;
-  FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 1});
+  FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 1});
   port.failure = can::ioResultFromErrno(ENOBUFS);
   writer.write(moving(0.5, 1.0), 0);
   port.failure.reset();

@@ -52,21 +52,50 @@ TEST(GoalCoordinator, ThePlanStartsFromTheHeldPositionAtRest) {
   EXPECT_EQ(h.sink.jobs_started[0].request.goal, kHigh);
 }
 
+// ARM_GOAL's scene, scene offset and pieces by name reach the planner's request.
+TEST(GoalCoordinator, TheGoalsSceneOffsetAndPiecesReachThePlanRequest) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh, "reef", {"algae", "coral"}, 0.25);
+  ASSERT_EQ(h.sink.jobs_started.size(), 1u);
+  const MotionRequest& request = h.sink.jobs_started[0].request;
+  EXPECT_EQ(request.scene, h.robot.sceneIndex("reef"));
+  EXPECT_EQ(request.scene_offset_m, 0.25);
+  EXPECT_EQ(request.pieces, cyber::test::referencePieces("coral+algae"));
+  ASSERT_TRUE(h.runUntilFinal(1));
+  EXPECT_EQ(h.sink.last(1)->status, S::kDone);
+}
+
+TEST(GoalCoordinator, AGoalOutsideItsScenesOffsetRangeIsRejectedUnplanned) {
+  Harness h;
+  h.start(kStow);
+  h.goal(1, kHigh, "reef", {}, 0.5);
+  h.goal(2, kHigh, "reef", {"cone"});
+  EXPECT_EQ(h.sink.of(1), sequence({S::kRejected}));
+  EXPECT_NE(h.sink.last(1)->reason.find("scene_offset_m = 0.5 m is outside scene reef's offset range"),
+            std::string::npos)
+      << h.sink.last(1)->reason;
+  EXPECT_EQ(h.sink.of(2), sequence({S::kRejected}));
+  EXPECT_NE(h.sink.last(2)->reason.find("unknown game piece 'cone'"), std::string::npos) << h.sink.last(2)->reason;
+  EXPECT_TRUE(h.sink.jobs_started.empty());
+}
+
 TEST(GoalCoordinator, BadGoalsAreRejectedWithReasonsAndTheDaemonCarriesOn) {
   Harness h;
   h.collision_goals.push_back(JointVector(0.3, 0.1));
   h.start(kStow);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  h.rawGoal(GoalRequest{1, nan, 1.0, false, false, ""});
-  h.rawGoal(GoalRequest{2, 0.5, std::numeric_limits<double>::infinity(), false, false, ""});
+  h.rawGoal(Harness::request(1, JointVector(nan, 1.0)));
+  h.rawGoal(Harness::request(2, JointVector(0.5, std::numeric_limits<double>::infinity())));
   h.goal(3, JointVector(3.0, 1.0));
   h.goal(4, JointVector(0.5, 1.0), "moon");
   for (std::int64_t id : {1, 2, 3, 4}) {
     ASSERT_NE(h.sink.last(id), nullptr);
     EXPECT_EQ(h.sink.of(id), sequence({S::kRejected})) << id;
   }
-  EXPECT_NE(h.sink.last(1)->reason.find("elevator_m is not finite"), std::string::npos) << h.sink.last(1)->reason;
-  EXPECT_NE(h.sink.last(2)->reason.find("arm_rad is not finite"), std::string::npos);
+  EXPECT_NE(h.sink.last(1)->reason.find("position[0] (elevator) is not finite"), std::string::npos)
+      << h.sink.last(1)->reason;
+  EXPECT_NE(h.sink.last(2)->reason.find("position[1] (arm) is not finite"), std::string::npos);
   EXPECT_NE(h.sink.last(3)->reason.find("outside [0, 2]"), std::string::npos);
   EXPECT_NE(h.sink.last(4)->reason.find("unknown scene 'moon'"), std::string::npos);
 

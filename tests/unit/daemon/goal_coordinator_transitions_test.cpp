@@ -31,7 +31,7 @@ class Transitions : public ::testing::Test {
   }
 
   void goal(std::int64_t id, const JointVector& q, GateReason gate = GateReason::kOpen) {
-    coordinator.onGoal(GoalRequest{id, q[0], q[1], false, false, ""}, now, GateVerdict{gate});
+    coordinator.onGoal(test::Harness::request(id, q), now, GateVerdict{gate});
   }
   StreamEvent event(StreamEventKind kind) const {
     StreamEvent e;

@@ -12,48 +12,102 @@ namespace {
 
 using planner::PlanStatus;
 
-GoalRequest goalAt(double elevator_m, double arm_rad, std::string scene = {}) {
-  return GoalRequest{7, elevator_m, arm_rad, false, false, std::move(scene)};
+// The reference robot: joint 0 "elevator" (m, [0, 2]), joint 1 "arm" (rad); pieces algae and
+// coral (in the config's order); scenes reef (offset range [0, 0.3] m) and open (no offsets).
+GoalRequest goalAt(double q0, double q1, std::string scene = {}) {
+  GoalRequest goal;
+  goal.request_id = 7;
+  goal.position = planner::JointVector(q0, q1);
+  goal.scene_name = std::move(scene);
+  return goal;
+}
+
+GoalRequest holding(std::vector<std::string> pieces) {
+  GoalRequest goal = goalAt(1.0, 1.5);
+  goal.num_pieces = static_cast<int>(pieces.size());
+  goal.pieces = std::move(pieces);
+  return goal;
+}
+
+// The reason of a refused goal, after checking its status.
+std::string refused(const GoalRequest& goal, PlanStatus status = PlanStatus::kInvalidInput) {
+  auto result = validateGoal(goal, cyber::test::referenceModel());
+  EXPECT_FALSE(result);
+  if (result) return "";
+  EXPECT_EQ(result.error().status, status) << result.error().reason;
+  return result.error().reason;
 }
 
 TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
   const auto& robot = cyber::test::referenceModel();
-  GoalRequest goal = goalAt(1.0, 1.5);
-  goal.held_coral = true;
-  auto valid = validateGoal(goal, robot);
+  auto valid = validateGoal(holding({"coral"}), robot);
   ASSERT_TRUE(valid) << valid.error().reason;
   EXPECT_EQ(valid.value().request_id, 7);
   EXPECT_EQ(valid.value().q, planner::JointVector(1.0, 1.5));
   EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral"));
   EXPECT_EQ(valid.value().scene, 0);
+  EXPECT_EQ(valid.value().scene_offset_m, 0.0);
 }
 
-TEST(ValidateGoal, RejectsNonFiniteValuesNamingTheField) {
+TEST(ValidateGoal, PiecesComeByTheConfigsNamesInAnyOrder) {
   const auto& robot = cyber::test::referenceModel();
+  auto both = validateGoal(holding({"algae", "coral"}), robot);
+  ASSERT_TRUE(both) << both.error().reason;
+  EXPECT_EQ(both.value().pieces, cyber::test::referencePieces("coral+algae"));
+  auto none = validateGoal(holding({}), robot);
+  ASSERT_TRUE(none) << none.error().reason;
+  EXPECT_EQ(none.value().pieces, cyber::test::referencePieces("none"));
+}
+
+TEST(ValidateGoal, RejectsNonFiniteValuesNamingTheJoint) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  for (const auto& [goal, field] : {std::pair{goalAt(nan, 1.0), "elevator_m"}, std::pair{goalAt(0.5, inf), "arm_rad"},
-                                    std::pair{goalAt(-inf, 1.0), "elevator_m"}}) {
-    auto result = validateGoal(goal, robot);
-    ASSERT_FALSE(result);
-    EXPECT_EQ(result.error().status, PlanStatus::kInvalidInput);
-    EXPECT_NE(result.error().reason.find(field), std::string::npos) << result.error().reason;
+  for (const auto& [goal, field] : {std::pair{goalAt(nan, 1.0), "position[0] (elevator) is not finite (nan)"},
+                                    std::pair{goalAt(0.5, inf), "position[1] (arm) is not finite (inf)"},
+                                    std::pair{goalAt(-inf, 1.0), "position[0] (elevator) is not finite (-inf)"}}) {
+    EXPECT_NE(refused(goal).find(field), std::string::npos) << refused(goal);
   }
 }
 
-TEST(ValidateGoal, RejectsOutOfRangeJointsWithTheLimits) {
+TEST(ValidateGoal, RejectsOutOfRangeJointsWithTheLimitsInTheJointsUnit) {
   const auto& robot = cyber::test::referenceModel();
-  auto high = validateGoal(goalAt(2.5, 1.0), robot);
-  ASSERT_FALSE(high);
-  EXPECT_EQ(high.error().status, PlanStatus::kGoalOutOfRange);
-  EXPECT_NE(high.error().reason.find("elevator_m = 2.5 m is outside [0, 2] m"), std::string::npos)
-      << high.error().reason;
-  auto negative = validateGoal(goalAt(0.5, -0.1), robot);
-  ASSERT_FALSE(negative);
-  EXPECT_EQ(negative.error().status, PlanStatus::kGoalOutOfRange);
-  EXPECT_NE(negative.error().reason.find("arm_rad"), std::string::npos);
+  const std::string high = refused(goalAt(2.5, 1.0), PlanStatus::kGoalOutOfRange);
+  EXPECT_NE(high.find("position[0] (elevator) = 2.5 m is outside [0, 2] m"), std::string::npos) << high;
+  const std::string negative = refused(goalAt(0.5, -0.1), PlanStatus::kGoalOutOfRange);
+  EXPECT_NE(negative.find("position[1] (arm) = -0.1 rad is outside"), std::string::npos) << negative;
   // The limits themselves are inside.
   EXPECT_TRUE(validateGoal(goalAt(robot.range(0).max, robot.range(1).min), robot));
+}
+
+TEST(ValidateGoal, RejectsAnUnknownPieceListingTheConfigsPieces) {
+  const std::string reason = refused(holding({"coral", "cone"}));
+  EXPECT_NE(reason.find("unknown game piece 'cone' in pieces[1] (this robot's: algae, coral)"), std::string::npos)
+      << reason;
+  // The old message's words are not names: "none" is not a piece either.
+  EXPECT_NE(refused(holding({"none"})).find("unknown game piece 'none'"), std::string::npos);
+}
+
+TEST(ValidateGoal, RejectsAPieceNamedTwice) {
+  const std::string reason = refused(holding({"coral", "algae", "coral"}));
+  EXPECT_NE(reason.find("game piece 'coral' is named twice"), std::string::npos) << reason;
+}
+
+TEST(ValidateGoal, RejectsTooManyPiecesOrACountThatDoesNotMatchTheNames) {
+  const std::string many = refused(holding({"coral", "algae", "a", "b", "c"}));
+  EXPECT_NE(many.find("num_pieces = 5 is outside 0..4"), std::string::npos) << many;
+  GoalRequest negative = holding({});
+  negative.num_pieces = -1;
+  EXPECT_NE(refused(negative).find("num_pieces = -1 is outside 0..4"), std::string::npos);
+  GoalRequest mismatch = holding({"coral"});
+  mismatch.num_pieces = 2;
+  EXPECT_NE(refused(mismatch).find("num_pieces = 2 but 1 piece names came"), std::string::npos);
+}
+
+TEST(ValidateGoal, RefusesPieceNamesThatAreNotPrintableWordsWithoutEchoingThem) {
+  const std::string name("cor\0al", 6);
+  const std::string reason = refused(holding({name}));
+  EXPECT_NE(reason.find("pieces[0] is not a name"), std::string::npos) << reason;
+  EXPECT_EQ(reason.find('\0'), std::string::npos);
 }
 
 TEST(ValidateGoal, ResolvesSceneNamesAndRejectsUnknownOnes) {
@@ -62,11 +116,37 @@ TEST(ValidateGoal, ResolvesSceneNamesAndRejectsUnknownOnes) {
   ASSERT_TRUE(open);
   EXPECT_EQ(open.value().scene, robot.sceneIndex("open"));
   EXPECT_GT(open.value().scene, 0);
-  auto unknown = validateGoal(goalAt(0.5, 1.0, "moon"), robot);
-  ASSERT_FALSE(unknown);
-  EXPECT_EQ(unknown.error().status, PlanStatus::kInvalidInput);
-  EXPECT_NE(unknown.error().reason.find("unknown scene 'moon' (known: reef, open)"), std::string::npos)
-      << unknown.error().reason;
+  const std::string unknown = refused(goalAt(0.5, 1.0, "moon"));
+  EXPECT_NE(unknown.find("unknown scene 'moon' (known: reef, open)"), std::string::npos) << unknown;
+}
+
+TEST(ValidateGoal, TakesASceneOffsetWithinTheScenesRange) {
+  const auto& robot = cyber::test::referenceModel();
+  GoalRequest goal = goalAt(0.5, 1.0, "reef");
+  goal.scene_offset_m = 0.3;
+  auto valid = validateGoal(goal, robot);
+  ASSERT_TRUE(valid) << valid.error().reason;
+  EXPECT_EQ(valid.value().scene_offset_m, 0.3);
+  goal.scene_offset_m = 0.0;
+  EXPECT_TRUE(validateGoal(goal, robot));
+}
+
+TEST(ValidateGoal, RejectsASceneOffsetOutsideTheScenesRangeOrNotFinite) {
+  GoalRequest far = goalAt(0.5, 1.0);  // the default scene, reef
+  far.scene_offset_m = 0.31;
+  const std::string reason = refused(far);
+  EXPECT_NE(reason.find("scene_offset_m = 0.31 m is outside scene reef's offset range [0, 0.3] m"), std::string::npos)
+      << reason;
+  GoalRequest behind = goalAt(0.5, 1.0, "reef");
+  behind.scene_offset_m = -0.05;
+  EXPECT_NE(refused(behind).find("outside scene reef's offset range"), std::string::npos);
+  // A scene that does not move takes only 0.
+  GoalRequest open = goalAt(0.5, 1.0, "open");
+  open.scene_offset_m = 0.1;
+  EXPECT_NE(refused(open).find("outside scene open's offset range [0, 0] m"), std::string::npos) << refused(open);
+  GoalRequest nan = goalAt(0.5, 1.0, "reef");
+  nan.scene_offset_m = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_NE(refused(nan).find("scene_offset_m is not finite (nan)"), std::string::npos) << refused(nan);
 }
 
 // The reproducer of tests/fuzz/regressions/lcm_decode: a scene name with a NUL byte was echoed in
@@ -76,12 +156,10 @@ TEST(ValidateGoal, RefusesSceneNamesThatAreNotShortPrintableWordsWithoutEchoingT
   for (const std::string& name : {std::string("reef\0oon", 8), std::string("reef\n"), std::string(65, 'a'),
                                   std::string("r\xc3\xa9"
                                               "ef")}) {
-    auto refused = validateGoal(goalAt(0.5, 1.0, name), robot);
-    ASSERT_FALSE(refused) << name;
-    EXPECT_EQ(refused.error().status, PlanStatus::kInvalidInput);
-    EXPECT_NE(refused.error().reason.find("scene_name is not a name"), std::string::npos) << refused.error().reason;
-    EXPECT_EQ(refused.error().reason.find(name), std::string::npos) << "echoed: " << refused.error().reason;
-    EXPECT_EQ(refused.error().reason.find('\0'), std::string::npos);
+    const std::string reason = refused(goalAt(0.5, 1.0, name));
+    EXPECT_NE(reason.find("scene_name is not a name"), std::string::npos) << reason;
+    EXPECT_EQ(reason.find(name), std::string::npos) << "echoed: " << reason;
+    EXPECT_EQ(reason.find('\0'), std::string::npos);
   }
   // 64 printable characters are a name (an unknown one).
   const auto long_name = validateGoal(goalAt(0.5, 1.0, std::string(64, 'a')), robot);

@@ -53,7 +53,7 @@ struct ClockedCanPort final : CanPort {
 
 class StreamToCan : public ::testing::Test {
  protected:
-  StreamToCan() : streamer(HoldModel(robot), settings()), writer(port, FrameWriterSettings{1, 2, 3, 20}) {
+  StreamToCan() : streamer(HoldModel(robot), settings()), writer(port, FrameWriterSettings{{1, 2}, 3, 20}) {
     port.clock = &now;
   }
   static StreamerSettings settings() {

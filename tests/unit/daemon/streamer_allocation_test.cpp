@@ -69,7 +69,7 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   settings.gate.require_robot_enabled = true;
   Streamer streamer(HoldModel(robot), settings);
   NullPort port;
-  FrameWriter writer(port, FrameWriterSettings{1, 2, 3, 20});
+  FrameWriter writer(port, FrameWriterSettings{{1, 2}, 3, 20});
   BusSource bus;
   RobotLink link;
   RobotInputs inputs;

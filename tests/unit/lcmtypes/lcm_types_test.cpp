@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "cyber/can/status_codec.hpp"
@@ -51,11 +52,12 @@ arm_goal_t randomGoal(Values& v) {
   arm_goal_t m{};
   m.utime = v.integer();
   m.request_id = v.integer();
-  m.elevator_m = v.real();
-  m.arm_rad = v.real();
-  m.held_coral = v.flag();
-  m.held_algae = v.flag();
+  m.position[0] = v.real();
+  m.position[1] = v.real();
+  m.num_pieces = v.small(arm_goal_t::MAX_PIECES);
+  for (int i = 0; i < m.num_pieces; ++i) m.pieces.push_back(v.flag() ? "coral" : "piece-" + std::to_string(i));
   m.scene_name = v.flag() ? "" : "reef-left";
+  m.scene_offset_m = v.real();
   return m;
 }
 
@@ -66,10 +68,11 @@ TEST(LcmTypes, GoalRoundTrip) {
     const auto out = decodeOk<arm_goal_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.request_id, in.request_id);
-    ASSERT_EQ(out.elevator_m, in.elevator_m);
-    ASSERT_EQ(out.arm_rad, in.arm_rad);
-    ASSERT_EQ(out.held_coral, in.held_coral);
-    ASSERT_EQ(out.held_algae, in.held_algae);
+    ASSERT_EQ(out.position[0], in.position[0]);
+    ASSERT_EQ(out.position[1], in.position[1]);
+    ASSERT_EQ(out.num_pieces, in.num_pieces);
+    ASSERT_EQ(out.pieces, in.pieces);
+    ASSERT_EQ(out.scene_offset_m, in.scene_offset_m);
     ASSERT_EQ(out.scene_name, in.scene_name);
   }
 }
@@ -79,20 +82,19 @@ TEST(LcmTypes, StateRoundTrip) {
   for (int i = 0; i < 200; ++i) {
     arm_state_t in{};
     in.utime = v.integer();
-    in.elevator_m = v.real();
-    in.elevator_mps = v.real();
-    in.arm_rad = v.real();
-    in.arm_radps = v.real();
-    in.held_coral = v.flag();
-    in.held_algae = v.flag();
+    for (int j = 0; j < 2; ++j) {
+      in.position[j] = v.real();
+      in.velocity[j] = v.real();
+    }
+    in.num_pieces = v.small(arm_state_t::MAX_PIECES);
+    for (int k = 0; k < in.num_pieces; ++k) in.pieces.push_back("piece-" + std::to_string(k));
     const auto out = decodeOk<arm_state_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
-    ASSERT_EQ(out.elevator_m, in.elevator_m);
-    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
-    ASSERT_EQ(out.arm_rad, in.arm_rad);
-    ASSERT_EQ(out.arm_radps, in.arm_radps);
-    ASSERT_EQ(out.held_coral, in.held_coral);
-    ASSERT_EQ(out.held_algae, in.held_algae);
+    for (int j = 0; j < 2; ++j) {
+      ASSERT_EQ(out.position[j], in.position[j]);
+      ASSERT_EQ(out.velocity[j], in.velocity[j]);
+    }
+    ASSERT_EQ(out.pieces, in.pieces);
   }
 }
 
@@ -132,10 +134,15 @@ arm_trajectory_t randomTrajectory(Values& v, int samples) {
   m.duration_s = v.real();
   m.dt_s = v.real();
   m.num_samples = samples;
-  for (auto* column :
-       {&m.t_s, &m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
-    column->resize(static_cast<std::size_t>(samples));
-    for (double& x : *column) x = v.real();
+  const auto n = static_cast<std::size_t>(samples);
+  m.t_s.resize(n);
+  for (double& x : m.t_s) x = v.real();
+  // [joint][sample]: lcm-gen encodes two rows of num_samples each.
+  for (auto* table : {&m.position, &m.velocity, &m.volts}) {
+    table->assign(2, std::vector<double>(n));
+    for (auto& row : *table) {
+      for (double& x : row) x = v.real();
+    }
   }
   return m;
 }
@@ -152,12 +159,9 @@ TEST(LcmTypes, TrajectoryRoundTrip) {
     ASSERT_EQ(out.dt_s, in.dt_s);
     ASSERT_EQ(out.num_samples, in.num_samples);
     ASSERT_EQ(out.t_s, in.t_s);
-    ASSERT_EQ(out.elevator_m, in.elevator_m);
-    ASSERT_EQ(out.arm_rad, in.arm_rad);
-    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
-    ASSERT_EQ(out.arm_radps, in.arm_radps);
-    ASSERT_EQ(out.elevator_volts, in.elevator_volts);
-    ASSERT_EQ(out.arm_volts, in.arm_volts);
+    ASSERT_EQ(out.position, in.position);
+    ASSERT_EQ(out.velocity, in.velocity);
+    ASSERT_EQ(out.volts, in.volts);
   }
 }
 
@@ -177,27 +181,23 @@ TEST(LcmTypes, SetpointRoundTrip) {
     in.mode = v.small(arm_setpoint_t::MODE_ROBOT_DISABLED);
     in.request_id = v.integer();
     in.trajectory_t_s = v.real();
-    in.elevator_m = v.real();
-    in.elevator_mps = v.real();
-    in.elevator_volts = v.real();
-    in.elevator_sequence = static_cast<std::uint8_t>(v.integer());
-    in.arm_rad = v.real();
-    in.arm_radps = v.real();
-    in.arm_volts = v.real();
-    in.arm_sequence = static_cast<std::uint8_t>(v.integer());
+    for (int j = 0; j < 2; ++j) {
+      in.position[j] = v.real();
+      in.velocity[j] = v.real();
+      in.volts[j] = v.real();
+      in.sequence[j] = static_cast<std::uint8_t>(v.integer());
+    }
     const auto out = decodeOk<arm_setpoint_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.mode, in.mode);
     ASSERT_EQ(out.request_id, in.request_id);
     ASSERT_EQ(out.trajectory_t_s, in.trajectory_t_s);
-    ASSERT_EQ(out.elevator_m, in.elevator_m);
-    ASSERT_EQ(out.elevator_mps, in.elevator_mps);
-    ASSERT_EQ(out.elevator_volts, in.elevator_volts);
-    ASSERT_EQ(out.elevator_sequence, in.elevator_sequence);
-    ASSERT_EQ(out.arm_rad, in.arm_rad);
-    ASSERT_EQ(out.arm_radps, in.arm_radps);
-    ASSERT_EQ(out.arm_volts, in.arm_volts);
-    ASSERT_EQ(out.arm_sequence, in.arm_sequence);
+    for (int j = 0; j < 2; ++j) {
+      ASSERT_EQ(out.position[j], in.position[j]);
+      ASSERT_EQ(out.velocity[j], in.velocity[j]);
+      ASSERT_EQ(out.volts[j], in.volts[j]);
+      ASSERT_EQ(out.sequence[j], in.sequence[j]);
+    }
   }
 }
 
@@ -207,6 +207,10 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     arm_daemon_status_t in{};
     in.utime = v.integer();
     in.mode = v.small(arm_daemon_status_t::MODE_ROBOT_DISABLED);
+    in.joint_names[0] = v.flag() ? "elevator" : "shoulder";
+    in.joint_names[1] = "arm";
+    in.joint_units[0] = v.flag() ? "m" : "rad";
+    in.joint_units[1] = "rad";
     in.robot_enabled = v.flag();
     in.motion_allowed = v.flag();
     in.active_request_id = v.integer();
@@ -229,6 +233,10 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     const auto out = decodeOk<arm_daemon_status_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.mode, in.mode);
+    ASSERT_EQ(out.joint_names[0], in.joint_names[0]);
+    ASSERT_EQ(out.joint_names[1], in.joint_names[1]);
+    ASSERT_EQ(out.joint_units[0], in.joint_units[0]);
+    ASSERT_EQ(out.joint_units[1], in.joint_units[1]);
     ASSERT_EQ(out.robot_enabled, in.robot_enabled);
     ASSERT_EQ(out.motion_allowed, in.motion_allowed);
     ASSERT_EQ(out.active_request_id, in.active_request_id);
@@ -327,42 +335,92 @@ std::int32_t getInt32(const std::vector<std::uint8_t>& bytes, std::size_t offset
   return static_cast<std::int32_t>(bits);
 }
 
-TEST(LcmTypes, SafeDecodeKnowsWhereTheLengthFieldsAre) {
-  namespace d = cyber::lcmtypes::detail;
+// Where the length and count fields sit in message version 2 (after the 8-byte fingerprint):
+// safeDecode walks to them; these tests corrupt them there.
+constexpr std::size_t kGoalPieceCountAt = 8 + 4 * 8;                   // utime, request_id, position[2]
+constexpr std::size_t kGoalSceneNameLengthAt = kGoalPieceCountAt + 1;  // with no pieces
+constexpr std::size_t kStatePieceCountAt = 8 + 5 * 8;                  // utime, position[2], velocity[2]
+constexpr std::size_t kPlanStatusReasonLengthAt = 8 + 2 * 8 + 1;
+constexpr std::size_t kDaemonStatusNameLengthAt = 8 + 8 + 1;  // utime, mode, then joint_names[0]
+constexpr std::size_t kTrajectoryCountAt = 8 + 5 * 8;
+
+TEST(LcmTypes, TheLengthFieldsAreWhereTheTestsCorruptThem) {
   Values v(13);
   arm_goal_t goal = randomGoal(v);
+  goal.num_pieces = 0;
+  goal.pieces.clear();
   goal.scene_name = "reef-left";
-  EXPECT_EQ(getInt32(encode(goal), d::kGoalSceneNameLengthAt), 10);  // with the NUL
+  EXPECT_EQ(encode(goal)[kGoalPieceCountAt], 0);
+  EXPECT_EQ(getInt32(encode(goal), kGoalSceneNameLengthAt), 10);  // with the NUL
+  arm_state_t state{};
+  state.num_pieces = 1;
+  state.pieces = {"coral"};
+  EXPECT_EQ(encode(state)[kStatePieceCountAt], 1);
+  EXPECT_EQ(getInt32(encode(state), kStatePieceCountAt + 1), 6);
   arm_plan_status_t status{};
   status.reason = "no path";
-  EXPECT_EQ(getInt32(encode(status), d::kPlanStatusReasonLengthAt), 8);
-  EXPECT_EQ(getInt32(encode(randomTrajectory(v, 37)), d::kTrajectoryCountAt), 37);
+  EXPECT_EQ(getInt32(encode(status), kPlanStatusReasonLengthAt), 8);
+  arm_daemon_status_t daemon{};
+  daemon.joint_names[0] = "elevator";
+  EXPECT_EQ(getInt32(encode(daemon), kDaemonStatusNameLengthAt), 9);
+  EXPECT_EQ(getInt32(encode(randomTrajectory(v, 37)), kTrajectoryCountAt), 37);
 }
 
 TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
-  namespace d = cyber::lcmtypes::detail;
   Values v(11);
   arm_goal_t goal = randomGoal(v);
+  goal.num_pieces = 0;
+  goal.pieces.clear();
   goal.scene_name = "reef";
   auto goal_bytes = encode(goal);
-  for (std::int32_t bad : {0, -1, -100, INT32_MIN, 6, 1000, INT32_MAX}) {
-    putInt32(goal_bytes, d::kGoalSceneNameLengthAt, bad);
+  for (std::int32_t bad : {0, -1, -100, INT32_MIN, 14, 1000, INT32_MAX}) {
+    putInt32(goal_bytes, kGoalSceneNameLengthAt, bad);
     arm_goal_t out{};
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0) << bad;
+  }
+  // A piece count the bytes do not hold, or a negative one (lcm-gen would size the array by it).
+  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{1}, std::uint8_t{127}}) {
+    auto bytes = encode(goal);
+    bytes[kGoalPieceCountAt] = bad;
+    arm_goal_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
+  }
+  arm_state_t state{};
+  state.num_pieces = 1;
+  state.pieces = {"coral"};
+  for (std::int32_t bad : {0, -1, INT32_MIN, 7, INT32_MAX}) {
+    auto bytes = encode(state);
+    putInt32(bytes, kStatePieceCountAt + 1, bad);
+    arm_state_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << bad;
+  }
+  {
+    auto bytes = encode(state);
+    bytes[kStatePieceCountAt] = 0xff;
+    arm_state_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0);
   }
 
   arm_plan_status_t status{};
   status.reason = "x";
   auto status_bytes = encode(status);
   for (std::int32_t bad : {0, INT32_MIN, 3, INT32_MAX}) {
-    putInt32(status_bytes, d::kPlanStatusReasonLengthAt, bad);
+    putInt32(status_bytes, kPlanStatusReasonLengthAt, bad);
     arm_plan_status_t out{};
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, status_bytes.data(), static_cast<int>(status_bytes.size())), 0) << bad;
   }
 
+  arm_daemon_status_t daemon{};
+  auto daemon_bytes = encode(daemon);
+  for (std::int32_t bad : {0, -1, INT32_MIN, INT32_MAX}) {
+    putInt32(daemon_bytes, kDaemonStatusNameLengthAt, bad);
+    arm_daemon_status_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, daemon_bytes.data(), static_cast<int>(daemon_bytes.size())), 0) << bad;
+  }
+
   auto trajectory_bytes = encode(randomTrajectory(v, 3));
   for (std::int32_t bad : {-1, INT32_MIN, 4, static_cast<int>(arm_trajectory_t::MAX_SAMPLES) + 1, INT32_MAX}) {
-    putInt32(trajectory_bytes, d::kTrajectoryCountAt, bad);
+    putInt32(trajectory_bytes, kTrajectoryCountAt, bad);
     arm_trajectory_t out{};
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, trajectory_bytes.data(), static_cast<int>(trajectory_bytes.size())), 0)
         << bad;
@@ -377,6 +435,20 @@ TEST(LcmTypes, SafeDecodeAcceptsEveryValidMessage) {
     ASSERT_EQ(cyber::lcmtypes::safeDecode(goal, goal_bytes.data(), static_cast<int>(goal_bytes.size())),
               static_cast<int>(goal_bytes.size()));
   }
+  arm_state_t held{};
+  held.num_pieces = 4;
+  held.pieces = {"a", "b", "c", "d"};
+  const auto state_bytes = encode(held);
+  arm_state_t state{};
+  EXPECT_EQ(cyber::lcmtypes::safeDecode(state, state_bytes.data(), static_cast<int>(state_bytes.size())),
+            static_cast<int>(state_bytes.size()));
+  arm_daemon_status_t named{};
+  named.joint_names[0] = "elevator";
+  named.joint_units[1] = "rad";
+  const auto named_bytes = encode(named);
+  arm_daemon_status_t daemon{};
+  EXPECT_EQ(cyber::lcmtypes::safeDecode(daemon, named_bytes.data(), static_cast<int>(named_bytes.size())),
+            static_cast<int>(named_bytes.size()));
   arm_plan_status_t empty_reason{};
   const auto status_bytes = encode(empty_reason);
   arm_plan_status_t status{};
@@ -416,8 +488,9 @@ TEST(LcmTypes, MemqPublishSubscribe) {
   ASSERT_EQ(catcher.goals.size(), 1u);
   EXPECT_EQ(catcher.channels[0], "ARM_GOAL");
   EXPECT_EQ(catcher.goals[0].request_id, sent.request_id);
-  EXPECT_EQ(catcher.goals[0].elevator_m, sent.elevator_m);
-  EXPECT_EQ(catcher.goals[0].arm_rad, sent.arm_rad);
+  EXPECT_EQ(catcher.goals[0].position[0], sent.position[0]);
+  EXPECT_EQ(catcher.goals[0].position[1], sent.position[1]);
+  EXPECT_EQ(catcher.goals[0].pieces, sent.pieces);
   EXPECT_EQ(catcher.goals[0].scene_name, sent.scene_name);
 }
 

@@ -26,9 +26,8 @@ TEST(SimOptions, DefaultsWithoutArguments) {
   EXPECT_FALSE(o.config_path);
   EXPECT_FALSE(o.can_interface);
   EXPECT_FALSE(o.lcm_url);
-  EXPECT_EQ(o.initial_q, planner::JointVector(0.20, 1.57));
-  EXPECT_FALSE(o.held_coral);
-  EXPECT_FALSE(o.held_algae);
+  EXPECT_FALSE(o.initial_q);  // the config decides
+  EXPECT_TRUE(o.pieces.empty());
   EXPECT_EQ(o.state_rate_hz, 100.0);
   EXPECT_TRUE(o.heartbeat);
   EXPECT_TRUE(o.faults.empty());
@@ -51,8 +50,8 @@ TEST(SimOptions, EveryOption) {
                              "memq://",
                              "--initial",
                              "1.2,-0.5",
-                             "--coral",
-                             "--algae",
+                             "--pieces",
+                             "coral,algae",
                              "--state-rate",
                              "50",
                              "--no-heartbeat",
@@ -81,8 +80,7 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.can_interface, "vcan0");
   EXPECT_EQ(o.lcm_url, "memq://");
   EXPECT_EQ(o.initial_q, planner::JointVector(1.2, -0.5));
-  EXPECT_TRUE(o.held_coral);
-  EXPECT_TRUE(o.held_algae);
+  EXPECT_EQ(o.pieces, (std::vector<std::string>{"coral", "algae"}));
   EXPECT_EQ(o.state_rate_hz, 50.0);
   EXPECT_FALSE(o.heartbeat);
   ASSERT_EQ(o.faults.size(), 2u);
@@ -136,7 +134,7 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--realtime", "1.5"},
       {"--initial="},
       {"--initial=1.0,2.0x"},
-      {"--coral=1"},
+      {"--pieces", "coral,"},
   };
   for (const auto& args : bad) {
     const std::string message = error(args);

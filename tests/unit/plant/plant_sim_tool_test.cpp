@@ -28,7 +28,7 @@ TEST(PlantSimTool, HelpExitsZero) {
   const ToolRun run = runTool("--help");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("usage: cyber-plant-sim"), std::string::npos);
-  EXPECT_NE(run.out.find("--initial T,THETA"), std::string::npos);
+  EXPECT_NE(run.out.find("--initial Q0,Q1"), std::string::npos);
 }
 
 TEST(PlantSimTool, BadUsageExitsTwoWithTheUsage) {

@@ -28,6 +28,13 @@
 namespace cyber::wpilog {
 namespace {
 
+// cyber-wpilog's held pieces: the names joined by ',' or "none".
+std::string pieceList(const std::vector<std::string>& pieces) {
+  std::string out;
+  for (const auto& piece : pieces) out += (out.empty() ? "" : ",") + piece;
+  return out.empty() ? "none" : out;
+}
+
 constexpr int64_t kSyntheticT0 = 1'700'000'000'000'000;  // Unix µs of the first event
 
 struct Session {
@@ -115,7 +122,12 @@ class LcmToWpilog : public ::testing::Test {
       const int64_t utime = t - 300;  // published 300 µs before it was logged
       switch (k % 6) {
         case 0: {
-          cyberplanner::arm_state_t m{utime, u(rng), u(rng), u(rng), u(rng), coin(), coin()};
+          cyberplanner::arm_state_t m{};
+          m.utime = utime;
+          m.position[0] = u(rng), m.position[1] = u(rng), m.velocity[0] = u(rng), m.velocity[1] = u(rng);
+          if (coin()) m.pieces.push_back("coral");
+          if (coin()) m.pieces.push_back("algae");
+          m.num_pieces = static_cast<int8_t>(m.pieces.size());
           event(log, "ARM_STATE", t, m);
           break;
         }
@@ -125,15 +137,22 @@ class LcmToWpilog : public ::testing::Test {
           m.mode = static_cast<int8_t>(rng() % 5);
           m.request_id = static_cast<int64_t>(rng() % 100) - 1;
           m.trajectory_t_s = u(rng);
-          m.elevator_m = u(rng), m.elevator_mps = u(rng), m.elevator_volts = u(rng);
-          m.elevator_sequence = static_cast<uint8_t>(rng());
-          m.arm_rad = u(rng), m.arm_radps = u(rng), m.arm_volts = u(rng);
-          m.arm_sequence = static_cast<uint8_t>(rng());
+          for (int j = 0; j < 2; ++j) {
+            m.position[j] = u(rng), m.velocity[j] = u(rng), m.volts[j] = u(rng);
+            m.sequence[j] = static_cast<uint8_t>(rng());
+          }
           event(log, "ARM_SETPOINT", t, m);
           break;
         }
         case 2: {
-          cyberplanner::arm_goal_t m{utime, k, u(rng), u(rng), coin(), coin(), coin() ? "open" : ""};
+          cyberplanner::arm_goal_t m{};
+          m.utime = utime;
+          m.request_id = k;
+          m.position[0] = u(rng), m.position[1] = u(rng);
+          if (coin()) m.pieces.push_back("algae");
+          m.num_pieces = static_cast<int8_t>(m.pieces.size());
+          m.scene_name = coin() ? "open" : "";
+          m.scene_offset_m = coin() ? 0.125 : 0.0;
           event(log, "ARM_GOAL", t, m);
           break;
         }
@@ -155,11 +174,11 @@ class LcmToWpilog : public ::testing::Test {
           m.start_utime = utime + 5000;
           m.dt_s = 0.01;
           m.num_samples = 5 + static_cast<int>(rng() % 20);
+          for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);
           for (int i = 0; i < m.num_samples; ++i) {
             m.t_s.push_back(i * m.dt_s);
-            for (auto* v :
-                 {&m.elevator_m, &m.arm_rad, &m.elevator_mps, &m.arm_radps, &m.elevator_volts, &m.arm_volts}) {
-              v->push_back(u(rng));
+            for (auto* table : {&m.position, &m.velocity, &m.volts}) {
+              for (auto& row : *table) row.push_back(u(rng));
             }
           }
           m.duration_s = m.t_s.back();
@@ -260,29 +279,29 @@ TEST_F(LcmToWpilog, CountsEveryEvent) {
 }
 
 TEST_F(LcmToWpilog, MeasuredState) {
-  expectSeries<State, double>(s_.states, "Elevator/MeasuredMeters", [](const State& m) { return m.elevator_m; });
+  // Entries are named by the config's joints (capitalised) and units: the reference robot's
+  // joint 0 is the prismatic "elevator", joint 1 the revolute "arm".
+  expectSeries<State, double>(s_.states, "Elevator/MeasuredMeters", [](const State& m) { return m.position[0]; });
   expectSeries<State, double>(s_.states, "Elevator/MeasuredMetersPerSecond",
-                              [](const State& m) { return m.elevator_mps; });
-  expectSeries<State, double>(s_.states, "Arm/MeasuredRadians", [](const State& m) { return m.arm_rad; });
-  expectSeries<State, double>(s_.states, "Arm/MeasuredRadiansPerSecond", [](const State& m) { return m.arm_radps; });
-  expectSeries<State, bool>(s_.states, "State/HeldCoral", [](const State& m) { return m.held_coral; });
-  expectSeries<State, bool>(s_.states, "State/HeldAlgae", [](const State& m) { return m.held_algae; });
+                              [](const State& m) { return m.velocity[0]; });
+  expectSeries<State, double>(s_.states, "Arm/MeasuredRadians", [](const State& m) { return m.position[1]; });
+  expectSeries<State, double>(s_.states, "Arm/MeasuredRadiansPerSecond", [](const State& m) { return m.velocity[1]; });
+  expectSeries<State, std::string>(s_.states, "State/Pieces", [](const State& m) { return pieceList(m.pieces); });
 }
 
 TEST_F(LcmToWpilog, Setpoints) {
   expectSeries<Setpoint, double>(s_.setpoints, "Elevator/SetpointMeters",
-                                 [](const Setpoint& m) { return m.elevator_m; });
+                                 [](const Setpoint& m) { return m.position[0]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Elevator/VelocityMetersPerSecond",
-                                 [](const Setpoint& m) { return m.elevator_mps; });
+                                 [](const Setpoint& m) { return m.velocity[0]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Elevator/FeedforwardVolts",
-                                 [](const Setpoint& m) { return m.elevator_volts; });
-  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence",
-                                  [](const Setpoint& m) { return m.elevator_sequence; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Arm/SetpointRadians", [](const Setpoint& m) { return m.arm_rad; });
+                                 [](const Setpoint& m) { return m.volts[0]; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Elevator/Sequence", [](const Setpoint& m) { return m.sequence[0]; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/SetpointRadians", [](const Setpoint& m) { return m.position[1]; });
   expectSeries<Setpoint, double>(s_.setpoints, "Arm/VelocityRadiansPerSecond",
-                                 [](const Setpoint& m) { return m.arm_radps; });
-  expectSeries<Setpoint, double>(s_.setpoints, "Arm/FeedforwardVolts", [](const Setpoint& m) { return m.arm_volts; });
-  expectSeries<Setpoint, int64_t>(s_.setpoints, "Arm/Sequence", [](const Setpoint& m) { return m.arm_sequence; });
+                                 [](const Setpoint& m) { return m.velocity[1]; });
+  expectSeries<Setpoint, double>(s_.setpoints, "Arm/FeedforwardVolts", [](const Setpoint& m) { return m.volts[1]; });
+  expectSeries<Setpoint, int64_t>(s_.setpoints, "Arm/Sequence", [](const Setpoint& m) { return m.sequence[1]; });
   expectSeries<Setpoint, std::string>(s_.setpoints, "Setpoint/Mode", [](const Setpoint& m) { return kModes[m.mode]; });
   expectSeries<Setpoint, int64_t>(s_.setpoints, "Setpoint/RequestId", [](const Setpoint& m) { return m.request_id; });
   expectSeries<Setpoint, double>(s_.setpoints, "Setpoint/TrajectoryTimeSeconds",
@@ -291,10 +310,10 @@ TEST_F(LcmToWpilog, Setpoints) {
 
 TEST_F(LcmToWpilog, GoalsAndPlanStatus) {
   expectSeries<Goal, int64_t>(s_.goals, "Goal/RequestId", [](const Goal& m) { return m.request_id; });
-  expectSeries<Goal, double>(s_.goals, "Goal/ElevatorMeters", [](const Goal& m) { return m.elevator_m; });
-  expectSeries<Goal, double>(s_.goals, "Goal/ArmRadians", [](const Goal& m) { return m.arm_rad; });
-  expectSeries<Goal, bool>(s_.goals, "Goal/HeldCoral", [](const Goal& m) { return m.held_coral; });
-  expectSeries<Goal, bool>(s_.goals, "Goal/HeldAlgae", [](const Goal& m) { return m.held_algae; });
+  expectSeries<Goal, double>(s_.goals, "Goal/ElevatorMeters", [](const Goal& m) { return m.position[0]; });
+  expectSeries<Goal, double>(s_.goals, "Goal/ArmRadians", [](const Goal& m) { return m.position[1]; });
+  expectSeries<Goal, std::string>(s_.goals, "Goal/Pieces", [](const Goal& m) { return pieceList(m.pieces); });
+  expectSeries<Goal, double>(s_.goals, "Goal/SceneOffsetMeters", [](const Goal& m) { return m.scene_offset_m; });
   expectSeries<Goal, std::string>(s_.goals, "Goal/SceneName", [](const Goal& m) { return m.scene_name; });
   expectSeries<PlanStatus, int64_t>(s_.statuses, "PlanStatus/RequestId",
                                     [](const PlanStatus& m) { return m.request_id; });
@@ -339,26 +358,34 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
   expectSeries<T, int64_t>(s_.trajectories, "Trajectory/RequestId", [](const T& m) { return m.request_id; });
   expectSeries<T, double>(s_.trajectories, "Trajectory/DurationSeconds", [](const T& m) { return m.duration_s; });
   expectSeries<T, double>(s_.trajectories, "Trajectory/StepSeconds", [](const T& m) { return m.dt_s; });
-  const std::pair<const char*, std::vector<double> T::*> arrays[] = {{"TimesSeconds", &T::t_s},
-                                                                     {"ElevatorMeters", &T::elevator_m},
-                                                                     {"ElevatorMetersPerSecond", &T::elevator_mps},
-                                                                     {"ElevatorVolts", &T::elevator_volts},
-                                                                     {"ArmRadians", &T::arm_rad},
-                                                                     {"ArmRadiansPerSecond", &T::arm_radps},
-                                                                     {"ArmVolts", &T::arm_volts}};
-  for (const auto& [name, field] : arrays) {
+  using Table = std::vector<std::vector<double>> T::*;
+  struct Column {
+    const char* name;
+    Table table;  // nullptr: t_s
+    size_t joint;
+  };
+  const Column arrays[] = {{"TimesSeconds", nullptr, 0},
+                           {"ElevatorMeters", &T::position, 0},
+                           {"ElevatorMetersPerSecond", &T::velocity, 0},
+                           {"ElevatorVolts", &T::volts, 0},
+                           {"ArmRadians", &T::position, 1},
+                           {"ArmRadiansPerSecond", &T::velocity, 1},
+                           {"ArmVolts", &T::volts, 1}};
+  for (const auto& [name, table, joint] : arrays) {
     const auto rs = records(std::string("Trajectory/") + name, "double[]");
     ASSERT_EQ(rs.size(), s_.trajectories.size());
-    for (size_t i = 0; i < rs.size(); ++i)
-      EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), s_.trajectories[i].second.*field) << name;
+    for (size_t i = 0; i < rs.size(); ++i) {
+      const T& m = s_.trajectories[i].second;
+      EXPECT_EQ(asDoubleArray(log_.payload(*rs[i])), table ? (m.*table)[joint] : m.t_s) << name;
+    }
   }
   // Sample k is commanded at start_utime + t_s[k], which is (start_utime - utime) after the
   // message's own time (5 ms in the synthetic log), until the next trajectory starts.
-  const std::pair<const char*, std::vector<double> T::*> planned[] = {
-      {"Elevator/PlannedMeters", &T::elevator_m},     {"Elevator/PlannedMetersPerSecond", &T::elevator_mps},
-      {"Elevator/PlannedVolts", &T::elevator_volts},  {"Arm/PlannedRadians", &T::arm_rad},
-      {"Arm/PlannedRadiansPerSecond", &T::arm_radps}, {"Arm/PlannedVolts", &T::arm_volts}};
-  for (const auto& [name, field] : planned) {
+  const Column planned[] = {
+      {"Elevator/PlannedMeters", &T::position, 0},      {"Elevator/PlannedMetersPerSecond", &T::velocity, 0},
+      {"Elevator/PlannedVolts", &T::volts, 0},          {"Arm/PlannedRadians", &T::position, 1},
+      {"Arm/PlannedRadiansPerSecond", &T::velocity, 1}, {"Arm/PlannedVolts", &T::volts, 1}};
+  for (const auto& [name, table, joint] : planned) {
     const auto rs = records(name, "double");
     size_t r = 0, replaced = 0;
     auto startOf = [&](size_t i) {
@@ -374,7 +401,7 @@ TEST_F(LcmToWpilog, TrajectoriesAsArraysAndAsPlannedSeriesOnTheLogClock) {
         if (at < 0 || at >= next) continue;  // before the log's first event, or replaced
         ASSERT_LT(r, rs.size()) << name;
         EXPECT_EQ(rs[r]->timestamp_us, static_cast<uint64_t>(at)) << name;
-        EXPECT_EQ(asDouble(log_.payload(*rs[r])), (m.*field)[k]) << name;
+        EXPECT_EQ(asDouble(log_.payload(*rs[r])), (m.*table)[joint][k]) << name;
         ++r;
       }
     }
@@ -405,7 +432,7 @@ TEST_F(LcmToWpilog, MechanismFollowsTheMeasuredState) {
   for (size_t i = 0; i < poses.size(); ++i) {
     const State& m = s_.states[i].second;
     const planner::LinkFrame pose =
-        planner::linkFrames(config_.robot.joints, planner::JointVector(m.elevator_m, m.arm_rad))[1];
+        planner::linkFrames(config_.robot.joints, planner::JointVector(m.position[0], m.position[1]))[1];
     std::vector<Pose3d> p;
     ASSERT_TRUE(unpackPose3dArray(log_.payload(*poses[i]), &p));
     ASSERT_EQ(p.size(), 2u);
@@ -419,8 +446,9 @@ TEST_F(LcmToWpilog, MechanismFollowsTheMeasuredState) {
     const Pose3d& a = p[1];
     EXPECT_NEAR(1 - 2 * (a.qy * a.qy + a.qz * a.qz), pose.cos_angle, 1e-12);
     EXPECT_NEAR(2 * (a.qx * a.qz - a.qw * a.qy), pose.sin_angle, 1e-12);
-    EXPECT_NEAR((*asDouble(log_.payload(*rail[i])) + *asDouble(log_.payload(*arm[i]))) * M_PI / 180, m.arm_rad, 1e-12);
-    EXPECT_EQ(asDouble(log_.payload(*length[i])), m.elevator_m);
+    EXPECT_NEAR((*asDouble(log_.payload(*rail[i])) + *asDouble(log_.payload(*arm[i]))) * M_PI / 180, m.position[1],
+                1e-12);
+    EXPECT_EQ(asDouble(log_.payload(*length[i])), m.position[0]);
   }
   EXPECT_EQ(records("Mechanism3d/Setpoint", "struct:Pose3d[]").size(), s_.setpoints.size());
 }

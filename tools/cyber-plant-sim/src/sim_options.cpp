@@ -14,8 +14,9 @@ constexpr std::string_view kUsage =
     "  --config FILE            robot and daemon config (default: the embedded reference robot)\n"
     "  --can IFACE              CAN interface (default: the config's [daemon] can_interface)\n"
     "  --lcm-url URL            LCM URL (default: the config's [daemon] lcm_url)\n"
-    "  --initial T,THETA        initial elevator m and arm rad (default 0.2,1.57)\n"
-    "  --coral, --algae         game pieces reported as held in ARM_STATE\n"
+    "  --initial Q0,Q1          initial joint 0 and joint 1 (m or rad; default: the config's\n"
+    "                           first named pose, else the middle of both ranges)\n"
+    "  --pieces NAME[,NAME...]  game pieces reported as held in ARM_STATE (the config's names)\n"
     "  --state-rate HZ          ARM_STATE rate, 1..1000 (default 100)\n"
     "  --no-heartbeat           send no roboRIO heartbeat (id 0x01011840, 20 ms)\n"
     "  --fault KIND@WHEN        inject a fault; WHEN is SECONDS after start, or motionN+SECONDS\n"
@@ -73,8 +74,23 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
   SimArguments result;
   SimOptions& o = result.options;
   cli::ArgumentParser parser;
-  parser.flag("--coral", [&] { o.held_coral = true; });
-  parser.flag("--algae", [&] { o.held_algae = true; });
+  parser.option("--pieces", [&](const std::string& v) -> std::string {
+    o.pieces.clear();
+    if (v.empty() || v == "none") return "";
+    size_t from = 0;
+    while (true) {
+      const size_t end = v.find(',', from);
+      const std::string name = v.substr(from, end == std::string::npos ? std::string::npos : end - from);
+      if (name.empty()) return "must be NAME[,NAME...], got '" + v + "'";
+      o.pieces.push_back(name);
+      if (end == std::string::npos) break;
+      from = end + 1;
+    }
+    if (o.pieces.size() > static_cast<size_t>(planner::HeldPieces::kMaxPieces)) {
+      return "at most " + std::to_string(planner::HeldPieces::kMaxPieces) + " pieces, got '" + v + "'";
+    }
+    return "";
+  });
   parser.flag("--no-heartbeat", [&] { o.heartbeat = false; });
   parser.option("--config", cli::store(&o.config_path));
   parser.option("--can", cli::store(&o.can_interface));
@@ -83,7 +99,7 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
   parser.option("--control", cli::store(&o.control_path));
   parser.option("--initial", [&](const std::string& v) -> std::string {
     const auto q = cli::parseNumberPair(v);
-    if (!q) return "must be T,THETA (elevator m, arm rad), got '" + v + "'";
+    if (!q) return "must be Q0,Q1 (joint 0, joint 1: m or rad), got '" + v + "'";
     o.initial_q = planner::JointVector((*q)[0], (*q)[1]);
     return "";
   });

@@ -66,46 +66,57 @@ class Entries {
   bool pose_schemas_ = false;
 };
 
+// Entry names of a joint: its config name capitalised ("elevator" -> "Elevator") and its unit.
 struct JointNames {
-  const char* joint;     // "Elevator" / "Arm"
-  const char* position;  // "Meters" / "Radians"
-  const char* velocity;  // "MetersPerSecond" / "RadiansPerSecond"
+  std::string joint;     // "Elevator", "Shoulder", ...
+  std::string position;  // "Meters" (prismatic) / "Radians" (revolute)
+  std::string velocity;  // "MetersPerSecond" / "RadiansPerSecond"
 };
-constexpr JointNames kElevator{"Elevator", "Meters", "MetersPerSecond"};
-constexpr JointNames kArm{"Arm", "Radians", "RadiansPerSecond"};
 
-std::string key(const JointNames& j, const std::string& what) { return std::string(j.joint) + "/" + what; }
+JointNames jointNames(const planner::ChainJoint& joint) {
+  std::string name = joint.name;
+  if (!name.empty() && name[0] >= 'a' && name[0] <= 'z') name[0] = static_cast<char>(name[0] - 'a' + 'A');
+  const bool slides = joint.type == planner::JointType::kPrismatic;
+  return JointNames{name, slides ? "Meters" : "Radians", slides ? "MetersPerSecond" : "RadiansPerSecond"};
+}
+
+std::string key(const JointNames& j, const std::string& what) { return j.joint + "/" + what; }
+
+// Held pieces as one string: the names joined by ',' ("none" for none).
+std::string pieceList(const std::vector<std::string>& pieces) {
+  std::string out;
+  for (const auto& piece : pieces) out += (out.empty() ? "" : ",") + piece;
+  return out.empty() ? "none" : out;
+}
 
 class Converter {
  public:
-  Converter(Entries& entries, const MechanismGeometry& geometry) : e_(entries), g_(geometry) {}
+  Converter(Entries& entries, const MechanismGeometry& geometry)
+      : e_(entries), g_(geometry), j_{jointNames(geometry.chain[0]), jointNames(geometry.chain[1])} {}
 
   void state(uint64_t t, const cyberplanner::arm_state_t& m) {
-    e_.putDouble(key(kElevator, std::string("Measured") + kElevator.position), t, m.elevator_m);
-    e_.putDouble(key(kElevator, std::string("Measured") + kElevator.velocity), t, m.elevator_mps);
-    e_.putDouble(key(kArm, std::string("Measured") + kArm.position), t, m.arm_rad);
-    e_.putDouble(key(kArm, std::string("Measured") + kArm.velocity), t, m.arm_radps);
-    e_.putBoolean("State/HeldCoral", t, m.held_coral);
-    e_.putBoolean("State/HeldAlgae", t, m.held_algae);
-    mechanism("Measured", t, m.elevator_m, m.arm_rad);
+    for (size_t j = 0; j < j_.size(); ++j) {
+      e_.putDouble(key(j_[j], "Measured" + j_[j].position), t, m.position[j]);
+      e_.putDouble(key(j_[j], "Measured" + j_[j].velocity), t, m.velocity[j]);
+    }
+    e_.putString("State/Pieces", t, pieceList(m.pieces));
+    mechanism("Measured", t, m.position[0], m.position[1]);
   }
 
   void setpoint(uint64_t t, const cyberplanner::arm_setpoint_t& m) {
-    joint(kElevator, t, m.elevator_m, m.elevator_mps, m.elevator_volts, m.elevator_sequence);
-    joint(kArm, t, m.arm_rad, m.arm_radps, m.arm_volts, m.arm_sequence);
+    for (size_t j = 0; j < j_.size(); ++j) joint(j_[j], t, m.position[j], m.velocity[j], m.volts[j], m.sequence[j]);
     e_.putString("Setpoint/Mode", t, lcmtypes::modeName(m.mode));
     e_.putInt64("Setpoint/RequestId", t, m.request_id);
     e_.putDouble("Setpoint/TrajectoryTimeSeconds", t, m.trajectory_t_s);
-    mechanism("Setpoint", t, m.elevator_m, m.arm_rad);
+    mechanism("Setpoint", t, m.position[0], m.position[1]);
   }
 
   void goal(uint64_t t, const cyberplanner::arm_goal_t& m) {
     e_.putInt64("Goal/RequestId", t, m.request_id);
-    e_.putDouble("Goal/ElevatorMeters", t, m.elevator_m);
-    e_.putDouble("Goal/ArmRadians", t, m.arm_rad);
-    e_.putBoolean("Goal/HeldCoral", t, m.held_coral);
-    e_.putBoolean("Goal/HeldAlgae", t, m.held_algae);
+    for (size_t j = 0; j < j_.size(); ++j) e_.putDouble("Goal/" + j_[j].joint + j_[j].position, t, m.position[j]);
+    e_.putString("Goal/Pieces", t, pieceList(m.pieces));
     e_.putString("Goal/SceneName", t, m.scene_name);
+    e_.putDouble("Goal/SceneOffsetMeters", t, m.scene_offset_m);
   }
 
   void planStatus(uint64_t t, const cyberplanner::arm_plan_status_t& m) {
@@ -129,24 +140,27 @@ class Converter {
     e_.putDouble("Trajectory/StepSeconds", t, m.dt_s);
     e_.putDouble("Trajectory/StartSeconds", t, static_cast<double>(start_us) * 1e-6);
     e_.putDoubles("Trajectory/TimesSeconds", t, m.t_s);
-    e_.putDoubles("Trajectory/ElevatorMeters", t, m.elevator_m);
-    e_.putDoubles("Trajectory/ElevatorMetersPerSecond", t, m.elevator_mps);
-    e_.putDoubles("Trajectory/ElevatorVolts", t, m.elevator_volts);
-    e_.putDoubles("Trajectory/ArmRadians", t, m.arm_rad);
-    e_.putDoubles("Trajectory/ArmRadiansPerSecond", t, m.arm_radps);
-    e_.putDoubles("Trajectory/ArmVolts", t, m.arm_volts);
+    // position, velocity and volts are [joint][sample]; a row a decoder did not fill is empty.
+    const auto row = [](const std::vector<std::vector<double>>& table, size_t j) {
+      return j < table.size() ? table[j] : std::vector<double>{};
+    };
+    size_t n = m.t_s.size();
+    for (size_t j = 0; j < j_.size(); ++j) {
+      const std::string& name = j_[j].joint;
+      e_.putDoubles("Trajectory/" + name + j_[j].position, t, row(m.position, j));
+      e_.putDoubles("Trajectory/" + name + j_[j].velocity, t, row(m.velocity, j));
+      e_.putDoubles("Trajectory/" + name + "Volts", t, row(m.volts, j));
+      n = std::min({n, row(m.position, j).size(), row(m.velocity, j).size(), row(m.volts, j).size()});
+    }
     // A new trajectory replaces the rest of the one before from its start on (docs/lcm.md: a goal
     // during motion is spliced in), so each planned entry stays in time order.
     while (!planned_.empty() && planned_.back().t_us >= start_us) planned_.pop_back();
-    const size_t n = std::min({m.t_s.size(), m.elevator_m.size(), m.arm_rad.size(), m.elevator_mps.size(),
-                               m.arm_radps.size(), m.elevator_volts.size(), m.arm_volts.size()});
     for (size_t k = 0; k < n; ++k) {
       const int64_t at = start_us + std::llround(m.t_s[k] * 1e6);
       if (at < 0) continue;
-      planned_.push_back(PlannedSample{at,
-                                       m.request_id,
-                                       {m.elevator_m[k], m.elevator_mps[k], m.elevator_volts[k]},
-                                       {m.arm_rad[k], m.arm_radps[k], m.arm_volts[k]}});
+      PlannedSample sample{at, m.request_id, {}};
+      for (size_t j = 0; j < j_.size(); ++j) sample.joints[j] = {m.position[j][k], m.velocity[j][k], m.volts[j][k]};
+      planned_.push_back(sample);
     }
   }
 
@@ -155,8 +169,7 @@ class Converter {
     for (const PlannedSample& p : planned_) {
       const auto ts = static_cast<uint64_t>(p.t_us);
       e_.setChannel(channel_of_trajectories_);
-      planned(kElevator, ts, p.elevator[0], p.elevator[1], p.elevator[2]);
-      planned(kArm, ts, p.arm[0], p.arm[1], p.arm[2]);
+      for (size_t j = 0; j < j_.size(); ++j) planned(j_[j], ts, p.joints[j][0], p.joints[j][1], p.joints[j][2]);
       e_.putInt64("Planned/RequestId", ts, p.request_id);
     }
     planned_.clear();
@@ -185,15 +198,15 @@ class Converter {
 
  private:
   void joint(const JointNames& j, uint64_t t, double q, double v, double volts, uint8_t sequence) {
-    e_.putDouble(key(j, std::string("Setpoint") + j.position), t, q);
-    e_.putDouble(key(j, std::string("Velocity") + j.velocity), t, v);
+    e_.putDouble(key(j, "Setpoint" + j.position), t, q);
+    e_.putDouble(key(j, "Velocity" + j.velocity), t, v);
     e_.putDouble(key(j, "FeedforwardVolts"), t, volts);
     e_.putInt64(key(j, "Sequence"), t, sequence);
   }
 
   void planned(const JointNames& j, uint64_t t, double q, double v, double volts) {
-    e_.putDouble(key(j, std::string("Planned") + j.position), t, q);
-    e_.putDouble(key(j, std::string("Planned") + j.velocity), t, v);
+    e_.putDouble(key(j, "Planned" + j.position), t, q);
+    e_.putDouble(key(j, "Planned" + j.velocity), t, v);
     e_.putDouble(key(j, "PlannedVolts"), t, volts);
   }
 
@@ -246,7 +259,7 @@ class Converter {
     e_.putPoses("Mechanism3d/" + which, t, poses);
   }
 
-  // The Mechanism2d canvas: the reef side view from 1.5 m behind the trough to 1.5 m past it.
+  // The Mechanism2d canvas: a side view from 1.5 m behind the robot's origin to 1.5 m past it.
   static constexpr double kMechanismOriginXM = 1.5;
   static constexpr double kMechanismWidthM = 3.0;
   static constexpr double kMechanismHeightM = 2.6;
@@ -254,11 +267,12 @@ class Converter {
   struct PlannedSample {
     int64_t t_us;
     int64_t request_id;
-    std::array<double, 3> elevator, arm;  // position, velocity, feedforward volts
+    std::array<std::array<double, 3>, planner::kJointCount> joints;  // position, velocity, feedforward volts
   };
 
   Entries& e_;
   const MechanismGeometry& g_;
+  std::array<JointNames, planner::kJointCount> j_;
   std::vector<PlannedSample> planned_;
   std::string channel_of_trajectories_;
 };

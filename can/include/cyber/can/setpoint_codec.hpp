@@ -17,7 +17,7 @@
 namespace cyber::can {
 
 inline constexpr std::uint8_t kSetpointLength = 8;
-inline constexpr double kPositionCountsPerUnit = 1e5;  // counts per m (elevator) or rad (arm)
+inline constexpr double kPositionCountsPerUnit = 1e5;  // counts per m (prismatic joint) or rad (revolute)
 inline constexpr double kVelocityCountsPerUnit = 1e3;  // counts per m/s or rad/s
 inline constexpr double kVoltageCountsPerVolt = 1e3;   // millivolts
 inline constexpr std::int32_t kPositionMaxCount = (1 << 23) - 1;
@@ -31,7 +31,7 @@ inline constexpr double kMaxPositionMagnitude = kPositionMaxCount / kPositionCou
 inline constexpr double kMaxVelocityMagnitude = kInt16MaxCount / kVelocityCountsPerUnit;
 inline constexpr double kMaxVoltageMagnitude = kInt16MaxCount / kVoltageCountsPerVolt;
 
-// Position and velocity are in the joint's unit: metres for the elevator, radians for the arm.
+// Position and velocity are in the joint's unit: metres (prismatic) or radians (revolute).
 struct Setpoint {
   double position = 0.0;
   double velocity = 0.0;

@@ -1,6 +1,7 @@
 #pragma once
 // The [daemon] section: how the daemon talks to LCM and CAN and how fast it streams.
 
+#include <array>
 #include <string>
 
 namespace cyber::config {
@@ -10,10 +11,10 @@ namespace cyber::config {
 // programs default to it rather than to LCM's own default (port 7667).
 inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:5810?ttl=0";
 
+// [daemon.devices]: one key per joint, named by the joint's [[joints]] name, and `status`.
 struct DeviceNumbers {
-  int elevator = 1;  // setpoint frames of the elevator controller
-  int arm = 2;       // setpoint frames of the arm controller
-  int status = 3;    // the daemon's own status frame
+  std::array<int, 2> joints{1, 2};  // setpoint frames of joint 0 and joint 1 (config order)
+  int status = 3;                   // the daemon's own status frame
 };
 
 struct ChannelNames {

@@ -7,58 +7,106 @@
 // count of 2^31-1 allocates gigabytes before the read fails. safeDecode() checks those fields
 // first and returns the ordinary "< 0" failure instead.
 //
-// The checks know where the length fields sit; tests/unit/lcmtypes pins every offset below
-// against freshly encoded messages, so a change to a .lcm file that moves them fails a test.
+// Every type with a string or an array is walked field by field (message version 2, docs/lcm.md).
 
 #include <cstdint>
 #include <exception>
 
+#include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_state_t.hpp"
 #include "cyberplanner/arm_trajectory_t.hpp"
 
 namespace cyber::lcmtypes {
 
 namespace detail {
 
-// Byte offsets of the length fields (after the 8-byte fingerprint; LCM packs without padding).
-// arm_goal_t: utime, request_id, elevator_m, arm_rad (4 x 8), held_coral, held_algae (2 x 1).
-inline constexpr int kGoalSceneNameLengthAt = 8 + 4 * 8 + 2;
-// arm_plan_status_t: utime, request_id (2 x 8), status (1).
-inline constexpr int kPlanStatusReasonLengthAt = 8 + 2 * 8 + 1;
-// arm_trajectory_t: utime, request_id, start_utime (3 x 8), duration_s, dt_s (2 x 8).
-inline constexpr int kTrajectoryCountAt = 8 + 5 * 8;
-inline constexpr int kTrajectoryArrays = 7;
+// LCM packs fields without padding and writes integers big-endian. A Reader walks a buffer
+// (after the 8-byte fingerprint) field by field, checking every length before anything uses it.
+class Reader {
+ public:
+  Reader(const void* buf, int len) : bytes_(static_cast<const std::uint8_t*>(buf)), len_(len) {}
 
-// LCM writes integers big-endian.
-inline bool readInt32(const void* buf, int len, int at, std::int32_t& value) {
-  if (at < 0 || len - at < 4) return false;
-  const auto* bytes = static_cast<const std::uint8_t*>(buf) + at;
-  value = static_cast<std::int32_t>((std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
-                                    (std::uint32_t{bytes[2]} << 8) | std::uint32_t{bytes[3]});
-  return true;
-}
+  bool skip(std::int64_t n) {
+    if (n < 0 || len_ - at_ < n) return false;
+    at_ += static_cast<int>(n);
+    return true;
+  }
+  bool int8(std::int8_t& value) {
+    if (len_ - at_ < 1) return false;
+    value = static_cast<std::int8_t>(bytes_[at_]);
+    ++at_;
+    return true;
+  }
+  bool int32(std::int32_t& value) {
+    if (len_ - at_ < 4) return false;
+    const std::uint8_t* b = bytes_ + at_;
+    value = static_cast<std::int32_t>((std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) |
+                                      (std::uint32_t{b[2]} << 8) | std::uint32_t{b[3]});
+    at_ += 4;
+    return true;
+  }
+  // A string: its length (with the NUL) is 1 .. the bytes left.
+  bool string() {
+    std::int32_t length = 0;
+    return int32(length) && length >= 1 && skip(length);
+  }
+  // A variable array of strings whose count is an int8_t field: 0 .. 127 (lcm-gen resizes to the
+  // count before reading, so a negative one would throw).
+  bool strings(std::int8_t count) {
+    if (count < 0) return false;
+    for (int i = 0; i < count; ++i) {
+      if (!string()) return false;
+    }
+    return true;
+  }
 
-// The only string is last in its message: its length (with the NUL) is 1 .. remaining bytes.
-inline bool stringFits(const void* buf, int len, int length_at) {
-  std::int32_t length = 0;
-  if (!readInt32(buf, len, length_at, length)) return false;
-  return length >= 1 && length <= len - (length_at + 4);
-}
+ private:
+  const std::uint8_t* bytes_;
+  int len_;
+  int at_ = 8;  // after the fingerprint
+};
 
+// The field layouts below follow lcmtypes/*.lcm; tests/unit/lcmtypes decodes freshly encoded
+// messages through them, so a change to a .lcm file that moves a field fails a test.
+
+// arm_goal_t: utime, request_id (2 x 8), position[2] (2 x 8), num_pieces (1), pieces[num_pieces],
+// scene_name, scene_offset_m (8).
 inline bool lengthsFit(const cyberplanner::arm_goal_t&, const void* buf, int len) {
-  return stringFits(buf, len, kGoalSceneNameLengthAt);
+  Reader r(buf, len);
+  std::int8_t pieces = 0;
+  return r.skip(4 * 8) && r.int8(pieces) && r.strings(pieces) && r.string() && r.skip(8);
 }
 
+// arm_state_t: utime (8), position[2], velocity[2] (4 x 8), num_pieces (1), pieces[num_pieces].
+inline bool lengthsFit(const cyberplanner::arm_state_t&, const void* buf, int len) {
+  Reader r(buf, len);
+  std::int8_t pieces = 0;
+  return r.skip(5 * 8) && r.int8(pieces) && r.strings(pieces);
+}
+
+// arm_plan_status_t: utime, request_id (2 x 8), status (1), reason.
 inline bool lengthsFit(const cyberplanner::arm_plan_status_t&, const void* buf, int len) {
-  return stringFits(buf, len, kPlanStatusReasonLengthAt);
+  Reader r(buf, len);
+  return r.skip(2 * 8 + 1) && r.string();
 }
 
+// arm_daemon_status_t: utime (8), mode (1), joint_names[2], joint_units[2].
+inline bool lengthsFit(const cyberplanner::arm_daemon_status_t&, const void* buf, int len) {
+  Reader r(buf, len);
+  return r.skip(8 + 1) && r.strings(4);
+}
+
+// arm_trajectory_t: utime, request_id, start_utime (3 x 8), duration_s, dt_s (2 x 8), num_samples
+// (4), then t_s and position, velocity, volts [2][num_samples]: 7 doubles per sample.
+inline constexpr int kTrajectoryArrays = 7;
 inline bool lengthsFit(const cyberplanner::arm_trajectory_t&, const void* buf, int len) {
+  Reader r(buf, len);
   std::int32_t count = 0;
-  if (!readInt32(buf, len, kTrajectoryCountAt, count)) return false;
+  if (!r.skip(5 * 8) || !r.int32(count)) return false;
   if (count < 0 || count > cyberplanner::arm_trajectory_t::MAX_SAMPLES) return false;
-  return std::int64_t{kTrajectoryCountAt} + 4 + std::int64_t{count} * kTrajectoryArrays * 8 <= len;
+  return r.skip(std::int64_t{count} * kTrajectoryArrays * 8);
 }
 
 // Types without strings or arrays need no pre-check.

@@ -2,7 +2,7 @@
 // A serial chain of two joints in the 2-D side view (docs/algorithm.md section 1): the frame of
 // link k is its parent's frame (the world's for link 0) moved by Trans(origin_m) and then by the
 // joint: a revolute joint turns it by axis_rad + q (q in rad); a prismatic joint slides it by
-// q (cos axis_rad, sin axis_rad) without turning it (q in m). So an elevator's carriage keeps the
+// q (cos axis_rad, sin axis_rad) without turning it (q in m). So a prismatic joint's carriage keeps the
 // world's orientation and an arm on it measures its angle from +x; a double-jointed arm's elbow
 // angle is relative to the shoulder link; a telescope with axis 0 slides along its pivot link.
 

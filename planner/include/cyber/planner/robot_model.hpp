@@ -62,7 +62,7 @@ struct SearchSettings {
 
 // Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
 // depends on the spacing). Tuned on the public moves: with w_p = 0.1, w_s = 10 the obstacle term
-// dragged waypoints out of the reef's channels and bunched them (then the spline cut corners
+// dragged waypoints out of the obstacles' channels and bunched them (then the spline cut corners
 // and fell back to the unsmoothed path), and L-BFGS needed ~40 iterations; these values keep the
 // search's topology, halve the curvature integral and converge in ~4 iterations.
 struct SmoothingSettings {

@@ -20,13 +20,14 @@ std::string error(const std::vector<std::string>& args) {
 }
 
 TEST(GoalArguments, ParsesEveryOption) {
-  const GoalArguments a = ok({"--to", "1.25,-0.5", "--coral", "--algae", "--scene", "open", "--id", "42", "--lcm-url",
-                              "udpm://239.255.76.67:5810?ttl=1", "--timeout", "2.5", "--no-wait-daemon"});
-  EXPECT_EQ(a.elevator_m, 1.25);
-  EXPECT_EQ(a.arm_rad, -0.5);
-  EXPECT_TRUE(a.coral);
-  EXPECT_TRUE(a.algae);
+  const GoalArguments a =
+      ok({"--to", "1.25,-0.5", "--pieces", "coral,algae", "--scene", "open", "--scene-offset", "0.3", "--id", "42",
+          "--lcm-url", "udpm://239.255.76.67:5810?ttl=1", "--timeout", "2.5", "--no-wait-daemon"});
+  EXPECT_EQ(a.position[0], 1.25);
+  EXPECT_EQ(a.position[1], -0.5);
+  EXPECT_EQ(a.pieces, (std::vector<std::string>{"coral", "algae"}));
   EXPECT_EQ(a.scene, "open");
+  EXPECT_EQ(a.scene_offset_m, 0.3);
   EXPECT_EQ(a.request_id, 42);
   EXPECT_EQ(a.lcm_url, "udpm://239.255.76.67:5810?ttl=1");
   EXPECT_EQ(a.timeout_s, 2.5);
@@ -42,16 +43,29 @@ TEST(GoalArguments, TheLcmUrlDefaultsToTheDaemons) {
 
 TEST(GoalArguments, NonFiniteTargetsPassThroughForTheDaemonToReject) {
   const GoalArguments a = ok({"--to", "nan,inf"});
-  EXPECT_TRUE(std::isnan(a.elevator_m));
-  EXPECT_TRUE(std::isinf(a.arm_rad));
+  EXPECT_TRUE(std::isnan(a.position[0]));
+  EXPECT_TRUE(std::isinf(a.position[1]));
+  EXPECT_TRUE(a.pieces.empty());
+  EXPECT_EQ(a.scene_offset_m, 0.0);
   EXPECT_EQ(a.request_id, -1);
   EXPECT_TRUE(a.wait_for_daemon);
 }
 
+// The daemon knows the config's pieces and scene ranges; cyber-goal sends what it is given.
+TEST(GoalArguments, PiecesAndOffsetsPassThroughForTheDaemonToJudge) {
+  EXPECT_EQ(ok({"--to", "1,1", "--pieces", "cube,cube"}).pieces, (std::vector<std::string>{"cube", "cube"}));
+  EXPECT_EQ(ok({"--to", "1,1", "--pieces", "a,b,c,d,e"}).pieces.size(), 5U);
+  EXPECT_TRUE(ok({"--to", "1,1", "--pieces", "none"}).pieces.empty());
+  EXPECT_TRUE(std::isnan(ok({"--to", "1,1", "--scene-offset", "nan"}).scene_offset_m));
+  EXPECT_EQ(ok({"--to", "1,1", "--scene-offset", "-0.25"}).scene_offset_m, -0.25);
+}
+
 TEST(GoalArguments, BadInputIsNamed) {
-  EXPECT_EQ(error({}), "--to ELEVATOR_M,ARM_RAD is required");
-  EXPECT_EQ(error({"--to", "1.0"}), "--to expects ELEVATOR_M,ARM_RAD, got '1.0'");
-  EXPECT_EQ(error({"--to", "1.0,x"}), "--to expects ELEVATOR_M,ARM_RAD, got '1.0,x'");
+  EXPECT_EQ(error({}), "--to J0,J1 is required");
+  EXPECT_EQ(error({"--to", "1.0"}), "--to expects J0,J1, got '1.0'");
+  EXPECT_EQ(error({"--to", "1.0,x"}), "--to expects J0,J1, got '1.0,x'");
+  EXPECT_EQ(error({"--to", "1,2", "--pieces", "coral,"}), "--pieces expects NAME[,NAME...], got 'coral,'");
+  EXPECT_EQ(error({"--to", "1,2", "--scene-offset", "x"}), "--scene-offset expects metres, got 'x'");
   EXPECT_EQ(error({"--to", "1,2", "--id", "4x"}), "--id expects an integer, got '4x'");
   EXPECT_EQ(error({"--to", "1,2", "--timeout", "0"}), "--timeout expects seconds > 0, got '0'");
   EXPECT_EQ(error({"--to", "1,2", "--timeout", "nan"}), "--timeout expects seconds > 0, got 'nan'");
@@ -59,8 +73,8 @@ TEST(GoalArguments, BadInputIsNamed) {
   EXPECT_EQ(error({"--to"}), "--to needs a value");
   EXPECT_EQ(error({"--to="}), "--to needs a value");
   EXPECT_EQ(error({"--to", "1,2", "--scene", ""}), "--scene needs a value");
-  EXPECT_EQ(error({"--to=1,2", "--coral=yes"}), "--coral takes no value, got '--coral=yes'");
-  EXPECT_EQ(error({"--to", "1,2,3"}), "--to expects ELEVATOR_M,ARM_RAD, got '1,2,3'");
+  EXPECT_EQ(error({"--to=1,2", "--no-wait-daemon=yes"}), "--no-wait-daemon takes no value, got '--no-wait-daemon=yes'");
+  EXPECT_EQ(error({"--to", "1,2,3"}), "--to expects J0,J1, got '1,2,3'");
 }
 
 TEST(GoalArguments, BothSpellingsOfAValueMeanTheSame) {
@@ -69,8 +83,8 @@ TEST(GoalArguments, BothSpellingsOfAValueMeanTheSame) {
       {"--to=-0.2,1", "--scene=open", "--id=7", "--timeout=3", "--lcm-url=memq://"}};
   for (const auto& args : spellings) {
     const GoalArguments a = ok(args);
-    EXPECT_EQ(a.elevator_m, -0.2);
-    EXPECT_EQ(a.arm_rad, 1.0);
+    EXPECT_EQ(a.position[0], -0.2);
+    EXPECT_EQ(a.position[1], 1.0);
     EXPECT_EQ(a.scene, "open");
     EXPECT_EQ(a.request_id, 7);
     EXPECT_EQ(a.timeout_s, 3.0);

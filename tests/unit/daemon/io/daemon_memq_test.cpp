@@ -4,6 +4,8 @@
 #include "cyber/daemon/io/daemon_probe.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <pthread.h>
 #include <sched.h>
 
@@ -126,8 +128,8 @@ class DaemonMemq : public ::testing::Test {
     state_feeder = std::thread([this] {
       while (!stop_feeding) {
         cyberplanner::arm_state_t state{};
-        state.elevator_m = 0.1;
-        state.arm_rad = 1.2;
+        state.position[0] = 0.1;
+        state.position[1] = 1.2;
         publish("ARM_STATE", state);
         std::this_thread::sleep_for(20ms);
       }
@@ -165,11 +167,13 @@ class DaemonMemq : public ::testing::Test {
     });
   }
 
-  void goal(std::int64_t id, double elevator_m, double arm_rad) {
+  void goal(std::int64_t id, double q0, double q1, std::vector<std::string> pieces = {}) {
     cyberplanner::arm_goal_t message{};
     message.request_id = id;
-    message.elevator_m = elevator_m;
-    message.arm_rad = arm_rad;
+    message.position[0] = q0;
+    message.position[1] = q1;
+    message.num_pieces = static_cast<std::int8_t>(pieces.size());
+    message.pieces = std::move(pieces);
     publish("ARM_GOAL", message);
   }
 
@@ -206,15 +210,15 @@ TEST_F(DaemonMemq, AGoalIsAnsweredAcceptedPlanningExecutingDoneWithATrajectoryAn
   EXPECT_EQ(trajectory.request_id, 1);
   EXPECT_NEAR(trajectory.duration_s, 0.3, 1e-12);
   EXPECT_EQ(trajectory.num_samples, 31);
-  EXPECT_NEAR(trajectory.elevator_m.front(), 0.1, 1e-12);
-  EXPECT_NEAR(trajectory.arm_rad.back(), 2.0, 1e-9);
+  EXPECT_NEAR(trajectory.position[0].front(), 0.1, 1e-12);
+  EXPECT_NEAR(trajectory.position[1].back(), 2.0, 1e-9);
   bool moving_echo = false;
   for (const auto& s : listener.setpoints) {
     moving_echo |= s.request_id == 1 && s.mode == cyberplanner::arm_setpoint_t::MODE_MOVING;
   }
   EXPECT_TRUE(moving_echo);
-  EXPECT_NEAR(listener.setpoints.back().arm_rad, 2.0, 1e-5);
-  EXPECT_EQ(listener.setpoints.back().arm_radps, 0.0);
+  EXPECT_NEAR(listener.setpoints.back().position[1], 2.0, 1e-5);
+  EXPECT_EQ(listener.setpoints.back().velocity[1], 0.0);
 }
 
 class DaemonMemqFullRateEcho : public DaemonMemq {
@@ -229,7 +233,7 @@ TEST_F(DaemonMemqFullRateEcho, ArmSetpointIsPublishedForEveryStreamTick) {
   std::lock_guard<std::mutex> lock(listener.mutex);
   std::size_t consecutive = 0;
   for (std::size_t i = 1; i < listener.setpoints.size(); ++i) {
-    const int step = (listener.setpoints[i].elevator_sequence - listener.setpoints[i - 1].elevator_sequence) & 0xFF;
+    const int step = (listener.setpoints[i].sequence[0] - listener.setpoints[i - 1].sequence[0]) & 0xFF;
     EXPECT_NE(step, 0) << "tick echoed twice at message " << i;
     consecutive += step == 1 ? 1 : 0;
   }
@@ -243,15 +247,24 @@ TEST_F(DaemonMemq, BadGoalsAreRejectedWithReasons) {
   goal(1, std::nan(""), 1.0);
   goal(2, 5.0, 1.0);
   goal(3, 0.5, 0.01);  // the fake planner says: in collision
-  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(1) && listener.finalFor(2) && listener.finalFor(3); }));
+  goal(4, 0.5, 1.0, {"coral", "cone"});
+  ASSERT_TRUE(listener.waitFor(
+      [&] { return listener.finalFor(1) && listener.finalFor(2) && listener.finalFor(3) && listener.finalFor(4); }));
   using S = cyberplanner::arm_plan_status_t;
   std::lock_guard<std::mutex> lock(listener.mutex);
   EXPECT_EQ(listener.statusesOf(1), std::vector<std::int8_t>{S::STATUS_REJECTED});
   EXPECT_EQ(listener.statusesOf(2), std::vector<std::int8_t>{S::STATUS_REJECTED});
   EXPECT_EQ(listener.statusesOf(3),
             (std::vector<std::int8_t>{S::STATUS_ACCEPTED, S::STATUS_PLANNING, S::STATUS_REJECTED}));
-  EXPECT_NE(listener.statuses[0].reason.find("elevator_m is not finite"), std::string::npos);
+  EXPECT_EQ(listener.statusesOf(4), std::vector<std::int8_t>{S::STATUS_REJECTED});
+  EXPECT_NE(listener.statuses[0].reason.find("position[0] (elevator) is not finite"), std::string::npos);
   EXPECT_NE(listener.statuses[1].reason.find("outside [0, 2]"), std::string::npos);
+  const auto unknown_piece = std::find_if(listener.statuses.begin(), listener.statuses.end(),
+                                          [](const auto& status) { return status.request_id == 4; });
+  ASSERT_NE(unknown_piece, listener.statuses.end());
+  EXPECT_NE(unknown_piece->reason.find("unknown game piece 'cone' in pieces[1] (this robot's: algae, coral)"),
+            std::string::npos)
+      << unknown_piece->reason;
   EXPECT_EQ(listener.statuses.back().reason, "goal in collision: arm in the floor");
 }
 
@@ -266,15 +279,21 @@ TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
   valid.scene_name = "reef";
   std::vector<std::uint8_t> bytes(static_cast<size_t>(valid.getEncodedSize()));
   valid.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  const size_t length_at = bytes.size() - 4 - 5;  // int32 length, then "reef\0"
+  const size_t length_at = bytes.size() - 8 - 4 - 5;  // int32 length, "reef\0", then scene_offset_m
   bytes[length_at] = 0x7f;
   bytes[length_at + 1] = bytes[length_at + 2] = bytes[length_at + 3] = 0xff;
   publishRaw("ARM_GOAL", bytes);
   cyberplanner::arm_state_t nan_state{};
-  nan_state.elevator_m = std::nan("");
+  nan_state.position[0] = std::nan("");
   publish("ARM_STATE", nan_state);
+  // A goal whose num_pieces is negative: lcm-gen would throw sizing the array; undecodable.
+  cyberplanner::arm_goal_t no_pieces{};
+  std::vector<std::uint8_t> negative(static_cast<size_t>(no_pieces.getEncodedSize()));
+  no_pieces.encode(negative.data(), 0, static_cast<int>(negative.size()));
+  negative[8 + 4 * 8] = 0xff;  // fingerprint, utime, request_id, position[2], then num_pieces
+  publishRaw("ARM_GOAL", negative);
   ASSERT_TRUE(listener.waitFor(
-      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 5; }));
+      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 6; }));
   goal(7, 1.0, 1.0);
   ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
@@ -300,6 +319,17 @@ TEST_F(DaemonMemq, StatusSaysWhetherTheStreamerGotRealTimePriority) {
   EXPECT_EQ(listener.daemon_statuses.back().realtime_priority, realtimeAllowed() ? 50 : 0);
 }
 
+// Peers learn what joint 0 and joint 1 are from the daemon itself (docs/lcm.md).
+TEST_F(DaemonMemq, StatusNamesTheJointsAndTheirUnits) {
+  ASSERT_TRUE(listener.waitFor([&] { return !listener.daemon_statuses.empty(); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  const auto& status = listener.daemon_statuses.back();
+  EXPECT_EQ(status.joint_names[0], "elevator");
+  EXPECT_EQ(status.joint_names[1], "arm");
+  EXPECT_EQ(status.joint_units[0], "m");
+  EXPECT_EQ(status.joint_units[1], "rad");
+}
+
 // ARM_STATE is taken and stamped on the state receiver's thread, not on the event loop: a state
 // that arrives while the loop is busy (here: blocked) reaches the streamer at once, so the loop's
 // own scheduling never counts as the state's age (docs/design.md, "Threads and ownership").
@@ -315,13 +345,13 @@ TEST_F(DaemonMemq, AStateIsTakenWhileTheEventLoopIsBusy) {
   });
   loop_blocked.wait();
   cyberplanner::arm_state_t state{};
-  state.elevator_m = 0.3;
-  state.arm_rad = 1.3;
+  state.position[0] = 0.3;
+  state.position[1] = 1.3;
   // From this thread: the loop is blocked, and memq:// publishing is thread-safe (LCM locks it).
   DaemonProbe::lcmFor(*daemon, "ARM_STATE").publish("ARM_STATE", &state);
   bool taken = false;
   for (int i = 0; i < 400 && !taken; ++i) {
-    taken = DaemonProbe::channels(*daemon).state.load().measured_q[0] == state.elevator_m;
+    taken = DaemonProbe::channels(*daemon).state.load().measured_q[0] == state.position[0];
     if (!taken) std::this_thread::sleep_for(5ms);
   }
   release->set_value();
@@ -390,9 +420,9 @@ TEST_F(DaemonMemqCancel, AHoldCancelsTheGoalAndBrakesToRest) {
            listener.setpoints.back().request_id == 1;
   }));
   std::lock_guard<std::mutex> lock(listener.mutex);
-  EXPECT_EQ(listener.setpoints.back().elevator_mps, 0.0);
-  EXPECT_EQ(listener.setpoints.back().arm_radps, 0.0);
-  EXPECT_LT(listener.setpoints.back().arm_rad, 2.5);
+  EXPECT_EQ(listener.setpoints.back().velocity[0], 0.0);
+  EXPECT_EQ(listener.setpoints.back().velocity[1], 0.0);
+  EXPECT_LT(listener.setpoints.back().position[1], 2.5);
   EXPECT_EQ(listener.statusesOf(1).size(), 4u);  // no DONE for the cancelled goal
 }
 
@@ -430,8 +460,8 @@ TEST_F(DaemonMemqCancel, AReleaseStopsTheSetpointsWithModeReleasedUntilTheNextGo
   std::lock_guard<std::mutex> lock(listener.mutex);
   ASSERT_FALSE(listener.trajectories.empty());
   EXPECT_EQ(listener.trajectories.back().request_id, 3);
-  EXPECT_NEAR(listener.trajectories.back().elevator_m.front(), 0.1, 1e-12);
-  EXPECT_NEAR(listener.trajectories.back().arm_rad.front(), 1.2, 1e-12);
+  EXPECT_NEAR(listener.trajectories.back().position[0].front(), 0.1, 1e-12);
+  EXPECT_NEAR(listener.trajectories.back().position[1].front(), 1.2, 1e-12);
 }
 
 TEST_F(DaemonMemqCancel, UndecodableCancelsAreCounted) {
@@ -448,8 +478,8 @@ TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {
   waitForHolding();
   cyberplanner::arm_goal_t message{};
   message.request_id = 5;
-  message.elevator_m = 1.8;
-  message.arm_rad = 3.0;
+  message.position[0] = 1.8;
+  message.position[1] = 3.0;
   publish("ARM_GOAL", message);
   ASSERT_TRUE(listener.waitFor([&] {
     for (const auto& s : listener.statuses) {

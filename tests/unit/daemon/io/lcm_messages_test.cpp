@@ -6,27 +6,74 @@
 #include <limits>
 #include <vector>
 
+#include "cyber/lcmtypes/safe_decode.hpp"
+#include "cyberplanner/arm_daemon_status_t.hpp"
 #include "fake_trajectory.hpp"
 #include "reference_model.hpp"
 
 namespace cyber::daemon::io {
 namespace {
 
-TEST(LcmMessages, GoalFieldsAreCopied) {
+// Encoded and decoded again, as a peer's goal arrives.
+template <class Message>
+Message roundTrip(const Message& message) {
+  std::vector<std::uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()));
+  EXPECT_EQ(message.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  Message decoded{};
+  EXPECT_EQ(lcmtypes::safeDecode(decoded, bytes.data(), static_cast<int>(bytes.size())),
+            static_cast<int>(bytes.size()));
+  return decoded;
+}
+
+TEST(LcmMessages, GoalFieldsSurviveTheWireAndAreCopied) {
   cyberplanner::arm_goal_t message{};
   message.request_id = -5;
-  message.elevator_m = 1.25;
-  message.arm_rad = 2.5;
-  message.held_coral = 1;
-  message.held_algae = 0;
-  message.scene_name = "open";
-  const GoalRequest goal = goalFromMessage(message);
+  message.position[0] = 1.25;
+  message.position[1] = 2.5;
+  message.num_pieces = 2;
+  message.pieces = {"algae", "coral"};
+  message.scene_name = "reef";
+  message.scene_offset_m = 0.125;
+  const GoalRequest goal = goalFromMessage(roundTrip(message));
   EXPECT_EQ(goal.request_id, -5);
-  EXPECT_EQ(goal.elevator_m, 1.25);
-  EXPECT_EQ(goal.arm_rad, 2.5);
-  EXPECT_TRUE(goal.held_coral);
-  EXPECT_FALSE(goal.held_algae);
-  EXPECT_EQ(goal.scene_name, "open");
+  EXPECT_EQ(goal.position, JointVector(1.25, 2.5));
+  EXPECT_EQ(goal.num_pieces, 2);
+  EXPECT_EQ(goal.pieces, (std::vector<std::string>{"algae", "coral"}));
+  EXPECT_EQ(goal.scene_name, "reef");
+  EXPECT_EQ(goal.scene_offset_m, 0.125);
+  // ... and validate to the pieces and the offset the planner is asked for.
+  const auto valid = validateGoal(goal, cyber::test::referenceModel());
+  ASSERT_TRUE(valid) << valid.error().reason;
+  EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral+algae"));
+  EXPECT_EQ(valid.value().scene_offset_m, 0.125);
+}
+
+TEST(LcmMessages, StateAndSetpointAndStatusRoundTrip) {
+  cyberplanner::arm_state_t state{};
+  state.position[0] = 0.5;
+  state.velocity[1] = -0.25;
+  state.num_pieces = 1;
+  state.pieces = {"coral"};
+  const auto state_back = roundTrip(state);
+  EXPECT_EQ(state_back.position[0], 0.5);
+  EXPECT_EQ(state_back.velocity[1], -0.25);
+  EXPECT_EQ(state_back.pieces, std::vector<std::string>{"coral"});
+
+  StreamSnapshot snapshot;
+  snapshot.joints = {can::Setpoint{0.5, 0.25, 1.5, 3}, can::Setpoint{1.0, -0.5, -0.75, 4}};
+  const auto setpoint = roundTrip(setpointMessage(snapshot, 1));
+  EXPECT_EQ(setpoint.position[1], 1.0);
+  EXPECT_EQ(setpoint.volts[0], 1.5);
+  EXPECT_EQ(setpoint.sequence[1], 4);
+
+  cyberplanner::arm_daemon_status_t status{};
+  status.joint_names[0] = "elevator";
+  status.joint_names[1] = "arm";
+  status.joint_units[0] = "m";
+  status.joint_units[1] = "rad";
+  const auto status_back = roundTrip(status);
+  EXPECT_EQ(status_back.joint_names[1], "arm");
+  EXPECT_EQ(status_back.joint_units[0], "m");
 }
 
 TEST(LcmMessages, CancelsTakeTheRequestAndAKnownAction) {
@@ -47,23 +94,23 @@ TEST(LcmMessages, CancelsTakeTheRequestAndAKnownAction) {
 TEST(LcmMessages, StatesMustBeFiniteAndNearTheJointRanges) {
   const auto& robot = cyber::test::referenceModel();
   cyberplanner::arm_state_t message{};
-  message.elevator_m = 0.5;
-  message.arm_rad = 1.0;
-  message.elevator_mps = 0.1;
-  message.arm_radps = -0.2;
+  message.position[0] = 0.5;
+  message.position[1] = 1.0;
+  message.velocity[0] = 0.1;
+  message.velocity[1] = -0.2;
   auto state = stateFromMessage(message, robot);
   ASSERT_TRUE(state);
   EXPECT_EQ(state->q, JointVector(0.5, 1.0));
   EXPECT_EQ(state->qdot, JointVector(0.1, -0.2));
-  message.elevator_m = -0.3;  // a little below the limit: still the mechanism's position
+  message.position[0] = -0.3;  // a little below the limit: still the mechanism's position
   EXPECT_TRUE(stateFromMessage(message, robot));
-  message.elevator_m = -0.6;
+  message.position[0] = -0.6;
   EXPECT_FALSE(stateFromMessage(message, robot));
-  message.elevator_m = 0.5;
-  message.arm_radps = std::numeric_limits<double>::quiet_NaN();
+  message.position[0] = 0.5;
+  message.velocity[1] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(stateFromMessage(message, robot));
-  message.arm_radps = 0.0;
-  message.arm_rad = std::numeric_limits<double>::infinity();
+  message.velocity[1] = 0.0;
+  message.position[1] = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(stateFromMessage(message, robot));
 }
 
@@ -101,20 +148,24 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
   EXPECT_DOUBLE_EQ(message.dt_s, 0.01);
   EXPECT_EQ(message.num_samples, 125);  // 0 .. 1.23 s, then the end at 1.234 s
   ASSERT_EQ(message.t_s.size(), 125u);
-  EXPECT_EQ(message.arm_volts.size(), 125u);
+  ASSERT_EQ(message.volts.size(), 2u);
+  EXPECT_EQ(message.volts[1].size(), 125u);
   EXPECT_DOUBLE_EQ(message.t_s[123], 1.23);
   // The last sample is the rest state the motion ends in.
   EXPECT_EQ(message.t_s.back(), 1.234);
-  EXPECT_DOUBLE_EQ(message.elevator_m.back(), 1.5);
-  EXPECT_DOUBLE_EQ(message.arm_rad.back(), 2.5);
-  EXPECT_EQ(message.elevator_mps.back(), 0.0);
-  EXPECT_EQ(message.arm_radps.back(), 0.0);
+  EXPECT_DOUBLE_EQ(message.position[0].back(), 1.5);
+  EXPECT_DOUBLE_EQ(message.position[1].back(), 2.5);
+  EXPECT_EQ(message.velocity[0].back(), 0.0);
+  EXPECT_EQ(message.velocity[1].back(), 0.0);
   EXPECT_DOUBLE_EQ(message.t_s[10], 0.1);
   const JointSetpoints s = trajectory->at(0.1);
-  EXPECT_EQ(message.elevator_m[10], s.position[0]);
-  EXPECT_EQ(message.arm_radps[10], s.velocity[1]);
-  EXPECT_EQ(message.elevator_volts[10], s.volts[0]);
-  EXPECT_EQ(message.elevator_m[0], 0.1);
+  EXPECT_EQ(message.position[0][10], s.position[0]);
+  EXPECT_EQ(message.velocity[1][10], s.velocity[1]);
+  EXPECT_EQ(message.volts[0][10], s.volts[0]);
+  EXPECT_EQ(message.position[0][0], 0.1);
+  // Encodes and decodes whole: both rows are num_samples long.
+  const auto back = roundTrip(message);
+  EXPECT_EQ(back.position[1][10], message.position[1][10]);
 }
 
 TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
@@ -140,16 +191,15 @@ TEST(LcmMessages, SetpointEchoesTheWireValues) {
   snapshot.mode = StreamMode::kMoving;
   snapshot.request_id = 12;
   snapshot.segment_time_s = 0.25;
-  snapshot.elevator = can::Setpoint{0.12345, 0.5, 1.2, 7};
-  snapshot.arm = can::Setpoint{2.0, -1.0, 0.3, 9};
+  snapshot.joints = {can::Setpoint{0.12345, 0.5, 1.2, 7}, can::Setpoint{2.0, -1.0, 0.3, 9}};
   const auto message = setpointMessage(snapshot, 55);
   EXPECT_EQ(message.mode, cyberplanner::arm_setpoint_t::MODE_MOVING);
   EXPECT_EQ(message.request_id, 12);
   EXPECT_EQ(message.trajectory_t_s, 0.25);
-  EXPECT_EQ(message.elevator_m, 0.12345);
-  EXPECT_EQ(message.arm_radps, -1.0);
-  EXPECT_EQ(message.elevator_sequence, 7);
-  EXPECT_EQ(message.arm_sequence, 9);
+  EXPECT_EQ(message.position[0], 0.12345);
+  EXPECT_EQ(message.velocity[1], -1.0);
+  EXPECT_EQ(message.sequence[0], 7);
+  EXPECT_EQ(message.sequence[1], 9);
   snapshot.mode = StreamMode::kHolding;
   EXPECT_EQ(setpointMessage(snapshot, 0).trajectory_t_s, 0.0);
 }

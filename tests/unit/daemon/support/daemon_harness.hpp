@@ -125,9 +125,20 @@ class Harness {
   }
   void broadcastDisable() { inputs.broadcast_disable_ns = now; }
 
-  void goal(std::int64_t id, JointVector q, std::string scene = {}, bool coral = false, bool algae = false) {
-    GoalRequest request{id, q[0], q[1], coral, algae, std::move(scene)};
-    rawGoal(request);
+  void goal(std::int64_t id, JointVector q, std::string scene = {}, std::vector<std::string> pieces = {},
+            double scene_offset_m = 0.0) {
+    rawGoal(request(id, q, std::move(scene), std::move(pieces), scene_offset_m));
+  }
+  static GoalRequest request(std::int64_t id, JointVector q, std::string scene = {},
+                             std::vector<std::string> pieces = {}, double scene_offset_m = 0.0) {
+    GoalRequest request;
+    request.request_id = id;
+    request.position = q;
+    request.num_pieces = static_cast<int>(pieces.size());
+    request.pieces = std::move(pieces);
+    request.scene_name = std::move(scene);
+    request.scene_offset_m = scene_offset_m;
+    return request;
   }
   // As the event loop admits a goal: on the gate with the release as the coordinator last set it.
   void rawGoal(const GoalRequest& request) {

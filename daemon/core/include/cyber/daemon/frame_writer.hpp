@@ -4,6 +4,7 @@
 // queued: the next tick carries a fresher setpoint. Failures are counted and reported once per
 // burst (the first failure, then the recovery with the burst's count) so the log is not flooded.
 
+#include <array>
 #include <cstdint>
 
 #include "cyber/can/setpoint_codec.hpp"
@@ -14,17 +15,15 @@
 namespace cyber::daemon {
 
 struct FrameWriterSettings {
-  std::uint8_t elevator_device = 1;
-  std::uint8_t arm_device = 2;
+  std::array<std::uint8_t, 2> joint_devices{1, 2};  // setpoint frames of joint 0 and joint 1
   std::uint8_t status_device = 3;
   int status_every_ticks = 20;  // 200 Hz / 10 Hz
 };
 
 // Setpoints as they went on the wire, decoded back (quantised), for ARM_SETPOINT.
 struct WireSetpoints {
-  bool written = false;  // both frames accepted by the port
-  can::Setpoint elevator;
-  can::Setpoint arm;
+  bool written = false;                   // both frames accepted by the port
+  std::array<can::Setpoint, 2> joints{};  // by joint index
 };
 
 struct WriteReport {
@@ -55,8 +54,7 @@ class FrameWriter {
 
   CanPort& port_;
   FrameWriterSettings settings_;
-  std::uint8_t elevator_sequence_ = 0;
-  std::uint8_t arm_sequence_ = 0;
+  std::array<std::uint8_t, 2> joint_sequences_{};
   std::uint8_t status_sequence_ = 0;
   int ticks_since_status_ = 0;
   bool failing_ = false;

@@ -146,6 +146,7 @@ class GoalCoordinator {
   struct World {  // what a segment was planned among: a stop of it keeps the same clearance
     planner::HeldPieces pieces;
     int scene = 0;
+    double scene_offset_m = 0.0;
   };
 
   // Transitions of the pipeline (each called only from the state it names).

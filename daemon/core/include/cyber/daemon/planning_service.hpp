@@ -21,6 +21,7 @@ struct MotionRequest {
   JointVector start_velocity = JointVector::Zero();  // non-zero for a splice into a running motion
   planner::HeldPieces pieces;
   int scene = 0;
+  double scene_offset_m = 0.0;  // the scene's field elements shifted in x (planner::PlanRequest)
 };
 
 using StageTimesMs = planner::StageTimesMs;

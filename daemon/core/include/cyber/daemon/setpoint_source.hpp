@@ -10,7 +10,7 @@ namespace cyber::daemon {
 
 using planner::JointVector;
 
-// Per joint (elevator m, arm rad): what one setpoint frame carries.
+// Per joint by index (each in its joint's unit, m or rad): what one setpoint frame carries.
 struct JointSetpoints {
   JointVector position = JointVector::Zero();
   JointVector velocity = JointVector::Zero();

@@ -59,6 +59,7 @@ class GoalHandler final : private CoordinatorSink {
   void note(NoteLevel level, const std::string& text) override;
   void setReleaseGeneration(std::uint32_t generation) override;
 
+  const planner::RobotModel& robot_;  // joint names for the log
   LcmBridge& bridge_;
   PlanningWorker& worker_;
   StreamerChannels& channels_;

@@ -13,6 +13,7 @@
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/motion_gate.hpp"
+#include "cyber/planner/robot_model.hpp"
 
 namespace cyber::daemon::io {
 
@@ -32,6 +33,7 @@ class StatusPublisher {
     const LcmInput& lcm_input;
     const CanInput* can_input;
     LcmBridge& bridge;
+    const planner::RobotModel& robot;  // joint names and units for ARM_DAEMON_STATUS
   };
 
   StatusPublisher(const Sources& sources, const GateSettings& gate) : s_(sources), gate_(gate) {}

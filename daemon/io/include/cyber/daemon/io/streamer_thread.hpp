@@ -4,6 +4,7 @@
 // lock, never logs, never touches LCM and never allocates; programs it is done with go back to the
 // event loop to be freed there.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <thread>
@@ -41,8 +42,7 @@ struct StreamSnapshot {
   double remaining_s = 0.0;
   RobotLink robot_link;  // the robot frames as the gate saw them at this tick
   bool setpoints_written = false;
-  can::Setpoint elevator;
-  can::Setpoint arm;
+  std::array<can::Setpoint, 2> joints{};  // as written, by joint index
 };
 
 // CAN write bursts, for the log.
