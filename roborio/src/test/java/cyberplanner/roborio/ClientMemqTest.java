@@ -68,7 +68,8 @@ class ClientMemqTest {
     List<arm_goal_t> goals = collect(lcm, "ARM_GOAL", arm_goal_t::new);
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 100);
     MoveHandle first = client.moveTo(Pose.of(1.22, 5.69).holding("coral"));
-    MoveHandle second = client.moveTo(Pose.of(0.58, 2.97).holding("algae", "coral").inScene("reef").atSceneOffset(0.12));
+    MoveHandle second =
+        client.moveTo(Pose.of(0.58, 2.97).holding("algae", "coral").inScene("reef").atSceneOffset(0.12));
     until(() -> goals.size() == 2);
     assertEquals(100, first.requestId());
     assertEquals(101, second.requestId());

@@ -5,9 +5,9 @@ import cyberplanner.roborio.JointOutput;
 import java.util.List;
 
 /**
- * A desktop stand-in for a two-joint mechanism (joint 0 and joint 1 by index): each joint is a critically damped follower of the
- * setpoint the robot code applies (position and velocity, the way a tuned motor controller's
- * position loop with velocity feedforward tracks it). Not a physics model: the point is that the
+ * A desktop stand-in for a two-joint mechanism (joint 0 and joint 1 by index): each joint is a
+ * critically damped follower of the setpoint the robot code applies (position and velocity, the
+ * way a tuned motor controller's position loop with velocity feedforward tracks it). Not a physics model: the point is that the
  * setpoints, applied as a robot applies them, bring the mechanism to each goal.
  */
 public final class SimulatedMechanism {
