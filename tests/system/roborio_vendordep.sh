@@ -3,7 +3,8 @@
 # vendordep of one WPILib year (docs/roborio.md, "Installing"), no CMake build tree: every
 # javaDependency resolves through the JSON's relative mavenUrls entry (with its pom, and for our
 # artifacts its -sources and -javadoc jars), and that year's example of the page compiles with
-# plain javac against those jars and the vendors' stand-ins alone, as bytecode 17.
+# plain javac against those jars and the vendors' stand-ins alone, as bytecode 17, and so does the
+# page's Pose example.
 #   roborio_vendordep.sh BUILD_DIR YEAR STANDINS_JAR
 set -euo pipefail
 build=$1 year=$2 standins=$3
@@ -54,4 +55,19 @@ javac --release 17 -Xlint:all -Werror -d "$work/classes" -cp "$classpath:$work/s
   fail "the $year example of docs/roborio.md does not compile against the vendordep's jars"
 major=$(javap -v -cp "$work/classes" CyberArm | sed -n 's/.*major version: //p')
 [[ $major == 61 ]] || fail "class file major version $major, expected 61 (Java 17)"
+
+# The page's third Java block, a Pose built by joint index with pieces and a scene (statements of
+# the core's API), compiles in a method body against the same jars.
+{
+  echo 'import cyberplanner.roborio.*;'
+  echo 'final class PoseSnippet {'
+  echo '  void snippet() {'
+  awk '$0 == "```java" { n++; inside = (n == 3); next } /^```/ { inside = 0 } inside' "$src/docs/roborio.md"
+  echo '  }'
+  echo '}'
+} >"$work/PoseSnippet.java"
+grep -q 'Pose' "$work/PoseSnippet.java" || fail "docs/roborio.md has no third Java block with a Pose"
+echo "+ javac PoseSnippet.java (the page's Pose example)"
+javac --release 17 -Xlint:all -Werror -d "$work/classes" -cp "$classpath" "$work/PoseSnippet.java" ||
+  fail "the Pose example of docs/roborio.md does not compile against the vendordep's jars"
 echo "roborio_vendordep $year: PASS"

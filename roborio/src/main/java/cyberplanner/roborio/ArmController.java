@@ -13,9 +13,17 @@ import java.util.function.Supplier;
  * team command has taken the joints (manual override). Main loop only.
  */
 public final class ArmController {
-  /** The parts: where the setpoints come from and go, the measured state, the clocks. */
-  public record Parts(CyberPlannerClient client, SetpointSource source, JointOutput elevator, JointOutput arm,
-      Supplier<ArmState> measured, BooleanSupplier enabled, LongSupplier clockMicros) {}
+  /**
+   * The parts: where the setpoints come from and go (joint0 and joint1: the motors of the config's
+   * first and second [[joints]]), the measured state, the clocks.
+   */
+  public record Parts(CyberPlannerClient client, SetpointSource source, JointOutput joint0, JointOutput joint1,
+      Supplier<ArmState> measured, BooleanSupplier enabled, LongSupplier clockMicros) {
+    /** The motor of a joint. */
+    public JointOutput output(Joint joint) {
+      return joint == Joint.JOINT_0 ? joint0 : joint1;
+    }
+  }
 
   private final Parts parts;
   private final SetpointGuard guard;
@@ -33,9 +41,9 @@ public final class ArmController {
   }
 
   /** The defaults: 50 ms setpoint age, 250 ms status age, hold where it is against gravity. */
-  public ArmController(Parts parts, JointGravity elevatorGravity, JointGravity armGravity) {
+  public ArmController(Parts parts, JointGravity joint0Gravity, JointGravity joint1Gravity) {
     this(parts, new SetpointGuard(0.05, 0.25),
-        new HoldFallback(parts.elevator(), parts.arm(), elevatorGravity, armGravity));
+        new HoldFallback(parts.joint0(), parts.joint1(), joint0Gravity, joint1Gravity));
   }
 
   /** One robot loop. */
@@ -49,8 +57,7 @@ public final class ArmController {
       fallback.reset();
     } else if (verdict == SetpointGuard.Verdict.USE) {
       fallback.reset();
-      apply(parts.elevator(), guard.latest(Joint.ELEVATOR));
-      apply(parts.arm(), guard.latest(Joint.ARM));
+      for (Joint joint : Joint.values()) apply(parts.output(joint), guard.latest(joint));
     } else {
       fallback.run(verdict, state);
     }
@@ -127,10 +134,11 @@ public final class ArmController {
     inputs.moveReason = move == null ? "" : move.reason();
     inputs.moveDurationS = move == null ? 0 : move.durationS();
     inputs.moveStateChanges = moveStateChanges;
-    inputs.elevatorLostFrames = guard.lostFrames(Joint.ELEVATOR);
-    inputs.armLostFrames = guard.lostFrames(Joint.ARM);
-    inputs.elevatorRepeatedFrames = guard.repeatedFrames(Joint.ELEVATOR);
-    inputs.armRepeatedFrames = guard.repeatedFrames(Joint.ARM);
+    inputs.daemonJoints = client.daemonJoints();
+    inputs.joint0LostFrames = guard.lostFrames(Joint.JOINT_0);
+    inputs.joint1LostFrames = guard.lostFrames(Joint.JOINT_1);
+    inputs.joint0RepeatedFrames = guard.repeatedFrames(Joint.JOINT_0);
+    inputs.joint1RepeatedFrames = guard.repeatedFrames(Joint.JOINT_1);
     inputs.undecodableMessages = client.undecodableMessages();
   }
 }

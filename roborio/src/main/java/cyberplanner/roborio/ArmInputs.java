@@ -15,6 +15,11 @@ public class ArmInputs {
   public double daemonStatusAgeS = Double.POSITIVE_INFINITY;
   /** The daemon's mode (DaemonMode name, "" before any status). */
   public String daemonMode = "";
+  /**
+   * The daemon's joints by index with their units, as its config names them ("shoulder rad, elbow rad";
+   * "" before any status): check that joint 0 and joint 1 are wired to the motors they name.
+   */
+  public String daemonJoints = "";
   /** The guard's verdict of the latest loop (SetpointGuard.Verdict name). */
   public String verdict = "";
   /** A team command drives the joints (manual override). */
@@ -27,10 +32,10 @@ public class ArmInputs {
   /** Times the latest move's state changed, as the loop saw it (a change counter to trigger on). */
   public long moveStateChanges;
   /** Setpoint frames missing from each joint's sequence, and repeats, since start-up. */
-  public long elevatorLostFrames;
-  public long armLostFrames;
-  public long elevatorRepeatedFrames;
-  public long armRepeatedFrames;
+  public long joint0LostFrames;
+  public long joint1LostFrames;
+  public long joint0RepeatedFrames;
+  public long joint1RepeatedFrames;
   /** LCM messages on our channels that did not decode. */
   public long undecodableMessages;
 }

@@ -19,19 +19,20 @@ public final class CanFrameRouter {
   public static final int STREAM_ID = FrcCanId.teamFrameId(0, 0);
   public static final int STREAM_MASK = 0x1FFF0000;
 
-  private final int elevatorDevice;
-  private final int armDevice;
+  private final int joint0Device;
+  private final int joint1Device;
   private final int statusDevice;
   private long undecodable;
   private long foreign;
 
-  public CanFrameRouter(int elevatorDevice, int armDevice, int statusDevice) {
-    this.elevatorDevice = elevatorDevice;
-    this.armDevice = armDevice;
+  /** The device numbers of joint 0's and joint 1's setpoint frames and of the status frame. */
+  public CanFrameRouter(int joint0Device, int joint1Device, int statusDevice) {
+    this.joint0Device = joint0Device;
+    this.joint1Device = joint1Device;
     this.statusDevice = statusDevice;
   }
 
-  /** The reference configuration's devices: elevator 1, arm 2, status 3. */
+  /** The shipped configurations' devices: joint 0 on 1, joint 1 on 2, status 3. */
   public static CanFrameRouter reference() {
     return new CanFrameRouter(1, 2, 3);
   }
@@ -50,7 +51,7 @@ public final class CanFrameRouter {
       else undecodable++;
       return;
     }
-    Joint joint = device == elevatorDevice ? Joint.ELEVATOR : device == armDevice ? Joint.ARM : null;
+    Joint joint = device == joint0Device ? Joint.JOINT_0 : device == joint1Device ? Joint.JOINT_1 : null;
     if (joint == null || FrcCanId.teamFrameId(FrcCanId.SETPOINT_API_ID, device) != frame.id()) {
       foreign++;
       return;

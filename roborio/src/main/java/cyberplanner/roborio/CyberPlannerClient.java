@@ -105,22 +105,21 @@ public final class CyberPlannerClient implements AutoCloseable {
     if (listener != null) listener.accept(new arm_setpoint_t(in));
   }
 
-  /** The measured state, 50-200 Hz from the robot's main loop. utime: this machine's time. */
-  public void publishState(double elevatorM, double elevatorMps, double armRad, double armRadps, boolean heldCoral,
-      boolean heldAlgae) {
+  /**
+   * The measured state, 50-200 Hz from the robot's main loop. utime: this machine's time. Dropped
+   * without a link (link() says why).
+   */
+  public void publishState(ArmState measured) {
+    if (measured == null) throw new IllegalArgumentException("measured state is null");
     arm_state_t state = new arm_state_t();
     state.utime = System.currentTimeMillis() * 1000;
-    state.elevator_m = elevatorM;
-    state.elevator_mps = elevatorMps;
-    state.arm_rad = armRad;
-    state.arm_radps = armRadps;
-    state.held_coral = heldCoral;
-    state.held_algae = heldAlgae;
+    for (Joint joint : Joint.values()) {
+      state.position[joint.index()] = measured.position(joint);
+      state.velocity[joint.index()] = measured.velocity(joint);
+    }
+    state.num_pieces = (byte) measured.pieces().size();
+    state.pieces = measured.pieces().toArray(new String[0]);
     publish(channels.state(), state);
-  }
-
-  public void publishState(ArmState s) {
-    publishState(s.elevatorM(), s.elevatorMps(), s.armRad(), s.armRadps(), s.heldCoral(), s.heldAlgae());
   }
 
   /** Publishes if the link is up (trying to bring it up first); false if it is not. */
@@ -133,9 +132,11 @@ public final class CyberPlannerClient implements AutoCloseable {
 
   /**
    * Sends a goal with the next request id. A newer move replaces this one (it ends CANCELLED).
-   * Without a link the move ends FAILED at once, with the link's error as its reason.
+   * Without a link the move ends FAILED at once, with the link's error as its reason. A null pose
+   * throws IllegalArgumentException (a Pose checks its own values when it is built).
    */
   public MoveHandle moveTo(Pose pose) {
+    if (pose == null) throw new IllegalArgumentException("pose is null");
     MoveHandle move = new MoveHandle(nextRequestId.getAndIncrement(), pose);
     // Moves the daemon never answered (it was gone) are forgotten after MAX_OPEN_MOVES newer ones.
     moves.keySet().removeIf(id -> id <= move.requestId() - MAX_OPEN_MOVES);
@@ -143,11 +144,11 @@ public final class CyberPlannerClient implements AutoCloseable {
     arm_goal_t goal = new arm_goal_t();
     goal.utime = System.currentTimeMillis() * 1000;
     goal.request_id = move.requestId();
-    goal.elevator_m = pose.elevatorM();
-    goal.arm_rad = pose.armRad();
-    goal.held_coral = pose.heldCoral();
-    goal.held_algae = pose.heldAlgae();
+    for (Joint joint : Joint.values()) goal.position[joint.index()] = pose.position(joint);
+    goal.num_pieces = (byte) pose.pieces().size();
+    goal.pieces = pose.pieces().toArray(new String[0]);
     goal.scene_name = pose.sceneName();
+    goal.scene_offset_m = pose.sceneOffsetM();
     if (!publish(channels.goal(), goal)) {
       moves.remove(move.requestId());
       move.update(MoveState.FAILED, "no LCM link: " + link.lastError(), 0);
@@ -195,6 +196,22 @@ public final class CyberPlannerClient implements AutoCloseable {
   public DaemonMode daemonMode() {
     arm_daemon_status_t status = daemonStatus;
     return status == null ? null : DaemonMode.fromWire(status.mode);
+  }
+
+  /**
+   * The daemon's joints by index with their units, from its latest status, e.g. "pivot rad,
+   * telescope m" for a config whose [[joints]] are a pivot then a telescope; "" before any status.
+   * A robot program can check it against the motors it wired as joint 0 and joint 1.
+   */
+  public String daemonJoints() {
+    arm_daemon_status_t status = daemonStatus;
+    if (status == null) return "";
+    StringBuilder out = new StringBuilder();
+    for (int i = 0; i < Joint.COUNT; ++i) {
+      if (i > 0) out.append(", ");
+      out.append(status.joint_names[i]).append(' ').append(status.joint_units[i]);
+    }
+    return out.toString();
   }
 
   /** The latest ARM_DAEMON_STATUS, or null (counters, ages and timings; docs/lcm.md). */

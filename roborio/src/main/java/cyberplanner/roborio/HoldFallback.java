@@ -10,24 +10,23 @@ package cyberplanner.roborio;
  * keeps its last request, so doing nothing would follow the last, stale setpoint.
  */
 public final class HoldFallback implements Fallback {
-  private final JointOutput elevator;
-  private final JointOutput arm;
-  private final JointGravity elevatorGravity;
-  private final JointGravity armGravity;
+  private final JointOutput[] outputs;
+  private final JointGravity[] gravity;
   private ArmState held;
 
-  public HoldFallback(JointOutput elevator, JointOutput arm, JointGravity elevatorGravity, JointGravity armGravity) {
-    this.elevator = elevator;
-    this.arm = arm;
-    this.elevatorGravity = elevatorGravity;
-    this.armGravity = armGravity;
+  /** Joint 0's and joint 1's motor and gravity model, as in ArmController.Parts. */
+  public HoldFallback(JointOutput joint0, JointOutput joint1, JointGravity joint0Gravity, JointGravity joint1Gravity) {
+    this.outputs = new JointOutput[] {joint0, joint1};
+    this.gravity = new JointGravity[] {joint0Gravity, joint1Gravity};
   }
 
   @Override
   public void run(SetpointGuard.Verdict why, ArmState measured) {
     if (held == null) held = measured;
-    elevator.apply(held.elevatorM(), 0.0, elevatorGravity.volts(held.elevatorM()));
-    arm.apply(held.armRad(), 0.0, armGravity.volts(held.armRad()));
+    for (Joint joint : Joint.values()) {
+      double position = held.position(joint);
+      outputs[joint.index()].apply(position, 0.0, gravity[joint.index()].volts(position));
+    }
   }
 
   @Override
@@ -35,7 +34,7 @@ public final class HoldFallback implements Fallback {
     held = null;
   }
 
-  /** The pose being held, or null while none is. */
+  /** The state being held, or null while none is. */
   public ArmState held() {
     return held;
   }

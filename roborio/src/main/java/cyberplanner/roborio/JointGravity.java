@@ -2,8 +2,9 @@ package cyberplanner.roborio;
 
 /**
  * The gravity term of one joint's feedforward, kG·g(q), as the daemon's config models it
- * ([drives.*] gravity and kG_volts, docs/configuration.md): g = 1 for an elevator ("constant"),
- * g = cos θ for an arm ("cosine", θ in rad from the horizontal).
+ * ([drives.*] gravity and kG_volts, docs/configuration.md): g = 1 ("constant", a joint that
+ * moves vertically, such as a lift), g = cos θ ("cosine", a joint that swings, θ in rad from the
+ * horizontal).
  */
 public record JointGravity(double kGVolts, boolean cosine) {
   public static JointGravity constant(double kGVolts) {

@@ -12,7 +12,8 @@ import java.util.function.LongSupplier;
  * docs/configuration.md); the message's mode stands in for the status frame. Every message is
  * queued with its time of receipt (the daemon's utime is another clock), so the guard sees every
  * sequence number whatever the poll rate, and a setpoint's age counts from its arrival, not from
- * the poll. Device numbers are not on LCM: the setpoints carry device -1.
+ * the poll. Joints by index (position[i], velocity[i], volts[i], sequence[i]). Device numbers are
+ * not on LCM: the setpoints carry device -1.
  */
 public final class LcmSetpointSource implements SetpointSource {
   private static final int MAX_QUEUED = 1000;
@@ -42,10 +43,11 @@ public final class LcmSetpointSource implements SetpointSource {
       if (mode == null) continue;
       arm_setpoint_t m = r.message;
       guard.onStatus(mode, r.micros);
-      guard.onSetpoint(Joint.ELEVATOR, new Setpoint(-1, m.elevator_m, m.elevator_mps, m.elevator_volts,
-          m.elevator_sequence & 0xFF), r.micros);
-      guard.onSetpoint(Joint.ARM, new Setpoint(-1, m.arm_rad, m.arm_radps, m.arm_volts, m.arm_sequence & 0xFF),
-          r.micros);
+      for (Joint joint : Joint.values()) {
+        int i = joint.index();
+        guard.onSetpoint(joint, new Setpoint(-1, m.position[i], m.velocity[i], m.volts[i], m.sequence[i] & 0xFF),
+            r.micros);
+      }
     }
   }
 }

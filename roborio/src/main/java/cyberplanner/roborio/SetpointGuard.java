@@ -2,8 +2,6 @@ package cyberplanner.roborio;
 
 import cyberplanner.roborio.can.DaemonMode;
 import cyberplanner.roborio.can.Setpoint;
-import java.util.EnumMap;
-import java.util.Map;
 
 /**
  * Decides whether the robot may apply cyber-plannerd's setpoints now (docs/roborio.md, "Safety").
@@ -35,7 +33,7 @@ public final class SetpointGuard {
 
   private final long maxSetpointAgeMicros;
   private final long maxStatusAgeMicros;
-  private final Map<Joint, JointTrack> joints = new EnumMap<>(Joint.class);
+  private final JointTrack[] joints = new JointTrack[Joint.COUNT];
   private DaemonMode mode;
   private long statusMicros;
 
@@ -50,7 +48,7 @@ public final class SetpointGuard {
     }
     this.maxSetpointAgeMicros = Math.round(maxSetpointAgeS * 1e6);
     this.maxStatusAgeMicros = Math.round(maxStatusAgeS * 1e6);
-    for (Joint joint : Joint.values()) joints.put(joint, new JointTrack());
+    for (int i = 0; i < joints.length; ++i) joints[i] = new JointTrack();
   }
 
   /** The daemon's mode, received at nowMicros. */
@@ -64,7 +62,7 @@ public final class SetpointGuard {
    * sequence number (ignored); a gap in the sequence counts the frames lost.
    */
   public boolean onSetpoint(Joint joint, Setpoint setpoint, long nowMicros) {
-    JointTrack track = joints.get(joint);
+    JointTrack track = joints[joint.index()];
     if (track.latest != null) {
       int step = (setpoint.sequence() - track.latest.sequence()) & 0xFF;
       if (step == 0) {
@@ -81,7 +79,7 @@ public final class SetpointGuard {
   public Verdict verdict(long nowMicros) {
     if (mode == null || nowMicros - statusMicros > maxStatusAgeMicros) return Verdict.DAEMON_LOST;
     if (!mode.streams()) return Verdict.DAEMON_NOT_STREAMING;
-    for (JointTrack track : joints.values()) {
+    for (JointTrack track : joints) {
       if (track.latest == null || nowMicros - track.receivedMicros > maxSetpointAgeMicros) return Verdict.SETPOINT_STALE;
     }
     return Verdict.USE;
@@ -89,7 +87,7 @@ public final class SetpointGuard {
 
   /** The latest setpoint of a joint, or null; apply it only when {@link #verdict} is USE. */
   public Setpoint latest(Joint joint) {
-    return joints.get(joint).latest;
+    return joints[joint.index()].latest;
   }
 
   /** The daemon's latest mode, or null before any status. */
@@ -99,11 +97,11 @@ public final class SetpointGuard {
 
   /** Frames missing from the sequence of a joint since start-up. */
   public long lostFrames(Joint joint) {
-    return joints.get(joint).lostFrames;
+    return joints[joint.index()].lostFrames;
   }
 
   /** Frames that repeated the latest sequence number of a joint. */
   public long repeatedFrames(Joint joint) {
-    return joints.get(joint).repeatedFrames;
+    return joints[joint.index()].repeatedFrames;
   }
 }

@@ -2,7 +2,7 @@ package cyberplanner.roborio;
 
 /**
  * Where the robot takes cyber-plannerd's setpoints and status from: the CAN bus on the robot
- * (wpilib.CanSetpointSource), ARM_SETPOINT in desktop simulation (LcmSetpointSource).
+ * (the layers' CanStreamSetpointSource), ARM_SETPOINT in desktop simulation (LcmSetpointSource).
  */
 public interface SetpointSource {
   /** Feeds what arrived since the last call into the guard, stamped nowMicros. Main loop only. */

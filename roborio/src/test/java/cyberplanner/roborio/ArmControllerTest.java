@@ -1,5 +1,6 @@
 package cyberplanner.roborio;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -20,23 +21,24 @@ import org.junit.jupiter.api.Test;
 class ArmControllerTest {
   long nowMicros = 1_000_000;
   boolean enabled = true;
-  final List<double[]> elevatorRequests = new ArrayList<>();
-  final JointOutput elevator = (p, v, ff) -> elevatorRequests.add(new double[] {p, v, ff});
-  final JointOutput arm = (p, v, ff) -> {};
+  final List<double[]> joint0Requests = new ArrayList<>();
+  final List<double[]> joint1Requests = new ArrayList<>();
+  final JointOutput joint0 = (p, v, ff) -> joint0Requests.add(new double[] {p, v, ff});
+  final JointOutput joint1 = (p, v, ff) -> joint1Requests.add(new double[] {p, v, ff});
   /** A source that delivers one fresh pair of setpoints per loop, sequence counting up. */
   int sequence;
   DaemonMode mode = DaemonMode.MOVING;
   final SetpointSource source = (guard, now) -> {
     guard.onStatus(mode, now);
-    guard.onSetpoint(Joint.ELEVATOR, new Setpoint(1, 0.5, 0.1, 0.4, sequence & 0xFF), now);
-    guard.onSetpoint(Joint.ARM, new Setpoint(2, 1.0, 0.0, 0.1, sequence & 0xFF), now);
+    guard.onSetpoint(Joint.JOINT_0, new Setpoint(1, 0.5, 0.1, 0.4, sequence & 0xFF), now);
+    guard.onSetpoint(Joint.JOINT_1, new Setpoint(2, 1.0, 0.0, 0.1, sequence & 0xFF), now);
     sequence += 2;  // every other frame lost
   };
 
   ArmController controller(LCM lcm) {
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 9);
-    return new ArmController(new ArmController.Parts(client, source, elevator, arm,
-        () -> new ArmState(0.3, 0, 1.5, 0, false, false), () -> enabled, () -> nowMicros),
+    return new ArmController(new ArmController.Parts(client, source, joint0, joint1,
+        () -> ArmState.of(0.3, 0, 1.5, 0).holding("coral"), () -> enabled, () -> nowMicros),
         JointGravity.constant(0.37), JointGravity.cosine(0.21));
   }
 
@@ -52,10 +54,9 @@ class ArmControllerTest {
     assertFalse(inputs.daemonAlive);
     assertEquals("USE", inputs.verdict);
     assertEquals(0, inputs.moveRequestId);
+    assertEquals("", inputs.daemonJoints);
 
-    arm_daemon_status_t status = new arm_daemon_status_t();
-    status.mode = arm_daemon_status_t.MODE_MOVING;
-    lcm.publish("ARM_DAEMON_STATUS", status);
+    lcm.publish("ARM_DAEMON_STATUS", ClientMemqTest.daemonStatus(arm_daemon_status_t.MODE_MOVING));
     MoveHandle move = controller.moveTo(Pose.of(1.22, 5.69));
     ClientMemqTest.status(lcm, 9, arm_plan_status_t.STATUS_EXECUTING, "");
     ClientMemqTest.until(() -> move.state() == MoveState.EXECUTING && controller.client().daemonMode() != null);
@@ -66,12 +67,14 @@ class ArmControllerTest {
     controller.updateInputs(inputs);
     assertTrue(inputs.daemonAlive);
     assertEquals("MOVING", inputs.daemonMode);
+    assertEquals("elevator m, arm rad", inputs.daemonJoints);
     assertEquals(9, inputs.moveRequestId);
     assertEquals("DONE", inputs.moveState);
     assertEquals(0.5, inputs.moveDurationS);
     assertEquals(2, inputs.moveStateChanges);  // EXECUTING, then DONE, as the loop saw them
-    assertEquals(2, inputs.elevatorLostFrames);  // one per loop after the first
-    assertEquals(2, inputs.armLostFrames);
+    assertEquals(2, inputs.joint0LostFrames);  // one per loop after the first
+    assertEquals(2, inputs.joint1LostFrames);
+    assertEquals(0, inputs.joint0RepeatedFrames);
     controller.client().close();
   }
 
@@ -81,26 +84,27 @@ class ArmControllerTest {
     ArmController controller = controller(lcm);
     enabled = false;
     controller.periodic();
-    assertEquals(0, elevatorRequests.size());
+    assertEquals(0, joint0Requests.size());
     enabled = true;
     controller.periodic();
-    assertEquals(1, elevatorRequests.size());
-    assertEquals(0.4, elevatorRequests.get(0)[2]);  // the setpoint's own feedforward
+    assertEquals(1, joint0Requests.size());
+    // Each joint's own setpoint reaches its own motor, with the setpoint's own feedforward.
+    assertArrayEquals(new double[] {0.5, 0.1, 0.4}, joint0Requests.get(0));
+    assertArrayEquals(new double[] {1.0, 0.0, 0.1}, joint1Requests.get(0));
     controller.beginManualOverride();
     controller.periodic();
     ArmInputs inputs = new ArmInputs();
     controller.updateInputs(inputs);
     assertTrue(inputs.manualOverride);
-    assertEquals(1, elevatorRequests.size());
+    assertEquals(1, joint0Requests.size());
     controller.moveTo(Pose.of(0.2, 1.57));
     assertFalse(controller.isManualOverride());
     controller.periodic();
-    assertEquals(2, elevatorRequests.size());
-    mode = DaemonMode.RELEASED;  // not streaming: the hold, against gravity
+    assertEquals(2, joint0Requests.size());
+    mode = DaemonMode.RELEASED;  // not streaming: the hold, against each joint's own gravity model
     controller.periodic();
-    assertEquals(0.3, elevatorRequests.get(2)[0]);
-    assertEquals(0.0, elevatorRequests.get(2)[1]);
-    assertEquals(0.37, elevatorRequests.get(2)[2]);
+    assertArrayEquals(new double[] {0.3, 0.0, 0.37}, joint0Requests.get(2));
+    assertArrayEquals(new double[] {1.5, 0.0, 0.21 * Math.cos(1.5)}, joint1Requests.get(2));
     controller.client().close();
   }
 }

@@ -1,8 +1,10 @@
 package cyberplanner.roborio;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import cyberplanner.arm_cancel_t;
@@ -16,6 +18,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import lcm.lcm.LCM;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.function.Executable;
 
 /** The client against a scripted daemon on LCM's in-process transport (memq://). */
 class ClientMemqTest {
@@ -26,6 +29,15 @@ class ClientMemqTest {
     m.reason = reason;
     m.duration_s = status == arm_plan_status_t.STATUS_EXECUTING ? 0.5 : 0.0;
     lcm.publish("ARM_PLAN_STATUS", m);
+  }
+
+  /** A daemon status of the reference robot's config (joint 0 an elevator, joint 1 an arm). */
+  static arm_daemon_status_t daemonStatus(byte mode) {
+    arm_daemon_status_t m = new arm_daemon_status_t();
+    m.mode = mode;
+    m.joint_names = new String[] {"elevator", "arm"};
+    m.joint_units = new String[] {"m", "rad"};
+    return m;
   }
 
   interface Decoder<T> {
@@ -55,15 +67,24 @@ class ClientMemqTest {
     LCM lcm = new LCM("memq://");
     List<arm_goal_t> goals = collect(lcm, "ARM_GOAL", arm_goal_t::new);
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 100);
-    MoveHandle first = client.moveTo(Pose.of(1.22, 5.69).withCoral());
-    MoveHandle second = client.moveTo(new Pose(0.58, 2.97, false, true, "open"));
+    MoveHandle first = client.moveTo(Pose.of(1.22, 5.69).holding("coral"));
+    MoveHandle second =
+        client.moveTo(Pose.of(0.58, 2.97).holding("algae", "coral").inScene("reef").atSceneOffset(0.12));
     until(() -> goals.size() == 2);
     assertEquals(100, first.requestId());
     assertEquals(101, second.requestId());
-    assertEquals(1.22, goals.get(0).elevator_m);
-    assertTrue(goals.get(0).held_coral);
-    assertEquals("open", goals.get(1).scene_name);
-    assertTrue(goals.get(1).held_algae);
+    arm_goal_t plain = goals.get(0);
+    assertArrayEquals(new double[] {1.22, 5.69}, plain.position);
+    assertEquals(1, plain.num_pieces);
+    assertArrayEquals(new String[] {"coral"}, plain.pieces);
+    assertEquals("", plain.scene_name);  // the default scene, where the config puts it
+    assertEquals(0.0, plain.scene_offset_m);
+    arm_goal_t placed = goals.get(1);
+    assertArrayEquals(new double[] {0.58, 2.97}, placed.position);
+    assertEquals(2, placed.num_pieces);
+    assertArrayEquals(new String[] {"algae", "coral"}, placed.pieces);
+    assertEquals("reef", placed.scene_name);
+    assertEquals(0.12, placed.scene_offset_m);
     assertEquals(MoveState.SENT, first.state());
 
     status(lcm, 100, arm_plan_status_t.STATUS_ACCEPTED, "");
@@ -103,7 +124,7 @@ class ClientMemqTest {
     LCM lcm = new LCM("memq://");
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 7);
     MoveHandle rejected = client.moveTo(Pose.of(5.0, 1.0));
-    MoveHandle failed = client.moveTo(Pose.of(1.98, 5.39).withCoral());
+    MoveHandle failed = client.moveTo(Pose.of(1.98, 5.39).holding("coral"));
     status(lcm, 7, arm_plan_status_t.STATUS_REJECTED, "goal out of range");
     status(lcm, 8, arm_plan_status_t.STATUS_FAILED, "no path");
     assertEquals(MoveState.REJECTED, rejected.await(2));
@@ -120,10 +141,10 @@ class ClientMemqTest {
     assertNull(client.daemonMode());
     assertFalse(client.isDaemonAlive(10));
     assertEquals(Double.POSITIVE_INFINITY, client.daemonStatusAgeS());
-    arm_daemon_status_t status = new arm_daemon_status_t();
-    status.mode = arm_daemon_status_t.MODE_MOVING;
-    lcm.publish("ARM_DAEMON_STATUS", status);
+    assertEquals("", client.daemonJoints());
+    lcm.publish("ARM_DAEMON_STATUS", daemonStatus(arm_daemon_status_t.MODE_MOVING));
     until(() -> client.daemonMode() == DaemonMode.MOVING);
+    assertEquals("elevator m, arm rad", client.daemonJoints());
     assertTrue(client.isDaemonAlive(1.0));
     Thread.sleep(60);
     assertTrue(client.daemonStatusAgeS() >= 0.05);
@@ -150,9 +171,7 @@ class ClientMemqTest {
     status(lcm, 40, arm_plan_status_t.STATUS_CANCELLED, "cancelled by the robot");
     assertEquals(MoveState.CANCELLED, move.await(2));
     // The daemon's new mode 5 (manual override) decodes.
-    arm_daemon_status_t released = new arm_daemon_status_t();
-    released.mode = 5;
-    lcm.publish("ARM_DAEMON_STATUS", released);
+    lcm.publish("ARM_DAEMON_STATUS", daemonStatus((byte) 5));
     until(() -> client.daemonMode() == DaemonMode.RELEASED);
     assertFalse(DaemonMode.RELEASED.streams());
     client.close();
@@ -168,16 +187,43 @@ class ClientMemqTest {
     LCM lcm = new LCM("memq://");
     List<arm_state_t> states = collect(lcm, "ARM_STATE", arm_state_t::new);
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
-    client.publishState(0.2, 0.01, 1.57, -0.02, true, false);
-    until(() -> states.size() == 1);
+    client.publishState(ArmState.of(0.2, 0.01, 1.57, -0.02).holding("coral"));
+    client.publishState(ArmState.of(0.3, 0.0, 1.6, 0.0));
+    until(() -> states.size() == 2);
     arm_state_t s = states.get(0);
-    assertEquals(0.2, s.elevator_m);
-    assertEquals(0.01, s.elevator_mps);
-    assertEquals(1.57, s.arm_rad);
-    assertEquals(-0.02, s.arm_radps);
-    assertTrue(s.held_coral);
-    assertFalse(s.held_algae);
+    assertArrayEquals(new double[] {0.2, 1.57}, s.position);
+    assertArrayEquals(new double[] {0.01, -0.02}, s.velocity);
+    assertEquals(1, s.num_pieces);
+    assertArrayEquals(new String[] {"coral"}, s.pieces);
     assertTrue(Math.abs(s.utime - System.currentTimeMillis() * 1000) < 5_000_000);
+    assertEquals(0, states.get(1).num_pieces);
+    assertThrows(IllegalArgumentException.class, () -> client.publishState(null));
+    client.close();
+  }
+
+  @Test
+  void aBadGoalThrowsAtTheCallAndSendsNothing() throws Exception {
+    LCM lcm = new LCM("memq://");
+    List<arm_goal_t> goals = collect(lcm, "ARM_GOAL", arm_goal_t::new);
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    List<Executable> mistakes = List.of(
+        () -> client.moveTo(null),
+        () -> client.moveTo(Pose.of(Double.NaN, 1.0)),
+        () -> client.moveTo(Pose.of(0.2, Double.POSITIVE_INFINITY)),
+        () -> client.moveTo(Pose.of(0.2, 1.0).holding("a", "b", "c", "d", "e")),
+        () -> client.moveTo(Pose.of(0.2, 1.0).holding("coral", null)),
+        () -> client.moveTo(Pose.of(0.2, 1.0).holding("")),
+        () -> client.moveTo(Pose.of(0.2, 1.0).holding("cône")),  // LCM's Java encoder would mangle it
+        () -> client.moveTo(Pose.of(0.2, 1.0).holding((String[]) null)),
+        () -> client.moveTo(Pose.of(0.2, 1.0).inScene(null)),
+        () -> client.moveTo(Pose.of(0.2, 1.0).atSceneOffset(Double.NaN)));
+    for (Executable mistake : mistakes) assertThrows(IllegalArgumentException.class, mistake);
+    client.moveTo(Pose.of(0.2, 1.0).holding("a", "b", "c", "d"));  // MAX_PIECES is allowed
+    until(() -> goals.size() == 1);
+    Thread.sleep(20);
+    assertEquals(1, goals.size(), "only the valid goal was published");
+    assertEquals(Pose.MAX_PIECES, goals.get(0).num_pieces);
+    assertEquals(1, goals.get(0).request_id, "the mistakes used no request id");
     client.close();
   }
 }

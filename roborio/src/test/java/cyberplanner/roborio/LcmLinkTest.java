@@ -29,7 +29,7 @@ class LcmLinkTest {
     }, Channels.DEFAULT, 1);
     assertFalse(client.link().isConnected());
     assertEquals("SocketException: No such device", client.link().lastError());
-    client.publishState(0.2, 0, 1.57, 0, false, false);  // dropped, not thrown
+    client.publishState(ArmState.of(0.2, 0, 1.57, 0));  // dropped, not thrown
     MoveHandle early = client.moveTo(Pose.of(0.2, 1.57));
     assertEquals(MoveState.FAILED, early.state());
     assertTrue(early.reason().contains("No such device"), early.reason());
@@ -37,7 +37,7 @@ class LcmLinkTest {
 
     route[0] = true;
     Thread.sleep(Math.round(CyberPlannerClient.RETRY_S * 1000) + 50);
-    client.publishState(0.2, 0, 1.57, 0, false, false);
+    client.publishState(ArmState.of(0.2, 0, 1.57, 0));
     assertTrue(client.link().isConnected());
     assertEquals("", client.link().lastError());
     MoveHandle later = client.moveTo(Pose.of(0.58, 2.97));

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import cyberplanner.arm_setpoint_t;
 import cyberplanner.roborio.SetpointGuard.Verdict;
+import cyberplanner.roborio.can.Setpoint;
 import java.util.List;
 import lcm.lcm.LCM;
 import org.junit.jupiter.api.Test;
@@ -18,11 +19,31 @@ class LcmSetpointSourceTest {
   static arm_setpoint_t setpoint(int sequence) {
     arm_setpoint_t m = new arm_setpoint_t();
     m.mode = arm_setpoint_t.MODE_MOVING;
-    m.elevator_m = 0.5;
-    m.arm_rad = 1.0;
-    m.elevator_sequence = (byte) sequence;
-    m.arm_sequence = (byte) sequence;
+    m.position = new double[] {0.5, 1.0};
+    m.sequence = new byte[] {(byte) sequence, (byte) sequence};
     return m;
+  }
+
+  @Test
+  void eachJointTakesItsOwnIndexOfTheArrays() throws Exception {
+    LCM lcm = new LCM("memq://");
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
+    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    arm_setpoint_t m = setpoint(0);
+    m.position = new double[] {0.25, -1.5};
+    m.velocity = new double[] {0.125, 2.5};
+    m.volts = new double[] {0.37, -0.75};
+    m.sequence = new byte[] {7, (byte) 200};
+    lcm.publish("ARM_SETPOINT", m);
+    ClientMemqTest.until(() -> {
+      source.poll(guard, nowMicros);
+      return guard.latest(Joint.JOINT_1) != null;
+    });
+    assertEquals(new Setpoint(-1, 0.25, 0.125, 0.37, 7), guard.latest(Joint.JOINT_0));
+    assertEquals(new Setpoint(-1, -1.5, 2.5, -0.75, 200), guard.latest(Joint.JOINT_1));
+    assertEquals(Verdict.USE, guard.verdict(nowMicros));
+    client.close();
   }
 
   @Test
@@ -40,12 +61,12 @@ class LcmSetpointSourceTest {
       int last = (sequence - 1) & 0xFF;
       ClientMemqTest.until(() -> {  // one poll per loop once the loop's messages are in
         source.poll(guard, nowMicros);
-        return guard.latest(Joint.ELEVATOR) != null && guard.latest(Joint.ELEVATOR).sequence() == last;
+        return guard.latest(Joint.JOINT_0) != null && guard.latest(Joint.JOINT_0).sequence() == last;
       });
       nowMicros += 20_000;
     }
-    assertEquals(1, guard.lostFrames(Joint.ELEVATOR));
-    assertEquals(1, guard.lostFrames(Joint.ARM));
+    assertEquals(1, guard.lostFrames(Joint.JOINT_0));
+    assertEquals(1, guard.lostFrames(Joint.JOINT_1));
     client.close();
   }
 

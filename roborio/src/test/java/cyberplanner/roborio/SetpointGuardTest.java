@@ -20,8 +20,8 @@ class SetpointGuardTest {
   static SetpointGuard streaming(long nowMicros) {
     SetpointGuard guard = new SetpointGuard(0.05, 0.25);
     guard.onStatus(DaemonMode.HOLDING, nowMicros);
-    guard.onSetpoint(Joint.ELEVATOR, at(0.2, 10), nowMicros);
-    guard.onSetpoint(Joint.ARM, at(1.57, 200), nowMicros);
+    guard.onSetpoint(Joint.JOINT_0, at(0.2, 10), nowMicros);
+    guard.onSetpoint(Joint.JOINT_1, at(1.57, 200), nowMicros);
     return guard;
   }
 
@@ -35,7 +35,7 @@ class SetpointGuardTest {
     SetpointGuard guard = streaming(1_000 * MS);
     assertEquals(Verdict.USE, guard.verdict(1_000 * MS));
     assertEquals(Verdict.USE, guard.verdict(1_050 * MS));  // the limit itself is still fresh
-    assertEquals(0.2, guard.latest(Joint.ELEVATOR).position());
+    assertEquals(0.2, guard.latest(Joint.JOINT_0).position());
   }
 
   @Test
@@ -48,15 +48,15 @@ class SetpointGuardTest {
   void oneJointWithoutSetpointsIsStale() {
     SetpointGuard guard = new SetpointGuard(0.05, 0.25);
     guard.onStatus(DaemonMode.MOVING, 0);
-    guard.onSetpoint(Joint.ELEVATOR, at(0.2, 0), 0);
+    guard.onSetpoint(Joint.JOINT_0, at(0.2, 0), 0);
     assertEquals(Verdict.SETPOINT_STALE, guard.verdict(0));
   }
 
   @Test
   void aSilentDaemonIsLostEvenWithFreshSetpoints() {
     SetpointGuard guard = streaming(0);
-    guard.onSetpoint(Joint.ELEVATOR, at(0.2, 11), 260 * MS);
-    guard.onSetpoint(Joint.ARM, at(1.57, 201), 260 * MS);
+    guard.onSetpoint(Joint.JOINT_0, at(0.2, 11), 260 * MS);
+    guard.onSetpoint(Joint.JOINT_1, at(1.57, 201), 260 * MS);
     assertEquals(Verdict.DAEMON_LOST, guard.verdict(260 * MS));
   }
 
@@ -72,14 +72,14 @@ class SetpointGuardTest {
   @Test
   void repeatsAreIgnoredAndGapsCountedAcrossTheWrap() {
     SetpointGuard guard = streaming(0);
-    assertFalse(guard.onSetpoint(Joint.ARM, at(9.0, 200), 10 * MS));  // a repeat: not fresh
-    assertEquals(1.57, guard.latest(Joint.ARM).position());
+    assertFalse(guard.onSetpoint(Joint.JOINT_1, at(9.0, 200), 10 * MS));  // a repeat: not fresh
+    assertEquals(1.57, guard.latest(Joint.JOINT_1).position());
     assertEquals(Verdict.SETPOINT_STALE, guard.verdict(51 * MS));
-    assertTrue(guard.onSetpoint(Joint.ARM, at(1.6, 203), 20 * MS));  // 201, 202 lost
-    assertTrue(guard.onSetpoint(Joint.ARM, at(1.6, 1), 25 * MS));    // 204..255, 0 lost: 53
-    assertEquals(2 + 53, guard.lostFrames(Joint.ARM));
-    assertEquals(1, guard.repeatedFrames(Joint.ARM));
-    assertEquals(0, guard.lostFrames(Joint.ELEVATOR));
+    assertTrue(guard.onSetpoint(Joint.JOINT_1, at(1.6, 203), 20 * MS));  // 201, 202 lost
+    assertTrue(guard.onSetpoint(Joint.JOINT_1, at(1.6, 1), 25 * MS));    // 204..255, 0 lost: 53
+    assertEquals(2 + 53, guard.lostFrames(Joint.JOINT_1));
+    assertEquals(1, guard.repeatedFrames(Joint.JOINT_1));
+    assertEquals(0, guard.lostFrames(Joint.JOINT_0));
   }
 
   @Test
@@ -95,10 +95,10 @@ class SetpointGuardTest {
       }
       revealed += pending;
       pending = 0;
-      guard.onSetpoint(Joint.ELEVATOR, at(0.0, sent & 0xFF), sent);
+      guard.onSetpoint(Joint.JOINT_0, at(0.0, sent & 0xFF), sent);
     }
     // Runs of 256 or more drops would alias; with p = 0.1 there are none.
-    assertEquals(revealed, guard.lostFrames(Joint.ELEVATOR));
+    assertEquals(revealed, guard.lostFrames(Joint.JOINT_0));
     assertTrue(revealed > 400, "the seed drops about 10 %");
   }
 

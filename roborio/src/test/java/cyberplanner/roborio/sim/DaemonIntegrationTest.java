@@ -37,8 +37,9 @@ import org.junit.jupiter.api.TestMethodOrder;
 class DaemonIntegrationTest {
   static final String URL = System.getProperty("cyber.lcm.url", "udpm://239.255.76.67:5810?ttl=0");
   static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
-  static final double POSITION_TOLERANCE_M = 0.002;
-  static final double ANGLE_TOLERANCE_RAD = 0.005;
+  // The reference robot's joint 0 is an elevator (m), joint 1 an arm (rad).
+  static final double JOINT0_TOLERANCE_M = 0.002;
+  static final double JOINT1_TOLERANCE_RAD = 0.005;
   // On the hold setpoints, in a row: SimulatedMechanism's critically damped joints (30 rad/s) leave
   // (1 + 9) e^-9 = 0.12 % of the error they started the settling with.
   static final double SETTLE_S = 0.3;
@@ -56,10 +57,11 @@ class DaemonIntegrationTest {
       List<arm_setpoint_t> setpoints = new CopyOnWriteArrayList<>();
       client.setSetpointListener(setpoints::add);
       awaitDaemon(client);
+      assertEquals("elevator m, arm rad", client.daemonJoints());  // the config's [[joints]], by index
       StarvationWatch watch = StarvationWatch.fromDaemon();
       Thread publisher = new Thread(() -> {
         while (!Thread.currentThread().isInterrupted()) {
-          client.publishState(0.58, 0.0, 2.97, 0.0, false, false);  // at rest at INTAKE
+          client.publishState(ArmState.of(0.58, 0.0, 2.97, 0.0));  // at rest at INTAKE
           watch.tick();
           try {
             Thread.sleep(10);
@@ -96,8 +98,8 @@ class DaemonIntegrationTest {
             // Full-rate echo: about one per 5 ms stream period over the trajectory.
             assertTrue(moving >= 0.5 * move.durationS() / 0.005, moving + " moving setpoints");
             assertTrue(last != null, "no ARM_SETPOINT holding request " + move.requestId() + " within 2 s of DONE");
-            assertEquals(1.22, last.elevator_m, 1e-5);
-            assertEquals(5.69, last.arm_rad, 1e-5);
+            assertEquals(1.22, last.position[0], 1e-5);
+            assertEquals(5.69, last.position[1], 1e-5);
           };
         }, () -> {});
         System.out.printf("client: void attempts %d, largest ARM_STATE gap %.3f s%n", watch.voided(),
@@ -116,19 +118,19 @@ class DaemonIntegrationTest {
     List<Pose> sequence = List.of(
         Pose.of(0.20, 1.57),                 // none: L3 -> STOW
         Pose.of(0.58, 2.97),                 // none: STOW -> INTAKE
-        Pose.of(0.78, 6.09).withCoral(),     // coral: INTAKE -> L2
-        Pose.of(1.27, 5.79).withCoral(),     // coral: L2 -> L3
-        Pose.of(0.20, 1.57).withCoral(),     // coral: L3 -> STOW
-        Pose.of(1.93, 1.71).withAlgae(),     // algae: STOW -> NET
-        Pose.of(0.20, 1.57).withAlgae(),     // algae: NET -> STOW
+        Pose.of(0.78, 6.09).holding("coral"),  // coral: INTAKE -> L2
+        Pose.of(1.27, 5.79).holding("coral"),  // coral: L2 -> L3
+        Pose.of(0.20, 1.57).holding("coral"),  // coral: L3 -> STOW
+        Pose.of(1.93, 1.71).holding("algae"),  // algae: STOW -> NET
+        Pose.of(0.20, 1.57).holding("algae"),  // algae: NET -> STOW
         Pose.of(1.97, 5.17));                // none: STOW -> L4
     SimulatedMechanism mechanism = new SimulatedMechanism(1.22, 5.69);
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
       awaitDaemon(client);
       SetpointGuard guard = new SetpointGuard(0.05, 0.25);
       ArmController subsystem = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
-          mechanism.elevator, mechanism.arm, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
-          new HoldFallback(mechanism.elevator, mechanism.arm, JointGravity.NONE, JointGravity.NONE));
+          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
+          new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE, JointGravity.NONE));
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
       watch.checkUnlessStarved("sim: start", attempt -> {
@@ -137,7 +139,7 @@ class DaemonIntegrationTest {
         return () -> assertEquals(SetpointGuard.Verdict.USE, verdict);
       }, () -> {});
       for (Pose goal : sequence) {
-        mechanism.setPieces(goal.heldCoral(), goal.heldAlgae());
+        mechanism.setPieces(goal.pieces());
         // A stale ARM_STATE stops the move, or the hold at its end, where the state lagged behind.
         ArmState from = mechanism.state();
         watch.checkUnlessStarved("sim: " + goal, attempt -> {
@@ -150,24 +152,24 @@ class DaemonIntegrationTest {
           long fallbackBefore = loop.fallbackLoops;
           boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
           ArmState at = mechanism.state();
-          double elevatorError = Math.abs(at.elevatorM() - goal.elevatorM());
-          double armError = Math.abs(at.armRad() - goal.armRad());
+          double joint0Error = Math.abs(at.position(Joint.JOINT_0) - goal.position(Joint.JOINT_0));
+          double joint1Error = Math.abs(at.position(Joint.JOINT_1) - goal.position(Joint.JOINT_1));
           System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s, loops outside USE %d%n",
-              goal, command.durationS(), elevatorError, armError, subsystem.verdict(),
+              goal, command.durationS(), joint0Error, joint1Error, subsystem.verdict(),
               loop.fallbackLoops - fallbackBefore);
           return () -> {
             assertTrue(command.isDone(), goal + ": " + command);
             assertTrue(settled, goal + ": not " + SETTLE_S + " s in a row on the setpoints in " + SETTLE_WITHIN_S
                 + " s");
             assertTrue(command.durationS() > 0.1, goal + ": no real move");  // restart() put it back
-            assertTrue(elevatorError <= POSITION_TOLERANCE_M, goal + ": elevator error " + elevatorError);
-            assertTrue(armError <= ANGLE_TOLERANCE_RAD, goal + ": arm error " + armError);
+            assertTrue(joint0Error <= JOINT0_TOLERANCE_M, goal + ": joint 0 error " + joint0Error);
+            assertTrue(joint1Error <= JOINT1_TOLERANCE_RAD, goal + ": joint 1 error " + joint1Error);
           };
         }, () -> restart(loop, mechanism, from, watch));
       }
-      System.out.printf("sim: %d moves, lost setpoints elevator %d arm %d, loops outside USE %d of %d, "
-          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.ELEVATOR),
-          guard.lostFrames(Joint.ARM), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
+      System.out.printf("sim: %d moves, lost setpoints joint 0 %d joint 1 %d, loops outside USE %d of %d, "
+          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.JOINT_0),
+          guard.lostFrames(Joint.JOINT_1), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
     }
   }
 
@@ -179,8 +181,8 @@ class DaemonIntegrationTest {
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 7000)) {
       awaitDaemon(client);
       ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
-          mechanism.elevator, mechanism.arm, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
-          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.elevator, mechanism.arm, JointGravity.NONE,
+          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
+          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE,
               JointGravity.NONE));
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
@@ -219,7 +221,7 @@ class DaemonIntegrationTest {
     long stops = watch.daemonStaleStops();
     Thread.sleep(Math.round(watch.stateTimeoutS() * 1e3));
     for (int i = 0; i < 100 && watch.daemonStaleStops() == stops; ++i) Thread.sleep(50);
-    mechanism.placeAt(from.elevatorM(), from.armRad());
+    mechanism.placeAt(from.position(Joint.JOINT_0), from.position(Joint.JOINT_1));
     loop.resume();
     loop.runFor(1.0);
   }

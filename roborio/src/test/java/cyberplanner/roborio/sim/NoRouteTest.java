@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.CyberPlannerClient;
 import cyberplanner.roborio.MoveState;
 import cyberplanner.roborio.Pose;
@@ -28,7 +29,7 @@ class NoRouteTest {
       Process route = new ProcessBuilder("ip", "route", "add", "224.0.0.0/4", "dev", "lo").inheritIO().start();
       assertEquals(0, route.waitFor());
       for (int i = 0; i < 300 && !client.link().isConnected(); ++i) {
-        client.publishState(0.2, 0, 1.57, 0, false, false);  // the robot loop, 100 Hz
+        client.publishState(ArmState.of(0.2, 0, 1.57, 0));  // the robot loop, 100 Hz
         Thread.sleep(10);
       }
       assertTrue(client.link().isConnected(), client.link().lastError());

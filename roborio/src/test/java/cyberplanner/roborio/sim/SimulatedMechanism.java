@@ -2,11 +2,12 @@ package cyberplanner.roborio.sim;
 
 import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.JointOutput;
+import java.util.List;
 
 /**
- * A desktop stand-in for the elevator and arm: each joint is a critically damped follower of the
- * setpoint the robot code applies (position and velocity, the way a tuned motor controller's
- * position loop with velocity feedforward tracks it). Not a physics model: the point is that the
+ * A desktop stand-in for a two-joint mechanism (joint 0 and joint 1 by index): each joint is a
+ * critically damped follower of the setpoint the robot code applies (position and velocity, the
+ * way a tuned motor controller's position loop with velocity feedforward tracks it). Not a physics model: the point is that the
  * setpoints, applied as a robot applies them, bring the mechanism to each goal.
  */
 public final class SimulatedMechanism {
@@ -44,36 +45,36 @@ public final class SimulatedMechanism {
     }
   }
 
-  public final SimJoint elevator;
-  public final SimJoint arm;
-  private volatile boolean heldCoral;
-  private volatile boolean heldAlgae;
+  public final SimJoint joint0;
+  public final SimJoint joint1;
+  private volatile List<String> pieces = List.of();
 
-  public SimulatedMechanism(double elevatorM, double armRad) {
-    elevator = new SimJoint(elevatorM);
-    arm = new SimJoint(armRad);
+  /** At rest at these positions (m or rad). */
+  public SimulatedMechanism(double joint0Position, double joint1Position) {
+    joint0 = new SimJoint(joint0Position);
+    joint1 = new SimJoint(joint1Position);
   }
 
-  /** At rest at elevatorM, armRad, holding there (a test putting the robot back). */
-  public void placeAt(double elevatorM, double armRad) {
-    elevator.placeAt(elevatorM);
-    arm.placeAt(armRad);
+  /** At rest at these positions, holding there (a test putting the robot back). */
+  public void placeAt(double joint0Position, double joint1Position) {
+    joint0.placeAt(joint0Position);
+    joint1.placeAt(joint1Position);
   }
 
-  public void setPieces(boolean coral, boolean algae) {
-    heldCoral = coral;
-    heldAlgae = algae;
+  /** The game pieces held from now on, by name. */
+  public void setPieces(List<String> held) {
+    pieces = List.copyOf(held);
   }
 
   /** Advances the model by dtS. */
   public void step(double dtS) {
     for (double t = 0; t < dtS - 1e-12; t += SUBSTEP_S) {
-      elevator.step(SUBSTEP_S);
-      arm.step(SUBSTEP_S);
+      joint0.step(SUBSTEP_S);
+      joint1.step(SUBSTEP_S);
     }
   }
 
   public ArmState state() {
-    return new ArmState(elevator.position, elevator.velocity, arm.position, arm.velocity, heldCoral, heldAlgae);
+    return new ArmState(joint0.position, joint0.velocity, joint1.position, joint1.velocity, pieces);
   }
 }

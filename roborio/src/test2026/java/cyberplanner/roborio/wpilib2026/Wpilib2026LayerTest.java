@@ -43,13 +43,13 @@ import org.junit.jupiter.api.Test;
  * counters of docs/roborio.md, "Safety".
  */
 class Wpilib2026LayerTest {
-  static final double ELEVATOR_KG = 0.37;
-  static final double ARM_KG = 0.21;
-  static final double ARM_ROTATIONS_PER_RAD = 1 / (2 * Math.PI);
+  static final double JOINT0_KG = 0.37;
+  static final double JOINT1_KG = 0.21;
+  static final double JOINT1_ROTATIONS_PER_RAD = 1 / (2 * Math.PI);
   long nowMicros;
-  final TalonFX elevatorMotor = new TalonFX(11);
-  final SparkFlex armMotor = new SparkFlex(12, SparkLowLevel.MotorType.kBrushless);
-  ArmState measured = new ArmState(0.30, 0.0, 1.50, 0.0, false, false);
+  final TalonFX joint0Motor = new TalonFX(11);
+  final SparkFlex joint1Motor = new SparkFlex(12, SparkLowLevel.MotorType.kBrushless);
+  ArmState measured = ArmState.of(0.30, 0.0, 1.50, 0.0);
   CanStreamSetpointSource source;
   CyberArmSubsystem subsystem;
   LCM lcm;
@@ -82,10 +82,10 @@ class Wpilib2026LayerTest {
     });
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
     source = CanStreamSetpointSource.withReferenceDevices();
-    // Elevator: 0.05 m per mechanism rotation; arm: Spark encoder in rotations of the arm.
-    subsystem = CyberArmSubsystem.create(client, source, new TalonFxOutput(elevatorMotor, 20.0),
-        new SparkOutput(armMotor, ARM_ROTATIONS_PER_RAD, ClosedLoopSlot.kSlot0), () -> measured,
-        JointGravity.constant(ELEVATOR_KG), JointGravity.cosine(ARM_KG));
+    // Joint 0: 0.05 m per mechanism rotation; joint 1: a Spark encoder in rotations of the joint.
+    subsystem = CyberArmSubsystem.create(client, source, new TalonFxOutput(joint0Motor, 20.0),
+        new SparkOutput(joint1Motor, JOINT1_ROTATIONS_PER_RAD, ClosedLoopSlot.kSlot0), () -> measured,
+        JointGravity.constant(JOINT0_KG), JointGravity.cosine(JOINT1_KG));
   }
 
   void deliverSetpoint(int device, double position, double velocity, double volts, int sequence, long ageMicros) {
@@ -99,20 +99,20 @@ class Wpilib2026LayerTest {
   }
 
   /** A status, both setpoints (0.37 V and 0.1 V) just received, then the robot loop. */
-  void tick(DaemonMode mode, int sequence, double elevatorM, double armRad) {
+  void tick(DaemonMode mode, int sequence, double joint0M, double joint1Rad) {
     deliverStatus(mode, sequence);
-    deliverSetpoint(1, elevatorM, 0.0, 0.37, sequence, 0);
-    deliverSetpoint(2, armRad, 0.0, 0.1, sequence, 0);
+    deliverSetpoint(1, joint0M, 0.0, 0.37, sequence, 0);
+    deliverSetpoint(2, joint1Rad, 0.0, 0.1, sequence, 0);
     subsystem.periodic();
   }
 
-  void assertHolding(double elevatorM, double armRad) {
-    assertEquals(elevatorM * 20.0, elevatorMotor.standInPosition, 1e-9);
-    assertEquals(0.0, elevatorMotor.standInVelocity);
-    assertEquals(ELEVATOR_KG, elevatorMotor.standInFeedForward, 1e-9);
-    SparkClosedLoopController arm = armMotor.getClosedLoopController();
-    assertEquals(armRad * ARM_ROTATIONS_PER_RAD, arm.standInValue, 1e-9);
-    assertEquals(ARM_KG * Math.cos(armRad), arm.standInArbFeedforward, 1e-9);
+  void assertHolding(double joint0M, double joint1Rad) {
+    assertEquals(joint0M * 20.0, joint0Motor.standInPosition, 1e-9);
+    assertEquals(0.0, joint0Motor.standInVelocity);
+    assertEquals(JOINT0_KG, joint0Motor.standInFeedForward, 1e-9);
+    SparkClosedLoopController spark = joint1Motor.getClosedLoopController();
+    assertEquals(joint1Rad * JOINT1_ROTATIONS_PER_RAD, spark.standInValue, 1e-9);
+    assertEquals(JOINT1_KG * Math.cos(joint1Rad), spark.standInArbFeedforward, 1e-9);
   }
 
   @Test
@@ -122,28 +122,28 @@ class Wpilib2026LayerTest {
     deliverSetpoint(2, Math.PI, -1.0, -0.2, 0, 0);
     subsystem.periodic();
     assertEquals(Verdict.USE, subsystem.controller().verdict());
-    assertEquals(10.0, elevatorMotor.standInPosition, 1e-9);
-    assertEquals(5.0, elevatorMotor.standInVelocity, 1e-9);
-    assertEquals(0.37, elevatorMotor.standInFeedForward, 1e-9);
-    SparkClosedLoopController arm = armMotor.getClosedLoopController();
-    assertEquals(0.5, arm.standInValue, 1e-5);
-    assertEquals(SparkBase.ControlType.kPosition, arm.standInControlType);
-    assertEquals(ClosedLoopSlot.kSlot0, arm.standInSlot);
-    assertEquals(-0.2, arm.standInArbFeedforward, 1e-9);
-    assertEquals(SparkClosedLoopController.ArbFFUnits.kVoltage, arm.standInArbFFUnits);
+    assertEquals(10.0, joint0Motor.standInPosition, 1e-9);
+    assertEquals(5.0, joint0Motor.standInVelocity, 1e-9);
+    assertEquals(0.37, joint0Motor.standInFeedForward, 1e-9);
+    SparkClosedLoopController spark = joint1Motor.getClosedLoopController();
+    assertEquals(0.5, spark.standInValue, 1e-5);
+    assertEquals(SparkBase.ControlType.kPosition, spark.standInControlType);
+    assertEquals(ClosedLoopSlot.kSlot0, spark.standInSlot);
+    assertEquals(-0.2, spark.standInArbFeedforward, 1e-9);
+    assertEquals(SparkClosedLoopController.ArbFFUnits.kVoltage, spark.standInArbFFUnits);
   }
 
   @Test
   void staleSetpointsHoldWhereTheMechanismIsAgainstGravity() {
     tick(DaemonMode.MOVING, 0, 0.5, 1.0);
-    measured = new ArmState(0.47, 0.2, 1.1, 0.1, false, false);
+    measured = ArmState.of(0.47, 0.2, 1.1, 0.1);
     setTime(nowMicros + 60_000);  // no frames for 60 ms: older than the 50 ms limit
     subsystem.periodic();
     assertEquals(Verdict.SETPOINT_STALE, subsystem.controller().verdict());
     assertHolding(0.47, 1.1);
     tick(DaemonMode.MOVING, 1, 0.6, 1.1);
     assertEquals(Verdict.USE, subsystem.controller().verdict());
-    assertEquals(12.0, elevatorMotor.standInPosition, 1e-9);
+    assertEquals(12.0, joint0Motor.standInPosition, 1e-9);
   }
 
   @Test
@@ -152,7 +152,7 @@ class Wpilib2026LayerTest {
     // where it stands, not driven back to the boot pose.
     DriverStation.standInEnabled = false;
     subsystem.periodic();
-    measured = new ArmState(0.05, 0.0, 1.2, 0.0, false, false);
+    measured = ArmState.of(0.05, 0.0, 1.2, 0.0);
     subsystem.periodic();
     DriverStation.standInEnabled = true;
     subsystem.periodic();
@@ -160,12 +160,12 @@ class Wpilib2026LayerTest {
     assertHolding(0.05, 1.2);
     // Setpoints in use move it; when they stop, the hold is where it is then.
     tick(DaemonMode.MOVING, 0, 0.8, 1.0);
-    measured = new ArmState(0.8, 0.0, 1.0, 0.0, false, false);
+    measured = ArmState.of(0.8, 0.0, 1.0, 0.0);
     setTime(nowMicros + 300_000);
     subsystem.periodic();
     assertEquals(Verdict.DAEMON_LOST, subsystem.controller().verdict());
     assertHolding(0.8, 1.0);
-    measured = new ArmState(0.7, 0.0, 0.9, 0.0, false, false);
+    measured = ArmState.of(0.7, 0.0, 0.9, 0.0);
     subsystem.periodic();
     assertHolding(0.8, 1.0);  // within one unusable stretch the hold stays put
   }
@@ -176,15 +176,15 @@ class Wpilib2026LayerTest {
     for (int loop = 0; loop < 50; ++loop) {  // 1 s: 200 Hz frames, a 50 Hz robot loop
       deliverStatus(DaemonMode.MOVING, loop);
       for (int i = 3; i >= 0; --i, ++sequence) {
-        boolean lost = loop == 30 && i == 2;  // one elevator frame lost on the bus
+        boolean lost = loop == 30 && i == 2;  // one joint 0 frame lost on the bus
         if (!lost) deliverSetpoint(1, 0.5, 0.0, 0.37, sequence & 0xFF, i * 5_000L);
         deliverSetpoint(2, 1.0, 0.0, 0.1, sequence & 0xFF, i * 5_000L);
       }
       subsystem.periodic();
       setTime(nowMicros + 20_000);
     }
-    assertEquals(1, subsystem.controller().guard().lostFrames(Joint.ELEVATOR));
-    assertEquals(0, subsystem.controller().guard().lostFrames(Joint.ARM));
+    assertEquals(1, subsystem.controller().guard().lostFrames(Joint.JOINT_0));
+    assertEquals(0, subsystem.controller().guard().lostFrames(Joint.JOINT_1));
     assertEquals(Verdict.USE, subsystem.controller().verdict());
   }
 
@@ -208,7 +208,7 @@ class Wpilib2026LayerTest {
     subsystem.periodic();
     assertEquals(2, source.router().undecodableFrames());
     assertEquals(1, source.router().foreignFrames());
-    assertEquals(null, subsystem.controller().guard().latest(Joint.ELEVATOR));
+    assertEquals(null, subsystem.controller().guard().latest(Joint.JOINT_0));
     assertEquals(Verdict.DAEMON_LOST, subsystem.controller().verdict());
   }
 
@@ -236,7 +236,7 @@ class Wpilib2026LayerTest {
     int[] driven = {0};
     var manual = (ManualOverrideCommand) subsystem.manualCommand(() -> {
       driven[0]++;
-      elevatorMotor.standInPosition = -1.0;  // the team's own request
+      joint0Motor.standInPosition = -1.0;  // the team's own request
     });
     assertTrue(manual.getRequirements().contains(subsystem));
     manual.initialize();
@@ -245,10 +245,10 @@ class Wpilib2026LayerTest {
     assertEquals(arm_cancel_t.ACTION_RELEASE, cancels.get(0).action);
     manual.execute();
     tick(DaemonMode.MOVING, 1, 0.9, 1.0);  // setpoints still on the bus: not applied
-    assertEquals(-1.0, elevatorMotor.standInPosition);
+    assertEquals(-1.0, joint0Motor.standInPosition);
     assertEquals(1, driven[0]);
     manual.end(true);
-    measured = new ArmState(0.42, 0.0, 1.3, 0.0, false, false);
+    measured = ArmState.of(0.42, 0.0, 1.3, 0.0);
     tick(DaemonMode.RELEASED, 2, 0.9, 1.0);  // the daemon stopped streaming: hold where it is
     assertEquals(Verdict.DAEMON_NOT_STREAMING, subsystem.controller().verdict());
     assertHolding(0.42, 1.3);

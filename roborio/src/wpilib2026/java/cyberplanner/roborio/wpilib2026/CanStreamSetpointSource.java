@@ -29,7 +29,7 @@ public final class CanStreamSetpointSource implements SetpointSource, AutoClosea
     session = CANJNI.openCANStreamSession(CanFrameRouter.STREAM_ID, CanFrameRouter.STREAM_MASK, MAX_BUFFERED);
   }
 
-  /** The reference configuration's devices: elevator 1, arm 2, status 3. */
+  /** The shipped configurations' devices: joint 0 on 1, joint 1 on 2, status 3. */
   public static CanStreamSetpointSource withReferenceDevices() {
     return new CanStreamSetpointSource(CanFrameRouter.reference());
   }

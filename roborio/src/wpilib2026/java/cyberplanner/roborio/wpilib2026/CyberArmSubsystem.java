@@ -15,7 +15,7 @@ import edu.wpi.first.wpilibj2.command.SubsystemBase;
 import java.util.function.Supplier;
 
 /**
- * The elevator and arm driven by cyber-plannerd on a roboRIO (WPILib 2026, docs/roborio.md): a
+ * A two-joint mechanism driven by cyber-plannerd on a roboRIO (WPILib 2026, docs/roborio.md): a
  * command-based subsystem around the WPILib-free ArmController, whose periodic() it runs.
  */
 public class CyberArmSubsystem extends SubsystemBase {
@@ -28,11 +28,12 @@ public class CyberArmSubsystem extends SubsystemBase {
   /**
    * The usual wiring: enabled from the DriverStation, the FPGA clock, the default guard and a
    * hold against gravity (the kG and shape of each joint's [drives.*] in the daemon's config).
+   * joint0 and joint1 drive the config's first and second [[joints]].
    */
-  public static CyberArmSubsystem create(CyberPlannerClient client, SetpointSource source, JointOutput elevator,
-      JointOutput arm, Supplier<ArmState> measured, JointGravity elevatorGravity, JointGravity armGravity) {
-    return new CyberArmSubsystem(new ArmController(new ArmController.Parts(client, source, elevator, arm, measured,
-        DriverStation::isEnabled, RobotController::getFPGATime), elevatorGravity, armGravity));
+  public static CyberArmSubsystem create(CyberPlannerClient client, SetpointSource source, JointOutput joint0,
+      JointOutput joint1, Supplier<ArmState> measured, JointGravity joint0Gravity, JointGravity joint1Gravity) {
+    return new CyberArmSubsystem(new ArmController(new ArmController.Parts(client, source, joint0, joint1, measured,
+        DriverStation::isEnabled, RobotController::getFPGATime), joint0Gravity, joint1Gravity));
   }
 
   @Override

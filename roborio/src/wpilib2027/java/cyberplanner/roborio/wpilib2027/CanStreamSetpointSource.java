@@ -32,7 +32,7 @@ public final class CanStreamSetpointSource implements SetpointSource, AutoClosea
         MAX_BUFFERED);
   }
 
-  /** The reference configuration's devices (elevator 1, arm 2, status 3) on bus. */
+  /** The shipped configurations' devices (joint 0 on 1, joint 1 on 2, status 3) on bus. */
   public static CanStreamSetpointSource withReferenceDevices(CANBus bus) {
     return new CanStreamSetpointSource(bus, CanFrameRouter.reference());
   }

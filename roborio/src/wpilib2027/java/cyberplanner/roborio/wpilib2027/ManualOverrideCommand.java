@@ -9,18 +9,18 @@ import org.wpilib.command2.Command;
  * the joints are until the next goal.
  */
 public class ManualOverrideCommand extends Command {
-  private final CyberArmSubsystem arm;
+  private final CyberArmSubsystem subsystem;
   private final Runnable drive;
 
-  public ManualOverrideCommand(CyberArmSubsystem arm, Runnable drive) {
-    this.arm = arm;
+  public ManualOverrideCommand(CyberArmSubsystem subsystem, Runnable drive) {
+    this.subsystem = subsystem;
     this.drive = drive;
-    addRequirements(arm);
+    addRequirements(subsystem);
   }
 
   @Override
   public void initialize() {
-    arm.controller().beginManualOverride();
+    subsystem.controller().beginManualOverride();
   }
 
   @Override
@@ -30,6 +30,6 @@ public class ManualOverrideCommand extends Command {
 
   @Override
   public void end(boolean interrupted) {
-    arm.controller().endManualOverride();
+    subsystem.controller().endManualOverride();
   }
 }

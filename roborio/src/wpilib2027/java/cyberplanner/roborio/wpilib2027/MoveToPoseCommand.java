@@ -12,19 +12,19 @@ import org.wpilib.command2.Command;
  * is DONE; failed() and reason() tell REJECTED, FAILED or CANCELLED.
  */
 public class MoveToPoseCommand extends Command {
-  private final CyberArmSubsystem arm;
+  private final CyberArmSubsystem subsystem;
   private final Pose pose;
   private MoveHandle move;
 
-  public MoveToPoseCommand(CyberArmSubsystem arm, Pose pose) {
-    this.arm = arm;
+  public MoveToPoseCommand(CyberArmSubsystem subsystem, Pose pose) {
+    this.subsystem = subsystem;
     this.pose = pose;
-    addRequirements(arm);
+    addRequirements(subsystem);
   }
 
   @Override
   public void initialize() {
-    move = arm.moveTo(pose);
+    move = subsystem.moveTo(pose);
   }
 
   @Override
@@ -34,7 +34,7 @@ public class MoveToPoseCommand extends Command {
 
   @Override
   public void end(boolean interrupted) {
-    if (interrupted) arm.controller().cancel(move);
+    if (interrupted) subsystem.controller().cancel(move);
   }
 
   /** The current move, or null before the command first ran. */
