@@ -115,7 +115,10 @@ PathPoint CubicSplinePath::at(double s) const {
   const int k = segmentOf(s);
   const Segment& seg = segments_[static_cast<size_t>(k)];
   const double u = s - knots_[static_cast<size_t>(k)];
-  p.q = seg.c0 + u * (seg.c1 + u * (seg.c2 + u * seg.c3));
+  // The polynomial reproduces its start point exactly (u = 0) but its end point only to rounding:
+  // a goal on a joint limit would come out a few ulp outside. The end knot is returned exactly.
+  p.q = s == knots_[static_cast<size_t>(k) + 1] ? points_[static_cast<size_t>(k) + 1]
+                                                : JointVector(seg.c0 + u * (seg.c1 + u * (seg.c2 + u * seg.c3)));
   p.dq_ds = seg.c1 + u * (2.0 * seg.c2 + u * 3.0 * seg.c3);
   p.d2q_ds2 = 2.0 * seg.c2 + u * 6.0 * seg.c3;
   return p;
@@ -129,7 +132,10 @@ CubicSplinePath::SegmentBounds CubicSplinePath::segmentBounds(int segment) const
     const double c0 = seg.c0[j], c1 = seg.c1[j], c2 = seg.c2[j], c3 = seg.c3[j];
     auto q = [&](double u) { return c0 + u * (c1 + u * (c2 + u * c3)); };
     auto dq = [&](double u) { return c1 + u * (2.0 * c2 + u * 3.0 * c3); };
-    double lo = std::min(q(0.0), q(h)), hi = std::max(q(0.0), q(h));
+    // The end values are the knots themselves, exactly: q(h) evaluated carries rounding, which
+    // would put a segment ending on a joint limit a few ulp outside it.
+    const double q_end = points_[static_cast<size_t>(segment) + 1][j];
+    double lo = std::min(c0, q_end), hi = std::max(c0, q_end);
     double speed = std::max(std::abs(dq(0.0)), std::abs(dq(h)));
     // Interior extrema of q: roots of q' = 3 c3 u^2 + 2 c2 u + c1.
     double roots[2];

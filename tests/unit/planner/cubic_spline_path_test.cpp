@@ -9,6 +9,7 @@
 #include <limits>
 #include <new>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -197,6 +198,64 @@ TEST(CubicSplinePath, SegmentBoundsAreExact) {
       EXPECT_LE(bounds.q_max[j], hi[j] + 1e-6);
       EXPECT_GE(bounds.abs_dq_max[j], speed[j] - 1e-12);
       EXPECT_LE(bounds.abs_dq_max[j], speed[j] + 1e-5);
+    }
+  }
+}
+
+// A straight move to or from a pose on a joint limit (the shipped pivot-telescope's STOW and
+// REACH_UP lie on the telescope's 0 and 0.9 m): the polynomial evaluated at the segment's end was
+// a few ulp outside the limit, and the limit check refused the straight path.
+TEST(CubicSplinePath, AStraightMoveToAPoseOnALimitStaysExactlyWithinItsEnds) {
+  const JointVector metric(1.0, 0.4);
+  const std::vector<std::pair<JointVector, JointVector>> moves{
+      {JointVector(1.45, 0.0), JointVector(1.3, 0.9)},     {JointVector(0.524, 0.879), JointVector(1.45, 0.0)},
+      {JointVector(2.6, 0.2), JointVector(1.45, 0.0)},     {JointVector(1.3, 0.9), JointVector(1.45, 0.0)},
+      {JointVector(1.45, 0.0), JointVector(0.524, 0.879)}, {JointVector(1.45, 0.0), JointVector(2.6, 0.2)}};
+  for (const auto& [from, to] : moves) {
+    const std::vector<JointVector> w{from, to};
+    const auto path = CubicSplinePath::through(w, metric);
+    ASSERT_TRUE(path.ok());
+    ASSERT_EQ(path.value().segmentCount(), 1);
+    const JointVector lo = from.cwiseMin(to), hi = from.cwiseMax(to);
+    const auto bounds = path.value().segmentBounds(0);
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_GE(bounds.q_min[j], lo[j]) << from.transpose() << " -> " << to.transpose() << " joint " << j;
+      EXPECT_LE(bounds.q_max[j], hi[j]) << from.transpose() << " -> " << to.transpose() << " joint " << j;
+    }
+    EXPECT_EQ(path.value().at(0.0).q, from);
+    EXPECT_EQ(path.value().at(path.value().length()).q, to);
+    // Dense samples: inside the ends' box but for rounding far below any limit check's tolerance.
+    for (int i = 0; i <= 10000; ++i) {
+      const JointVector q = path.value().at(path.value().length() * i / 10000.0).q;
+      for (int j = 0; j < 2; ++j) {
+        EXPECT_GE(q[j], lo[j] - 1e-15) << i;
+        EXPECT_LE(q[j], hi[j] + 1e-15) << i;
+      }
+    }
+  }
+}
+
+TEST(CubicSplinePath, ReproducesEveryKnotAndTheGoalExactly) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> goal_t(-0.5, 0.5), goal_th(0.0, 0.9);
+  for (int trial = 0; trial < 200; ++trial) {
+    auto w = randomWaypoints(rng, 2 + trial % 8);
+    const double gt = goal_t(rng);
+    w.back() = JointVector(w.back()[0] + gt, goal_th(rng));
+    const auto path =
+        CubicSplinePath::through(w, kMetric, trial % 3 == 0 ? JointVector(0.3, -1.0) : JointVector::Zero());
+    ASSERT_TRUE(path.ok());
+    const auto& knots = path.value().knots();
+    for (size_t k = 0; k < knots.size(); ++k) EXPECT_EQ(path.value().at(knots[k]).q, w[k]) << trial << " knot " << k;
+    // The segment bounds hold the knots exactly too.
+    for (int k = 0; k < path.value().segmentCount(); ++k) {
+      const auto bounds = path.value().segmentBounds(k);
+      for (size_t e : {static_cast<size_t>(k), static_cast<size_t>(k) + 1}) {
+        for (int j = 0; j < 2; ++j) {
+          EXPECT_LE(bounds.q_min[j], w[e][j]);
+          EXPECT_GE(bounds.q_max[j], w[e][j]);
+        }
+      }
     }
   }
 }
