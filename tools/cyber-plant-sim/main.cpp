@@ -68,9 +68,9 @@ int main(int argc, char** argv) {
   const auto& robot = config.robot;
   const cyber::planner::JointVector initial_q = options.initial_q.value_or(defaultInitialPose(config));
   if (!robot.withinLimits(initial_q)) {
-    return cyber::cli::reportBadUsage(program, {"--initial " + std::to_string(initial_q[0]) + "," +
-                                                std::to_string(initial_q[1]) + " is outside the joint ranges of " +
-                                                robot.name});
+    return cyber::cli::reportBadUsage(
+        program, {"--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
+                  " is outside the joint ranges of " + robot.name});
   }
   for (const std::string& piece : options.pieces) {
     if (robot.pieceIndex(piece) < 0) {
@@ -98,7 +98,8 @@ int main(int argc, char** argv) {
   // The held pieces' mass moves with a rigid-body chain (a feedforward drive ignores it).
   std::string piece_names;
   for (const std::string& piece : options.pieces) piece_names += (piece_names.empty() ? "" : ",") + piece;
-  const cyber::planner::HeldPieces held = robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
+  const cyber::planner::HeldPieces held =
+      robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
   sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
                                          options.controller_bandwidth_radps);
   for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {

@@ -20,10 +20,10 @@ struct SimOptions {
   std::optional<std::string> lcm_url;        // --lcm-url; the config's [daemon] lcm_url otherwise
   // --initial Q0,Q1; default: the config's first named pose, else the middle of both ranges.
   std::optional<planner::JointVector> initial_q;
-  std::vector<std::string> pieces;  // --pieces NAME[,NAME...]: game pieces held (ARM_STATE, the plant's mass)
-  double state_rate_hz = 100.0;     // --state-rate HZ
-  bool heartbeat = true;            // --no-heartbeat turns it off from the start
-  std::vector<FaultEvent> faults;   // --fault KIND@WHEN, repeatable
+  std::vector<std::string> pieces;          // --pieces NAME[,NAME...]: game pieces held (ARM_STATE, the plant's mass)
+  double state_rate_hz = 100.0;             // --state-rate HZ
+  bool heartbeat = true;                    // --no-heartbeat turns it off from the start
+  std::vector<FaultEvent> faults;           // --fault KIND@WHEN, repeatable
   std::optional<std::string> log_path;      // --log FILE: CSV of the simulated state
   std::optional<std::string> control_path;  // --control FIFO: fault kinds, one per line, applied at once
   double duration_s = 0.0;                  // --duration S; 0 runs until SIGINT/SIGTERM
