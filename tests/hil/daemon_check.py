@@ -578,7 +578,7 @@ def check_holds_measured(c, run, t_from, what, must_differ_from=None):
     said = "no ARM_STATE in the window before"
     if m:
         said = (f"the ARM_STATE of {1e3 * (t - m['utime'] * 1e-6):.0f} ms before said "
-                f"({m['elevator_m']:.4f}, {m['arm_rad']:.4f})")
+                f"({m['position'][0]:.4f}, {m['position'][1]:.4f})")
         if carried_s > 0.0:
             said += f", carried {1e3 * carried_s:.0f} ms along its velocity"
     c.check(still and score <= 1.0,
