@@ -43,6 +43,7 @@ CONFIG = load_config()
 DEVICES = CONFIG["daemon"]["devices"]
 PERIOD_S = 1.0 / CONFIG["daemon"]["stream_rate_hz"]
 HEARTBEAT_TIMEOUT_S = CONFIG["daemon"]["heartbeat_timeout_s"]
+Q_COLUMNS = tuple(c["q"] for c in hil.plant_columns(CONFIG))  # plant.csv: joint 0 and joint 1 positions
 STATE_TIMEOUT_S = CONFIG["daemon"]["state_timeout_s"]
 VOLTAGE_LIMIT = (CONFIG["drives"]["elevator"]["voltage_limit_volts"], CONFIG["drives"]["arm"]["voltage_limit_volts"])
 JOINTS = ("elevator", "arm")
@@ -163,7 +164,7 @@ class Run:
         return a[key] + w * (b[key] - a[key])
 
     def plant_q(self, t):
-        return (self.plant_at(t, "elevator_m"), self.plant_at(t, "arm_rad"))
+        return (self.plant_at(t, Q_COLUMNS[0]), self.plant_at(t, Q_COLUMNS[1]))
 
 
 KV = (CONFIG["drives"]["elevator"]["kV"], CONFIG["drives"]["arm"]["kV"])
@@ -578,7 +579,7 @@ def check_holds_measured(c, run, t_from, what, must_differ_from=None):
     said = "no ARM_STATE in the window before"
     if m:
         said = (f"the ARM_STATE of {1e3 * (t - m['utime'] * 1e-6):.0f} ms before said "
-                f"({m['elevator_m']:.4f}, {m['arm_rad']:.4f})")
+                f"({m[Q_COLUMNS[0]]:.4f}, {m[Q_COLUMNS[1]]:.4f})")
         if carried_s > 0.0:
             said += f", carried {1e3 * carried_s:.0f} ms along its velocity"
     c.check(still and score <= 1.0,
