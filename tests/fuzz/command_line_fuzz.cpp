@@ -45,7 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto sim = cyber::plant::parseSimArguments(args);
   if (sim && !sim->help) {
     CYBER_FUZZ_CHECK(sim->options.state_rate_hz >= 1.0 && sim->options.state_rate_hz <= 1000.0);
-    CYBER_FUZZ_CHECK(sim->options.initial_q.allFinite());
+    CYBER_FUZZ_CHECK(!sim->options.initial_q || sim->options.initial_q->allFinite());
   }
   return 0;
 }
