@@ -43,6 +43,7 @@ CONFIG = load_config()
 DEVICES = CONFIG["daemon"]["devices"]
 PERIOD_S = 1.0 / CONFIG["daemon"]["stream_rate_hz"]
 HEARTBEAT_TIMEOUT_S = CONFIG["daemon"]["heartbeat_timeout_s"]
+Q_COLUMNS = tuple(c["q"] for c in hil.plant_columns(CONFIG))  # plant.csv: joint 0 and joint 1 positions
 STATE_TIMEOUT_S = CONFIG["daemon"]["state_timeout_s"]
 VOLTAGE_LIMIT = (CONFIG["drives"]["elevator"]["voltage_limit_volts"], CONFIG["drives"]["arm"]["voltage_limit_volts"])
 JOINTS = ("elevator", "arm")
@@ -163,7 +164,7 @@ class Run:
         return a[key] + w * (b[key] - a[key])
 
     def plant_q(self, t):
-        return (self.plant_at(t, "elevator_m"), self.plant_at(t, "arm_rad"))
+        return (self.plant_at(t, Q_COLUMNS[0]), self.plant_at(t, Q_COLUMNS[1]))
 
 
 KV = (CONFIG["drives"]["elevator"]["kV"], CONFIG["drives"]["arm"]["kV"])

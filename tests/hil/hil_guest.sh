@@ -87,7 +87,9 @@ start_bus_capture() {
 }
 
 start_lcm_log() {
-  lcm-logger -f -q --lcm-url='udpm://239.255.76.67:5810?ttl=0' "$work/lcm.log" &  # the daemon's URL (docs/lcm.md)
+  # The daemon's URL: the script's LCM_URL when it sets one (its robot.toml's lcm_url), else the
+  # reference config's (docs/lcm.md).
+  lcm-logger -f -q --lcm-url="${LCM_URL:-udpm://239.255.76.67:5810?ttl=0}" "$work/lcm.log" &
   logger=$!
 }
 

@@ -242,6 +242,19 @@ def decode_daemon_status(data):
 
 # --- plant simulator ---------------------------------------------------------------------------
 
+def plant_columns(config):
+    """The column names cyber-plant-sim --log gives joint 0 and joint 1 of a loaded config (its
+    [[joints]]: NAME_UNIT, UNIT m for a prismatic joint, rad for a revolute one) as a list of
+    dicts: q (position), v (velocity), cmd_q, cmd_v, ff_volts, volts. The reference robot's are
+    elevator_m, elevator_mps, ... and arm_rad, arm_radps, ...."""
+    out = []
+    for joint in config["joints"][:2]:
+        name, unit = joint["name"], "m" if joint["type"] == "prismatic" else "rad"
+        out.append(dict(q=f"{name}_{unit}", v=f"{name}_{unit}ps", cmd_q=f"{name}_cmd_{unit}",
+                        cmd_v=f"{name}_cmd_{unit}ps", ff_volts=f"{name}_ff_volts", volts=f"{name}_volts"))
+    return out
+
+
 def read_plant_csv(path):
     """Rows of cyber-plant-sim --log as dicts of floats (None for empty fields)."""
     rows = []

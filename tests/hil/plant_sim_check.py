@@ -29,6 +29,15 @@ DISABLE_AT = 1.3
 MALFORMED_SENT = 2
 
 
+def load_config():
+    with open(os.path.join(SOURCE, "config", "reefscape-2025.toml"), "rb") as f:
+        return tomllib.load(f)
+
+
+# plant.csv's columns of joint 0 (the elevator) and joint 1 (the arm), named by the config.
+ELEVATOR, ARM = hil.plant_columns(load_config())
+
+
 def drive(name):
     with open(os.path.join(SOURCE, "config", "reefscape-2025.toml"), "rb") as f:
         return tomllib.load(f)["drives"][name]
@@ -201,7 +210,7 @@ def check(out):
         gap = hil.longest_gap(row_t, f.t - 0.15, f.t + 0.01)
         return abs(hil.decode_setpoint(f)[1]) * (max(gap - 0.010, 0.0) if gap == gap else 0.0)
 
-    errors = [abs(interpolate(rows, "elevator_m", f.t * 1e6) - hil.decode_setpoint(f)[0]) for f in on_time]
+    errors = [abs(interpolate(rows, ELEVATOR["q"], f.t * 1e6) - hil.decode_setpoint(f)[0]) for f in on_time]
     excess = [e - 0.003 - allowance(f) for e, f in zip(errors, on_time)]
     c.note(f"{len(on_time)} of {len(elevator_sp)} elevator setpoints were replayed on time")
     if len(on_time) >= 10:
@@ -212,14 +221,14 @@ def check(out):
     # The simulator's own view, whatever the replay's timing: the plant against the command its
     # controller tracked, row by row during the move.
     t_move = (moving[0].t * 1e6, moving[-1].t * 1e6)
-    lag = [abs(r["elevator_m"] - r["elevator_cmd_m"]) for r in rows
-           if t_move[0] <= r["utime"] <= t_move[1] and r["elevator_cmd_m"] is not None]
+    lag = [abs(r[ELEVATOR["q"]] - r[ELEVATOR["cmd_q"]]) for r in rows
+           if t_move[0] <= r["utime"] <= t_move[1] and r[ELEVATOR["cmd_q"]] is not None]
     c.check(lag and hil.percentile(lag, 50) < 0.002,
             f"the plant follows its controller's command during the move: p50 {hil.percentile(lag, 50) * 1e3:.2f} mm, "
             f"p90 {hil.percentile(lag, 90) * 1e3:.2f} mm (p50 < 2 mm)")
     last = elevator_sp[-1].t * 1e6
-    final_e = interpolate(rows, "elevator_m", last)
-    final_a = interpolate(rows, "arm_rad", last)
+    final_e = interpolate(rows, ELEVATOR["q"], last)
+    final_a = interpolate(rows, ARM["q"], last)
     c.check(abs(final_e - ELEVATOR_TO) <= 0.001 and abs(final_a - ARM_AT) <= 0.0026,
             f"at the last setpoint: elevator {final_e:.5f} m (target {ELEVATOR_TO}), arm {final_a:.5f} rad (target {ARM_AT})")
 
@@ -227,9 +236,9 @@ def check(out):
     elevator = drive("elevator")
     slide = -(elevator["kG_volts"] - elevator["kS_volts"]) / elevator["kV"]
     end = rows[-1]
-    c.check(end["elevator_cmd_m"] is None and end["elevator_volts"] == 0.0 and abs(end["elevator_mps"] - slide) < 0.02 * abs(slide),
-            f"neutral at the end: 0 V, elevator sliding at {end['elevator_mps']:.4f} m/s (brake mode {slide:.4f})")
-    c.check(abs(end["arm_rad"] - ARM_AT) < 0.003, f"arm near vertical stays put in neutral ({end['arm_rad']:.4f} rad)")
+    c.check(end[ELEVATOR["cmd_q"]] is None and end[ELEVATOR["volts"]] == 0.0 and abs(end[ELEVATOR["v"]] - slide) < 0.02 * abs(slide),
+            f"neutral at the end: 0 V, elevator sliding at {end[ELEVATOR['v']]:.4f} m/s (brake mode {slide:.4f})")
+    c.check(abs(end[ARM["q"]] - ARM_AT) < 0.003, f"arm near vertical stays put in neutral ({end[ARM['q']]:.4f} rad)")
 
     # Counters: every replayed setpoint in order, the malformed ones counted.
     c.check(summary["setpoints_elevator"] == len(elevator_sp) and summary["setpoints_arm"] == len(arm_sp),

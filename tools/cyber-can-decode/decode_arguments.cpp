@@ -3,12 +3,14 @@
 #include "cyber/can/frc_id.hpp"
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
+#include "cyber/config/load_config.hpp"
+#include "cyber/planner/joint_chain.hpp"
 
 namespace cyber::tools {
 
 namespace {
 
-cli::ValueHandler device(std::uint8_t* into) {
+cli::ValueHandler device(std::optional<std::uint8_t>* into) {
   return [into](const std::string& text) -> std::string {
     const auto value = cli::parseInteger(text);
     if (!value || *value < 0 || *value > can::kMaxDeviceNumber) return "must be 0..63, got '" + text + "'";
@@ -20,12 +22,15 @@ cli::ValueHandler device(std::uint8_t* into) {
 }  // namespace
 
 const char* decodeUsage() {
-  return "usage: cyber-can-decode [--csv] [--strict] [--elevator-device N] [--arm-device N] [FILE|-]\n"
+  return "usage: cyber-can-decode [--csv] [--strict] [--config FILE] [--joint0-device N] [--joint1-device N]\n"
+         "                        [FILE|-]\n"
          "  Decodes a candump -L log (FILE, or stdin when FILE is - or absent).\n"
          "  --csv               one CSV row per frame instead of text\n"
          "  --strict            exit 1 if a frame is undecodable or a line is malformed\n"
-         "  --elevator-device N device number of the elevator (default 1)\n"
-         "  --arm-device N      device number of the arm (default 2)\n";
+         "  --config FILE       robot description: the joints' device numbers ([daemon.devices]), names\n"
+         "                      and units ([[joints]]) (default: the embedded config/reefscape-2025.toml)\n"
+         "  --joint0-device N   device number of joint 0 (default: the config's; 1 for the elevator)\n"
+         "  --joint1-device N   device number of joint 1 (default: the config's; 2 for the arm)\n";
 }
 
 cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>& args) {
@@ -33,8 +38,9 @@ cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>
   cli::ArgumentParser parser;
   parser.flag("--csv", [&] { out.format = OutputFormat::kCsv; });
   parser.flag("--strict", [&] { out.strict = true; });
-  parser.option("--elevator-device", device(&out.joints.elevator));
-  parser.option("--arm-device", device(&out.joints.arm));
+  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--joint0-device", device(&out.devices[0]));
+  parser.option("--joint1-device", device(&out.devices[1]));
   parser.positional([&](const std::string& path) -> std::string {
     if (out.path) return "more than one input file";
     out.path = path;
@@ -42,6 +48,18 @@ cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
   return out;
+}
+
+JointDevices jointDevices(const DecodeArguments& args) {
+  const config::Config config =
+      args.config_path ? config::loadConfigFile(*args.config_path) : config::loadEmbeddedDefaultConfig();
+  JointDevices joints;
+  for (size_t j = 0; j < 2; ++j) {
+    joints.devices[j] = args.devices[j].value_or(static_cast<std::uint8_t>(config.daemon.devices.joints[j]));
+    joints.names[j] = config.robot.joints[j].name;
+    joints.units[j] = planner::unitName(config.robot.joints[j].type);
+  }
+  return joints;
 }
 
 }  // namespace cyber::tools

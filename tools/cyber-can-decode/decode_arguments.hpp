@@ -1,6 +1,8 @@
 #pragma once
 // The command line of cyber-can-decode (usage in decodeUsage()).
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,12 +15,18 @@ namespace cyber::tools {
 struct DecodeArguments {
   OutputFormat format = OutputFormat::kText;
   bool strict = false;
-  JointDevices joints;
-  std::optional<std::string> path;  // absent or "-": stdin
+  std::optional<std::string> config_path;              // absent: the embedded reference config
+  std::array<std::optional<std::uint8_t>, 2> devices;  // --joint0-device, --joint1-device
+  std::optional<std::string> path;                     // absent or "-": stdin
   bool help = false;
 };
 
 cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>& args);
+
+// The joints' devices, names and units: the config's (--config, else the embedded reference
+// config), device numbers overridden by --joint0-device / --joint1-device. Throws on a config
+// that does not load.
+JointDevices jointDevices(const DecodeArguments& args);
 
 const char* decodeUsage();
 

@@ -67,15 +67,14 @@ std::string flag(bool value) { return value ? "1" : "0"; }
 
 void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints, Row& row, std::string& text) {
   const auto& s = decoded.setpoint;
-  const bool elevator = decoded.device == joints.elevator;
-  const bool arm = decoded.device == joints.arm;
-  row.joint = elevator ? "elevator" : arm ? "arm" : "";
+  const int joint = decoded.device == joints.devices[0] ? 0 : decoded.device == joints.devices[1] ? 1 : -1;
+  row.joint = joint >= 0 ? joints.names[static_cast<size_t>(joint)] : "";
   row.seq = std::to_string(s.sequence);
   row.position = fmt::format("{:.5f}", s.position);
   row.velocity = fmt::format("{:.3f}", s.velocity);
   row.volts = fmt::format("{:.3f}", s.feedforward_volts);
-  const char* unit = elevator ? " m" : arm ? " rad" : "";
-  const char* rate = elevator ? " m/s" : arm ? " rad/s" : "";
+  const std::string unit = joint >= 0 ? " " + joints.units[static_cast<size_t>(joint)] : "";
+  const std::string rate = joint >= 0 ? unit + "/s" : "";
   text += (row.joint.empty() ? std::string() : " " + row.joint) + " dev " + row.device + " seq " + row.seq +
           " position " + row.position + unit + " velocity " + row.velocity + rate + " ff " + row.volts + " V";
 }

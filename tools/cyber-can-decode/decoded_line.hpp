@@ -1,6 +1,7 @@
 #pragma once
 // One candump -L record decoded into a readable line or a CSV row.
 
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -10,10 +11,12 @@ namespace cyber::tools {
 
 enum class OutputFormat { kText, kCsv };
 
-// Which device numbers are the joints (from the [daemon] config section; defaults 1 and 2).
+// Which device numbers are the joints, and their names and units (from the config's
+// [daemon.devices] and [[joints]]; the defaults are the reference robot's).
 struct JointDevices {
-  std::uint8_t elevator = 1;
-  std::uint8_t arm = 2;
+  std::array<std::uint8_t, 2> devices{1, 2};  // joint 0, joint 1
+  std::array<std::string, 2> names{"elevator", "arm"};
+  std::array<std::string, 2> units{"m", "rad"};  // "m" (prismatic) or "rad" (revolute)
 };
 
 struct DecodeCounts {

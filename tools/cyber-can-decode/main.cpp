@@ -1,8 +1,9 @@
-// cyber-can-decode [--csv] [--strict] [--elevator-device N] [--arm-device N] [FILE|-]
+// cyber-can-decode [--csv] [--strict] [--config FILE] [--joint0-device N] [--joint1-device N] [FILE|-]
 // Reads a candump -L log (FILE or stdin), prints each frame decoded per docs/can-protocol.md,
 // and a summary on stderr. Exit 0 when the input was read (1 with --strict if any frame was
 // undecodable or any line malformed), 2 on bad usage or an unreadable file.
 
+#include <exception>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -17,6 +18,13 @@ int main(int argc, char** argv) {
   if (const auto status = cyber::cli::exitBeforeWork(parsed, program)) return *status;
   const cyber::tools::DecodeArguments& args = parsed.value();
   const auto& path = args.path;
+  cyber::tools::JointDevices joints;
+  try {
+    joints = cyber::tools::jointDevices(args);
+  } catch (const std::exception& error) {
+    std::cerr << "cyber-can-decode: " << error.what() << "\n";
+    return 2;
+  }
 
   std::ifstream file;
   std::istream* input = &std::cin;
@@ -39,7 +47,7 @@ int main(int argc, char** argv) {
       std::cerr << "line " << line_number << ": malformed: " << record.error().reason << '\n';
       continue;
     }
-    std::cout << cyber::tools::decodeRecord(record.value(), args.joints, args.format, counts) << '\n';
+    std::cout << cyber::tools::decodeRecord(record.value(), joints, args.format, counts) << '\n';
   }
 
   std::cerr << "cyber-can-decode: " << counts.frames << " frames (" << counts.decoded << " decoded, "

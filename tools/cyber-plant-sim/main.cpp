@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     std::setvbuf(log, nullptr, _IOFBF, 1 << 16);
-    std::fprintf(log, "%s\n", cyber::plant::stateLogHeader().c_str());
+    std::fprintf(log, "%s\n", cyber::plant::stateLogHeader(robot.joints).c_str());
   }
 
   if (options.realtime_priority > 0) {

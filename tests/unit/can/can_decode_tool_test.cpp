@@ -175,7 +175,7 @@ TEST(CanDecodeTool, RandomSetpointsDecodeToTheirQuantizedValues) {
 TEST(CanDecodeTool, JointDevicesFromOptions) {
   const std::string path = writeLog("devices.log", {record(0, encodeSetpoint(5, Setpoint{0.25, 0, 0, 1}).value()),
                                                     record(1, encodeSetpoint(1, Setpoint{0.25, 0, 0, 1}).value())});
-  const ToolRun run = runTool("--elevator-device 5 --arm-device 6 - < " + path);
+  const ToolRun run = runTool("--joint0-device 5 --joint1-device 6 - < " + path);
   EXPECT_EQ(run.exit_code, 0);
   const auto out = lines(run.out);
   ASSERT_EQ(out.size(), 2u);
@@ -193,9 +193,10 @@ TEST(CanDecodeTool, StrictFailsOnBadFrames) {
 TEST(CanDecodeTool, BadUsageExitsTwo) {
   EXPECT_EQ(runTool("--bogus").exit_code, 2);
   EXPECT_EQ(runTool(tempPath("does_not_exist.log")).exit_code, 2);
-  EXPECT_EQ(runTool("--arm-device 64 /dev/null").exit_code, 2);
-  EXPECT_EQ(runTool("--arm-device x /dev/null").exit_code, 2);
-  EXPECT_EQ(runTool("--elevator-device").exit_code, 2);
+  EXPECT_EQ(runTool("--joint1-device 64 /dev/null").exit_code, 2);
+  EXPECT_EQ(runTool("--joint1-device x /dev/null").exit_code, 2);
+  EXPECT_EQ(runTool("--joint0-device").exit_code, 2);
+  EXPECT_EQ(runTool("--config " + tempPath("no_such.toml") + " /dev/null").exit_code, 2);
   EXPECT_EQ(runTool("/dev/null /dev/null").exit_code, 2);
   const ToolRun help = runTool("--help");
   EXPECT_EQ(help.exit_code, 0);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/plant/state_log.hpp"
 
 namespace cyber::plant {
@@ -19,6 +20,36 @@ std::vector<std::string> fields(const std::string& line) {
   return out;
 }
 
+planner::JointChain chain(const std::string& name0, planner::JointType type0, const std::string& name1,
+                          planner::JointType type1) {
+  planner::JointChain joints;
+  joints[0].name = name0;
+  joints[0].type = type0;
+  joints[1].name = name1;
+  joints[1].type = type1;
+  return joints;
+}
+
+const planner::JointChain kReference =
+    chain("elevator", planner::JointType::kPrismatic, "arm", planner::JointType::kRevolute);
+
+TEST(StateLog, ReferenceRobotHeader) {
+  EXPECT_EQ(stateLogHeader(kReference),
+            "t_s,utime,elevator_m,elevator_mps,arm_rad,arm_radps,"
+            "elevator_cmd_m,elevator_cmd_mps,elevator_ff_volts,elevator_volts,"
+            "arm_cmd_rad,arm_cmd_radps,arm_ff_volts,arm_volts,"
+            "heartbeat,robot_enabled,state_published");
+}
+
+TEST(StateLog, ColumnsNamedByTheConfigJoints) {
+  const auto joints = chain("shoulder", planner::JointType::kRevolute, "elbow", planner::JointType::kRevolute);
+  EXPECT_EQ(stateLogHeader(joints),
+            "t_s,utime,shoulder_rad,shoulder_radps,elbow_rad,elbow_radps,"
+            "shoulder_cmd_rad,shoulder_cmd_radps,shoulder_ff_volts,shoulder_volts,"
+            "elbow_cmd_rad,elbow_cmd_radps,elbow_ff_volts,elbow_volts,"
+            "heartbeat,robot_enabled,state_published");
+}
+
 TEST(StateLog, RowsMatchTheHeader) {
   StateLogRow row;
   row.t_s = 1.25;
@@ -30,7 +61,7 @@ TEST(StateLog, RowsMatchTheHeader) {
   row.heartbeat = true;
   row.robot_enabled = false;
   row.state_published = true;
-  const auto header = fields(stateLogHeader());
+  const auto header = fields(stateLogHeader(kReference));
   const auto values = fields(stateLogRow(row));
   ASSERT_EQ(header.size(), 17u);
   ASSERT_EQ(values.size(), header.size()) << stateLogRow(row);

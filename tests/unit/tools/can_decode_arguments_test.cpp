@@ -10,24 +10,51 @@ namespace {
 auto parse = [](const std::vector<std::string>& args) { return parseDecodeArguments(args); };
 
 TEST(DecodeArguments, BothSpellingsOfAValueMeanTheSame) {
-  for (const auto& args : {std::vector<std::string>{"--csv", "--elevator-device", "5", "--arm-device", "63", "log.txt"},
-                           std::vector<std::string>{"--csv", "--elevator-device=5", "--arm-device=63", "log.txt"}}) {
+  for (const auto& args :
+       {std::vector<std::string>{"--csv", "--joint0-device", "5", "--joint1-device", "63", "--config", "r.toml",
+                                 "log.txt"},
+        std::vector<std::string>{"--csv", "--joint0-device=5", "--joint1-device=63", "--config=r.toml", "log.txt"}}) {
     const DecodeArguments a = parsedOk(parse, args);
     EXPECT_EQ(a.format, OutputFormat::kCsv);
-    EXPECT_EQ(a.joints.elevator, 5);
-    EXPECT_EQ(a.joints.arm, 63);
+    EXPECT_EQ(a.devices[0], 5);
+    EXPECT_EQ(a.devices[1], 63);
+    EXPECT_EQ(a.config_path, "r.toml");
     EXPECT_EQ(a.path, "log.txt");
   }
   EXPECT_EQ(parsedOk(parse, {"-"}).path, "-");
   EXPECT_FALSE(parsedOk(parse, {}).path);
+  EXPECT_FALSE(parsedOk(parse, {}).config_path);
+  EXPECT_FALSE(parsedOk(parse, {}).devices[0]);
+}
+
+TEST(DecodeArguments, JointsFromTheConfigAndOptions) {
+  // The embedded reference config: elevator (m) on device 1, arm (rad) on device 2.
+  JointDevices joints = jointDevices(parsedOk(parse, {}));
+  EXPECT_EQ(joints.devices[0], 1);
+  EXPECT_EQ(joints.devices[1], 2);
+  EXPECT_EQ(joints.names[0], "elevator");
+  EXPECT_EQ(joints.units[0], "m");
+  EXPECT_EQ(joints.names[1], "arm");
+  EXPECT_EQ(joints.units[1], "rad");
+  joints = jointDevices(parsedOk(parse, {"--joint1-device", "7"}));
+  EXPECT_EQ(joints.devices[0], 1);
+  EXPECT_EQ(joints.devices[1], 7);
+  joints = jointDevices(parsedOk(parse, {"--config", CYBER_SOURCE_DIR "/config/chargedup-2023-double-jointed.toml"}));
+  EXPECT_EQ(joints.names[0], "shoulder");
+  EXPECT_EQ(joints.units[0], "rad");
+  EXPECT_EQ(joints.names[1], "elbow");
+  EXPECT_EQ(joints.units[1], "rad");
+  EXPECT_EQ(joints.devices[0], 1);
+  EXPECT_EQ(joints.devices[1], 2);
 }
 
 TEST(DecodeArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, {"--fast"}), "unknown argument '--fast' (see --help)");
-  EXPECT_EQ(parseError(parse, {"--arm-device"}), "--arm-device needs a value");
-  EXPECT_EQ(parseError(parse, {"--arm-device="}), "--arm-device needs a value");
-  EXPECT_EQ(parseError(parse, {"--arm-device=64"}), "--arm-device must be 0..63, got '64'");
-  EXPECT_EQ(parseError(parse, {"--elevator-device", "-1"}), "--elevator-device must be 0..63, got '-1'");
+  EXPECT_EQ(parseError(parse, {"--joint1-device"}), "--joint1-device needs a value");
+  EXPECT_EQ(parseError(parse, {"--joint1-device="}), "--joint1-device needs a value");
+  EXPECT_EQ(parseError(parse, {"--joint1-device=64"}), "--joint1-device must be 0..63, got '64'");
+  EXPECT_EQ(parseError(parse, {"--joint0-device", "-1"}), "--joint0-device must be 0..63, got '-1'");
+  EXPECT_EQ(parseError(parse, {"--elevator-device", "1"}), "unknown argument '--elevator-device' (see --help)");
   EXPECT_EQ(parseError(parse, {"--strict=1"}), "--strict takes no value, got '--strict=1'");
   EXPECT_EQ(parseError(parse, {"a.log", "b.log"}), "more than one input file");
 }

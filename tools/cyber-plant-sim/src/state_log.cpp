@@ -4,6 +4,7 @@
 
 #include <iterator>
 
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::plant {
@@ -21,11 +22,17 @@ void appendCommand(std::string& out, const std::optional<JointCommand>& command)
 
 }  // namespace
 
-std::string stateLogHeader() {
-  return "t_s,utime,elevator_m,elevator_mps,arm_rad,arm_radps,"
-         "elevator_cmd_m,elevator_cmd_mps,elevator_ff_volts,elevator_volts,"
-         "arm_cmd_rad,arm_cmd_radps,arm_ff_volts,arm_volts,"
-         "heartbeat,robot_enabled,state_published";
+std::string stateLogHeader(const planner::JointChain& joints) {
+  std::string out = "t_s,utime";
+  for (const planner::ChainJoint& joint : joints) {
+    const char* unit = planner::unitName(joint.type);
+    fmt::format_to(std::back_inserter(out), ",{0}_{1},{0}_{1}ps", joint.name, unit);
+  }
+  for (const planner::ChainJoint& joint : joints) {
+    const char* unit = planner::unitName(joint.type);
+    fmt::format_to(std::back_inserter(out), ",{0}_cmd_{1},{0}_cmd_{1}ps,{0}_ff_volts,{0}_volts", joint.name, unit);
+  }
+  return out + ",heartbeat,robot_enabled,state_published";
 }
 
 std::string stateLogRow(const StateLogRow& row) {

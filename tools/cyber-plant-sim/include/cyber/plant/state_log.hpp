@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "cyber/planner/joint_chain.hpp"
 #include "cyber/plant/mechanism_plant.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 
@@ -22,10 +23,12 @@ struct StateLogRow {
   bool state_published = false;  // ARM_STATE went out this period (false while silent)
 };
 
+// The columns are named by the config's joints, NAME_UNIT with UNIT m (prismatic) or rad (revolute);
+// for the reference robot (elevator, arm):
 // t_s,utime,elevator_m,elevator_mps,arm_rad,arm_radps,elevator_cmd_m,elevator_cmd_mps,
 // elevator_ff_volts,elevator_volts,arm_cmd_rad,arm_cmd_radps,arm_ff_volts,arm_volts,
 // heartbeat,robot_enabled,state_published  (command fields empty while neutral)
-std::string stateLogHeader();
+std::string stateLogHeader(const planner::JointChain& joints);
 std::string stateLogRow(const StateLogRow& row);
 
 }  // namespace cyber::plant
