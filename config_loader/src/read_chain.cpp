@@ -152,13 +152,13 @@ void readScenes(TableReader& root, TableReader obstacle_table, planner::RobotMod
 
 std::vector<PoseSet> readPoses(TableReader t, const planner::RobotModel& robot) {
   std::vector<PoseSet> sets;
-  for (const std::string& name : t.keys()) {
+  for (const std::string& name : t.keysInFileOrder()) {
     TableReader set = t.table(name);
     std::string error;
     const std::optional<planner::HeldPieces> held = robot.piecesNamed(name, &error);
     if (!held) t.fail(name, error + "; a set is \"none\" or piece names joined by '+'");
     PoseSet out{name, *held, {}};
-    for (const std::string& pose : set.keys()) {
+    for (const std::string& pose : set.keysInFileOrder()) {
       const Eigen::Vector2d q = set.vector2(pose);
       if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");
       out.poses.push_back(NamedPose{pose, q});

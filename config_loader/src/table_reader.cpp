@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace cyber::config::detail {
@@ -117,6 +118,21 @@ std::vector<std::string> TableReader::keys() {
   for (const auto& [k, v] : table_) {
     out.emplace_back(k.str());
   }
+  return out;
+}
+
+std::vector<std::string> TableReader::keysInFileOrder() {
+  struct Placed {
+    toml::source_position at;
+    std::string key;
+  };
+  std::vector<Placed> placed;
+  for (const auto& [k, v] : table_) placed.push_back(Placed{v.source().begin, std::string(k.str())});
+  std::stable_sort(placed.begin(), placed.end(), [](const Placed& a, const Placed& b) {
+    return a.at.line != b.at.line ? a.at.line < b.at.line : a.at.column < b.at.column;
+  });
+  std::vector<std::string> out;
+  for (Placed& p : placed) out.push_back(std::move(p.key));
   return out;
 }
 

@@ -47,6 +47,9 @@ class TableReader {
   [[nodiscard]] const toml::array& array(const std::string& key);
   // Every key of this table, for tables whose keys are names (obstacles, motors).
   [[nodiscard]] std::vector<std::string> keys();
+  // The same in the order the file gives them (toml++ keeps a table's keys sorted), for lists
+  // whose order means something (named poses: the first is the robot's starting pose).
+  [[nodiscard]] std::vector<std::string> keysInFileOrder();
 
   // Rejects keys that were never read.
   void finish() const;

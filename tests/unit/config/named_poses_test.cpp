@@ -74,5 +74,24 @@ TEST(NamedPoses, ASetOfSeveralPiecesIsNamedByJoiningThemWithPlus) {
   EXPECT_EQ(config.robot.pieceSetName(config.poses[0].pieces), "algae+coral");
 }
 
+// The file's order, not the alphabet's: the first pose of the first set is where the plant
+// simulator and tools/demo start the robot.
+TEST(NamedPoses, KeepTheOrderOfTheFile) {
+  const Config config = parseConfig(withPoses("[poses.none]\nZED = [0.5, 1.0]\nALPHA = [0.6, 1.0]\nMID = [0.7, 1.0]\n"
+                                              "[poses.coral]\nB = [0.5, 1.0]\nA = [0.6, 1.0]"),
+                                    "test.toml");
+  ASSERT_EQ(config.poses.size(), 2u);
+  EXPECT_EQ(config.poses[0].name, "none");
+  ASSERT_EQ(config.poses[0].poses.size(), 3u);
+  EXPECT_EQ(config.poses[0].poses[0].name, "ZED");
+  EXPECT_EQ(config.poses[0].poses[1].name, "ALPHA");
+  EXPECT_EQ(config.poses[0].poses[2].name, "MID");
+  EXPECT_EQ(config.poses[1].poses[0].name, "B");
+  // The shipped reference robot starts at STOW, its first pose.
+  const Config reference = loadEmbeddedDefaultConfig();
+  EXPECT_EQ(reference.poses.front().name, "none");
+  EXPECT_EQ(reference.poses.front().poses.front().name, "STOW");
+}
+
 }  // namespace
 }  // namespace cyber::config
