@@ -54,7 +54,7 @@ bool decodeRoundTrip(const std::uint8_t* data, int size, Message& out) {
   if (!stringsRoundTrip(out)) return true;
   const std::vector<std::uint8_t> bytes = encode(out);
   CYBER_FUZZ_CHECK(static_cast<int>(bytes.size()) == used);
-  Message again;
+  Message again{};
   CYBER_FUZZ_CHECK(cyber::lcmtypes::safeDecode(again, bytes.data(), static_cast<int>(bytes.size())) == used);
   CYBER_FUZZ_CHECK(encode(again) == bytes);
   return true;
@@ -94,21 +94,21 @@ void checkState(const cyberplanner::arm_state_t& message) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > (1u << 20)) return 0;  // LCM's UDP transport carries at most 256 kB
   const int len = static_cast<int>(size);
-  cyberplanner::arm_goal_t goal;
+  cyberplanner::arm_goal_t goal{};
   if (decodeRoundTrip(data, len, goal)) checkGoal(goal);
-  cyberplanner::arm_state_t state;
+  cyberplanner::arm_state_t state{};
   if (decodeRoundTrip(data, len, state)) checkState(state);
-  cyberplanner::arm_plan_status_t plan_status;
+  cyberplanner::arm_plan_status_t plan_status{};
   decodeRoundTrip(data, len, plan_status);
-  cyberplanner::arm_trajectory_t trajectory;
+  cyberplanner::arm_trajectory_t trajectory{};
   if (decodeRoundTrip(data, len, trajectory)) {
     CYBER_FUZZ_CHECK(trajectory.num_samples >= 0 &&
                      trajectory.num_samples <= cyberplanner::arm_trajectory_t::MAX_SAMPLES);
     CYBER_FUZZ_CHECK(trajectory.t_s.size() == static_cast<size_t>(trajectory.num_samples));
   }
-  cyberplanner::arm_setpoint_t setpoint;
+  cyberplanner::arm_setpoint_t setpoint{};
   decodeRoundTrip(data, len, setpoint);
-  cyberplanner::arm_daemon_status_t daemon_status;
+  cyberplanner::arm_daemon_status_t daemon_status{};
   decodeRoundTrip(data, len, daemon_status);
   return 0;
 }

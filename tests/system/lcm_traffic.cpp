@@ -166,7 +166,7 @@ class Listener {
   static void onMessage(const lcm::ReceiveBuffer* rbuf, const std::string& channel, Listener* self) {
     Counts& counts = self->counts_[channel];
     ++counts.received;
-    Message message;
+    Message message{};
     if (cyber::lcmtypes::safeDecode(message, rbuf->data, static_cast<int>(rbuf->data_size)) >= 0 && isOurs(message)) {
       ++counts.decoded;
     }

@@ -94,7 +94,7 @@ bool readTrajectoryFromLog(const std::string& path, const std::string& channel, 
   int undecodable = 0;
   for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
     if (event->channel != channel) continue;
-    cyberplanner::arm_trajectory_t message;
+    cyberplanner::arm_trajectory_t message{};
     if (lcmtypes::safeDecode(message, event->data, event->datalen) < 0) {
       ++undecodable;
       continue;

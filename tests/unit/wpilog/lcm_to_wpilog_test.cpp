@@ -90,7 +90,7 @@ class LcmToWpilog : public ::testing::Test {
   }
   template <typename Message>
   static void take(const lcm::LogEvent& e, const char* channel, std::vector<std::pair<int64_t, Message>>& into) {
-    Message m;
+    Message m{};
     if (e.channel == channel && m.decode(e.data, 0, e.datalen) >= 0) into.emplace_back(e.timestamp, std::move(m));
   }
 

@@ -338,7 +338,7 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
   using Handler = std::function<bool(const Event&, uint64_t)>;
   auto handler = [&converter]<typename Message>(void (Converter::*method)(uint64_t, const Message&)) -> Handler {
     return [&converter, method](const Event& event, uint64_t t) {
-      Message m;
+      Message m{};
       if (!decode(event, &m)) return false;
       (converter.*method)(t, m);
       return true;

@@ -20,7 +20,7 @@ namespace cyber::daemon::io {
 template <class Message, class OnMessage, class OnUndecodable>
 void deliverDecoded(const lcm::ReceiveBuffer* buffer, const std::string& channel, OnMessage&& on_message,
                     OnUndecodable&& on_undecodable) {
-  Message message;
+  Message message{};
   if (lcmtypes::safeDecode(message, buffer->data, static_cast<int>(buffer->data_size)) < 0) {
     on_undecodable(channel, static_cast<int>(buffer->data_size));
     return;
