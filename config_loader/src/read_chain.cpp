@@ -26,6 +26,17 @@ int jointOf(TableReader& table, const planner::RobotModel& robot) {
   return joint;
 }
 
+// Joint, scene and piece names travel in LCM strings, which end at the first NUL, and in log
+// lines (docs/lcm.md): a name is non-empty and has no control characters.
+void checkName(TableReader& table, const std::string& key, const std::string& name) {
+  if (name.empty()) table.fail(key, "must not be empty");
+  const bool control = std::any_of(name.begin(), name.end(), [](char c) {
+    const auto byte = static_cast<unsigned char>(c);
+    return byte < 0x20 || byte == 0x7f;
+  });
+  if (control) table.fail(key, "a name may not contain control characters (it is sent in LCM messages)");
+}
+
 planner::JointType jointType(TableReader& joint) {
   const std::string type = joint.string("type");
   if (type == "prismatic") return planner::JointType::kPrismatic;
@@ -54,7 +65,7 @@ void readJoints(TableReader& root, planner::RobotModel& robot) {
     TableReader joint = tableAt(joints[i], "joints[" + std::to_string(i) + "]");
     planner::ChainJoint& out = robot.joints[i];
     out.name = joint.string("name");
-    if (out.name.empty()) joint.fail("name", "must not be empty");
+    checkName(joint, "name", out.name);
     if (i == 1 && out.name == robot.joints[0].name) joint.fail("name", "the two joints need different names");
     out.type = jointType(joint);
     out.range.min = joint.number("min");
@@ -83,6 +94,7 @@ void readLinks(TableReader links, planner::RobotModel& robot) {
 
 void readPieces(TableReader pieces, planner::RobotModel& robot) {
   for (const std::string& name : pieces.keys()) {
+    checkName(pieces, name, name);
     if (name.find('+') != std::string::npos || name == "none") {
       pieces.fail(name, "a piece name may not be \"none\" or contain '+' (they name held sets)");
     }
@@ -125,7 +137,7 @@ void readScenes(TableReader& root, TableReader obstacle_table, planner::RobotMod
     TableReader scene = tableAt(scenes[i], "scenes[" + std::to_string(i) + "]");
     planner::Scene out;
     out.name = scene.string("name");
-    if (out.name.empty()) scene.fail("name", "must not be empty");
+    checkName(scene, "name", out.name);
     if (robot.sceneIndex(out.name) >= 0) scene.fail("name", "duplicate scene name \"" + out.name + "\"");
     auto named = [&](const char* key, std::vector<planner::NamedPolygon>& into) {
       if (!scene.has(key)) return;

@@ -4,8 +4,10 @@
 // message re-encodes to bytes that decode to the same bytes again; validateGoal and
 // stateFromMessage accept only finite values within the robot's limits.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -38,12 +40,20 @@ std::vector<std::uint8_t> encode(const Message& message) {
 // LCM sizes a string by its length but encodes it only up to its first NUL: such a message does
 // not round-trip (lcm-gen's limit), and the daemon must never send one (checkGoal).
 bool hasNul(const std::string& text) { return text.find('\0') != std::string::npos; }
+template <class Strings>
+bool anyHasNul(const Strings& texts) {
+  return std::any_of(std::begin(texts), std::end(texts), [](const std::string& text) { return hasNul(text); });
+}
 template <class Message>
 bool stringsRoundTrip(const Message&) {
   return true;
 }
-bool stringsRoundTrip(const cyberplanner::arm_goal_t& m) { return !hasNul(m.scene_name); }
+bool stringsRoundTrip(const cyberplanner::arm_goal_t& m) { return !hasNul(m.scene_name) && !anyHasNul(m.pieces); }
+bool stringsRoundTrip(const cyberplanner::arm_state_t& m) { return !anyHasNul(m.pieces); }
 bool stringsRoundTrip(const cyberplanner::arm_plan_status_t& m) { return !hasNul(m.reason); }
+bool stringsRoundTrip(const cyberplanner::arm_daemon_status_t& m) {
+  return !anyHasNul(m.joint_names) && !anyHasNul(m.joint_units);
+}
 
 // Decodes; on success checks the round trip and returns true with the message in `out`.
 template <class Message>
