@@ -20,36 +20,6 @@
 namespace cyber::planner {
 namespace {
 
-// Columns are judged at the samples of cyber-plan's CSV (docs/moving-starts.md), within 95 % of
-// what an independent check of that CSV allows (1 % of the travel, 2 % of the peak speed).
-constexpr double kConsistencyStepS = 0.001;
-constexpr double kMaxPositionError = 0.0095;
-constexpr double kMaxVelocityError = 0.019;
-// After the fastest stop, the junction may be moved later by a multiple of this fraction of a
-// step, up to kGentlerSteps of them, trying at most kGentlerTries (each redoes the onward plan).
-constexpr double kGentlerStep = 0.125;
-constexpr int kGentlerSteps = 12;
-constexpr int kGentlerTries = 6;
-// A rest-to-rest trajectory whose columns disagree is slowed down until its duration has grown by
-// a multiple of this fraction of a step, up to kSlowerSteps of them (two steps).
-constexpr double kSlowerStep = 0.125;
-constexpr int kSlowerSteps = 16;
-// Beyond this duration a move has many acceleration jumps, spread in time, and a uniform slowdown
-// of at most two steps moves each by a different fraction of a step; on the HIL tests' capped
-// moves it never made one agree and cost up to 4.7 times the plan (docs/moving-starts.md,
-// "Consistent columns").
-constexpr double kSlowerMaxDurationS = 1.0;
-// A way out of the clearance (a few millimetres in tens of milliseconds) is slowed by up to this
-// many kSlowerStep: of clearance_escape_test's 58 ways out, 26 disagreed at 1 ms unslowed, 3 still
-// did (6-7 % of the peak speed) after kSlowerSteps, none after these (at most 8 ms more).
-constexpr int kEscapeSlowerSteps = 64;
-// The reachability pass's estimate (path_timing.hpp, on this many points) is never below the
-// optimiser's duration on the public moves and their splices, and at most this much above it:
-// 10 % from a moving start, 2.5 % from rest (docs/moving-starts.md, "Planning time").
-constexpr int kEstimateGridPoints = 60;
-constexpr double kMovingEstimateLow = 0.85;
-constexpr double kRestEstimateLow = 0.95;
-
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -60,9 +30,9 @@ Result<Plan> inconsistent() {
       "the trajectory's velocities or accelerations do not integrate to its positions at 1 ms");
 }
 
-bool consistent(const Trajectory& trajectory) {
-  const ColumnConsistency c = columnConsistency(trajectory, kConsistencyStepS);
-  return c.position_error <= kMaxPositionError && c.velocity_error <= kMaxVelocityError;
+bool consistent(const MotionSettings& settings, const Trajectory& trajectory) {
+  const ColumnConsistency c = columnConsistency(trajectory, settings.consistency_step_s);
+  return c.position_error <= settings.max_position_error && c.velocity_error <= settings.max_velocity_error;
 }
 
 // A timed candidate with its columns' verdict, judged once. Candidates rank by agreeing columns
@@ -75,8 +45,8 @@ struct Judged {
   }
 };
 
-Judged judged(Result<Plan> plan) {
-  const bool agrees = plan && consistent(*plan.value().trajectory);
+Judged judged(const RobotModel& model, Result<Plan> plan) {
+  const bool agrees = plan && consistent(model.planner.motion, *plan.value().trajectory);
   return {std::move(plan), agrees};
 }
 
@@ -85,14 +55,16 @@ Judged judged(Result<Plan> plan) {
 // across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
 // uniformly moves the switch between the samples (by about half the added time), so the shortest
 // slowdown that puts it where the columns agree, within the limits, is taken.
-// The shortest uniform slowdown of `trajectory` by a multiple of kSlowerStep, up to `steps` of
+// The shortest uniform slowdown of `trajectory` by a multiple of MotionSettings::slower_step, up to `steps` of
 // them, that stays within the limits and that `agrees` accepts.
 template <class Agrees>
 std::optional<Trajectory> shortestSlowdown(const RobotModel& model, const Trajectory& trajectory, int steps,
                                            Agrees&& agrees) {
+  const MotionSettings& settings = model.planner.motion;
   const double duration = trajectory.duration_s();
   for (int i = 1; i <= steps && duration > 0.0; ++i) {
-    Result<Trajectory> slower = slowedDown(trajectory, 1.0 + i * kSlowerStep * kConsistencyStepS / duration);
+    Result<Trajectory> slower =
+        slowedDown(trajectory, 1.0 + i * settings.slower_step * settings.consistency_step_s / duration);
     if (slower && agrees(slower.value()) && withinDriveLimits(slower.value(), model.planner.topp)) {
       return std::move(slower).value();
     }
@@ -101,8 +73,10 @@ std::optional<Trajectory> shortestSlowdown(const RobotModel& model, const Trajec
 }
 
 std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
-  if (trajectory.duration_s() > kSlowerMaxDurationS) return std::nullopt;
-  return shortestSlowdown(model, trajectory, kSlowerSteps, [](const Trajectory& slower) { return consistent(slower); });
+  const MotionSettings& settings = model.planner.motion;
+  if (trajectory.duration_s() > settings.slower_max_duration_s) return std::nullopt;
+  return shortestSlowdown(model, trajectory, settings.slower_steps,
+                          [&](const Trajectory& slower) { return consistent(settings, slower); });
 }
 
 // TOPP along the path stage's candidates from a start with velocity v0, in the order of their
@@ -124,7 +98,7 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
       if (i == 0) fallback = trajectory.error();
       continue;
     }
-    bool agree = consistent(trajectory.value());
+    bool agree = consistent(model.planner.motion, trajectory.value());
     plan.path_method = path.method;
     // From rest, slowing this path by at most two steps costs less than a slower path would.
     if (!agree && speed == 0.0) {
@@ -166,7 +140,7 @@ double estimatedSeconds(const RobotModel& model, const Result<std::vector<Planne
   if (!found || found.value().empty()) return std::numeric_limits<double>::infinity();
   const double speed = weightedNorm(v0, model.planner.metric);
   return estimateDuration(*found.value().front().path, model.driveModel(found.value().front().pieces), speed * speed,
-                          kEstimateGridPoints);
+                          model.planner.motion.estimate_grid_points);
 }
 
 JointVector restOf(const Trajectory& stop) { return stop.path().at(stop.path().length()).q; }
@@ -227,12 +201,15 @@ Result<Plan> stopThenPlan(const RobotModel& model, const PathPlanner& paths, con
   if (!candidate.onward) return candidate.onward.error();
   const Trajectory& stop = candidate.stop.value();
   Result<Plan> plan = joinAfter("stop", request, stop, timePaths(model, candidate.onward.value(), JointVector::Zero()));
-  const double steps = stop.duration_s() / kConsistencyStepS;
+  const MotionSettings& settings = model.planner.motion;
+  const double steps = stop.duration_s() / settings.consistency_step_s;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
   // the jump errs by at most a quarter of it), earliest first.
   int tries = 0;
-  for (int i = 1; i <= kGentlerSteps && tries < kGentlerTries && plan && !consistent(*plan.value().trajectory); ++i) {
-    const double target = steps + kGentlerStep * i;
+  for (int i = 1; i <= settings.gentler_steps && tries < settings.gentler_tries && plan &&
+                  !consistent(settings, *plan.value().trajectory);
+       ++i) {
+    const double target = steps + settings.gentler_step * i;
     if (std::abs(target - std::floor(target) - 0.5) > 0.25) continue;
     ++tries;
     Result<Trajectory> gentler = stretchedStop(model, paths.world(request.pieces), stop, target / steps);
@@ -261,13 +238,14 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   // to braking, and the jump at the junction, are large next to its peak speed, so its columns
   // may disagree at 1 ms as a short move's do. It is slowed as one is (consistentSlowdown), by
   // fractions of a step, until the joined columns agree.
-  if (plan && !consistent(*plan.value().trajectory)) {
+  const MotionSettings& settings = model.planner.motion;
+  if (plan && !consistent(settings, *plan.value().trajectory)) {
     Result<Plan> joined = plan;
     const auto joined_agrees = [&](const Trajectory& slower) {
       joined = joinAfter("out of the clearance", request, slower, onward);
-      return joined && consistent(*joined.value().trajectory);
+      return joined && consistent(settings, *joined.value().trajectory);
     };
-    if (shortestSlowdown(model, escape.value(), kEscapeSlowerSteps, joined_agrees)) plan = std::move(joined);
+    if (shortestSlowdown(model, escape.value(), settings.escape_slower_steps, joined_agrees)) plan = std::move(joined);
   }
   if (plan) plan.value().min_clearance_m = std::min(plan.value().min_clearance_m, world.distance(request.start).value);
   return plan;
@@ -370,16 +348,19 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
     const StopFirst stop_first = stopFirstPaths(model_, paths, request);
     // Each candidate is timed only when its estimate leaves it a chance to win (docs/moving-starts.md).
     const double direct_estimate_s = estimatedSeconds(model_, direct_paths, request.start_velocity);
-    const bool time_direct = direct_paths && kMovingEstimateLow * direct_estimate_s <= stop_first.estimate_s;
-    Judged direct = judged(time_direct ? timePaths(model_, direct_paths.value(), request.start_velocity)
-                                       : Result<Plan>(inconsistent()));
-    const double stop_first_low_s =
-        stop_first.stop ? stop_first.stop.value().duration_s() + kRestEstimateLow * stop_first.onward_estimate_s : 0.0;
+    const bool time_direct =
+        direct_paths && model_.planner.motion.moving_estimate_low * direct_estimate_s <= stop_first.estimate_s;
+    Judged direct = judged(model_, time_direct ? timePaths(model_, direct_paths.value(), request.start_velocity)
+                                               : Result<Plan>(inconsistent()));
+    const double stop_first_low_s = stop_first.stop
+                                        ? stop_first.stop.value().duration_s() +
+                                              model_.planner.motion.rest_estimate_low * stop_first.onward_estimate_s
+                                        : 0.0;
     const bool direct_wins = direct.consistent && direct.plan.value().trajectory->duration_s() < stop_first_low_s;
     Judged stopped =
-        judged(direct_wins ? Result<Plan>(inconsistent()) : stopThenPlan(model_, paths, request, stop_first));
+        judged(model_, direct_wins ? Result<Plan>(inconsistent()) : stopThenPlan(model_, paths, request, stop_first));
     if (!stopped.consistent && !time_direct && direct_paths) {
-      direct = judged(timePaths(model_, direct_paths.value(), request.start_velocity));
+      direct = judged(model_, timePaths(model_, direct_paths.value(), request.start_velocity));
     }
     if (!direct.plan && !direct_paths) direct.plan = direct_paths.error();
     if (!direct.plan && !stopped.plan) {

@@ -15,13 +15,8 @@ namespace {
 
 using topp::LimitKind;
 
-constexpr int kMinGridPoints = 3;      // rest to rest needs one node in between
-constexpr double kSpeedBound = 1e3;    // path units/s: far beyond any motor (reachability search)
-constexpr double kCheckShare = 0.6;    // of limit_check_tolerance accepted at the check's samples
-constexpr double kMaxMargin = 0.05;    // limits are lowered by at most this fraction
-constexpr double kRefineAbove = 0.02;  // overshoots beyond this fraction refine the grid instead
-constexpr int kMaxGridFactor = 8;      // the grid may grow to this multiple of grid_points
-constexpr int kTimingGridPoints = 64;  // of the coarse grid whose profile places the real one
+constexpr int kMinGridPoints = 3;    // rest to rest needs one node in between
+constexpr double kSpeedBound = 1e3;  // path units/s: far beyond any motor (reachability search)
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -80,9 +75,9 @@ KindAndPeak kindAndPeak(DriveLimit limit, ToppReport& report) {
 // no sample exceeds a limit by more than that. Fills the peak ratios of the report.
 bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, topp::LimitMargins& margins,
                  ToppReport& report) {
-  // Accept only up to 60 % of the tolerance at the check's own sample times, so that sampling at
+  // Accept only a share of the tolerance at the check's own sample times, so that sampling at
   // other instants (the streamer's, a verifier's) stays within the whole tolerance.
-  const double tolerance = kCheckShare * settings.limit_check_tolerance;
+  const double tolerance = settings.check_share * settings.limit_check_tolerance;
   const std::vector<double>& t_grid = trajectory.tGrid();
   report.peak_voltage_ratio = report.peak_current_ratio = 0.0;
   report.peak_velocity_ratio = report.peak_acceleration_ratio = 0.0;
@@ -113,7 +108,7 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
     // so lowering the end limits by the excess (plus a little) brings the peak to the limit.
     for (const Excess& e : excesses) {
       double& margin = margins.at(e.interval, e.joint, e.kind);
-      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, kMaxMargin * e.limit);
+      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, settings.max_margin * e.limit);
     }
   }
   return within;
@@ -137,7 +132,7 @@ std::optional<std::string> invalidInput(double length, double b_start, const Dri
 // The problem is normalised to unit length, so short paths need no special grid.
 int initialGridPoints(const ToppSettings& settings) { return std::max(kMinGridPoints, settings.grid_points); }
 int finestGridPoints(const ToppSettings& settings) {
-  return std::max(initialGridPoints(settings), kMaxGridFactor * settings.grid_points);
+  return std::max(initialGridPoints(settings), settings.max_grid_factor * settings.grid_points);
 }
 
 // Relative overshoot of the worst limit at the continuous check's samples.
@@ -206,7 +201,7 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
 bool ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
   timed_ = false;
   std::string coarse_error;
-  if (!sampleRows(move, std::min(grid_points, kTimingGridPoints), report, &coarse_error)) {
+  if (!sampleRows(move, std::min(grid_points, settings_.timing_grid_points), report, &coarse_error)) {
     return sampleRows(move, grid_points, report, error);
   }
   problem_.b_start = move.unit_b_start;
@@ -291,7 +286,8 @@ ToppSolver::Attempt ToppSolver::solveRows(const Move& move, const topp::AlSettin
 // intervals concerned; limits that can no longer hold once lowered get a finer grid instead.
 Result<ToppSolver::RowLimits> ToppSolver::refineOrTighten(const Move& move, ToppReport& report) {
   std::string error;
-  GridChange change = peakOvershoot(report) > kRefineAbove ? refineGrid(move, report, &error) : GridChange::kFinest;
+  GridChange change =
+      peakOvershoot(report) > settings_.refine_above ? refineGrid(move, report, &error) : GridChange::kFinest;
   if (change == GridChange::kFinest) {
     if (topp::buildRows(move.drives, margins_, problem_, &error)) return RowLimits::kTightened;
     change = refineGrid(move, report, &error);

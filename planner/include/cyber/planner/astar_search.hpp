@@ -40,7 +40,7 @@ struct SearchOptions {
   // without, Dijkstra's.
   bool use_heuristic = true;
   // Nodes with a non-zero entry (empty, or one entry per cell) count as blocked too: the search
-  // for another way round an obstacle (path_planner.cpp).
+  // for another way round an obstacle (path_strategies.hpp).
   std::span<const std::uint8_t> also_blocked = {};
   std::optional<SideOfHole> side = std::nullopt;
   // Paths that cost more are not wanted: the search gives up once every remaining one would

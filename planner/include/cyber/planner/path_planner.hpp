@@ -13,6 +13,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ namespace cyber::planner {
 
 // Whether candidates() also smooths and times the other ways to the goal it finds.
 enum class PathAlternatives { kNone, kSearch };
+
+struct PathStrategy;  // path_strategies.hpp
 
 struct PlannedPath {
   std::shared_ptr<const CubicSplinePath> path;  // q(s), s in [0, length]; a GeometricPath
@@ -63,6 +66,11 @@ class PathPlanner {
       const JointVector& start, const JointVector& goal, HeldPieces pieces,
       const JointVector& start_velocity = JointVector::Zero(),
       PathAlternatives alternatives = PathAlternatives::kSearch) const;
+  // The first path smoothed, then the candidates of these strategies, in their order
+  // (path_strategies.hpp; kSearch is every one of pathStrategies(), kNone none).
+  [[nodiscard]] Result<std::vector<PlannedPath>> candidates(const JointVector& start, const JointVector& goal,
+                                                            HeldPieces pieces, const JointVector& start_velocity,
+                                                            std::span<const PathStrategy> strategies) const;
 
   [[nodiscard]] const RobotModel& model() const { return model_; }
   [[nodiscard]] const Scene& scene() const { return scene_; }

@@ -17,14 +17,6 @@
 
 namespace cyber::planner {
 
-struct ShapeSearchSettings {
-  int bumps = 2;                         // per joint
-  int max_evaluations = 16;              // spline + reachability estimates
-  int grid_points = 40;                  // of each estimate
-  JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]; about 10 ms of top speed each
-  double min_step_fraction = 0.125;      // stop when the steps have shrunk to this share
-};
-
 struct ShapedPath {
   std::vector<JointVector> waypoints;  // the shaped knots (the input's when nothing was better)
   CubicSplinePath path;
@@ -34,28 +26,18 @@ struct ShapedPath {
   int improvements = 0;  // accepted steps; 0: the input is returned unchanged
 };
 
-// A second, longer search for the candidates still far above their slower joint alone
-// (docs/performance.md, "Choosing the path for time"): more bumps, and each amplitude keeps its own
-// step, doubled when it helped and halved when neither sign did, so the evaluations go where
-// they gain. A step that is faster but loses the clearance somewhere is tried once more with a
-// window that holds the knots still there: the fastest paths touch the clearance, and a bump
-// over the whole path would otherwise push that place into the obstacle every time.
-struct ShapeRefinementSettings {
-  int bumps = 6;                                                  // per joint
-  int max_evaluations = 100;                                      // spline + reachability estimates
-  int grid_points = ShapeSearchSettings{}.grid_points;            // of each estimate: the first search's,
-  JointVector initial_step = ShapeSearchSettings{}.initial_step;  // whose shape it goes on from
-  double min_step_fraction = 0.02;  // an amplitude whose step has shrunk to this share is done
-  double max_step_fraction = 4.0;   // steps grow to at most this share
-  double pin_width = 0.15;          // of the knots' arc fraction: the held window's half width (0: none)
-};
-
 // Starts from `waypoints` (their spline must already be clear); the first fixed_head knots and the
 // last stay where they are. b_start and the drives as for estimateDuration.
 ShapedPath shapeForTime(std::span<const JointVector> waypoints, int fixed_head, const JointVector& start_velocity,
                         const CollisionWorld& world, const RobotModel& model, double b_start,
                         const ShapeSearchSettings& settings);
 
+// A second, longer search for the candidates still far above their slower joint alone
+// (docs/performance.md, "Choosing the path for time"): more bumps, and each amplitude keeps its own
+// step, doubled when it helped and halved when neither sign did, so the evaluations go where
+// they gain. A step that is faster but loses the clearance somewhere is tried once more with a
+// window that holds the knots still there: the fastest paths touch the clearance, and a bump
+// over the whole path would otherwise push that place into the obstacle every time.
 // As shapeForTime, with the refinement's steps and held windows. Returns the input unchanged when
 // it has fewer than two free knots per bump (the bumps would not be independent over so few).
 ShapedPath refineShapeForTime(std::span<const JointVector> waypoints, int fixed_head, const JointVector& start_velocity,

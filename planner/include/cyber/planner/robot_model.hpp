@@ -11,7 +11,7 @@
 #include "cyber/planner/convex_polygon.hpp"
 #include "cyber/planner/drive_model.hpp"
 #include "cyber/planner/joint_chain.hpp"
-#include "cyber/planner/topp_al_settings.hpp"
+#include "cyber/planner/planner_settings.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
@@ -44,59 +44,6 @@ struct Scene {
   std::vector<NamedPolygon> obstacles;
   std::vector<NamedPolygon> fixed;
   JointRange offset_range_m;  // {0, 0}: the scene does not move
-};
-
-struct GridSettings {
-  JointVector step = JointVector(0.02, 0.02);  // cell size of each joint, joint units
-};
-
-struct SearchSettings {
-  double potential_weight = 2.0;  // weight of the potential in the A* step cost
-  double potential_range = 0.15;  // weighted C-space distance over which the potential decays
-  // Width of a band of scene offsets that shares one set of grids, in clearances: the grids of a
-  // band search the field elements swept across it, so a path may keep up to this much more than
-  // the clearance near them; narrower bands cost start-up time and memory (a set of grids per
-  // band; docs/algorithm.md section 2, "Scene offsets").
-  double offset_band_clearances = 2.0;
-};
-
-// Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
-// depends on the spacing). Tuned on the public moves: with w_p = 0.1, w_s = 10 the obstacle term
-// dragged waypoints out of the obstacles' channels and bunched them (then the spline cut corners
-// and fell back to the unsmoothed path), and L-BFGS needed ~40 iterations; these values keep the
-// search's topology, halve the curvature integral and converge in ~4 iterations.
-struct SmoothingSettings {
-  double waypoint_spacing = 0.05;     // weighted C-space spacing of the optimised waypoints
-  double obstacle_weight = 0.5;       // w_o  (eq. 8)
-  double obstacle_decay_m = 0.03;     // d0   (eq. 8)
-  double prior_weight = 20.0;         // w_p
-  double length_weight = 1.0;         // w_l
-  double smoothness_weight = 1000.0;  // w_s
-  int max_iterations = 200;
-  double gradient_tolerance = 1e-6;
-  // L-BFGS also stops when a step lowers J by less than this fraction of max(1, |J|) (0: off).
-  double relative_cost_tolerance = 1e-9;
-  // With a start velocity v0 the path first runs straight along v0 for |v0|_Sigma * lead_in_time_s
-  // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
-  double lead_in_time_s = 0.1;
-  double max_lead_in = 0.3;
-};
-
-struct ToppSettings {
-  int grid_points = 200;                 // K
-  double limit_check_step_s = 0.001;     // the continuous trajectory is checked at this step
-  double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
-  int max_limit_refinements = 8;         // re-solves with tightened limits after a failed check
-  // Tolerances, caps and penalty schedule of the solver; [planner.topp] sets all but the L-BFGS ones.
-  topp::AlSettings solver;
-};
-
-struct PlannerSettings {
-  JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
-  GridSettings grid;
-  SearchSettings search;
-  SmoothingSettings smoothing;
-  ToppSettings topp;
 };
 
 struct RobotModel {

@@ -18,18 +18,6 @@
 
 namespace cyber::planner {
 
-struct SynchronisedSettings {
-  std::array<double, 3> slowdowns{1.0, 1.04, 1.1};  // of the slower joint's own profile
-  int divisions = 4;                                // of the faster joint's stretch and of its delay, each
-  int samples = 24;                                 // waypoints at even times, after the start
-  int profile_points = 300;                         // of each joint's own profile
-  int estimate_points = 40;                         // of each candidate's reachability estimate
-  int max_estimates = 6;
-  // A candidate estimated within this factor of its construction's time is taken at once: its
-  // timing is (nearly) feasible, so no other pair of the same slowdown is much faster.
-  double accept_ratio = 1.025;
-};
-
 struct SynchronisedPath {
   std::vector<JointVector> waypoints;
   CubicSplinePath path;

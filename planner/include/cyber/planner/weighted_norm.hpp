@@ -8,6 +8,9 @@
 
 namespace cyber::planner {
 
+// Poses closer than this in the weighted norm are the same pose (a zero-length move).
+inline constexpr double kSamePoseWeighted = 1e-9;
+
 inline double weightedNorm(const JointVector& v, const JointVector& metric) {
   return std::sqrt(metric[0] * v[0] * v[0] + metric[1] * v[1] * v[1]);
 }

@@ -1,0 +1,189 @@
+#pragma once
+// Every tuned number of the planner, in one place (docs/algorithm.md section 6, "Settings"): the
+// rest is derived from the robot description. Each field says why it has its value; those
+// measured on the public moves say so. RobotModel::planner holds one PlannerSettings; the TOML's
+// [planner] table sets the grid, search, smoothing and TOPP parts (docs/configuration.md).
+
+#include <array>
+
+#include "cyber/planner/topp_al_settings.hpp"
+#include "cyber/planner/types.hpp"
+
+namespace cyber::planner {
+
+struct GridSettings {
+  JointVector step = JointVector(0.02, 0.02);  // cell size of each joint, joint units
+};
+
+struct SearchSettings {
+  double potential_weight = 2.0;  // weight of the potential in the A* step cost
+  double potential_range = 0.15;  // weighted C-space distance over which the potential decays
+  // Width of a band of scene offsets that shares one set of grids, in clearances: the grids of a
+  // band search the field elements swept across it, so a path may keep up to this much more than
+  // the clearance near them; narrower bands cost start-up time and memory (a set of grids per
+  // band; docs/algorithm.md section 2, "Scene offsets").
+  double offset_band_clearances = 2.0;
+};
+
+// Eq. 8 weights for waypoints waypoint_spacing apart (the terms are plain sums, so the balance
+// depends on the spacing). Tuned on the public moves: with w_p = 0.1, w_s = 10 the obstacle term
+// dragged waypoints out of the obstacles' channels and bunched them (then the spline cut corners
+// and fell back to the unsmoothed path), and L-BFGS needed ~40 iterations; these values keep the
+// search's topology, halve the curvature integral and converge in ~4 iterations.
+struct SmoothingSettings {
+  double waypoint_spacing = 0.05;     // weighted C-space spacing of the optimised waypoints
+  double obstacle_weight = 0.5;       // w_o  (eq. 8)
+  double obstacle_decay_m = 0.03;     // d0   (eq. 8)
+  double prior_weight = 20.0;         // w_p
+  double length_weight = 1.0;         // w_l
+  double smoothness_weight = 1000.0;  // w_s
+  int max_iterations = 200;
+  double gradient_tolerance = 1e-6;
+  // L-BFGS also stops when a step lowers J by less than this fraction of max(1, |J|) (0: off).
+  double relative_cost_tolerance = 1e-9;
+  // With a start velocity v0 the path first runs straight along v0 for |v0|_Sigma * lead_in_time_s
+  // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
+  double lead_in_time_s = 0.1;
+  double max_lead_in = 0.3;
+};
+
+struct ToppSettings {
+  int grid_points = 200;                 // K
+  double limit_check_step_s = 0.001;     // the continuous trajectory is checked at this step
+  double limit_check_tolerance = 0.005;  // relative overshoot of a limit accepted at that check
+  int max_limit_refinements = 8;         // re-solves with tightened limits after a failed check
+  // Of limit_check_tolerance, the share accepted at the check's samples: the rest is left for
+  // the overshoot between them (a referee samples other instants).
+  double check_share = 0.6;
+  double max_margin = 0.05;     // limits are lowered by at most this fraction of themselves
+  double refine_above = 0.02;   // overshoots beyond this fraction refine the grid instead
+  int max_grid_factor = 8;      // the grid may grow to this multiple of grid_points
+  int timing_grid_points = 64;  // of the coarse grid whose profile places the real one's nodes
+  // Tolerances, caps and penalty schedule of the solver; [planner.topp] sets all but the L-BFGS ones.
+  topp::AlSettings solver;
+};
+
+// The shape search (path_shaping.hpp).
+struct ShapeSearchSettings {
+  int bumps = 2;                         // per joint
+  int max_evaluations = 16;              // spline + reachability estimates
+  int grid_points = 40;                  // of each estimate
+  JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]; about 10 ms of top speed each
+  double min_step_fraction = 0.125;      // stop when the steps have shrunk to this share
+};
+
+// The shape search's refinement (path_shaping.hpp): more bumps, each with its own step.
+struct ShapeRefinementSettings {
+  int bumps = 6;                                                  // per joint
+  int max_evaluations = 100;                                      // spline + reachability estimates
+  int grid_points = ShapeSearchSettings{}.grid_points;            // of each estimate: the first search's,
+  JointVector initial_step = ShapeSearchSettings{}.initial_step;  // whose shape it goes on from
+  double min_step_fraction = 0.02;  // an amplitude whose step has shrunk to this share is done
+  double max_step_fraction = 4.0;   // steps grow to at most this share
+  double pin_width = 0.15;          // of the knots' arc fraction: the held window's half width (0: none)
+};
+
+// The synchronised candidate (synchronised_path.hpp).
+struct SynchronisedSettings {
+  std::array<double, 3> slowdowns{1.0, 1.04, 1.1};  // of the slower joint's own profile
+  int divisions = 4;                                // of the faster joint's stretch and of its delay, each
+  int samples = 24;                                 // waypoints at even times, after the start
+  int profile_points = 300;                         // of each joint's own profile
+  int estimate_points = 40;                         // of each candidate's reachability estimate
+  int max_estimates = 6;
+  // A candidate estimated within this factor of its construction's time is taken at once: its
+  // timing is (nearly) feasible, so no other pair of the same slowdown is much faster.
+  double accept_ratio = 1.025;
+};
+
+// When each path strategy is tried (path_strategies.hpp; docs/performance.md, "Choosing the path
+// for time"). The ratios compare reachability estimates of the same move, so they carry over from
+// robot to robot; the public moves tell where a strategy stops paying for its time.
+struct PathStrategySettings {
+  int timing_grid_points = 60;  // candidate paths are ordered by estimates on this many points
+  // Shortcut segments keep this many clearances more than the clearance, so smoothing has room at
+  // corners.
+  double shortcut_margin_clearances = 0.5;
+  // The other way round is searched for when the best path takes this much longer than the straight
+  // segment would (obstacles ignored), with the first path's band this many nodes wide blocked.
+  double detour_ratio = 1.05;
+  int band_radius_nodes = 6;
+  // The other side of this many holes of C-space (the largest) is searched for as well, only when
+  // it costs at most this much more than the first path in the search's own metric (the other
+  // sides that were faster on the public moves cost 1.03-1.06 times as much; most that were not,
+  // 1.1 to 4.5 times): the search gives up early on a far detour, and it is not smoothed.
+  int max_hole_sides = 2;
+  double max_side_cost = 1.08;
+  // The fastest candidate's shape is searched against its estimated time when it is estimated this
+  // much slower than the straight segment, and kept when a finer estimate (check_grid_points) finds
+  // it this much faster: the search's own coarse estimate could be fooled between its grid points.
+  double shape_ratio = 1.02;
+  double shape_gain = 0.002;
+  int check_grid_points = 100;
+  // The shape search goes on with its refinement when its shape is still estimated this much slower
+  // than the slower joint alone. On the public moves 53 pass (50 are refined: three are direct
+  // paths with too few knots); at 1.10 two moves stayed above 1.03 of the best known.
+  double refine_ratio = 1.05;
+  // A direct path is shaped from this many knots along its straight segment, when its estimate (on
+  // gate_grid_points) is this much above its slower joint's alone: on the public moves those that
+  // gained were 1.006-1.06 above, the others equal (one joint's limits bind all along).
+  int direct_shape_knots = 6;
+  int gate_grid_points = 20;
+  double direct_shape_ratio = 1.003;
+  // The synchronised candidate is tried when the slower joint alone is this much faster than the
+  // fastest candidate's estimate (check_grid_points): below that it cannot gain enough to matter.
+  double synchronised_ratio = 1.01;
+  // Nor when it is this much slower: then the obstacles decide the move, and the joints' own
+  // motions side by side run into them (on the public moves the synchronised candidate was found
+  // only below 1.045; above, its profiles and clearance checks cost 1-2 ms for nothing).
+  double synchronised_max_ratio = 1.08;
+};
+
+// How MotionPlanner judges and repairs timed trajectories, and chooses between leaving along a
+// start velocity and stopping first (docs/moving-starts.md).
+struct MotionSettings {
+  // Columns are judged at the samples of cyber-plan's CSV (docs/moving-starts.md), within 95 % of
+  // what an independent check of that CSV allows (1 % of the travel, 2 % of the peak speed).
+  double consistency_step_s = 0.001;
+  double max_position_error = 0.0095;
+  double max_velocity_error = 0.019;
+  // After the fastest stop, the junction may be moved later by a multiple of this fraction of a
+  // step, up to gentler_steps of them, trying at most gentler_tries (each redoes the onward plan).
+  double gentler_step = 0.125;
+  int gentler_steps = 12;
+  int gentler_tries = 6;
+  // A rest-to-rest trajectory whose columns disagree is slowed down until its duration has grown by
+  // a multiple of this fraction of a step, up to slower_steps of them (two steps).
+  double slower_step = 0.125;
+  int slower_steps = 16;
+  // Beyond this duration a move has many acceleration jumps, spread in time, and a uniform slowdown
+  // of at most two steps moves each by a different fraction of a step; on the HIL tests' capped
+  // moves it never made one agree and cost up to 4.7 times the plan (docs/moving-starts.md,
+  // "Consistent columns").
+  double slower_max_duration_s = 1.0;
+  // A way out of the clearance (a few millimetres in tens of milliseconds) is slowed by up to this
+  // many slower_step: of clearance_escape_test's 58 ways out, 26 disagreed at 1 ms unslowed, 3 still
+  // did (6-7 % of the peak speed) after slower_steps, none after these (at most 8 ms more).
+  int escape_slower_steps = 64;
+  // The reachability pass's estimate (path_timing.hpp, on this many points) is never below the
+  // optimiser's duration on the public moves and their splices, and at most this much above it:
+  // 10 % from a moving start, 2.5 % from rest (docs/moving-starts.md, "Planning time").
+  int estimate_grid_points = 60;
+  double moving_estimate_low = 0.85;
+  double rest_estimate_low = 0.95;
+};
+
+struct PlannerSettings {
+  JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
+  GridSettings grid;
+  SearchSettings search;
+  SmoothingSettings smoothing;
+  ToppSettings topp;
+  PathStrategySettings strategies;
+  ShapeSearchSettings shape_search;
+  ShapeRefinementSettings shape_refinement;
+  SynchronisedSettings synchronised;
+  MotionSettings motion;
+};
+
+}  // namespace cyber::planner
