@@ -288,15 +288,16 @@ def published_around(rows, t_stop, t_resume):
 
 
 def plant_summary(path):
-    """The counters of cyber-plant-sim's closing 'stopped:' line on stderr."""
+    """The counters of cyber-plant-sim's closing 'stopped:' line on stderr (joints by index: the
+    line names them as the config does)."""
     text = open(path).read()
-    m = re.search(r"stopped: elevator (\S+) m, arm (\S+) rad; setpoints elevator (\d+) arm (\d+), "
+    m = re.search(r"stopped: \S+ (\S+) \S+, \S+ (\S+) \S+; setpoints \S+ (\d+) \S+ (\d+), "
                   r"sequence gaps (\d+), malformed (\d+), other (\d+), bus errors (\d+), read failures (\d+); "
                   r"sent heartbeats (\d+), disables (\d+), write failures (\d+); "
                   r"ARM_STATE published (\d+), failed (\d+); motions (\d+); frozen (\d+) times, (\S+) s", text)
     if not m:
         raise ValueError(f"{path}: no 'stopped:' summary line")
-    keys = ("elevator_m", "arm_rad", "setpoints_elevator", "setpoints_arm", "sequence_gaps", "malformed",
+    keys = ("joint0", "joint1", "setpoints_joint0", "setpoints_joint1", "sequence_gaps", "malformed",
             "other", "bus_errors", "read_failures", "heartbeats", "disables", "write_failures",
             "states_published", "publish_failures", "motions", "freezes", "frozen_s")
     return {k: float(v) for k, v in zip(keys, m.groups())}

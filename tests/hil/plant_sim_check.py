@@ -241,8 +241,8 @@ def check(out):
     c.check(abs(end[ARM["q"]] - ARM_AT) < 0.003, f"arm near vertical stays put in neutral ({end[ARM['q']]:.4f} rad)")
 
     # Counters: every replayed setpoint in order, the malformed ones counted.
-    c.check(summary["setpoints_elevator"] == len(elevator_sp) and summary["setpoints_arm"] == len(arm_sp),
-            f"simulator took {summary['setpoints_elevator']:.0f}/{summary['setpoints_arm']:.0f} setpoints")
+    c.check(summary["setpoints_joint0"] == len(elevator_sp) and summary["setpoints_joint1"] == len(arm_sp),
+            f"simulator took {summary['setpoints_joint0']:.0f}/{summary['setpoints_joint1']:.0f} setpoints")
     c.check(summary["sequence_gaps"] == 0, "no sequence gaps")
     c.check(summary["malformed"] == MALFORMED_SENT, f"malformed frames counted: {summary['malformed']:.0f} (sent {MALFORMED_SENT})")
     c.check(summary["motions"] == 1, f"one motion seen ({summary['motions']:.0f})")

@@ -91,6 +91,8 @@ int main(int argc, char** argv) {
   setup.options.initial_q = initial_q;
   for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
     setup.joint_devices[j] = static_cast<std::uint8_t>(devices.joints[j]);
+    setup.joint_names[j] = robot.joints[j].name;
+    setup.joint_units[j] = cyber::planner::unitName(robot.joints[j].type);
   }
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);

@@ -364,10 +364,13 @@ void Runner::writeLogRow(double t_s, bool published, std::int64_t utime_us) {
 
 void Runner::printSummary() const {
   const auto q = sim_.positions();
-  say("stopped: elevator %.6f m, arm %.6f rad; setpoints elevator %ld arm %ld, sequence gaps %ld, "
+  const auto& names = setup_.joint_names;
+  const auto& units = setup_.joint_units;
+  say("stopped: %s %.6f %s, %s %.6f %s; setpoints %s %ld %s %ld, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
       "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
-      q[0], q[1], counters_.setpoints[0], counters_.setpoints[1], counters_.sequence_gaps, counters_.malformed,
+      names[0].c_str(), q[0], units[0].c_str(), names[1].c_str(), q[1], units[1].c_str(), names[0].c_str(),
+      counters_.setpoints[0], names[1].c_str(), counters_.setpoints[1], counters_.sequence_gaps, counters_.malformed,
       counters_.other_frames, counters_.bus_errors, counters_.read_failures, counters_.heartbeats_sent,
       counters_.disables_sent, counters_.write_failures, counters_.states_published, counters_.publish_failures,
       motions_, clock_.freezes(), clock_.frozenSeconds());

@@ -20,7 +20,9 @@ namespace cyber::plant {
 struct RunnerSetup {
   SimOptions options;
   SimulationSettings simulation;
-  std::array<std::uint8_t, 2> joint_devices{1, 2};  // setpoint frames of joint 0 and joint 1
+  std::array<std::uint8_t, 2> joint_devices{1, 2};             // setpoint frames of joint 0 and joint 1
+  std::array<std::string, 2> joint_names{"joint0", "joint1"};  // the config's, for the closing line
+  std::array<std::string, 2> joint_units{"m", "rad"};
   std::string state_channel = "ARM_STATE";
   std::string can_interface;
 };

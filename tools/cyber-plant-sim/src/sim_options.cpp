@@ -9,7 +9,7 @@ namespace {
 
 constexpr std::string_view kUsage =
     "usage: cyber-plant-sim [options]\n"
-    "Simulates the elevator and arm motor controllers on a CAN interface: follows the setpoint\n"
+    "Simulates the two joints' motor controllers on a CAN interface: follows the setpoint\n"
     "frames of docs/can-protocol.md, publishes ARM_STATE on LCM and sends the roboRIO heartbeat.\n"
     "  --config FILE            robot and daemon config (default: the embedded reference robot)\n"
     "  --can IFACE              CAN interface (default: the config's [daemon] can_interface)\n"
