@@ -79,6 +79,22 @@ std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Traj
                           [&](const Trajectory& slower) { return consistent(settings, slower); });
 }
 
+// A move from rest whose columns still disagree: its early acceleration switch (a burst to a
+// speed the voltage or a velocity cap holds) lands where the trapezoid across it errs, and a
+// uniform slowdown hardly moves an early switch. The start made gentler by gentler_start_step at a
+// time, up to gentler_start_steps, moves it (gentlerStart); the first whose columns agree within
+// the limits (docs/moving-starts.md, "Consistent columns").
+std::optional<Trajectory> consistentStart(const RobotModel& model, const Trajectory& trajectory) {
+  const MotionSettings& settings = model.planner.motion;
+  for (int i = 1; i <= settings.gentler_start_steps; ++i) {
+    Result<Trajectory> gentler = gentlerStart(trajectory, 1.0 - i * settings.gentler_start_step);
+    if (gentler && consistent(settings, gentler.value()) && withinDriveLimits(gentler.value(), model.planner.topp)) {
+      return std::move(gentler).value();
+    }
+  }
+  return std::nullopt;
+}
+
 // TOPP along the path stage's candidates from a start with velocity v0, in the order of their
 // estimated time, until one gives a trajectory whose columns agree.
 Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& found, const JointVector& v0) {
@@ -105,6 +121,10 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
       if (std::optional<Trajectory> slower = consistentSlowdown(model, trajectory.value())) {
         trajectory = std::move(*slower);
         plan.path_method += ", slowed to agree at 1 ms";
+        agree = true;
+      } else if (std::optional<Trajectory> gentler = consistentStart(model, trajectory.value())) {
+        trajectory = std::move(*gentler);
+        plan.path_method += ", gentler start to agree at 1 ms";
         agree = true;
       }
     }

@@ -144,4 +144,36 @@ Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor) {
   return Trajectory::create(trajectory.sharedPath(), trajectory.drives(), trajectory.sGrid(), std::move(b_grid));
 }
 
+Result<Trajectory> gentlerStart(const Trajectory& trajectory, double scale) {
+  using R = Result<Trajectory>;
+  if (!(scale > 0.0 && scale <= 1.0))
+    return R::failure(PlanStatus::kInvalidInput, "a start is made gentler by 0 < scale <= 1");
+  const std::vector<double>& s_grid = trajectory.sGrid();
+  const std::vector<double>& b_grid = trajectory.bGrid();
+  if (s_grid.size() < 2 || b_grid.front() != 0.0) {
+    return R::failure(PlanStatus::kInvalidInput, "only a trajectory from rest has a gentler start");
+  }
+  const double slope = scale * b_grid[1] / s_grid[1];  // db/ds of the line: 2 scale a_0
+  std::vector<double> s_out{s_grid[0]}, b_out{0.0};
+  size_t k = 1;
+  // Knots where the line is below the profile take the line's value.
+  for (; k < s_grid.size() && slope * s_grid[k] < b_grid[k]; ++k) {
+    s_out.push_back(s_grid[k]);
+    b_out.push_back(slope * s_grid[k]);
+  }
+  if (k == s_grid.size()) return R::failure(PlanStatus::kInvalidInput, "the line never meets the profile");
+  // The line meets the profile inside (s_{k-1}, s_k]: b_{k-1} + m (s - s_{k-1}) = slope s.
+  const double m = (b_grid[k] - b_grid[k - 1]) / (s_grid[k] - s_grid[k - 1]);
+  if (slope > m) {
+    const double s_meet = (b_grid[k - 1] - m * s_grid[k - 1]) / (slope - m);
+    if (s_meet > s_out.back() && s_meet < s_grid[k]) {
+      s_out.push_back(s_meet);
+      b_out.push_back(slope * s_meet);
+    }
+  }
+  s_out.insert(s_out.end(), s_grid.begin() + static_cast<long>(k), s_grid.end());
+  b_out.insert(b_out.end(), b_grid.begin() + static_cast<long>(k), b_grid.end());
+  return Trajectory::create(trajectory.sharedPath(), trajectory.drives(), std::move(s_out), std::move(b_out));
+}
+
 }  // namespace cyber::planner

@@ -14,6 +14,7 @@
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner/trajectory_consistency.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 #include "shipped_move_durations.hpp"
@@ -63,6 +64,11 @@ void expectSound(const RobotModel& model, const Trajectory& trajectory, HeldPiec
     ASSERT_GE(d, model.clearance_m - 1e-6) << label << " at t = " << t;
   }
   EXPECT_TRUE(withinDriveLimits(trajectory, model.planner.topp)) << label;
+  // Each column integrates to the one above it at 1 ms (trapezoid), as an external referee checks:
+  // within 1 % of the travel and 2 % of the peak speed.
+  const ColumnConsistency columns = columnConsistency(trajectory, 0.001);
+  EXPECT_LE(columns.position_error, 0.01) << label;
+  EXPECT_LE(columns.velocity_error, 0.02) << label;
 }
 
 TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {

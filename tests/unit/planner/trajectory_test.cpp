@@ -182,6 +182,42 @@ TEST(Trajectory, WithinDriveLimitsJudgesEverySampleAgainstTheTolerance) {
       0.0));
 }
 
+// The speed along the path at s (sqrt(b)).
+double speedAt(const Trajectory& t, double s) { return t.sample(t.timeAt(s)).sdot; }
+
+TEST(Trajectory, AGentlerStartAcceleratesLessThenJoinsTheSameProfile) {
+  const Trajectory t = makeTrajectory(wiggle());
+  const double l = t.path().length();
+  const double scale = 0.9;
+  const auto gentler = gentlerStart(t, scale);
+  ASSERT_TRUE(gentler.ok());
+  const Trajectory& g = gentler.value();
+  EXPECT_NEAR(g.sample(0.0).sddot, scale * t.sample(0.0).sddot, 1e-12);
+  EXPECT_GT(g.duration_s(), t.duration_s());
+  // The line 7.2 s / l meets the profile between 0.25 l and 0.5 l: slower before, the same after.
+  for (int i = 1; i <= 100; ++i) {
+    const double s = l * i / 100.0;
+    EXPECT_LE(speedAt(g, s), speedAt(t, s) + 1e-12) << s;
+    if (s >= 0.5 * l) {
+      EXPECT_NEAR(speedAt(g, s), speedAt(t, s), 1e-9) << s;
+    }
+    if (s <= 0.25 * l) {
+      EXPECT_LT(speedAt(g, s), speedAt(t, s)) << s;
+    }
+  }
+  // The same path: positions by s agree.
+  const TrajectorySample end = g.sample(g.duration_s());
+  EXPECT_NEAR((end.q - t.sample(t.duration_s()).q).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(gentlerStart(t, 1.0).value().duration_s(), t.duration_s(), 1e-12);
+  for (double bad : {0.0, -0.5, 1.5, static_cast<double>(NAN)}) {
+    EXPECT_EQ(gentlerStart(t, bad).status(), PlanStatus::kInvalidInput) << bad;
+  }
+  // Only from rest.
+  const auto moving = Trajectory::create(t.sharedPath(), referenceDrives(), {0.0, 0.5 * l, l}, {1.0, 2.0, 0.0});
+  ASSERT_TRUE(moving.ok());
+  EXPECT_EQ(gentlerStart(moving.value(), 0.9).status(), PlanStatus::kInvalidInput);
+}
+
 TEST(Trajectory, SlowedDownFollowsTheSamePathWithVelocitiesOverTheFactor) {
   const Trajectory t = makeTrajectory(wiggle());
   const double factor = 1.03;

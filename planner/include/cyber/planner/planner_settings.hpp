@@ -161,6 +161,11 @@ struct MotionSettings {
   // moves it never made one agree and cost up to 4.7 times the plan (docs/moving-starts.md,
   // "Consistent columns").
   double slower_max_duration_s = 1.0;
+  // When no such slowdown agrees, the start is made gentler (gentlerStart) by this share of its
+  // first acceleration at a time, up to this many: an early switch moves by about the same share
+  // of its time (a whole step for a switch 10 ms in), for at most half that in duration.
+  double gentler_start_step = 0.01;
+  int gentler_start_steps = 25;
   // A way out of the clearance (a few millimetres in tens of milliseconds) is slowed by up to this
   // many slower_step: of clearance_escape_test's 58 ways out, 26 disagreed at 1 ms unslowed, 3 still
   // did (6-7 % of the peak speed) after slower_steps, none after these (at most 8 ms more).

@@ -104,4 +104,12 @@ void forEachLimitSample(const Trajectory& trajectory, double step_s, Visit&& vis
 // checked here: withinDriveLimits.
 [[nodiscard]] Result<Trajectory> slowedDown(const Trajectory& trajectory, double factor);
 
+// The same path from rest with a gentler start: b is capped by the line b = 2 scale a_0 s (a_0 the
+// first interval's path acceleration, 0 < scale <= 1) until the line meets the profile, which is
+// unchanged from there on. The path starts with scale times its first acceleration and joins the
+// original profile later, at the same speed: it moves the time of the early acceleration switches
+// that a uniform slowdown hardly moves (docs/moving-starts.md, "Consistent columns"). Drive limits
+// are not checked here: withinDriveLimits.
+[[nodiscard]] Result<Trajectory> gentlerStart(const Trajectory& trajectory, double scale);
+
 }  // namespace cyber::planner
