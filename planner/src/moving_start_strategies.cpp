@@ -43,7 +43,8 @@ struct StopAndOnward {
 // the junction later (docs/moving-starts.md).
 Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& prepared) {
   const Trajectory& stop = prepared.stop;
-  Result<Plan> plan = joinAfter("stop", in.request, stop, timePaths(in.model, prepared.onward, JointVector::Zero()));
+  const Result<Plan> onward = timePaths(in.model, prepared.onward, JointVector::Zero());
+  Result<Plan> plan = joinAfter("stop", in.request, stop, onward);
   const MotionSettings& settings = in.model.planner.motion;
   const double steps = stop.duration_s() / settings.consistency_step_s;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
@@ -57,6 +58,23 @@ Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& pre
     ++tries;
     Result<Trajectory> gentler = stretchedStop(in.model, in.paths.world(in.request.pieces), stop, target / steps);
     plan = gentler ? planAfterStop(in, gentler.value()) : gentler.error();
+  }
+  // The junction is not the only jump: the trapezoid's errors add up over the whole move, so a
+  // short move after a short stop may still disagree. Slowing the onward plan from the fastest
+  // stop moves each of its jumps against the samples by a different fraction of a step (as a
+  // short move from rest is slowed); the shortest slowdown whose joined columns agree.
+  if (onward && (!plan || !columnsAgree(settings, *plan.value().trajectory))) {
+    Result<Plan> joined = inconsistentPlan();
+    const auto joined_agrees = [&](const Trajectory& slower) {
+      Plan slowed = onward.value();
+      slowed.trajectory = std::make_shared<const Trajectory>(slower);
+      slowed.path_method += ", slowed to agree after the stop";
+      joined = joinAfter("stop", in.request, stop, std::move(slowed));
+      return joined && columnsAgree(settings, *joined.value().trajectory);
+    };
+    if (shortestSlowdown(in.model, *onward.value().trajectory, settings.onward_slower_steps, joined_agrees)) {
+      plan = std::move(joined);
+    }
   }
   if (plan) plan.value().times_ms.topp += prepared.stop_ms;
   return plan;

@@ -152,6 +152,10 @@ struct MotionSettings {
   double gentler_step = 0.125;
   int gentler_steps = 12;
   int gentler_tries = 6;
+  // When no gentler stop agrees, the onward plan from the fastest stop is slowed by up to this many
+  // slower_step (1.5 ms): within what a moving start may cost over stopping first
+  // (docs/moving-starts.md, "Consistent columns").
+  int onward_slower_steps = 12;
   // A rest-to-rest trajectory whose columns disagree is slowed down until its duration has grown by
   // a multiple of this fraction of a step, up to slower_steps of them (two steps).
   double slower_step = 0.125;
