@@ -290,6 +290,12 @@ case "$case_name" in
   cancel)
     # ARM_CANCEL: a hold brakes a running move to rest (the real planner's fastest stop) and
     # cancels it; a release cancels the next one and stops the setpoints (mode 5) until a goal.
+    # The stop is planned a budget ahead (the recent plan times), and under the sanitizers one
+    # plan took 0.47 s: at 12 V the long move (0.71 s) could end before the stop's branch and the
+    # daemon rightly held where it ended, with no stop to test. At 3 V the same move takes 3.0 s.
+    sed 's/^voltage_limit_volts = .*/voltage_limit_volts = 3.0/' "$config" >"$tmp/slow.toml"
+    grep -q '^voltage_limit_volts = 3.0' "$tmp/slow.toml" || fail "no voltage_limit_volts to lower in $config"
+    config=$tmp/slow.toml
     start_daemon
     start_long_goal 81
     in_ns "$peer" cancel --id 81 --action hold
