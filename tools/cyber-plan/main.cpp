@@ -69,7 +69,7 @@ int main(int argc, char** argv) {
   }
 
   if (!args->csv_path.empty() &&
-      !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error)) {
+      !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error, args->csv_step_s)) {
     return fail(2, error);
   }
   if (!args->plot_path.empty()) {

@@ -8,7 +8,7 @@ namespace cyber::tools {
 const char* planUsage() {
   return "usage: cyber-plan [--config FILE] --from Q0,Q1 --to Q0,Q1 [--pieces NAME,...]\n"
          "                  [--from-velocity V0,V1] [--scene NAME] [--scene-offset METRES] [--csv FILE] [--json]\n"
-         "                  [--plot FILE.png]\n"
+         "                  [--csv-step SECONDS] [--plot FILE.png]\n"
          "Plans one move of the robot's two joints (Q0, Q1 in chain order: m or rad) and prints a summary.\n"
          "  --config FILE       robot description (default: the embedded config/reefscape-2025.toml)\n"
          "  --pieces NAME,...   game pieces held during the move, as the configuration names them\n"
@@ -17,6 +17,8 @@ const char* planUsage() {
          "  --scene-offset M    shift of the scene's field elements in x (> 0: the robot further away)\n"
          "  --csv FILE          the trajectory at 1 ms: t, then per joint NAME_pos,NAME_vel,NAME_acc,\n"
          "                      NAME_volts,NAME_amps\n"
+         "  --csv-step SECONDS  the CSV's sample spacing instead, 0.00001 to 0.001 (finer samples for a\n"
+         "                      check that integrates the columns across a profile's acceleration jumps)\n"
          "  --json              print one JSON object: duration, stage times, solver residuals, clearance\n"
          "  --plot FILE.png     draw the C-space with the path and the joint signals with their limits\n"
          "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";
@@ -61,6 +63,13 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
     return "";
   });
   parser.option("--csv", cli::store(&out.csv_path));
+  parser.option("--csv-step", [&](const std::string& value) -> std::string {
+    const auto step = cli::parseNumber(value);
+    if (!step || *step < kMinCsvStepS || *step > kMaxCsvStepS)
+      return "expects seconds from 0.00001 to 0.001, got '" + value + "'";
+    out.csv_step_s = *step;
+    return "";
+  });
   parser.option("--plot", cli::store(&out.plot_path));
   parser.flag("--json", [&] { out.json = true; });
   if (auto decided = parser.parseInto(args, out)) return *decided;

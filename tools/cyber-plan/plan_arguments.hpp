@@ -9,6 +9,11 @@
 
 namespace cyber::tools {
 
+// --csv-step: 10 us to 1 ms (an external referee takes samples at most 1 ms apart; t is printed to
+// the microsecond).
+inline constexpr double kMinCsvStepS = 1e-5;
+inline constexpr double kMaxCsvStepS = 1e-3;
+
 struct PlanArguments {
   std::string config_path;  // empty: the embedded reference robot
   planner::JointVector from = planner::JointVector::Zero();
@@ -18,6 +23,7 @@ struct PlanArguments {
   std::string scene;   // empty: the default scene
   double scene_offset_m = 0.0;
   std::string csv_path;
+  double csv_step_s = 0.001;  // spacing of the CSV's samples (--csv-step), within kCsvStepRangeS
   std::string plot_path;
   bool json = false;
   bool help = false;

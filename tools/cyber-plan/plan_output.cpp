@@ -11,23 +11,23 @@ namespace {
 
 constexpr double kPrintedTimeS = 1e-6;  // t is printed with six decimals (writeTrajectoryCsv)
 
-// Sample times 0, 1 ms, 2 ms, ... and the exact end, so the last row is the goal at rest.
+// Sample times 0, step, 2 step, ... and the exact end, so the last row is the goal at rest.
 template <class F>
-void forEachSample(const planner::Trajectory& trajectory, F&& f) {
+void forEachSample(const planner::Trajectory& trajectory, double step_s, F&& f) {
   const double duration = trajectory.duration_s();
-  const long steps = static_cast<long>(std::floor(duration / kCsvStepS + 1e-9));
-  const double remainder = duration - static_cast<double>(steps) * kCsvStepS;
+  const long steps = static_cast<long>(std::floor(duration / step_s + 1e-9));
+  const double remainder = duration - static_cast<double>(steps) * step_s;
   // An end less than the printed microsecond past the last step would print that step's time
   // again (times must increase): the end then takes that step's place.
   const long last = remainder > 1e-9 && remainder < kPrintedTimeS && steps > 0 ? steps - 1 : steps;
-  for (long k = 0; k <= last; ++k) f(trajectory.sample(static_cast<double>(k) * kCsvStepS));
+  for (long k = 0; k <= last; ++k) f(trajectory.sample(static_cast<double>(k) * step_s));
   if (remainder > 1e-9) f(trajectory.sample(duration));
 }
 
 }  // namespace
 
 bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
-                        const std::string& path, std::string* error) {
+                        const std::string& path, std::string* error, double step_s) {
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!file) {
     *error = path + ": cannot open for writing";
@@ -39,7 +39,7 @@ bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::Jo
       std::fprintf(file.get(), ",%s", plot::csvColumn(joint.name, column).c_str());
   }
   std::fputs("\n", file.get());
-  forEachSample(trajectory, [&](const planner::TrajectorySample& s) {
+  forEachSample(trajectory, step_s, [&](const planner::TrajectorySample& s) {
     std::fprintf(file.get(), "%.6f", s.t);
     for (int j = 0; j < planner::kJointCount; ++j) {
       std::fprintf(file.get(), ",%.9g,%.9g,%.9g,%.9g,%.9g", s.q[j], s.qdot[j], s.qddot[j], s.volts[j], s.amps[j]);
@@ -69,7 +69,7 @@ plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::Ro
   plot::TrajectoryPlotData d;
   d.title = title;
   d.cspace = plot::sampleCSpace(robot, scene, pieces);
-  forEachSample(*plan.trajectory, [&](const planner::TrajectorySample& s) {
+  forEachSample(*plan.trajectory, kCsvStepS, [&](const planner::TrajectorySample& s) {
     d.time_s.push_back(s.t);
     for (int j = 0; j < 2; ++j) {
       d.joints[j].position.push_back(s.q[j]);

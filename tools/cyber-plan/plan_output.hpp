@@ -11,10 +11,10 @@ namespace cyber::tools {
 
 inline constexpr double kCsvStepS = 0.001;
 
-// Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per 1 ms sample, plus
-// the final sample at the exact duration.
+// Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per `step_s` (1 ms
+// unless --csv-step says otherwise), plus the final sample at the exact duration.
 bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
-                        const std::string& path, std::string* error);
+                        const std::string& path, std::string* error, double step_s = kCsvStepS);
 
 // One JSON object on one line.
 std::string planSummaryJson(const planner::Plan& plan);

@@ -10,17 +10,19 @@ namespace {
 auto parse = [](const std::vector<std::string>& args) { return parsePlanArguments(args); };
 
 TEST(PlanArguments, BothSpellingsOfAValueMeanTheSame) {
-  for (const auto& args :
-       {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity", "-0.2,1", "--scene",
-                                 "open", "--scene-offset", "0.1", "--csv", "m.csv", "--pieces", "coral", "--json"},
-        std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1", "--scene=open",
-                                 "--scene-offset=0.1", "--csv=m.csv", "--pieces=coral", "--json"}}) {
+  for (const auto& args : {std::vector<std::string>{"--from", "0.2,1.57", "--to", "1.97,5.17", "--from-velocity",
+                                                    "-0.2,1", "--scene", "open", "--scene-offset", "0.1", "--csv",
+                                                    "m.csv", "--pieces", "coral", "--json", "--csv-step", "0.0001"},
+                           std::vector<std::string>{"--from=0.2,1.57", "--to=1.97,5.17", "--from-velocity=-0.2,1",
+                                                    "--scene=open", "--scene-offset=0.1", "--csv=m.csv",
+                                                    "--pieces=coral", "--json", "--csv-step=0.0001"}}) {
     const PlanArguments a = parsedOk(parse, args);
     EXPECT_EQ(a.from, planner::JointVector(0.2, 1.57));
     EXPECT_EQ(a.to, planner::JointVector(1.97, 5.17));
     EXPECT_EQ(a.from_velocity, planner::JointVector(-0.2, 1.0));
     EXPECT_EQ(a.scene, "open");
     EXPECT_EQ(a.csv_path, "m.csv");
+    EXPECT_DOUBLE_EQ(a.csv_step_s, 0.0001);
     EXPECT_EQ(a.pieces, "coral");
     EXPECT_DOUBLE_EQ(a.scene_offset_m, 0.1);
     EXPECT_TRUE(a.json);
@@ -41,6 +43,11 @@ TEST(PlanArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, {"--to", "0,0"}), "missing --from (see --help)");
   EXPECT_EQ(parseError(parse, with({"--scene-offset", "near"})),
             "--scene-offset expects a finite number of metres, got 'near'");
+  for (const char* bad : {"0", "0.000009", "0.0011", "-0.001", "nan", "1ms"}) {
+    EXPECT_EQ(parseError(parse, with({"--csv-step", bad})),
+              std::string("--csv-step expects seconds from 0.00001 to 0.001, got '") + bad + "'");
+  }
+  EXPECT_DOUBLE_EQ(parsedOk(parse, move).csv_step_s, 0.001);
   for (const char* bad : {"1", "1,2,3", "1,nan", "1,2x"}) {
     EXPECT_EQ(
         parseError(parse, with({"--from-velocity", bad})),
