@@ -17,6 +17,7 @@
 
 #include "cyber/planner/path_timing.hpp"
 
+#include "free_space_components.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 
@@ -65,68 +66,11 @@ DenseCheck denseCheck(const GeometricPath& path, const CollisionWorld& world) {
   return out;
 }
 
-// Connected components of an optimistic grid: nodes h apart, a node free when
-// d >= clearance - L(h/2, h/2). Any continuous path keeping the clearance passes within half a
-// step per joint of a chain of 8-adjacent free nodes, so poses in different components cannot
-// be joined by any path: a proof that "no path" is the right answer.
-class Components {
- public:
-  explicit Components(const CollisionWorld& world) {
-    const double slack = world.lipschitzBound(JointVector(0.5 * kStep, 0.5 * kStep));
-    ni_ = static_cast<int>(std::ceil((model().range(0).max - model().range(0).min) / kStep)) + 1;
-    nj_ = static_cast<int>(std::ceil((model().range(1).max - model().range(1).min) / kStep)) + 1;
-    label_.assign(static_cast<size_t>(ni_ * nj_), -2);  // -2 blocked, -1 free and unlabelled
-    for (int i = 0; i < ni_; ++i) {
-      for (int j = 0; j < nj_; ++j) {
-        if (world.distance(node(i, j), model().clearance_m).value >= model().clearance_m - slack)
-          label_[index(i, j)] = -1;
-      }
-    }
-    int next = 0;
-    std::vector<int> stack;
-    for (int start = 0; start < ni_ * nj_; ++start) {
-      if (label_[static_cast<size_t>(start)] != -1) continue;
-      label_[static_cast<size_t>(start)] = next;
-      stack.push_back(start);
-      while (!stack.empty()) {
-        const int c = stack.back();
-        stack.pop_back();
-        for (int di = -1; di <= 1; ++di) {
-          for (int dj = -1; dj <= 1; ++dj) {
-            const int a = c / nj_ + di, b = c % nj_ + dj;
-            if (a < 0 || b < 0 || a >= ni_ || b >= nj_ || label_[index(a, b)] != -1) continue;
-            label_[index(a, b)] = next;
-            stack.push_back(static_cast<int>(index(a, b)));
-          }
-        }
-      }
-      ++next;
-    }
-  }
-  [[nodiscard]] int of(const JointVector& q) const {
-    const int i = static_cast<int>(std::lround((q[0] - model().range(0).min) / step(0)));
-    const int j = static_cast<int>(std::lround((q[1] - model().range(1).min) / step(1)));
-    return label_[index(i, j)];
-  }
-
- private:
-  static constexpr double kStep = 0.01;
-  [[nodiscard]] double step(int joint) const {
-    const JointRange r = model().range(joint);
-    return (r.max - r.min) / ((joint == 0 ? ni_ : nj_) - 1);
-  }
-  [[nodiscard]] JointVector node(int i, int j) const {
-    return JointVector(model().range(0).min + i * step(0), model().range(1).min + j * step(1));
-  }
-  [[nodiscard]] size_t index(int i, int j) const { return static_cast<size_t>(i * nj_ + j); }
-  int ni_ = 0, nj_ = 0;
-  std::vector<int> label_;
-};
-
-const Components& components(HeldPieces pieces) {
-  static std::vector<std::unique_ptr<Components>> cache(static_cast<size_t>(model().pieceSetCount()));
+// Which poses any path keeping the clearance can join (a proof of "no path").
+const test::FreeSpaceComponents& components(HeldPieces pieces) {
+  static std::vector<std::unique_ptr<test::FreeSpaceComponents>> cache(static_cast<size_t>(model().pieceSetCount()));
   auto& slot = cache[static_cast<size_t>(pieces.index())];
-  if (!slot) slot = std::make_unique<Components>(planner().world(pieces));
+  if (!slot) slot = std::make_unique<test::FreeSpaceComponents>(model(), planner().world(pieces));
   return *slot;
 }
 

@@ -18,58 +18,16 @@
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 #include "shipped_move_durations.hpp"
+#include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
 
-struct ShippedRobot {
-  config::Config config;
-  MotionPlanner planner;
-};
+using test::expectSound;
+using test::namedPose;
+using test::ShippedRobot;
 
-const ShippedRobot& shipped(const std::string& robot) {
-  static std::map<std::string, std::unique_ptr<ShippedRobot>> cache;
-  auto& slot = cache[robot];
-  if (!slot) {
-    config::Config config = config::loadConfigFile(std::string(CYBER_SOURCE_DIR) + "/config/" + robot + ".toml");
-    auto planner = MotionPlanner::create(config.robot);
-    EXPECT_TRUE(planner.ok()) << robot;
-    slot = std::make_unique<ShippedRobot>(ShippedRobot{std::move(config), std::move(planner).value()});
-  }
-  return *slot;
-}
-
-JointVector namedPose(const config::Config& config, const std::string& set, const std::string& name) {
-  for (const config::PoseSet& poses : config.poses) {
-    if (poses.name != set) continue;
-    for (const config::NamedPose& pose : poses.poses) {
-      if (pose.name == name) return pose.q;
-    }
-  }
-  ADD_FAILURE() << "no pose " << set << ":" << name;
-  return JointVector::Zero();
-}
-
-// Joint limits to 1e-9 (far inside the 1e-6 an external referee allows), clearance at the scene
-// offset and the drive limits at every 1 ms sample and at the end.
-void expectSound(const RobotModel& model, const Trajectory& trajectory, HeldPieces pieces, double offset_m,
-                 const std::string& label) {
-  const CollisionWorld world(model, model.scenes.front(), pieces, offset_m);
-  const int samples = static_cast<int>(std::floor(trajectory.duration_s() / 0.001));
-  for (int i = 0; i <= samples + 1; ++i) {
-    const double t = std::min(i * 0.001, trajectory.duration_s());
-    const JointVector q = trajectory.sampleMotion(t).q;
-    ASSERT_TRUE(model.withinLimits(q, 1e-9)) << label << " at t = " << t << ": " << q.transpose();
-    const double d = world.distance(q).value;
-    ASSERT_GE(d, model.clearance_m - 1e-6) << label << " at t = " << t;
-  }
-  EXPECT_TRUE(withinDriveLimits(trajectory, model.planner.topp)) << label;
-  // Each column integrates to the one above it at 1 ms (trapezoid), as an external referee checks:
-  // within 1 % of the travel and 2 % of the peak speed.
-  const ColumnConsistency columns = columnConsistency(trajectory, 0.001);
-  EXPECT_LE(columns.position_error, 0.01) << label;
-  EXPECT_LE(columns.velocity_error, 0.02) << label;
-}
+const ShippedRobot& shipped(const std::string& robot) { return test::shippedRobot(robot); }
 
 TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
   int planned = 0, refused = 0;
@@ -140,9 +98,6 @@ TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
             std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[1]));
 }
 
-// A scene offset that moves the reef into the path planned at offset 0 gives another plan, which
-// keeps the clearance at that offset. Of the public moves, two are such cases (their ends stay clear
-// and the reef, moved 0.1-0.3 m away, crosses the plan of offset 0).
 // A seeded random moving start of the double-jointed arm (the state 0.199 s into a planned move):
 // a 17 ms stop, then a 0.2 s move. Every gentler stop still disagreed at 1 ms (the trapezoid's
 // errors add up over the whole move), and so did leaving along the velocity; the plan streamed
@@ -165,6 +120,9 @@ TEST(ShippedRobots, AShortMoveAfterAShortStopIsSlowedUntilTheJoinedColumnsAgree)
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.2338);
 }
 
+// A scene offset that moves the reef into the path planned at offset 0 gives another plan, which
+// keeps the clearance at that offset. Of the public moves, two are such cases (their ends stay clear
+// and the reef, moved 0.1-0.3 m away, crosses the plan of offset 0).
 TEST(ShippedRobots, AnOffsetThatMovesTheReefIntoThePlanYieldsAnotherPlanThatKeepsTheClearance) {
   const RobotModel& model = test::referenceModel();
   const auto planner = MotionPlanner::create(model);

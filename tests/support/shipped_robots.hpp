@@ -1,0 +1,35 @@
+#pragma once
+// The three shipped robots (config/*.toml in the source tree) for tests: loaded, with their full
+// planners, once per test binary; and what every plan of theirs must be.
+
+#include <string>
+
+#include "cyber/config/load_config.hpp"
+#include "cyber/planner/motion_planner.hpp"
+
+namespace cyber::test {
+
+struct ShippedRobot {
+  config::Config config;
+  planner::MotionPlanner planner;
+};
+
+// The configs tools/demo and the packages ship, by file name without ".toml".
+inline constexpr const char* kShippedRobotNames[] = {"reefscape-2025", "chargedup-2023-double-jointed",
+                                                     "pivot-telescope"};
+
+// config/NAME.toml with its planner (every scene, offset band and held set); a failure to load
+// or plan aborts the test binary.
+const ShippedRobot& shippedRobot(const std::string& name);
+
+// The pose NAME of the config's pose set SET (a test failure when there is none).
+planner::JointVector namedPose(const config::Config& config, const std::string& set, const std::string& name);
+
+// Joint limits to 1e-9 (far inside the 1e-6 an external referee allows), clearance at the scene
+// offset and the drive limits at every 1 ms sample and at the end; each column integrates to the
+// one above it at samples `columns_step_s` apart (trapezoid), as an external referee checks a CSV
+// with that spacing: within 1 % of the travel and 2 % of the peak speed.
+void expectSound(const planner::RobotModel& model, const planner::Trajectory& trajectory, planner::HeldPieces pieces,
+                 double offset_m, const std::string& label, double columns_step_s = 0.001);
+
+}  // namespace cyber::test
