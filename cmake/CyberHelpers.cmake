@@ -20,9 +20,14 @@ function(cyber_component_library target)
 endfunction()
 
 # Every *_test.cpp in DIR becomes its own GoogleTest executable, so one broken file cannot stop
-# the others from building; tests carry LABEL.
+# the others from building; tests carry LABEL. CYBER_EMULATOR_TEST_FILTER, when set (the cross
+# build, tests/CMakeLists.txt), is a GoogleTest filter of the tests registered.
 function(cyber_test_dir dir label)
   cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
+  set(filter)
+  if(DEFINED CYBER_EMULATOR_TEST_FILTER)
+    set(filter TEST_FILTER ${CYBER_EMULATOR_TEST_FILTER})
+  endif()
   file(GLOB srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)
   foreach(src ${srcs})
     get_filename_component(name ${src} NAME_WE)
@@ -30,7 +35,7 @@ function(cyber_test_dir dir label)
     target_link_libraries(${name} PRIVATE ${ARG_LINK} GTest::gtest_main)
     target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/support)
     cyber_warnings(${name})
-    gtest_discover_tests(${name} PROPERTIES LABELS ${label} DISCOVERY_TIMEOUT 60)
+    gtest_discover_tests(${name} PROPERTIES LABELS ${label} DISCOVERY_TIMEOUT 60 ${filter})
   endforeach()
 endfunction()
 
