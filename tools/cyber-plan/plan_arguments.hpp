@@ -9,10 +9,11 @@
 
 namespace cyber::tools {
 
-// --csv-step: 10 us to 1 ms (an external referee takes samples at most 1 ms apart; t is printed to
-// the microsecond).
+// The CSV's sample spacing: 1 ms by default, the widest an external referee takes; --csv-step
+// chooses from 10 us (t is printed to the microsecond) up to that.
+inline constexpr double kCsvStepS = 1e-3;
 inline constexpr double kMinCsvStepS = 1e-5;
-inline constexpr double kMaxCsvStepS = 1e-3;
+inline constexpr double kMaxCsvStepS = kCsvStepS;
 
 struct PlanArguments {
   std::string config_path;  // empty: the embedded reference robot
@@ -23,7 +24,7 @@ struct PlanArguments {
   std::string scene;   // empty: the default scene
   double scene_offset_m = 0.0;
   std::string csv_path;
-  double csv_step_s = 0.001;  // spacing of the CSV's samples (--csv-step), within kCsvStepRangeS
+  double csv_step_s = kCsvStepS;  // spacing of the CSV's samples (--csv-step)
   std::string plot_path;
   bool json = false;
   bool help = false;

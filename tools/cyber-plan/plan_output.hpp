@@ -6,10 +6,9 @@
 #include "cyber/planner/motion_planner.hpp"
 #include "cyber/plot/trajectory_csv.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
+#include "plan_arguments.hpp"
 
 namespace cyber::tools {
-
-inline constexpr double kCsvStepS = 0.001;
 
 // Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per `step_s` (1 ms
 // unless --csv-step says otherwise), plus the final sample at the exact duration.

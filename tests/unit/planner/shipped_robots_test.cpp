@@ -25,14 +25,13 @@ namespace {
 
 using test::expectSound;
 using test::namedPose;
+using test::shippedRobot;
 using test::ShippedRobot;
-
-const ShippedRobot& shipped(const std::string& robot) { return test::shippedRobot(robot); }
 
 TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
   int planned = 0, refused = 0;
   for (const test::ShippedMoveCeiling& move : test::kShippedMoveCeilings) {
-    const ShippedRobot& robot = shipped(move.robot);
+    const ShippedRobot& robot = shippedRobot(move.robot);
     const RobotModel& model = robot.config.robot;
     const std::string label = std::string(move.robot) + " " + move.pieces + ":" + move.from + "->" + move.to;
     std::string error;
@@ -61,7 +60,7 @@ TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
 // move to or from them was refused: its spline, evaluated at the end knot, came out a few ulp
 // outside the limit. These moves are planned and stay inside the limits at every 1 ms sample.
 TEST(ShippedRobots, MovesBetweenPosesOnTheTelescopesLimitsArePlannedInsideTheLimits) {
-  const ShippedRobot& robot = shipped("pivot-telescope");
+  const ShippedRobot& robot = shippedRobot("pivot-telescope");
   const RobotModel& model = robot.config.robot;
   const std::pair<const char*, const char*> moves[] = {
       {"STOW", "REACH_UP"}, {"SCORE_HIGH", "STOW"}, {"HUMAN_LOAD", "STOW"}, {"REACH_UP", "STOW"}};
@@ -84,7 +83,7 @@ TEST(ShippedRobots, MovesBetweenPosesOnTheTelescopesLimitsArePlannedInsideTheLim
 }
 
 TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
-  const RobotModel& model = shipped("chargedup-2023-double-jointed").config.robot;
+  const RobotModel& model = shippedRobot("chargedup-2023-double-jointed").config.robot;
   EXPECT_EQ(model.drive_kind, DriveKind::kRigidBody);
   // The shoulder's gravity load depends on the elbow: the same shoulder angle, two elbow angles.
   const DriveModel drives = model.driveModel({});
@@ -105,7 +104,7 @@ TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
 // the fastest stop, slowed until the joined columns agree, is faster as well
 // (docs/moving-starts.md, "Consistent columns").
 TEST(ShippedRobots, AShortMoveAfterAShortStopIsSlowedUntilTheJoinedColumnsAgree) {
-  const ShippedRobot& robot = shipped("chargedup-2023-double-jointed");
+  const ShippedRobot& robot = shippedRobot("chargedup-2023-double-jointed");
   PlanRequest request;
   request.start = JointVector(1.49215116, 3.97783964);
   request.goal = JointVector(1.9864, 3.7218);
