@@ -1,6 +1,8 @@
 #include "cyber/planner/timed_plan.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <utility>
@@ -24,11 +26,14 @@ double msSince(std::chrono::steady_clock::time_point start) {
 // from full acceleration to full braking is a large share of its peak speed, and the trapezoid
 // across it errs by up to half the jump times the step (docs/moving-starts.md). Slowing it down
 // uniformly moves the switch between the samples (by about half the added time), so the shortest
-// slowdown that puts it where the columns agree, within the limits, is taken.
+// slowdown that puts it where the columns agree, within the limits and what agreeing may cost
+// (MotionSettings::max_consistency_cost), is taken.
 std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Trajectory& trajectory) {
   const MotionSettings& settings = model.planner.motion;
   if (trajectory.duration_s() > settings.slower_max_duration_s) return std::nullopt;
-  return shortestSlowdown(model, trajectory, settings.slower_steps,
+  const double step_s = settings.slower_step * settings.consistency_step_s;
+  const int affordable = static_cast<int>(std::floor(settings.max_consistency_cost * trajectory.duration_s() / step_s));
+  return shortestSlowdown(model, trajectory, std::min(settings.slower_steps, affordable),
                           [&](const Trajectory& slower) { return columnsAgree(settings, slower); });
 }
 
@@ -39,8 +44,10 @@ std::optional<Trajectory> consistentSlowdown(const RobotModel& model, const Traj
 // the limits (docs/moving-starts.md, "Consistent columns").
 std::optional<Trajectory> consistentStart(const RobotModel& model, const Trajectory& trajectory) {
   const MotionSettings& settings = model.planner.motion;
+  const double affordable_s = (1.0 + settings.max_consistency_cost) * trajectory.duration_s();
   for (int i = 1; i <= settings.gentler_start_steps; ++i) {
     Result<Trajectory> gentler = gentlerStart(trajectory, 1.0 - i * settings.gentler_start_step);
+    if (gentler && gentler.value().duration_s() > affordable_s) break;
     if (gentler && columnsAgree(settings, gentler.value()) && withinDriveLimits(gentler.value(), model.planner.topp)) {
       return std::move(gentler).value();
     }
@@ -57,7 +64,11 @@ Result<Plan> inconsistentPlan() {
 }
 
 bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory) {
-  const ColumnConsistency c = columnConsistency(trajectory, settings.consistency_step_s);
+  return columnsAgree(settings, trajectory, settings.consistency_step_s);
+}
+
+bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory, double step_s) {
+  const ColumnConsistency c = columnConsistency(trajectory, step_s);
   return c.position_error <= settings.max_position_error && c.velocity_error <= settings.max_velocity_error;
 }
 

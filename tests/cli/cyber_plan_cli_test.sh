@@ -81,6 +81,19 @@ fine, coarse = acceleration_error(rows, 1), acceleration_error(rows, 10)
 assert fine <= 0.02 < coarse, (fine, coarse)
 print('ok   csv step: %d rows; acceleration column off by %.2f %% at 0.1 ms, %.2f %% at 1 ms' % (len(rows), 100 * fine, 100 * coarse))
 PY
+# Without --csv-step, the same move's CSV is written at the widest spacing at which its columns
+# agree, and stderr says so.
+check "csv step chosen" 0 --config "$(dirname "$config")/chargedup-2023-double-jointed.toml" --pieces cube \
+  --from=1.31571509,3.89117865 --to=1.91358023,3.72908321 --from-velocity=2.26365245,-0.579524693 \
+  --csv "$tmp/chosen.csv"
+expect_in "csv step chosen named" "$tmp/err" "the CSV's samples are 0.25 ms apart"
+python3 - "$tmp/chosen.csv" <<'PY' || failures=$((failures + 1))
+import csv, sys
+t = [float(r['t']) for r in csv.DictReader(open(sys.argv[1]))]
+gaps = [b - a for a, b in zip(t, t[1:])]
+assert max(gaps) <= 0.00025 + 1e-9 and max(gaps[:-1]) > 0.00025 - 1e-9, 'rows are not 0.25 ms apart'
+print('ok   csv step chosen: %d rows 0.25 ms apart' % len(t))
+PY
 check "csv step out of range" 2 --config "$config" --from 0.20,1.57 --to 1.97,5.17 --csv "$tmp/t.csv" --csv-step 0.002
 check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.27,5.79 --pieces coral --plot "$tmp/p.png"
 if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a" ]; then

@@ -7,7 +7,9 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <optional>
 
+#include "along_path_ride.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/trajectory_consistency.hpp"
 
@@ -56,6 +58,15 @@ void expectSound(const planner::RobotModel& model, const planner::Trajectory& tr
   const planner::ColumnConsistency columns = planner::columnConsistency(trajectory, columns_step_s);
   EXPECT_LE(columns.position_error, 0.01) << label;
   EXPECT_LE(columns.velocity_error, 0.02) << label;
+}
+
+double expectNearTheFastestRide(const planner::Trajectory& trajectory, const std::string& label) {
+  const std::optional<double> ride = fastestRideAlongPath(trajectory, kRideStepS);
+  EXPECT_TRUE(ride) << label << ": no ride along its path";
+  if (!ride) return 0.0;
+  const double ratio = trajectory.duration_s() / *ride;
+  EXPECT_LE(ratio, 1.02) << label;
+  return ratio;
 }
 
 }  // namespace cyber::test

@@ -32,4 +32,14 @@ planner::JointVector namedPose(const config::Config& config, const std::string& 
 void expectSound(const planner::RobotModel& model, const planner::Trajectory& trajectory, planner::HeldPieces pieces,
                  double offset_m, const std::string& label, double columns_step_s = 0.001);
 
+// The fastest ride along the trajectory's own path is judged on samples this far apart: fine
+// enough to resolve where the path's tangent goes to zero (the start and end at rest, a stop's
+// turn), which a coarser ride passes faster than any motor could (docs/performance.md, "Seeded
+// random moves on the three robots").
+inline constexpr double kRideStepS = 1e-5;
+
+// The trajectory's duration over the fastest ride along its own path (along_path_ride.hpp), which
+// must be within 1.02; a test failure (and 0) when there is no ride.
+double expectNearTheFastestRide(const planner::Trajectory& trajectory, const std::string& label);
+
 }  // namespace cyber::test

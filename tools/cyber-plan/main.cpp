@@ -68,9 +68,16 @@ int main(int argc, char** argv) {
                 std::string(planner::toString(plan.status())) + ": " + plan.error().reason);
   }
 
-  if (!args->csv_path.empty() &&
-      !tools::writeTrajectoryCsv(*plan.value().trajectory, robot.joints, args->csv_path, &error, args->csv_step_s)) {
-    return fail(2, error);
+  if (!args->csv_path.empty()) {
+    const planner::Trajectory& trajectory = *plan.value().trajectory;
+    const double step_s = args->csv_step_s.value_or(tools::csvStepFor(trajectory, robot.planner.motion));
+    if (step_s < tools::kCsvStepS && !args->csv_step_s) {
+      std::fprintf(stderr,
+                   "cyber-plan: the CSV's samples are %g ms apart: at 1 ms its acceleration or velocity column "
+                   "would not integrate to the one above it (docs/moving-starts.md, \"Consistent columns\")\n",
+                   step_s * 1e3);
+    }
+    if (!tools::writeTrajectoryCsv(trajectory, robot.joints, args->csv_path, &error, step_s)) return fail(2, error);
   }
   if (!args->plot_path.empty()) {
     const std::string title = "cyber-plan " + poseText(robot, args->from) + " -> " + poseText(robot, args->to) +

@@ -17,8 +17,9 @@ const char* planUsage() {
          "  --scene-offset M    shift of the scene's field elements in x (> 0: the robot further away)\n"
          "  --csv FILE          the trajectory at 1 ms: t, then per joint NAME_pos,NAME_vel,NAME_acc,\n"
          "                      NAME_volts,NAME_amps\n"
-         "  --csv-step SECONDS  the CSV's sample spacing instead, 0.00001 to 0.001 (finer samples for a\n"
-         "                      check that integrates the columns across a profile's acceleration jumps)\n"
+         "  --csv-step SECONDS  the CSV's sample spacing, 0.00001 to 0.001 (default: 1 ms, or the widest\n"
+         "                      spacing at which the columns integrate to each other across the profile's\n"
+         "                      acceleration jumps; stderr then says so)\n"
          "  --json              print one JSON object: duration, stage times, solver residuals, clearance\n"
          "  --plot FILE.png     draw the C-space with the path and the joint signals with their limits\n"
          "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";

@@ -26,6 +26,13 @@ void forEachSample(const planner::Trajectory& trajectory, double step_s, F&& f) 
 
 }  // namespace
 
+double csvStepFor(const planner::Trajectory& trajectory, const planner::MotionSettings& settings) {
+  for (const double step_s : kCsvSteps) {
+    if (planner::columnsAgree(settings, trajectory, step_s)) return step_s;
+  }
+  return kMinCsvStepS;
+}
+
 bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
                         const std::string& path, std::string* error, double step_s) {
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);

@@ -3,7 +3,8 @@
 // a quarter moving starts (the state at a random instant of a planned move, to a new goal). Each
 // plan is sound (limits, clearance at its offset, drive limits, columns that agree at 1 ms), and
 // each refusal is a "no path" that a flood fill of the free space proves
-// (free_space_components.hpp).
+// (free_space_components.hpp). Each plan is also within 2 % of the fastest ride along its own path
+// (expectNearTheFastestRide, shipped_robots.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -109,6 +110,7 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
   std::map<std::tuple<int, double>, std::unique_ptr<test::FreeSpaceComponents>> components;
   MoveDraw draw(robot, 24);
   int planned = 0, refused = 0, moving = 0;
+  double worst_ratio_from_rest = 0.0, worst_ratio_moving = 0.0;
   for (int move = 0; move < kMovesPerRobot; ++move) {
     const PlanRequest request = draw.next(move);
     const std::string label = std::string(GetParam()) + " move " + std::to_string(move) + " (" +
@@ -126,6 +128,8 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
       const bool moving_start = !request.start_velocity.isZero();
       test::expectSound(model, trajectory, request.pieces, request.scene_offset_m, label,
                         moving_start ? kMovingStartColumnsStepS : 0.001);
+      double& worst = moving_start ? worst_ratio_moving : worst_ratio_from_rest;
+      worst = std::max(worst, test::expectNearTheFastestRide(trajectory, label));
       ++planned;
       moving += moving_start ? 1 : 0;
       continue;
@@ -144,6 +148,8 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
   EXPECT_GT(moving, kMovesPerRobot / kMovingStartEvery / 2) << "moving starts are planned";
   RecordProperty("planned", planned);
   RecordProperty("refused", refused);
+  RecordProperty("worst_ratio_to_ride_from_rest", std::to_string(worst_ratio_from_rest));
+  RecordProperty("worst_ratio_to_ride_moving", std::to_string(worst_ratio_moving));
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedRobots, SeededRandomMoves, ::testing::ValuesIn(test::kShippedRobotNames),

@@ -20,8 +20,10 @@ namespace cyber::planner {
 Result<Plan> inconsistentPlan();
 
 // Whether the trapezoidal integrals of the trajectory's columns follow its positions and
-// velocities within MotionSettings' tolerances at the CSV's step.
+// velocities within MotionSettings' tolerances at the CSV's step (consistency_step_s), or at
+// samples `step_s` apart.
 bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory);
+bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory, double step_s);
 
 // The shortest uniform slowdown of `trajectory` by a multiple of MotionSettings::slower_step, up to
 // `steps` of them, that stays within the limits and that `agrees` accepts.
