@@ -9,8 +9,8 @@
 #include <memory>
 #include <optional>
 
-#include "along_path_ride.hpp"
 #include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/sampled_ride.hpp"
 #include "cyber/planner/trajectory_consistency.hpp"
 
 namespace cyber::test {
@@ -61,7 +61,7 @@ void expectSound(const planner::RobotModel& model, const planner::Trajectory& tr
 }
 
 double expectNearTheFastestRide(const planner::Trajectory& trajectory, const std::string& label) {
-  const std::optional<double> ride = fastestRideAlongPath(trajectory, kRideStepS);
+  const std::optional<double> ride = planner::fastestRideAlongPath(trajectory, kRideStepS);
   EXPECT_TRUE(ride) << label << ": no ride along its path";
   if (!ride) return 0.0;
   const double ratio = trajectory.duration_s() / *ride;

@@ -70,12 +70,12 @@ int main(int argc, char** argv) {
 
   if (!args->csv_path.empty()) {
     const planner::Trajectory& trajectory = *plan.value().trajectory;
-    const double step_s = args->csv_step_s.value_or(tools::csvStepFor(trajectory, robot.planner.motion));
-    if (step_s < tools::kCsvStepS && !args->csv_step_s) {
-      std::fprintf(stderr,
-                   "cyber-plan: the CSV's samples are %g ms apart: at 1 ms its acceleration or velocity column "
-                   "would not integrate to the one above it (docs/moving-starts.md, \"Consistent columns\")\n",
-                   step_s * 1e3);
+    double step_s = args->csv_step_s.value_or(tools::kCsvStepS);
+    if (!args->csv_step_s) {
+      const tools::CsvSpacing spacing = tools::csvSpacingFor(trajectory, robot.planner.motion);
+      step_s = spacing.step_s;
+      if (spacing.reason != tools::FinerCsvReason::kNone)
+        std::fprintf(stderr, "%s\n", tools::finerCsvMessage(spacing).c_str());
     }
     if (!tools::writeTrajectoryCsv(trajectory, robot.joints, args->csv_path, &error, step_s)) return fail(2, error);
   }

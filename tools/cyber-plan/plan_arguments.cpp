@@ -18,8 +18,8 @@ const char* planUsage() {
          "  --csv FILE          the trajectory at 1 ms: t, then per joint NAME_pos,NAME_vel,NAME_acc,\n"
          "                      NAME_volts,NAME_amps\n"
          "  --csv-step SECONDS  the CSV's sample spacing, 0.00001 to 0.001 (default: 1 ms, or the widest\n"
-         "                      spacing at which the columns integrate to each other across the profile's\n"
-         "                      acceleration jumps; stderr then says so)\n"
+         "                      spacing whose samples describe the motion: columns that integrate to\n"
+         "                      each other, a path whose turns they resolve; stderr then says so)\n"
          "  --json              print one JSON object: duration, stage times, solver residuals, clearance\n"
          "  --plot FILE.png     draw the C-space with the path and the joint signals with their limits\n"
          "Exit status: 0 planned, 2 bad input, 3 no feasible motion.\n";

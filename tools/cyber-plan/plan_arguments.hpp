@@ -11,13 +11,19 @@
 namespace cyber::tools {
 
 // The CSV's sample spacing: 1 ms by default, the widest an external referee takes; --csv-step
-// chooses from 10 us (t is printed to the microsecond) up to that. Without it, a trajectory whose
-// columns disagree at 1 ms is written at the widest of kCsvSteps at which they agree
-// (csvStepFor, plan_output.hpp).
+// chooses from 10 us (t is printed to the microsecond) up to that. Without it, a trajectory that
+// its 1 ms samples do not describe is written at the widest of kCsvSteps that does (csvSpacingFor,
+// plan_output.hpp).
 inline constexpr double kCsvStepS = 1e-3;
 inline constexpr double kMinCsvStepS = 1e-5;
 inline constexpr double kMaxCsvStepS = kCsvStepS;
 inline constexpr double kCsvSteps[] = {kCsvStepS, 5e-4, 2.5e-4, 1e-4, 5e-5, 2.5e-5, kMinCsvStepS};
+// Samples describe the path when the fastest ride along them (cyber/planner/sampled_ride.hpp) is
+// at most this share faster than the plan. A plan from rest is within about 0.5 % of that ride on
+// samples 10 us apart (its TOPP grid's share); samples that let it pass a turn or the end at rest faster,
+// where the path's tangent goes to zero, would show a check a path faster than the motors can
+// ride it (docs/moving-starts.md, "The CSV's spacing").
+inline constexpr double kCsvRideShare = 0.01;
 
 struct PlanArguments {
   std::string config_path;  // empty: the embedded reference robot
@@ -28,7 +34,7 @@ struct PlanArguments {
   std::string scene;   // empty: the default scene
   double scene_offset_m = 0.0;
   std::string csv_path;
-  std::optional<double> csv_step_s;  // spacing of the CSV's samples (--csv-step); none: csvStepFor
+  std::optional<double> csv_step_s;  // spacing of the CSV's samples (--csv-step); none: csvSpacingFor
   std::string plot_path;
   bool json = false;
   bool help = false;

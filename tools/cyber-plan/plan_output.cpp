@@ -5,6 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "cyber/planner/sampled_ride.hpp"
 
 namespace cyber::tools {
 namespace {
@@ -12,25 +17,62 @@ namespace {
 constexpr double kPrintedTimeS = 1e-6;  // t is printed with six decimals (writeTrajectoryCsv)
 
 // Sample times 0, step, 2 step, ... and the exact end, so the last row is the goal at rest.
-template <class F>
-void forEachSample(const planner::Trajectory& trajectory, double step_s, F&& f) {
+std::vector<double> sampleTimes(const planner::Trajectory& trajectory, double step_s) {
   const double duration = trajectory.duration_s();
   const long steps = static_cast<long>(std::floor(duration / step_s + 1e-9));
   const double remainder = duration - static_cast<double>(steps) * step_s;
   // An end less than the printed microsecond past the last step would print that step's time
   // again (times must increase): the end then takes that step's place.
   const long last = remainder > 1e-9 && remainder < kPrintedTimeS && steps > 0 ? steps - 1 : steps;
-  for (long k = 0; k <= last; ++k) f(trajectory.sample(static_cast<double>(k) * step_s));
-  if (remainder > 1e-9) f(trajectory.sample(duration));
+  std::vector<double> times_s;
+  times_s.reserve(static_cast<size_t>(last) + 2);
+  for (long k = 0; k <= last; ++k) times_s.push_back(static_cast<double>(k) * step_s);
+  if (remainder > 1e-9) times_s.push_back(duration);
+  return times_s;
+}
+
+template <class F>
+void forEachSample(const planner::Trajectory& trajectory, double step_s, F&& f) {
+  for (const double t : sampleTimes(trajectory, step_s)) f(trajectory.sample(t));
+}
+
+// Why samples `step_s` apart do not describe the trajectory, or kNone when they do.
+FinerCsvReason undescribedAt(const planner::Trajectory& trajectory, const planner::MotionSettings& settings,
+                             double step_s) {
+  if (!planner::columnsAgree(settings, trajectory, step_s)) return FinerCsvReason::kColumns;
+  const std::optional<double> ride = planner::fastestRideAlongSamples(trajectory, sampleTimes(trajectory, step_s));
+  if (!ride || trajectory.duration_s() > (1.0 + kCsvRideShare) * *ride) return FinerCsvReason::kRide;
+  return FinerCsvReason::kNone;
 }
 
 }  // namespace
 
-double csvStepFor(const planner::Trajectory& trajectory, const planner::MotionSettings& settings) {
-  for (const double step_s : kCsvSteps) {
-    if (planner::columnsAgree(settings, trajectory, step_s)) return step_s;
+CsvSpacing csvSpacingFor(const planner::Trajectory& trajectory, const planner::MotionSettings& settings) {
+  CsvSpacing spacing;
+  spacing.reason = undescribedAt(trajectory, settings, kCsvStepS);
+  if (spacing.reason == FinerCsvReason::kNone) return spacing;
+  spacing.step_s = kMinCsvStepS;
+  for (const double step_s : std::span(kCsvSteps).subspan(1)) {
+    if (undescribedAt(trajectory, settings, step_s) == FinerCsvReason::kNone) {
+      spacing.step_s = step_s;
+      break;
+    }
   }
-  return kMinCsvStepS;
+  return spacing;
+}
+
+std::string finerCsvMessage(const CsvSpacing& spacing) {
+  const std::string why =
+      spacing.reason == FinerCsvReason::kColumns
+          ? std::string("its acceleration or velocity column would not integrate to the one above it")
+          : fmt::format(
+                "a ride along its samples would be more than {:g} % faster than the plan, passing where "
+                "the path's tangent goes to zero faster than the motors can",
+                100 * kCsvRideShare);
+  return fmt::format(
+      "cyber-plan: the CSV's samples are {:g} ms apart: at {:g} ms {} (docs/moving-starts.md, \"The CSV's "
+      "spacing\")",
+      spacing.step_s * 1e3, kCsvStepS * 1e3, why);
 }
 
 bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,

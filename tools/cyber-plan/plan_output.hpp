@@ -17,11 +17,24 @@ namespace cyber::tools {
 bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
                         const std::string& path, std::string* error, double step_s = kCsvStepS);
 
-// The widest of kCsvSteps at which the trajectory's columns agree as the planner judges them at
-// 1 ms (MotionSettings' tolerances): 1 ms for every plan whose 1 ms columns agree. A plan whose
-// columns agree at no step the planner can take is still the fastest, its columns the exact
-// derivatives; on finer samples they agree (docs/moving-starts.md, "Consistent columns").
-double csvStepFor(const planner::Trajectory& trajectory, const planner::MotionSettings& settings);
+// Why a CSV's samples are closer than 1 ms: at 1 ms its columns would not integrate to each other
+// (MotionSettings' tolerances), or a ride along its samples would be more than kCsvRideShare
+// faster than the plan.
+enum class FinerCsvReason { kNone, kColumns, kRide };
+
+struct CsvSpacing {
+  double step_s = kCsvStepS;
+  FinerCsvReason reason = FinerCsvReason::kNone;
+};
+
+// The widest of kCsvSteps at which the trajectory's columns agree and its samples describe its
+// path (kCsvRideShare), else the narrowest: 1 ms for every plan that 1 ms samples describe. A
+// plan whose 1 ms samples do not is still the fastest, its columns the exact derivatives
+// (docs/moving-starts.md, "Consistent columns" and "The CSV's spacing").
+CsvSpacing csvSpacingFor(const planner::Trajectory& trajectory, const planner::MotionSettings& settings);
+
+// What cyber-plan says on stderr about a CSV written finer than 1 ms.
+std::string finerCsvMessage(const CsvSpacing& spacing);
 
 // One JSON object on one line.
 std::string planSummaryJson(const planner::Plan& plan);

@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "along_path_ride.hpp"
 #include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner/sampled_ride.hpp"
 #include "cyber/planner/timed_plan.hpp"
 #include "cyber/planner/trajectory_consistency.hpp"
 #include "reference_model.hpp"
@@ -27,7 +27,7 @@ constexpr int kMoves = 150;
 // The spacing at which cyber-plan writes such a short move's CSV when its 1 ms columns disagree
 // (tools/cyber-plan/plan_arguments.hpp, kCsvSteps): every seeded one agrees at this one.
 constexpr double kFinerStepS = 2.5e-4;
-// The fastest ride is judged on samples this far apart (along_path_ride.hpp).
+// The fastest ride is judged on samples this far apart (cyber/planner/sampled_ride.hpp).
 constexpr double kRideStepS = 1e-5;
 
 // What an independent check of cyber-plan's CSV accepts: 1 % of the travel, 2 % of the peak speed.
@@ -101,7 +101,7 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAndStayFast) {
       ++finer;
       EXPECT_TRUE(columnsAgree(model.planner.motion, trajectory, kFinerStepS));
     }
-    const std::optional<double> ride = test::fastestRideAlongPath(trajectory, kRideStepS);
+    const std::optional<double> ride = fastestRideAlongPath(trajectory, kRideStepS);
     ASSERT_TRUE(ride);
     worst_ratio = std::max(worst_ratio, trajectory.duration_s() / *ride);
   }

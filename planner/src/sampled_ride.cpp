@@ -1,4 +1,4 @@
-#include "along_path_ride.hpp"
+#include "cyber/planner/sampled_ride.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,18 +6,14 @@
 #include <limits>
 #include <vector>
 
-namespace cyber::test {
+namespace cyber::planner {
 namespace {
-
-using planner::DriveModel;
-using planner::DriveParams;
-using planner::JointVector;
-using planner::kJointCount;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // b is the square of the speed relative to the trajectory's own: 1e4 is a hundred times faster,
 // far beyond any ride a drive limit admits where the path moves.
 constexpr double kLargestB = 1e4;
+// 60 halvings of [0, kLargestB] reach the precision of a double.
 constexpr int kBisections = 60;
 
 // One joint at one sample, its voltage at path acceleration a and path speed squared b (b > 0):
@@ -30,7 +26,7 @@ struct JointRow {
 
 using Row = std::array<JointRow, kJointCount>;
 
-Row rowAt(const DriveModel& drives, const planner::TrajectorySample& s) {
+Row rowAt(const DriveModel& drives, const TrajectorySample& s) {
   // V(a, b) is linear in a (q'' = q' a + q'' b) and, for b > 0, beta b + gamma sqrt(b) plus
   // constants (the Coriolis terms go with b, the back-EMF and kV with sqrt(b)): three evaluations
   // at a = 0 and b = 1, 4 separate them once kS sgn(q') is taken out.
@@ -106,14 +102,13 @@ double largestAccepted(double ceiling, Accept&& accept) {
 
 }  // namespace
 
-std::optional<double> fastestRideAlongPath(const planner::Trajectory& trajectory, double step_s) {
-  const double duration = trajectory.duration_s();
-  const auto intervals = static_cast<size_t>(std::max(1.0, std::ceil(duration / step_s - 1e-9)));
-  const double dt = duration / static_cast<double>(intervals);
+std::optional<double> fastestRideAlongSamples(const Trajectory& trajectory, std::span<const double> times_s) {
+  if (times_s.size() < 2) return std::nullopt;
+  const size_t intervals = times_s.size() - 1;
   const DriveModel& drives = trajectory.drives();
-  std::vector<Row> rows(intervals + 1);
-  for (size_t k = 0; k <= intervals; ++k)
-    rows[k] = rowAt(drives, trajectory.sampleMotion(std::min(duration, static_cast<double>(k) * dt)));
+  std::vector<Row> rows(times_s.size());
+  for (size_t k = 0; k <= intervals; ++k) rows[k] = rowAt(drives, trajectory.sampleMotion(times_s[k]));
+  const auto ds = [&](size_t k) { return times_s[k + 1] - times_s[k]; };
 
   // Backward pass: the largest b at each sample from which the rest of the path can still be
   // ridden to rest, braking at the lower bound of each interval.
@@ -122,7 +117,7 @@ std::optional<double> fastestRideAlongPath(const planner::Trajectory& trajectory
     const bool last = k == intervals;
     const auto accept = [&](double b) {
       const Interval interval = admissible(drives, rows[k], b);
-      return !interval.empty() && (last || b + 2.0 * interval.lo * dt <= controllable[k + 1] + 1e-12);
+      return !interval.empty() && (last || b + 2.0 * interval.lo * ds(k) <= controllable[k + 1] + 1e-12);
     };
     if (!accept(0.0)) return std::nullopt;
     controllable[k] = largestAccepted(kLargestB, accept);
@@ -134,13 +129,22 @@ std::optional<double> fastestRideAlongPath(const planner::Trajectory& trajectory
   double time_s = 0.0;
   for (size_t k = 0; k < intervals; ++k) {
     const Interval interval = admissible(drives, rows[k], b);
-    const double next = std::max(0.0, std::min(controllable[k + 1], b + 2.0 * interval.hi * dt));
+    const double next = std::max(0.0, std::min(controllable[k + 1], b + 2.0 * interval.hi * ds(k)));
     const double speeds = std::sqrt(b) + std::sqrt(next);
     if (speeds <= 0.0) return std::nullopt;
-    time_s += 2.0 * dt / speeds;
+    time_s += 2.0 * ds(k) / speeds;
     b = next;
   }
   return time_s;
 }
 
-}  // namespace cyber::test
+std::optional<double> fastestRideAlongPath(const Trajectory& trajectory, double step_s) {
+  const double duration = trajectory.duration_s();
+  const auto intervals = static_cast<size_t>(std::max(1.0, std::ceil(duration / step_s - 1e-9)));
+  std::vector<double> times_s(intervals + 1);
+  for (size_t k = 0; k <= intervals; ++k)
+    times_s[k] = std::min(duration, duration * static_cast<double>(k) / static_cast<double>(intervals));
+  return fastestRideAlongSamples(trajectory, times_s);
+}
+
+}  // namespace cyber::planner
