@@ -28,8 +28,8 @@ using Row = std::array<JointRow, kJointCount>;
 
 Row rowAt(const DriveModel& drives, const TrajectorySample& s) {
   // V(a, b) is linear in a (q'' = q' a + q'' b) and, for b > 0, beta b + gamma sqrt(b) plus
-  // constants (the Coriolis terms go with b, the back-EMF and kV with sqrt(b)): three evaluations
-  // at a = 0 and b = 1, 4 separate them once kS sgn(q') is taken out.
+  // constants (the Coriolis terms go with b, the back-EMF and kV with sqrt(b)): evaluations at rest,
+  // at a = 1 and at a = 0 with b = 1 and 4 separate them once kS sgn(q') is taken out.
   const JointVector zero = JointVector::Zero();
   const JointVector at_rest = drives.volts(s.q, zero, zero);
   const JointVector per_a = drives.volts(s.q, zero, s.qdot) - at_rest;

@@ -1,6 +1,6 @@
 #pragma once
-// What cyber-plan writes: the CSV of design.md (1 ms apart unless its columns need finer samples), the
-// JSON summary, the plot.
+// What cyber-plan writes: the CSV of design.md (1 ms apart unless finer samples are needed to
+// describe the motion, csvSpacingFor), the JSON summary, the plot.
 
 #include <string>
 

@@ -32,9 +32,8 @@ PlanRequest namedMove(const ShippedRobot& robot, const char* from, const char* t
   return request;
 }
 
-// Fine enough to resolve where the path's tangent q' goes to zero: the start and the end at rest,
-// a stop's turn.
-constexpr double kFineStepS = 1e-5;
+// Fine enough to resolve where the path's tangent goes to zero (shipped_robots.hpp).
+using test::kRideStepS;
 
 double ratio(const Trajectory& trajectory, double step_s) {
   const std::optional<double> ride = fastestRideAlongPath(trajectory, step_s);
@@ -54,7 +53,7 @@ TEST(SampledRide, FindsThePlannersOwnTimeOnAPathItTimedOptimally) {
     const ShippedRobot& robot = shippedRobot(name);
     const auto trajectory = planned(robot, namedMove(robot, from, to));
     ASSERT_TRUE(trajectory);
-    EXPECT_NEAR(ratio(*trajectory, kFineStepS), 1.0, 0.01) << name << " " << from << " -> " << to;
+    EXPECT_NEAR(ratio(*trajectory, kRideStepS), 1.0, 0.01) << name << " " << from << " -> " << to;
   }
 }
 
@@ -65,7 +64,7 @@ TEST(SampledRide, FindsASlowdownOfThatPath) {
   ASSERT_TRUE(trajectory);
   const auto slowed = slowedDown(*trajectory, 1.25);
   ASSERT_TRUE(slowed.ok());
-  EXPECT_NEAR(ratio(slowed.value(), kFineStepS) / ratio(*trajectory, kFineStepS), 1.25, 0.005);
+  EXPECT_NEAR(ratio(slowed.value(), kRideStepS) / ratio(*trajectory, kRideStepS), 1.25, 0.005);
 }
 
 // The ride reads each interval's own length: on samples 10 us apart on average, each moved by up
@@ -75,7 +74,7 @@ TEST(SampledRide, FindsTheSameRideOnUnevenSamples) {
   const auto trajectory = planned(robot, namedMove(robot, "STOW", "REACH_UP"));
   ASSERT_TRUE(trajectory);
   const double duration = trajectory->duration_s();
-  const auto intervals = static_cast<size_t>(std::ceil(duration / kFineStepS));
+  const auto intervals = static_cast<size_t>(std::ceil(duration / kRideStepS));
   std::mt19937 random(3);
   std::uniform_real_distribution<double> jitter(-0.4, 0.4);
   std::vector<double> times_s(intervals + 1);
@@ -83,7 +82,7 @@ TEST(SampledRide, FindsTheSameRideOnUnevenSamples) {
     times_s[k] = duration * (static_cast<double>(k) + jitter(random)) / static_cast<double>(intervals);
   times_s.back() = duration;
   const std::optional<double> uneven = fastestRideAlongSamples(*trajectory, times_s);
-  const std::optional<double> even = fastestRideAlongPath(*trajectory, kFineStepS);
+  const std::optional<double> even = fastestRideAlongPath(*trajectory, kRideStepS);
   ASSERT_TRUE(uneven && even);
   EXPECT_NEAR(*uneven / *even, 1.0, 1e-3);
   EXPECT_FALSE(fastestRideAlongSamples(*trajectory, std::vector<double>{0.0}).has_value()) << "one sample is no ride";
@@ -102,7 +101,7 @@ TEST(SampledRide, GainsAtAMovingStartsTurnShrinkWithTheSpacing) {
   ASSERT_TRUE(trajectory);
   const double at_1ms = ratio(*trajectory, 1e-3);
   const double at_100us = ratio(*trajectory, 1e-4);
-  const double at_10us = ratio(*trajectory, kFineStepS);
+  const double at_10us = ratio(*trajectory, kRideStepS);
   EXPECT_GT(at_1ms, 1.1);
   EXPECT_GT(at_1ms, at_100us);
   EXPECT_GT(at_100us, at_10us);

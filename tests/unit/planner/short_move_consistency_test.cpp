@@ -6,17 +6,16 @@
 // own path.
 
 #include <algorithm>
-#include <optional>
 #include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "cyber/planner/motion_planner.hpp"
-#include "cyber/planner/sampled_ride.hpp"
 #include "cyber/planner/timed_plan.hpp"
 #include "cyber/planner/trajectory_consistency.hpp"
 #include "reference_model.hpp"
+#include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -27,8 +26,6 @@ constexpr int kMoves = 150;
 // The spacing at which cyber-plan writes such a short move's CSV when its 1 ms columns disagree
 // (tools/cyber-plan/plan_arguments.hpp, kCsvSteps): every seeded one agrees at this one.
 constexpr double kFinerStepS = 2.5e-4;
-// The fastest ride is judged on samples this far apart (cyber/planner/sampled_ride.hpp).
-constexpr double kRideStepS = 1e-5;
 
 // What an independent check of cyber-plan's CSV accepts: 1 % of the travel, 2 % of the peak speed.
 void expectConsistent(const Trajectory& trajectory) {
@@ -101,9 +98,7 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAndStayFast) {
       ++finer;
       EXPECT_TRUE(columnsAgree(model.planner.motion, trajectory, kFinerStepS));
     }
-    const std::optional<double> ride = fastestRideAlongPath(trajectory, kRideStepS);
-    ASSERT_TRUE(ride);
-    worst_ratio = std::max(worst_ratio, trajectory.duration_s() / *ride);
+    worst_ratio = std::max(worst_ratio, test::expectNearTheFastestRide(trajectory, "move " + std::to_string(i)));
   }
   EXPECT_GE(planned, kMoves / 3);
   EXPECT_LE(worst_ratio, 1.02);
