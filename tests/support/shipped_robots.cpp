@@ -17,11 +17,13 @@ namespace cyber::test {
 
 using planner::JointVector;
 
+std::string sourceFile(const std::string& relative) { return std::string(CYBER_SOURCE_DIR) + "/" + relative; }
+
 const ShippedRobot& shippedRobot(const std::string& name) {
   static std::map<std::string, std::unique_ptr<ShippedRobot>> cache;
   auto& slot = cache[name];
   if (!slot) {
-    config::Config config = config::loadConfigFile(std::string(CYBER_SOURCE_DIR) + "/config/" + name + ".toml");
+    config::Config config = config::loadConfigFile(sourceFile("config/" + name + ".toml"));
     auto planner = planner::MotionPlanner::create(config.robot);
     if (!planner.ok()) {
       ADD_FAILURE() << name << ": " << planner.error().reason;

@@ -18,6 +18,9 @@ struct ShippedRobot {
 inline constexpr const char* kShippedRobotNames[] = {"reefscape-2025", "chargedup-2023-double-jointed",
                                                      "pivot-telescope"};
 
+// A file of the source tree by its path from the tree's root (config/, tests/ data).
+std::string sourceFile(const std::string& relative);
+
 // config/NAME.toml with its planner (every scene, offset band and held set); a failure to load
 // or plan aborts the test binary.
 const ShippedRobot& shippedRobot(const std::string& name);

@@ -18,89 +18,13 @@
 #include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/motion_planner.hpp"
 #include "free_space_components.hpp"
+#include "seeded_moves.hpp"
 #include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
 
-constexpr int kMovesPerRobot = 50;
-constexpr int kMovingStartEvery = 4;  // a quarter
-constexpr int kOffsetEvery = 3;       // a third
 constexpr double kMovingStartColumnsStepS = 1e-4;
-
-// Draws the moves of one robot; a pose closer than the clearance to the scene at the move's
-// offset is drawn again (the planner leaves those first: docs/algorithm.md section 5).
-class MoveDraw {
- public:
-  MoveDraw(const test::ShippedRobot& robot, unsigned seed) : robot_(robot), model_(robot.config.robot), random_(seed) {}
-
-  PlanRequest next(int move) {
-    PlanRequest request;
-    request.pieces = HeldPieces::fromIndex(uniformInt(model_.pieceSetCount() - 1));
-    if (move % kOffsetEvery == 1) {
-      // Three offsets across the scene's range, so that a flood fill serves several refusals.
-      const JointRange range = model_.scenes.front().offset_range_m;
-      request.scene_offset_m = range.min + (range.max - range.min) * (1 + uniformInt(2)) / 3.0;
-    }
-    const CollisionWorld world(model_, model_.scenes.front(), request.pieces, request.scene_offset_m);
-    request.goal = clearPose(world);
-    if (move % kMovingStartEvery != 3) {
-      request.start = clearPose(world);
-      return request;
-    }
-    // A moving start: the state at a random instant of a planned rest-to-rest move.
-    for (;;) {
-      PlanRequest leg = request;
-      leg.start = clearPose(world);
-      leg.goal = clearPose(world);
-      const auto planned = robot_.planner.plan(leg);
-      if (!planned.ok()) continue;
-      const Trajectory& trajectory = *planned.value().trajectory;
-      const TrajectorySample state =
-          trajectory.sampleMotion(std::uniform_real_distribution<double>(0.0, trajectory.duration_s())(random_));
-      request.start = state.q;
-      request.start_velocity = state.qdot;
-      return request;
-    }
-  }
-
- private:
-  int uniformInt(int max) { return std::uniform_int_distribution<int>(0, max)(random_); }
-
-  JointVector clearPose(const CollisionWorld& world) {
-    for (;;) {
-      JointVector q;
-      if (uniformInt(1) == 0) {
-        for (int j = 0; j < 2; ++j)
-          q[j] = std::uniform_real_distribution<double>(model_.range(j).min, model_.range(j).max)(random_);
-      } else {
-        // A named pose of any set, nudged by up to 3 % of each joint's range.
-        const config::PoseSet& set =
-            robot_.config.poses[static_cast<size_t>(uniformInt(static_cast<int>(robot_.config.poses.size()) - 1))];
-        q = set.poses[static_cast<size_t>(uniformInt(static_cast<int>(set.poses.size()) - 1))].q;
-        for (int j = 0; j < 2; ++j) {
-          const JointRange r = model_.range(j);
-          q[j] = std::clamp(q[j] + 0.03 * (r.max - r.min) * std::uniform_real_distribution<double>(-1.0, 1.0)(random_),
-                            r.min, r.max);
-        }
-      }
-      if (world.distance(q).value >= model_.clearance_m) return q;
-    }
-  }
-
-  const test::ShippedRobot& robot_;
-  const RobotModel& model_;
-  std::mt19937 random_;
-};
-
-// The move as cyber-plan's arguments, to reproduce it and hand it to the referee.
-std::string cyberPlanArguments(const PlanRequest& request) {
-  char text[200];
-  std::snprintf(text, sizeof text, "--from=%.9g,%.9g --to=%.9g,%.9g --from-velocity=%.9g,%.9g", request.start[0],
-                request.start[1], request.goal[0], request.goal[1], request.start_velocity[0],
-                request.start_velocity[1]);
-  return text;
-}
 
 class SeededRandomMoves : public ::testing::TestWithParam<const char*> {};
 
@@ -108,14 +32,14 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
   const test::ShippedRobot& robot = test::shippedRobot(GetParam());
   const RobotModel& model = robot.config.robot;
   std::map<std::tuple<int, double>, std::unique_ptr<test::FreeSpaceComponents>> components;
-  MoveDraw draw(robot, 24);
+  test::SeededMoveDraw draw(robot, test::kSeededMovesSeed);
   int planned = 0, refused = 0, moving = 0;
   double worst_ratio_from_rest = 0.0, worst_ratio_moving = 0.0;
-  for (int move = 0; move < kMovesPerRobot; ++move) {
+  for (int move = 0; move < test::kSeededMovesPerRobot; ++move) {
     const PlanRequest request = draw.next(move);
     const std::string label = std::string(GetParam()) + " move " + std::to_string(move) + " (" +
                               model.pieceSetName(request.pieces) + ", offset " +
-                              std::to_string(request.scene_offset_m) + ", " + cyberPlanArguments(request) + ")";
+                              std::to_string(request.scene_offset_m) + ", " + test::cyberPlanArguments(request) + ")";
     const auto plan = robot.planner.plan(request);
     if (plan.ok()) {
       const Trajectory& trajectory = *plan.value().trajectory;
@@ -144,8 +68,8 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
     EXPECT_NE(slot->of(request.start), slot->of(request.goal)) << label << ": refused, yet a path may exist";
     ++refused;
   }
-  EXPECT_EQ(planned + refused, kMovesPerRobot);
-  EXPECT_GT(moving, kMovesPerRobot / kMovingStartEvery / 2) << "moving starts are planned";
+  EXPECT_EQ(planned + refused, test::kSeededMovesPerRobot);
+  EXPECT_GT(moving, test::kSeededMovesPerRobot / test::kSeededMovingStartEvery / 2) << "moving starts are planned";
   RecordProperty("planned", planned);
   RecordProperty("refused", refused);
   RecordProperty("worst_ratio_to_ride_from_rest", std::to_string(worst_ratio_from_rest));

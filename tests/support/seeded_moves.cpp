@@ -1,0 +1,74 @@
+#include "seeded_moves.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "cyber/planner/collision_world.hpp"
+
+namespace cyber::test {
+
+using planner::CollisionWorld;
+using planner::JointRange;
+using planner::JointVector;
+using planner::PlanRequest;
+
+PlanRequest SeededMoveDraw::next(int move) {
+  PlanRequest request;
+  request.pieces = planner::HeldPieces::fromIndex(uniformInt(model_.pieceSetCount() - 1));
+  if (move % kSeededOffsetEvery == 1) {
+    // Three offsets across the scene's range, so that a flood fill serves several refusals.
+    const JointRange range = model_.scenes.front().offset_range_m;
+    request.scene_offset_m = range.min + (range.max - range.min) * (1 + uniformInt(2)) / 3.0;
+  }
+  const CollisionWorld world(model_, model_.scenes.front(), request.pieces, request.scene_offset_m);
+  request.goal = clearPose(world);
+  if (move % kSeededMovingStartEvery != 3) {
+    request.start = clearPose(world);
+    return request;
+  }
+  // A moving start: the state at a random instant of a planned rest-to-rest move.
+  for (;;) {
+    PlanRequest leg = request;
+    leg.start = clearPose(world);
+    leg.goal = clearPose(world);
+    const auto planned = robot_.planner.plan(leg);
+    if (!planned.ok()) continue;
+    const planner::Trajectory& trajectory = *planned.value().trajectory;
+    const planner::TrajectorySample state =
+        trajectory.sampleMotion(std::uniform_real_distribution<double>(0.0, trajectory.duration_s())(random_));
+    request.start = state.q;
+    request.start_velocity = state.qdot;
+    return request;
+  }
+}
+
+JointVector SeededMoveDraw::clearPose(const CollisionWorld& world) {
+  for (;;) {
+    JointVector q;
+    if (uniformInt(1) == 0) {
+      for (int j = 0; j < 2; ++j)
+        q[j] = std::uniform_real_distribution<double>(model_.range(j).min, model_.range(j).max)(random_);
+    } else {
+      // A named pose of any set, nudged by up to 3 % of each joint's range.
+      const config::PoseSet& set =
+          robot_.config.poses[static_cast<size_t>(uniformInt(static_cast<int>(robot_.config.poses.size()) - 1))];
+      q = set.poses[static_cast<size_t>(uniformInt(static_cast<int>(set.poses.size()) - 1))].q;
+      for (int j = 0; j < 2; ++j) {
+        const JointRange r = model_.range(j);
+        q[j] = std::clamp(q[j] + 0.03 * (r.max - r.min) * std::uniform_real_distribution<double>(-1.0, 1.0)(random_),
+                          r.min, r.max);
+      }
+    }
+    if (world.distance(q).value >= model_.clearance_m) return q;
+  }
+}
+
+std::string cyberPlanArguments(const PlanRequest& request) {
+  char text[200];
+  std::snprintf(text, sizeof text, "--from=%.9g,%.9g --to=%.9g,%.9g --from-velocity=%.9g,%.9g", request.start[0],
+                request.start[1], request.goal[0], request.goal[1], request.start_velocity[0],
+                request.start_velocity[1]);
+  return text;
+}
+
+}  // namespace cyber::test
