@@ -51,24 +51,22 @@ write_pom(${maven}/lcm/lcm/1.3.1/lcm-1.3.1.pom lcm lcm 1.3.1)
 
 set(core org.cyberplanner:cyber-planner-core:${VERSION})
 artifact(cyber-lcmtypes ${LCMTYPES_JAR} ${LCMTYPES_SOURCES} cyberplanner ${LCM_JAR} lcm:lcm:1.3.1)
-artifact(cyber-planner-wpilib2026 ${WPILIB2026_JAR} ${SOURCE_DIR}/src/wpilib2026/java cyberplanner.roborio.wpilib2026
+# The layers' sources are the ones roborio/CMakeLists.txt wrote for each year from src/wpilib.
+artifact(cyber-planner-wpilib2026 ${WPILIB2026_JAR} ${WPILIB2026_SOURCES} cyberplanner.roborio.wpilib2026
          "${CORE_JAR}:${STANDINS2026_JAR}:${LCMTYPES_JAR}:${LCM_JAR}" ${core})
-artifact(cyber-planner-wpilib2027 ${WPILIB2027_JAR} ${SOURCE_DIR}/src/wpilib2027/java cyberplanner.roborio.wpilib2027
+artifact(cyber-planner-wpilib2027 ${WPILIB2027_JAR} ${WPILIB2027_SOURCES} cyberplanner.roborio.wpilib2027
          "${CORE_JAR}:${STANDINS2027_JAR}:${LCMTYPES_JAR}:${LCM_JAR}" ${core})
 
-# The vendordeps: one per WPILib year, the same Maven folder.
-set(MAVEN_URL cyber-planner/maven)
-foreach(year 2026 2027)
+# The vendordeps: one per WPILib year, the same Maven folder; the year's YEAR_KEY and
+# COMMANDS_FILE come from src/wpilib/years.cmake.
+function(vendordep year)
   set(YEAR ${year})
-  if(year STREQUAL 2026)
-    set(YEAR_KEY frcYear)
-    set(COMMANDS_FILE WPILibNewCommands.json)
-  else()
-    set(YEAR_KEY wpilibYear)
-    set(COMMANDS_FILE CommandsV2.json)
-  endif()
+  set(MAVEN_URL cyber-planner/maven)
+  include(${SOURCE_DIR}/src/wpilib/years.cmake)
   configure_file(${SOURCE_DIR}/vendordep.json.in ${PUBLISH_DIR}/CyberPlanner-${year}.json @ONLY)
-endforeach()
+endfunction()
+vendordep(2026)
+vendordep(2027)
 
 # Last: the core's pom is the build's output file.
 artifact(cyber-planner-core ${CORE_JAR} ${SOURCE_DIR}/src/main/java cyberplanner.roborio "${LCMTYPES_JAR}:${LCM_JAR}"
