@@ -19,16 +19,21 @@ function(cyber_component_library target)
   cyber_warnings(${target})
 endfunction()
 
-# Every *_test.cpp in DIR becomes its own GoogleTest executable, so one broken file cannot stop
-# the others from building; tests carry LABEL. CYBER_EMULATOR_TEST_FILTER, when set (the cross
-# build, tests/CMakeLists.txt), is a GoogleTest filter of the tests registered.
+# Every *_test.cpp in DIR (RECURSE: and in its subfolders) becomes its own GoogleTest executable,
+# so one broken file cannot stop the others from building; tests carry LABEL.
+# CYBER_EMULATOR_TEST_FILTER, when set (the cross build, tests/CMakeLists.txt), is a GoogleTest
+# filter of the tests registered.
 function(cyber_test_dir dir label)
-  cmake_parse_arguments(ARG "" "" "LINK" ${ARGN})
+  cmake_parse_arguments(ARG "RECURSE" "" "LINK" ${ARGN})
   set(filter)
   if(DEFINED CYBER_EMULATOR_TEST_FILTER)
     set(filter TEST_FILTER ${CYBER_EMULATOR_TEST_FILTER})
   endif()
-  file(GLOB srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)
+  if(ARG_RECURSE)
+    file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)
+  else()
+    file(GLOB srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)
+  endif()
   foreach(src ${srcs})
     get_filename_component(name ${src} NAME_WE)
     add_executable(${name} ${src})

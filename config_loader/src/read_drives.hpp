@@ -1,7 +1,7 @@
 #pragma once
 // Reading [motors.NAME] and [drives.JOINT] (docs/configuration.md).
 
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "table_reader.hpp"
 
 namespace cyber::config::detail {

@@ -1,4 +1,4 @@
-#include "cyber/planner/result.hpp"
+#include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
 

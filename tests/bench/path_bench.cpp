@@ -8,8 +8,8 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_measures.hpp"
-#include "cyber/planner/cspace_grid.hpp"
-#include "cyber/planner/path_planner.hpp"
+#include "path/cspace_grid.hpp"
+#include "path/path_planner.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 

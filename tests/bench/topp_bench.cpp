@@ -14,14 +14,14 @@
 
 #include <benchmark/benchmark.h>
 
-#include "../unit/planner/topp_fixtures.hpp"
+#include "../unit/planner/timing/topp_fixtures.hpp"
 #include "bench_measures.hpp"
-#include "cyber/planner/path_planner.hpp"
-#include "cyber/planner/topp.hpp"
-#include "cyber/planner/topp_augmented_lagrangian.hpp"
-#include "cyber/planner/topp_reachability.hpp"
+#include "path/path_planner.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
+#include "timing/topp.hpp"
+#include "timing/topp_augmented_lagrangian.hpp"
+#include "timing/topp_reachability.hpp"
 
 namespace cyber::planner {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "cyber/planner/path_planner.hpp"
 #include "cyber/planner/robot_model.hpp"
+#include "path/path_planner.hpp"
 
 namespace cyber::test {
 

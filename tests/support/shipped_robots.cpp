@@ -10,8 +10,7 @@
 #include <optional>
 
 #include "cyber/planner/collision_world.hpp"
-#include "cyber/planner/sampled_ride.hpp"
-#include "cyber/planner/trajectory_consistency.hpp"
+#include "cyber/planner/trajectory.hpp"
 
 namespace cyber::test {
 

@@ -41,7 +41,7 @@ void expectSound(const planner::RobotModel& model, const planner::Trajectory& tr
 // random moves on the three robots").
 inline constexpr double kRideStepS = 1e-5;
 
-// The trajectory's duration over the fastest ride along its own path (cyber/planner/sampled_ride.hpp), which
+// The trajectory's duration over the fastest ride along its own path (cyber/planner/trajectory.hpp), which
 // must be within 1.02; a test failure (and 0) when there is no ride.
 double expectNearTheFastestRide(const planner::Trajectory& trajectory, const std::string& label);
 

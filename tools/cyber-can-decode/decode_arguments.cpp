@@ -4,7 +4,7 @@
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::tools {
 

@@ -9,7 +9,7 @@
 
 #include "cyber/cli/usage_exit.hpp"
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner.hpp"
 #include "plan_arguments.hpp"
 #include "plan_output.hpp"
 

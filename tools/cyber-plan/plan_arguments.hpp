@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cyber/cli/parsed.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::tools {
 
@@ -18,7 +18,7 @@ inline constexpr double kCsvStepS = 1e-3;
 inline constexpr double kMinCsvStepS = 1e-5;
 inline constexpr double kMaxCsvStepS = kCsvStepS;
 inline constexpr double kCsvSteps[] = {kCsvStepS, 5e-4, 2.5e-4, 1e-4, 5e-5, 2.5e-5, kMinCsvStepS};
-// Samples describe the path when the fastest ride along them (cyber/planner/sampled_ride.hpp) is
+// Samples describe the path when the fastest ride along them (cyber/planner/trajectory.hpp) is
 // at most this share faster than the plan. A plan from rest is within about 0.5 % of that ride on
 // samples 10 us apart (its TOPP grid's share); samples that let it pass a turn or the end at rest faster,
 // where the path's tangent goes to zero, would show a check a path faster than the motors can

@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "cyber/planner/sampled_ride.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::tools {
 namespace {

@@ -4,8 +4,7 @@
 
 #include <string>
 
-#include "cyber/planner/motion_planner.hpp"
-#include "cyber/planner/timed_plan.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plot/trajectory_csv.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
 #include "plan_arguments.hpp"

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cyber/cli/parsed.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::tools {
 

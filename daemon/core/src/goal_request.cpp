@@ -5,7 +5,7 @@
 #include <cmath>
 #include <optional>
 
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

@@ -1,12 +1,10 @@
 #include "cyber/daemon/motion_planner_service.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <optional>
+#include <memory>
+#include <utility>
 
-#include "cyber/planner/collision_world.hpp"
-#include "cyber/planner/fastest_stop.hpp"
-#include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 
@@ -40,8 +38,10 @@ class MotionPlannerService final : public PlanningService {
  public:
   explicit MotionPlannerService(planner::MotionPlanner planner) : planner_(std::move(planner)) {}
 
+  // A goal: the plan from the start; ARM_CANCEL's hold: the planner's fastest stop along the start
+  // velocity, in the collision world of the motion it brakes (docs/lcm.md, "Cancel and manual
+  // override").
   [[nodiscard]] planner::Result<PlannedMotion> plan(const MotionRequest& request) const override {
-    if (request.kind == MotionKind::kStop) return stop(request);
     planner::PlanRequest plan_request;
     plan_request.start = request.start;
     plan_request.goal = request.goal;
@@ -49,7 +49,7 @@ class MotionPlannerService final : public PlanningService {
     plan_request.pieces = request.pieces;
     plan_request.scene = request.scene;
     plan_request.scene_offset_m = request.scene_offset_m;
-    auto plan = planner_.plan(plan_request);
+    auto plan = request.kind == MotionKind::kStop ? planner_.stop(plan_request) : planner_.plan(plan_request);
     if (!plan) return plan.error();
     const planner::Plan& value = plan.value();
     PlannedMotion out;
@@ -60,33 +60,6 @@ class MotionPlannerService final : public PlanningService {
   }
 
  private:
-  // ARM_CANCEL's hold: the planner's fastest stop along the start velocity, in the collision world
-  // of the motion it brakes (docs/lcm.md, "Cancel and manual override").
-  [[nodiscard]] planner::Result<PlannedMotion> stop(const MotionRequest& request) const {
-    const planner::RobotModel& model = planner_.model();
-    if (request.scene < 0 || request.scene >= static_cast<int>(model.scenes.size())) {
-      return planner::Result<PlannedMotion>::failure(planner::PlanStatus::kInvalidInput,
-                                                     "unknown scene index " + std::to_string(request.scene));
-    }
-    const auto started = std::chrono::steady_clock::now();
-    planner::ToppSolver solver(model.planner.topp);
-    // The world the braked motion was planned in: the scene as drawn, or shifted by its offset.
-    const planner::PathPlanner& drawn = planner_.pathPlanner(request.scene);
-    std::optional<planner::CollisionWorld> shifted;
-    if (request.scene_offset_m != 0.0) {
-      shifted.emplace(model, drawn.scene(), request.pieces, request.scene_offset_m);
-    }
-    auto stop = planner::fastestStop(model, shifted ? *shifted : drawn.world(request.pieces), request.start,
-                                     request.start_velocity, solver);
-    if (!stop) return stop.error();
-    PlannedMotion out;
-    out.trajectory =
-        std::make_shared<TrajectorySource>(std::make_shared<const planner::Trajectory>(std::move(stop).value()));
-    out.times_ms.topp = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    out.times_ms.total = out.times_ms.topp;
-    return out;
-  }
-
   planner::MotionPlanner planner_;
 };
 

@@ -15,7 +15,7 @@
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "cyber/planner/motion_planner.hpp"
-#include "cyber/planner/trajectory_consistency.hpp"
+#include "cyber/planner/trajectory.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 #include "shipped_move_durations.hpp"

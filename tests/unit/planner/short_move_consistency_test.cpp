@@ -12,8 +12,9 @@
 #include <gtest/gtest.h>
 
 #include "cyber/planner/motion_planner.hpp"
-#include "cyber/planner/timed_plan.hpp"
-#include "cyber/planner/trajectory_consistency.hpp"
+#include "cyber/planner/trajectory.hpp"
+#include "motion/scene_planners.hpp"
+#include "motion/timed_plan.hpp"
 #include "reference_model.hpp"
 #include "shipped_robots.hpp"
 
@@ -67,7 +68,7 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAndStayFast) {
   const RobotModel& model = test::referenceModel();
   const auto planner = MotionPlanner::create(model);
   ASSERT_TRUE(planner.ok());
-  const PathPlanner& paths = planner.value().pathPlanner(0);
+  const PathPlanner& paths = drawnPathPlanner(planner.value(), 0);
   std::mt19937 rng(kSeed);
   std::uniform_real_distribution<double> t(model.range(0).min, model.range(0).max);
   std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 #include "reference_model.hpp"
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plant/state_log.hpp"
 
 namespace cyber::plant {

@@ -16,8 +16,7 @@
 #include <map>
 
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/collision_world.hpp"
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plot/world_view.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"

@@ -14,7 +14,7 @@
 #include <random>
 
 #include "cyber/config/load_config.hpp"
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/wpilog/lcm_to_wpilog.hpp"
 #include "cyber/wpilog/pose3d.hpp"
 #include "cyber/wpilog/wpilog_reader.hpp"

@@ -4,8 +4,7 @@
 
 #include <iterator>
 
-#include "cyber/planner/joint_chain.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::plant {
 

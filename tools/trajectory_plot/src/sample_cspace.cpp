@@ -1,6 +1,6 @@
 #include <algorithm>
 
-#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
 
 namespace cyber::plot {

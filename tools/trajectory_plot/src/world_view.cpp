@@ -7,7 +7,7 @@
 #include <limits>
 #include <memory>
 
-#include "cyber/planner/collision_world.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plot/apng_writer.hpp"
 #include "drawing.hpp"
 

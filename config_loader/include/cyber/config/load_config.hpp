@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cyber/config/daemon_settings.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::config {
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner/chain.hpp"
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
 

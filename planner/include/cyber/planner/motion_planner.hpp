@@ -6,16 +6,24 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
-#include "cyber/planner/path_planner.hpp"
-#include "cyber/planner/result.hpp"
 #include "cyber/planner/robot_model.hpp"
-#include "cyber/planner/stage_times.hpp"
-#include "cyber/planner/topp.hpp"
 #include "cyber/planner/trajectory.hpp"
+#include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
+
+/// How long each stage of one plan took (docs/algorithm.md sections 2 and 3 name the stages).
+struct StageTimesMs {
+  double grid = 0.0;    // building the grid of this scene and piece set, once at create()
+  double search = 0.0;  // this request: grid search (or the direct check)
+  double smooth = 0.0;  // this request: optimisation, spline, clearance check
+  double topp = 0.0;    // this request: time-optimal parameterisation and its limit check
+  double total = 0.0;   // this request, end to end (excludes the one-off grid build)
+};
 
 struct PlanRequest {
   JointVector start = JointVector::Zero();           // (m, rad)
@@ -46,27 +54,35 @@ struct GridSelection {
   std::optional<double> scene_offset_m;  // set: only the grids of this offset; unset: every band
 };
 
+class PathPlanner;  // the path stage of one scene (internal)
+
+/// Plans the motions of one robot. Cheap to copy (its grids are shared, never changed after create()).
 class MotionPlanner {
  public:
-  // Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
-  // has no scene or no arm geometry.
+  /// Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
+  /// has no scene or no arm geometry.
   static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = GridSelection{});
 
+  /// The fastest collision-free motion from the request's start (at rest or moving) to its goal,
+  /// ending at rest; or why there is none (PlanStatus).
   [[nodiscard]] Result<Plan> plan(const PlanRequest& request) const;
 
-  [[nodiscard]] const RobotModel& model() const { return model_; }
-  // The path stage of a scene as drawn (offset 0; built unless a GridSelection left it out).
-  [[nodiscard]] const PathPlanner& pathPlanner(int scene) const {
-    return path_planners_[static_cast<size_t>(scene)].front();
-  }
-  // The bands of scene offsets a scene's grids were built for (the first is the offset 0 alone).
+  /// The fastest admissible stop from the request's start along its start velocity, in the world
+  /// of its scene, offset and held pieces (the goal is not used): what a cancel brakes with
+  /// (docs/moving-starts.md). Errors: kInvalidInput (unknown scene, velocity zero or not finite),
+  /// kInfeasibleStart (no stop before a joint limit), kClearanceNotMet, and the solver's.
+  [[nodiscard]] Result<Plan> stop(const PlanRequest& request) const;
+
+  /// The robot description the planner was built from.
+  [[nodiscard]] const RobotModel& model() const;
+  /// The bands of scene offsets a scene's grids were built for (the first is the offset 0 alone).
   [[nodiscard]] std::vector<JointRange> offsetBands(int scene) const;
 
  private:
-  MotionPlanner() = default;
-  RobotModel model_;
-  // By scene index: the scene as drawn, then one planner per band of offsets.
-  std::vector<std::vector<PathPlanner>> path_planners_;
+  struct Scenes;
+  friend const PathPlanner& drawnPathPlanner(const MotionPlanner& planner, int scene);
+  explicit MotionPlanner(std::shared_ptr<const Scenes> scenes) : scenes_(std::move(scenes)) {}
+  std::shared_ptr<const Scenes> scenes_;
 };
 
 }  // namespace cyber::planner

@@ -8,15 +8,13 @@
 #include <string_view>
 #include <vector>
 
-#include "cyber/planner/convex_polygon.hpp"
-#include "cyber/planner/drive_model.hpp"
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner/chain.hpp"
 #include "cyber/planner/planner_settings.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
 
-// Polygons attached to one link of the chain, in that link's frame (joint_chain.hpp).
+// Polygons attached to one link of the chain, in that link's frame (chain.hpp).
 struct LinkGeometry {
   std::string name;
   int joint = 0;  // the link of this joint
@@ -79,7 +77,7 @@ struct RobotModel {
   // "none", or the held pieces' names joined by '+' in declaration order.
   [[nodiscard]] std::string pieceSetName(HeldPieces held) const;
 
-  // The voltage model of both joints with these pieces held (drive_model.hpp; a held piece adds
+  // The voltage model of both joints with these pieces held (chain.hpp; a held piece adds
   // its mass to its link under the rigid-body model).
   [[nodiscard]] DriveModel driveModel(HeldPieces held) const;
 };

@@ -7,14 +7,37 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
-#include "cyber/planner/geometric_path.hpp"
-#include "cyber/planner/result.hpp"
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
 
 namespace cyber::planner {
+
+/// What the time-optimal parameterisation (TOPP) did; filled on success and on failure.
+struct ToppReport {
+  int grid_points = 0;
+  int outer_iterations = 0;      ///< summed over all solves (first solve and limit refinements)
+  int inner_iterations = 0;      ///< L-BFGS iterations, summed
+  int evaluations = 0;           ///< evaluations of L_rho, summed
+  int refinements = 0;           ///< re-solves after the continuous limit check tightened limits
+  double primal_residual = 0.0;  ///< of the last solve
+  double dual_residual = 0.0;
+  double penalty = 0.0;
+  double warm_start_duration_s = 0.0;  ///< of the forward-backward profile the solver started from
+  double controllable_start_b = 0.0;   ///< largest b_start the path could have stopped from
+  /// Start speed planned / start speed asked: 1, or just below when a start past the controllable
+  /// set by at most ToppSettings::limit_check_tolerance (a splice from the solver's own trajectory
+  /// at a limit) was planned from the fastest start that can be stopped.
+  double start_speed_ratio = 1.0;
+  /// Largest |value| / limit over the samples of the continuous check (1 = at the limit).
+  double peak_voltage_ratio = 0.0;
+  double peak_current_ratio = 0.0;
+  double peak_velocity_ratio = 0.0;      ///< 0 when no joint has a velocity limit
+  double peak_acceleration_ratio = 0.0;  ///< 0 when no joint has an acceleration limit
+};
 
 struct TrajectorySample {
   double t = 0.0;      // s
@@ -111,5 +134,43 @@ void forEachLimitSample(const Trajectory& trajectory, double step_s, Visit&& vis
 // that a uniform slowdown hardly moves (docs/moving-starts.md, "Consistent columns"). Drive limits
 // are not checked here: withinDriveLimits.
 [[nodiscard]] Result<Trajectory> gentlerStart(const Trajectory& trajectory, double scale);
+
+// The fastest ride along a trajectory's path as a check that reads only its samples sees it (an
+// external referee's along-path ratio, docs/moving-starts.md, "The CSV's spacing"): independent of
+// the planner's TOPP, sharing only the drive model's voltages and currents. Where the path's
+// tangent in its own time goes to zero (a turn, the end at rest) samples far apart let the ride
+// pass faster than any motor could; the gain shrinks with the spacing.
+
+// The shortest time in which the path q(s) of `trajectory`, s its own time, read at the increasing
+// times `times_s` (the first 0, the last its duration), can be traversed within its drives'
+// limits: each sample's voltage, current and optional velocity and acceleration limits bound the
+// path acceleration s'' to an interval at each path speed squared b = s'^2; a backward pass finds
+// the largest b from which the end is still reachable, a greedy forward pass rides at the upper
+// bound (reachability analysis, docs/algorithm.md section 3). A moving start keeps its speed
+// (b = 1 at s = 0); the ride ends at rest. nullopt when these samples admit no ride.
+[[nodiscard]] std::optional<double> fastestRideAlongSamples(const Trajectory& trajectory,
+                                                            std::span<const double> times_s);
+
+// The same on samples evenly about `step_s` apart, the last at the end.
+[[nodiscard]] std::optional<double> fastestRideAlongPath(const Trajectory& trajectory, double step_s);
+
+// Whether a trajectory's sampled columns agree with each other the way a consumer sees them
+// (docs/moving-starts.md): sampled every step_s (and at the end), the trapezoidal integral of
+// the velocities must follow the positions and that of the accelerations the velocities. Exact
+// derivatives can still disagree at a coarse step where the path bends sharply at speed, and then
+// a 1 ms stream does not describe one motion.
+
+struct ColumnConsistency {
+  double position_error = 0.0;  // largest |q - q0 - integral qdot| / the joint's travel
+  double velocity_error = 0.0;  // largest |qdot - qdot0 - integral qddot| / the joint's peak speed
+};
+
+ColumnConsistency columnConsistency(const Trajectory& trajectory, double step_s);
+
+// Whether the trapezoidal integrals of the trajectory's columns follow its positions and
+// velocities within MotionSettings' tolerances at the CSV's step (consistency_step_s), or at
+// samples `step_s` apart.
+bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory);
+bool columnsAgree(const MotionSettings& settings, const Trajectory& trajectory, double step_s);
 
 }  // namespace cyber::planner

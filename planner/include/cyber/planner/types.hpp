@@ -3,6 +3,11 @@
 // its own unit (m for a prismatic joint, rad for a revolute one; docs/algorithm.md section 1).
 
 #include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -31,6 +36,99 @@ struct HeldPieces {
   // How many sets `piece_count` named pieces make.
   static constexpr int setCount(int piece_count) { return 1 << piece_count; }
   friend bool operator==(const HeldPieces&, const HeldPieces&) = default;
+};
+
+// Typed errors for every path a user can reach: a status and a human-readable reason.
+// Exceptions are reserved for start-up configuration; the planner core returns these instead.
+
+enum class PlanStatus {
+  kOk = 0,
+  kInvalidInput,        // NaN/inf, malformed request, unknown scene
+  kStartOutOfRange,     // start outside the joint limits
+  kGoalOutOfRange,      // goal outside the joint limits
+  kStartInCollision,    // start closer than the clearance
+  kGoalInCollision,     // goal closer than the clearance
+  kNoPath,              // the search found no collision-free path
+  kClearanceNotMet,     // optimisation could not keep the clearance and no fallback did
+  kInfeasibleStart,     // the start velocity cannot be followed and brought to rest
+  kSolverNotConverged,  // TOPP did not meet its residual tolerances within its cap
+  kInternalError,       // an invariant the planner checks itself failed
+};
+
+std::string_view toString(PlanStatus status);
+
+// Exit code of a status for command-line tools (design.md): 2 bad input (malformed or non-finite),
+// 3 no feasible motion (out of range, in collision, no path, solver did not converge).
+int exitCodeOf(PlanStatus status);
+
+struct PlanError {
+  PlanStatus status = PlanStatus::kInternalError;
+  std::string reason;
+};
+
+// A value or a PlanError. Small on purpose: has_value / value / error.
+template <class T>
+class Result {
+ public:
+  Result(T value) : storage_(std::move(value)) {}          // NOLINT(implicit)
+  Result(PlanError error) : storage_(std::move(error)) {}  // NOLINT(implicit)
+  static Result failure(PlanStatus status, std::string reason) { return Result(PlanError{status, std::move(reason)}); }
+
+  [[nodiscard]] bool ok() const { return std::holds_alternative<T>(storage_); }
+  explicit operator bool() const { return ok(); }
+  [[nodiscard]] const T& value() const& { return std::get<T>(storage_); }
+  [[nodiscard]] T& value() & { return std::get<T>(storage_); }
+  [[nodiscard]] T&& value() && { return std::get<T>(std::move(storage_)); }
+  [[nodiscard]] const PlanError& error() const { return std::get<PlanError>(storage_); }
+  [[nodiscard]] PlanStatus status() const { return ok() ? PlanStatus::kOk : error().status; }
+
+ private:
+  std::variant<T, PlanError> storage_;
+};
+
+// A geometric path q(s), s in [0, length]: what the path stage produces and TOPP consumes.
+// s is the weighted arc length of algorithm.md section 2.4 for splines; TOPP only needs q, q', q''.
+
+struct PathPoint {
+  JointVector q = JointVector::Zero();
+  JointVector dq_ds = JointVector::Zero();    // q'(s)
+  JointVector d2q_ds2 = JointVector::Zero();  // q''(s)
+};
+
+class GeometricPath {
+ public:
+  virtual ~GeometricPath() = default;
+  [[nodiscard]] virtual double length() const = 0;
+  // s is clamped to [0, length()]. Must not allocate (the streamer samples through it).
+  [[nodiscard]] virtual PathPoint at(double s) const = 0;
+};
+
+// A convex polygon with counter-clockwise vertices, validated on construction.
+
+class ConvexPolygon {
+ public:
+  ConvexPolygon() = default;
+
+  // Accepts either orientation and stores counter-clockwise. Returns an empty optional-like
+  // error text when the vertices are fewer than 3, non-finite, collinear or not convex.
+  // `error` is set to the reason on failure (and the returned polygon is empty).
+  static ConvexPolygon fromVertices(std::vector<Point2> vertices, std::string* error);
+
+  // Everything the polygon covers while it slides along x from lo_m to hi_m (lo_m <= hi_m): the
+  // convex hull of its two end copies (a Minkowski sum with a segment). For lo_m == hi_m, the
+  // polygon moved by lo_m.
+  [[nodiscard]] ConvexPolygon sweptAlongX(double lo_m, double hi_m) const;
+
+  [[nodiscard]] const std::vector<Point2>& vertices() const { return vertices_; }
+  [[nodiscard]] int size() const { return static_cast<int>(vertices_.size()); }
+  [[nodiscard]] bool empty() const { return vertices_.empty(); }
+  [[nodiscard]] const Point2& vertex(int i) const { return vertices_[static_cast<size_t>(i)]; }
+  // Edge i runs from vertex(i) to vertex(i+1 mod n).
+  [[nodiscard]] const Point2& edgeEnd(int i) const { return vertices_[static_cast<size_t>((i + 1) % size())]; }
+
+ private:
+  explicit ConvexPolygon(std::vector<Point2> ccw) : vertices_(std::move(ccw)) {}
+  std::vector<Point2> vertices_;
 };
 
 }  // namespace cyber::planner

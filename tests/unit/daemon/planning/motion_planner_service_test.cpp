@@ -7,8 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cyber/planner/fastest_stop.hpp"
-#include "cyber/planner/motion_planner.hpp"
+#include "cyber/planner.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 
@@ -101,11 +100,13 @@ TEST(MotionPlannerService, AStopRequestIsThePlannersFastestStop) {
   const auto stop = service.value()->plan(request);
   ASSERT_TRUE(stop.ok()) << stop.error().reason;
   const SetpointSource& source = *stop.value().trajectory;
-  planner::ToppSolver solver(model.planner.topp);
-  const auto expected =
-      planner::fastestStop(model, planner.value().pathPlanner(0).world(move.pieces), moving.q, moving.qdot, solver);
+  planner::PlanRequest stop_request;
+  stop_request.start = moving.q;
+  stop_request.start_velocity = moving.qdot;
+  stop_request.pieces = move.pieces;
+  const auto expected = planner.value().stop(stop_request);
   ASSERT_TRUE(expected.ok());
-  EXPECT_DOUBLE_EQ(source.durationS(), expected.value().duration_s());
+  EXPECT_DOUBLE_EQ(source.durationS(), expected.value().trajectory->duration_s());
   EXPECT_TRUE(source.at(0.0).position.isApprox(moving.q, 1e-9));
   EXPECT_TRUE(source.at(0.0).velocity.isApprox(moving.qdot, 1e-6));
   EXPECT_LT(source.at(source.durationS()).velocity.norm(), 1e-9);  // at rest (the streamer then holds, exactly 0)

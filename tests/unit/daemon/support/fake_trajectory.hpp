@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "cyber/daemon/setpoint_source.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon::test {
 

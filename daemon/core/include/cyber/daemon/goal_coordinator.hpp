@@ -27,7 +27,7 @@
 #include "cyber/daemon/planning_service.hpp"
 #include "cyber/daemon/program.hpp"
 #include "cyber/daemon/stream_event.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

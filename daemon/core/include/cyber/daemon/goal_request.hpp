@@ -6,9 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/planner/result.hpp"
-#include "cyber/planner/robot_model.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

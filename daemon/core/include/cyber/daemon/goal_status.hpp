@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "cyber/daemon/planning_service.hpp"
-#include "cyber/planner/result.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

@@ -3,7 +3,7 @@
 // drive model at rest, algorithm.md section 3 with qdot = qddot = 0).
 
 #include "cyber/daemon/setpoint_source.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

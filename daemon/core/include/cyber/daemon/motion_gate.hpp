@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "cyber/daemon/mono_time.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

@@ -3,9 +3,7 @@
 // thread. makeMotionPlannerService (motion_planner_service.hpp) wraps planner::MotionPlanner; tests use fakes.
 
 #include "cyber/daemon/setpoint_source.hpp"
-#include "cyber/planner/result.hpp"
-#include "cyber/planner/stage_times.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

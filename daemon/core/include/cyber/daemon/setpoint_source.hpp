@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

@@ -5,8 +5,7 @@
 #include <memory>
 
 #include "cyber/daemon/planning_service.hpp"
-#include "cyber/planner/result.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon {
 

@@ -19,9 +19,7 @@
 
 #include <array>
 
-#include "cyber/planner/drive_model.hpp"
-#include "cyber/planner/robot_model.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::plant {
 

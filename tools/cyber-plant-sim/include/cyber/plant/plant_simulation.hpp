@@ -10,7 +10,7 @@
 #include <array>
 #include <optional>
 
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plant/mechanism_plant.hpp"
 
 namespace cyber::plant {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cyber/cli/parsed.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plant/fault_schedule.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "cyber/planner/joint_chain.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plant/mechanism_plant.hpp"
 #include "cyber/plant/plant_simulation.hpp"
 

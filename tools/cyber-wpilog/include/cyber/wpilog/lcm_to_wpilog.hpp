@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cyber/config/daemon_settings.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/wpilog/wpilog_writer.hpp"
 
 namespace cyber::wpilog {

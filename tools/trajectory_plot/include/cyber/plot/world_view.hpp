@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
 
 namespace cyber::plot {

@@ -27,7 +27,7 @@
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/robot_link.hpp"
 #include "cyber/daemon/streamer.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon::io {
 

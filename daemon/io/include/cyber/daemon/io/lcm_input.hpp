@@ -14,7 +14,7 @@
 #include "cyber/daemon/io/lcm_bridge.hpp"
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "cyberplanner/arm_state_t.hpp"
 
 namespace cyber::daemon::io {

@@ -10,7 +10,7 @@
 #include "cyber/daemon/goal_status.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/setpoint_source.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"

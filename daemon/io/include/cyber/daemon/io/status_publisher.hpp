@@ -13,7 +13,7 @@
 #include "cyber/daemon/io/log_throttle.hpp"
 #include "cyber/daemon/io/streamer_thread.hpp"
 #include "cyber/daemon/motion_gate.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::daemon::io {
 

@@ -1,0 +1,177 @@
+#include "cyber/planner/motion_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "math/weighted_norm.hpp"
+#include "motion/fastest_stop.hpp"
+#include "motion/moving_start_strategies.hpp"
+#include "motion/scene_planners.hpp"
+#include "motion/timed_plan.hpp"
+#include "path/clearance_escape.hpp"
+
+namespace cyber::planner {
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A start at rest inside the clearance that touches nothing: out along the steepest way, then
+// the rest-to-rest plan from there (docs/algorithm.md section 5). `refused` is the path stage's
+// own answer, kept when there is no way out.
+Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, const PlanRequest& request,
+                            Result<Plan> refused) {
+  ToppSolver solver(model.planner.topp);
+  const CollisionWorld& world = paths.world(request.pieces);
+  Result<Trajectory> escape = clearanceEscape(model, world, request.start, solver);
+  if (!escape) {
+    return Result<Plan>::failure(PlanStatus::kStartInCollision,
+                                 fmt::format("{}; {}", refused.error().reason, escape.error().reason));
+  }
+  const Result<Plan> onward =
+      timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces, JointVector::Zero());
+  Result<Plan> plan = joinAfter("out of the clearance", request, escape.value(), onward);
+  // The way out is a few millimetres, timed in tens of milliseconds: its switch from accelerating
+  // to braking, and the jump at the junction, are large next to its peak speed, so its columns
+  // may disagree at 1 ms as a short move's do. It is slowed as one is (consistentSlowdown), by
+  // fractions of a step, until the joined columns agree.
+  const MotionSettings& settings = model.planner.motion;
+  if (plan && !columnsAgree(settings, *plan.value().trajectory)) {
+    Result<Plan> joined = plan;
+    const auto joined_agrees = [&](const Trajectory& slower) {
+      joined = joinAfter("out of the clearance", request, slower, onward);
+      return joined && columnsAgree(settings, *joined.value().trajectory);
+    };
+    if (shortestSlowdown(model, escape.value(), settings.escape_slower_steps, joined_agrees)) plan = std::move(joined);
+  }
+  if (plan) plan.value().min_clearance_m = std::min(plan.value().min_clearance_m, world.distance(request.start).value);
+  return plan;
+}
+
+}  // namespace
+
+Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection) {
+  if (model.scenes.empty()) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no scene");
+  bool has_polygon = false;
+  for (const LinkGeometry& link : model.links) has_polygon = has_polygon || !link.polygons.empty();
+  if (!has_polygon) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no link polygons");
+  if (static_cast<int>(model.pieces.size()) > HeldPieces::kMaxPieces) {
+    return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput,
+                                          fmt::format("at most {} game pieces", HeldPieces::kMaxPieces));
+  }
+  auto scenes = std::make_shared<Scenes>();
+  scenes->model = model;
+  scenes->path_planners.reserve(model.scenes.size());
+  const double band_width = model.planner.search.offset_band_clearances * model.clearance_m;
+  for (size_t index = 0; index < model.scenes.size(); ++index) {
+    const Scene& scene = model.scenes[index];
+    std::vector<PathPlanner>& bands = scenes->path_planners.emplace_back();
+    if (selection.scene >= 0 && selection.scene != static_cast<int>(index)) continue;
+    const bool moves = !scene.obstacles.empty();
+    const std::optional<double>& only = selection.scene_offset_m;
+    if (!only || *only == 0.0 || !moves) bands.emplace_back(model, scene);
+    const JointRange& range = scene.offset_range_m;
+    const double span = range.max - range.min;
+    if (span <= 0.0 || !moves) continue;
+    const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, 1e-3))));
+    for (int k = 0; k < count; ++k) {
+      const JointRange band{range.min + span * k / count,
+                            k + 1 == count ? range.max : range.min + span * (k + 1) / count};
+      if (only && (*only == 0.0 || !band.contains(*only))) continue;
+      bands.emplace_back(model, scene, band);
+      if (only) break;
+    }
+  }
+  return MotionPlanner(std::move(scenes));
+}
+
+const RobotModel& MotionPlanner::model() const { return scenes_->model; }
+
+const PathPlanner& drawnPathPlanner(const MotionPlanner& planner, int scene) {
+  return planner.scenes_->path_planners[static_cast<size_t>(scene)].front();
+}
+
+std::vector<JointRange> MotionPlanner::offsetBands(int scene) const {
+  std::vector<JointRange> out;
+  for (const PathPlanner& band : scenes_->path_planners[static_cast<size_t>(scene)]) out.push_back(band.band());
+  return out;
+}
+
+Result<Plan> MotionPlanner::stop(const PlanRequest& request) const {
+  const RobotModel& robot = model();
+  if (request.scene < 0 || request.scene >= static_cast<int>(robot.scenes.size())) {
+    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
+  }
+  const auto start_time = std::chrono::steady_clock::now();
+  ToppSolver solver(robot.planner.topp);
+  // The world the braked motion was planned in: the scene as drawn, or shifted by its offset.
+  const PathPlanner& drawn = drawnPathPlanner(*this, request.scene);
+  std::optional<CollisionWorld> shifted;
+  if (request.scene_offset_m != 0.0) shifted.emplace(robot, drawn.scene(), request.pieces, request.scene_offset_m);
+  Result<Trajectory> braked = fastestStop(robot, shifted ? *shifted : drawn.world(request.pieces), request.start,
+                                          request.start_velocity, solver);
+  if (!braked) return braked.error();
+  Plan plan;
+  plan.trajectory = std::make_shared<const Trajectory>(std::move(braked).value());
+  plan.times_ms.topp = msSince(start_time);
+  plan.times_ms.total = plan.times_ms.topp;
+  return plan;
+}
+
+Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
+  const auto start_time = std::chrono::steady_clock::now();
+  const RobotModel& robot = model();
+  if (request.scene < 0 || request.scene >= static_cast<int>(scenes_->path_planners.size())) {
+    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
+  }
+  if (!request.start_velocity.allFinite()) {
+    return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
+  }
+  // Offsets: the scene as drawn, or a band's grids with the worlds of the exact offset.
+  const Scene& scene = robot.scenes[static_cast<size_t>(request.scene)];
+  const double offset = request.scene_offset_m;
+  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, 1e-9)) {
+    return Result<Plan>::failure(PlanStatus::kInvalidInput,
+                                 fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m",
+                                             offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
+  }
+  // The scene as drawn, or the band of grids that holds the offset with the exact offset's worlds.
+  const std::vector<PathPlanner>& bands = scenes_->path_planners[static_cast<size_t>(request.scene)];
+  const bool drawn = offset == 0.0 || scene.obstacles.empty();
+  const auto base = std::find_if(bands.begin(), bands.end(), [&](const PathPlanner& p) {
+    const JointRange& band = p.band();
+    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, 1e-9);
+  });
+  if (base == bands.end()) {
+    return Result<Plan>::failure(
+        PlanStatus::kInvalidInput,
+        fmt::format("this planner was built without the grids of scene {} at offset {:.4f} m", scene.name, offset));
+  }
+  std::optional<PathPlanner> shifted;
+  if (!drawn) shifted = base->atOffset(offset);
+  const PathPlanner& paths = shifted ? *shifted : *base;
+  const bool moving = weightedNorm(request.start_velocity, robot.planner.metric) > 0.0;
+  Result<Plan> chosen = inconsistentPlan();
+  if (!moving) {
+    chosen = timedPath(robot, paths, request.start, request.goal, request.pieces, JointVector::Zero());
+    if (!chosen && chosen.status() == PlanStatus::kStartInCollision) {
+      chosen = escapeThenPlan(robot, paths, request, std::move(chosen));
+    }
+  } else {
+    chosen = planMovingStart(MovingStartInputs{robot, paths, request}, movingStartStrategies());
+  }
+  if (!chosen) return chosen;
+  Plan plan = std::move(chosen).value();
+  plan.times_ms.grid = paths.gridBuildMs(request.pieces);
+  plan.times_ms.total = msSince(start_time);
+  return plan;
+}
+
+}  // namespace cyber::planner

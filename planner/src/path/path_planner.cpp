@@ -1,0 +1,263 @@
+#include "path/path_planner.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "math/weighted_norm.hpp"
+#include "path/astar_search.hpp"
+#include "path/path_clearance.hpp"
+#include "path/strategies/path_strategies.hpp"
+
+namespace cyber::planner {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+std::string poseText(const RobotModel& model, const JointVector& q) {
+  return fmt::format("({:.4f} {}, {:.4f} {})", q[0], unitName(model.joints[0].type), q[1],
+                     unitName(model.joints[1].type));
+}
+
+std::string rangeText(const RobotModel& model) {
+  return fmt::format("{} [{:.4f}, {:.4f}], {} [{:.4f}, {:.4f}]", model.joints[0].name, model.range(0).min,
+                     model.range(0).max, model.joints[1].name, model.range(1).min, model.range(1).max);
+}
+
+std::string obstacleName(const Scene& scene, int index) {
+  // CollisionWorld numbers the field elements, then the fixed obstacles, and skips empty
+  // polygons; the loader never produces them, so indices agree.
+  const int movable = static_cast<int>(scene.obstacles.size());
+  if (index >= 0 && index < movable) return scene.obstacles[static_cast<size_t>(index)].name;
+  if (index >= movable && index - movable < static_cast<int>(scene.fixed.size())) {
+    return scene.fixed[static_cast<size_t>(index - movable)].name;
+  }
+  return "an obstacle";
+}
+
+constexpr int kMaxConnectionRing = 4;  // nodes up to this many steps from a pose may be connected
+constexpr int kLeadInHalvings = 5;
+
+// Free grid nodes near a pose that a straight, clear segment reaches, with the connection cost
+// |segment|_Sigma (1 + w p(node) / 2) >= |segment|_Sigma (what A*'s heuristic needs). Tries the
+// 2 x 2 nodes around the pose first and widens ring by ring.
+std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const CollisionWorld& world, const JointVector& pose,
+                                          double clearance_m) {
+  std::vector<SearchEndpoint> out;
+  const int corner = grid.lowerCorner(pose);
+  const int i0 = grid.firstIndex(corner), j0 = grid.secondIndex(corner);
+  for (int ring = 1; ring <= kMaxConnectionRing && out.empty(); ++ring) {
+    for (int i = i0 - ring + 1; i <= i0 + ring; ++i) {
+      for (int j = j0 - ring + 1; j <= j0 + ring; ++j) {
+        if (i < 0 || j < 0 || i >= grid.firstAxis().count || j >= grid.secondAxis().count) continue;
+        // Only the new ring: the inner nodes were tried already.
+        const bool inner = i > i0 - ring + 1 && i < i0 + ring && j > j0 - ring + 1 && j < j0 + ring;
+        if (ring > 1 && inner) continue;
+        const int cell = grid.cell(i, j);
+        if (grid.blocked(cell)) continue;
+        if (!checkSegment(world, pose, grid.node(cell), clearance_m).clear) continue;
+        const double length = weightedNorm(grid.node(cell) - pose, grid.metric());
+        out.push_back({cell, length * (1.0 + 0.5 * grid.potentialWeight() * grid.potential(cell))});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band)
+    : model_(model), scene_(scene), band_(band) {
+  const int sets = model_.pieceSetCount();
+  auto grids = std::make_shared<Grids>();
+  worlds_.reserve(static_cast<size_t>(sets));
+  grids->grids.reserve(static_cast<size_t>(sets));
+  grids->build_ms.assign(static_cast<size_t>(sets), 0.0);
+  const double centre = 0.5 * (band.min + band.max);
+  for (int set = 0; set < sets; ++set) {
+    const Clock::time_point t0 = Clock::now();
+    const HeldPieces pieces = HeldPieces::fromIndex(set);
+    // A band wider than one offset searches the world swept over it; its checks use one offset.
+    if (band.max > band.min) {
+      grids->grids.push_back(CSpaceGrid::build(CollisionWorld(model_, scene_, pieces, band), model_));
+      worlds_.emplace_back(model_, scene_, pieces, centre);
+    } else {
+      worlds_.emplace_back(model_, scene_, pieces, centre);
+      grids->grids.push_back(CSpaceGrid::build(worlds_.back(), model_));
+    }
+    grids->build_ms[static_cast<size_t>(set)] = millisecondsSince(t0);
+  }
+  grids_ = std::move(grids);
+}
+
+PathPlanner PathPlanner::atOffset(double scene_offset_m) const {
+  PathPlanner out(*this);
+  out.worlds_.clear();
+  for (int set = 0; set < model_.pieceSetCount(); ++set) {
+    out.worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), scene_offset_m);
+  }
+  return out;
+}
+
+Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
+                                                         HeldPieces pieces, const JointVector& start_velocity,
+                                                         PathAlternatives alternatives) const {
+  const std::span<const PathStrategy> all = pathStrategies();
+  return candidates(start, goal, pieces, start_velocity,
+                    alternatives == PathAlternatives::kSearch ? all : all.first(0));
+}
+
+Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
+                                                         HeldPieces pieces, const JointVector& start_velocity,
+                                                         std::span<const PathStrategy> strategies) const {
+  using R = Result<std::vector<PlannedPath>>;
+  if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
+  if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
+  if (!start_velocity.allFinite())
+    return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
+  if (!model_.withinLimits(start)) {
+    return R::failure(PlanStatus::kStartOutOfRange,
+                      "start " + poseText(model_, start) + " is outside the joint limits: " + rangeText(model_));
+  }
+  if (!model_.withinLimits(goal)) {
+    return R::failure(PlanStatus::kGoalOutOfRange,
+                      "goal " + poseText(model_, goal) + " is outside the joint limits: " + rangeText(model_));
+  }
+  const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
+  const CSpaceGrid& grid = this->grid(pieces);
+  const double clearance = model_.clearance_m;
+  const JointVector& metric = model_.planner.metric;
+  const SmoothingSettings& smoothing = model_.planner.smoothing;
+  auto too_close = [&](const char* which, const JointVector& q, const SignedDistance& d) {
+    return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(model_, q), d.value,
+                       obstacleName(scene_, d.obstacle), clearance);
+  };
+  const SignedDistance d_start = world.distance(start);
+  if (d_start.value < clearance) return R::failure(PlanStatus::kStartInCollision, too_close("start", start, d_start));
+  const SignedDistance d_goal = world.distance(goal);
+  if (d_goal.value < clearance) return R::failure(PlanStatus::kGoalInCollision, too_close("goal", goal, d_goal));
+
+  const Clock::time_point t_search = Clock::now();
+  PlannedPath out;
+  out.pieces = pieces;
+  const double start_speed = weightedNorm(start_velocity, metric);
+  if (weightedNorm(goal - start, metric) < kSamePoseWeighted && start_speed == 0.0) {
+    const std::vector<JointVector> single{start};
+    auto trivial = CubicSplinePath::through(single, metric);
+    if (!trivial.ok()) return trivial.error();
+    out.path = std::make_shared<const CubicSplinePath>(std::move(trivial).value());
+    out.waypoints = out.search_waypoints = single;
+    out.min_clearance_m = d_start.value;
+    out.direct = true;
+    out.method = "zero-length";
+    out.search_ms = millisecondsSince(t_search);
+    return std::vector<PlannedPath>{out};
+  }
+
+  // Lead-in: a straight piece along the start velocity, shortened until it is inside the limits
+  // and clear (or dropped).
+  std::vector<JointVector> polyline{start};
+  JointVector from = start;
+  if (start_speed > 0.0) {
+    const JointVector direction = start_velocity / start_speed;
+    double lead = std::min(smoothing.max_lead_in, start_speed * smoothing.lead_in_time_s);
+    for (int attempt = 0; attempt <= kLeadInHalvings && lead > kSamePoseWeighted; ++attempt, lead *= 0.5) {
+      const JointVector candidate = start + lead * direction;
+      if (model_.withinLimits(candidate) && checkSegment(world, start, candidate, clearance).clear) {
+        from = candidate;
+        polyline.push_back(candidate);
+        out.lead_in = true;
+        break;
+      }
+    }
+  }
+
+  std::vector<int> first_cells;
+  double first_cost = 0.0;  // in the search's metric
+  std::vector<SearchEndpoint> source_links, goal_links;
+  if (checkSegment(world, from, goal, clearance).clear) {
+    out.direct = true;
+    polyline.push_back(goal);
+  } else {
+    const std::vector<SearchEndpoint> sources = connectToGrid(grid, world, from, clearance);
+    if (sources.empty()) {
+      return R::failure(PlanStatus::kNoPath, "no free grid node near the start " + poseText(model_, from) +
+                                                 " can be reached in a straight line with the clearance");
+    }
+    const std::vector<SearchEndpoint> goals = connectToGrid(grid, world, goal, clearance);
+    if (goals.empty()) {
+      return R::failure(PlanStatus::kNoPath, "no free grid node near the goal " + poseText(model_, goal) +
+                                                 " can be reached in a straight line with the clearance");
+    }
+    const auto found = astarSearch(grid, sources, goals, goal);
+    if (!found) {
+      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(model_, goal) + " cannot be reached from " +
+                                                 poseText(model_, from) + " without coming closer than the clearance");
+    }
+    out.search_expanded = found->expanded;
+    for (int cell : found->cells) polyline.push_back(grid.node(cell));
+    polyline.push_back(goal);
+    first_cells = found->cells;
+    first_cost = found->cost;
+    source_links = sources;
+    goal_links = goals;
+  }
+  out.search_waypoints = polyline;
+  out.search_ms = millisecondsSince(t_search);
+
+  // Smoothing of the first path, then the strategies' candidates (docs/algorithm.md section 2.6);
+  // the one the reachability pass times fastest comes first.
+  const Clock::time_point t_smooth = Clock::now();
+  CandidateInputs inputs{.model = model_,
+                         .world = world,
+                         .grid = grid,
+                         .drives = model_.driveModel(pieces),
+                         .start = start,
+                         .goal = goal,
+                         .start_velocity = start_velocity,
+                         .b_start = start_speed * start_speed,
+                         .polyline = std::move(polyline),
+                         .fixed_head = out.lead_in ? 2 : 1,
+                         .direct = out.direct,
+                         .first_cells = std::move(first_cells),
+                         .first_cost = first_cost,
+                         .source_links = std::move(source_links),
+                         .goal_links = std::move(goal_links),
+                         .straight_estimate_s = 0.0,
+                         .first = out};
+  CandidateList list;
+  if (smoothPolyline(inputs, inputs.polyline, "", inputs.first, list)) list.putFirst(inputs.first);
+  if (!strategies.empty() && !inputs.direct) {
+    inputs.straight_estimate_s =
+        straightEstimate(inputs.from(), goal, inputs.drives, metric, model_.planner.strategies.timing_grid_points);
+  }
+  for (const PathStrategy& strategy : strategies) strategy.run(inputs, list);
+  const ClearanceCheck& last_check = list.last_check;
+  std::vector<PlannedPath> candidates = list.release();
+  const double smooth_ms = millisecondsSince(t_smooth);
+  for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
+  if (candidates.empty()) {
+    return R::failure(
+        PlanStatus::kClearanceNotMet,
+        fmt::format("no smoothed path keeps the clearance {:.4f} m and the joint limits (last attempt: {}, {:.4f} m at "
+                    "s = {:.4f})",
+                    clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
+                    last_check.at_s));
+  }
+  return candidates;
+}
+
+Result<PlannedPath> PathPlanner::plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
+                                      const JointVector& start_velocity) const {
+  Result<std::vector<PlannedPath>> found = candidates(start, goal, pieces, start_velocity);
+  if (!found) return found.error();
+  return std::move(found.value().front());
+}
+
+}  // namespace cyber::planner
