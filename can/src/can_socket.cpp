@@ -17,10 +17,11 @@ namespace cyber::can {
 
 namespace {
 
-SocketError openError(OpenError kind, int error_number, std::string_view ifname, std::string_view what) {
+// The message names the interface and the cause, with errno's text when a system call failed.
+Error<OpenError> openError(OpenError kind, int error_number, std::string_view ifname, std::string_view what) {
   std::string message = "CAN interface '" + std::string(ifname) + "': " + std::string(what);
   if (error_number != 0) message += " (" + errnoText(error_number) + ")";
-  return SocketError{kind, error_number, std::move(message)};
+  return Error<OpenError>{kind, std::move(message)};
 }
 
 bool validInterfaceName(std::string_view name) {
@@ -33,7 +34,7 @@ bool validInterfaceName(std::string_view name) {
 
 }  // namespace
 
-Result<CanSocket, SocketError> CanSocket::open(std::string_view ifname, const SocketOptions& options) {
+Result<CanSocket, OpenError> CanSocket::open(std::string_view ifname, const SocketOptions& options) {
   if (!validInterfaceName(ifname)) {
     return openError(OpenError::kInvalidName, 0, ifname,
                      "invalid interface name (1 to 15 characters, no '/' or white space)");

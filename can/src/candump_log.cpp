@@ -28,7 +28,9 @@ void appendHex(std::string& out, std::uint32_t value, int digits) {
   }
 }
 
-LogParseError fail(std::string reason) { return LogParseError{std::move(reason)}; }
+Error<LogParseError> fail(std::string reason) {
+  return Error<LogParseError>{LogParseError::kMalformed, std::move(reason)};
+}
 
 // Splits off the next blank-separated token; rest starts after it.
 std::string_view nextToken(std::string_view& rest) {

@@ -4,6 +4,7 @@ namespace cyber::can {
 
 std::string_view toString(CodecError error) {
   switch (error) {
+    case CodecError::kOk: return "ok";
     case CodecError::kDeviceOutOfRange: return "device number out of range (0..63)";
     case CodecError::kPositionOutOfRange:
       return "position does not fit signed 24-bit at 1e-5 (|x| <= 83.88607) or is not finite";

@@ -4,16 +4,16 @@
 
 namespace cyber::cli {
 
-ValueHandler store(std::string* into) {
-  return [into](const std::string& value) {
-    *into = value;
+ValueHandler store(std::string& into) {
+  return [&into](const std::string& value) {
+    into = value;
     return std::string();
   };
 }
 
-ValueHandler store(std::optional<std::string>* into) {
-  return [into](const std::string& value) {
-    *into = value;
+ValueHandler store(std::optional<std::string>& into) {
+  return [&into](const std::string& value) {
+    into = value;
     return std::string();
   };
 }
@@ -35,21 +35,21 @@ const ArgumentParser::Entry* ArgumentParser::find(std::string_view name) const {
   return nullptr;
 }
 
-Parsed<Scan> ArgumentParser::parse(const std::vector<std::string>& args) const {
+Result<Scan, ArgumentStatus> ArgumentParser::parse(const std::vector<std::string>& args) const {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg == "--help" || arg == "-h") return Scan::kHelp;
     if (arg.size() < 2 || arg[0] != '-') {
-      if (!positional_) return ArgumentError{"unexpected argument '" + arg + "' (see --help)"};
-      if (std::string reason = positional_(arg); !reason.empty()) return ArgumentError{std::move(reason)};
+      if (!positional_) return badUsage("unexpected argument '" + arg + "' (see --help)");
+      if (std::string reason = positional_(arg); !reason.empty()) return badUsage(std::move(reason));
       continue;
     }
     const std::size_t equals = arg.find('=');
     const std::string name = arg.substr(0, equals);
     const Entry* entry = find(name);
-    if (entry == nullptr) return ArgumentError{"unknown argument '" + arg + "' (see --help)"};
+    if (entry == nullptr) return badUsage("unknown argument '" + arg + "' (see --help)");
     if (!entry->takes_value) {
-      if (equals != std::string::npos) return ArgumentError{name + " takes no value, got '" + arg + "'"};
+      if (equals != std::string::npos) return badUsage(name + " takes no value, got '" + arg + "'");
       entry->set();
       continue;
     }
@@ -59,8 +59,8 @@ Parsed<Scan> ArgumentParser::parse(const std::vector<std::string>& args) const {
     } else if (i + 1 < args.size()) {
       value = args[++i];
     }
-    if (value.empty()) return ArgumentError{name + " needs a value"};
-    if (std::string reason = entry->take(value); !reason.empty()) return ArgumentError{name + " " + reason};
+    if (value.empty()) return badUsage(name + " needs a value");
+    if (std::string reason = entry->take(value); !reason.empty()) return badUsage(name + " " + reason);
   }
   return Scan::kComplete;
 }

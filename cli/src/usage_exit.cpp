@@ -9,7 +9,7 @@ int printUsage(const ProgramUsage& program) {
   return 0;
 }
 
-int reportBadUsage(const ProgramUsage& program, const ArgumentError& error) {
+int reportBadUsage(const ProgramUsage& program, const Error<ArgumentStatus>& error) {
   std::fprintf(stderr, "%s: %s\n", program.program.c_str(), error.message.c_str());
   if (program.usage_on_error) std::fputs(program.usage.c_str(), stderr);
   return kExitBadUsage;

@@ -51,9 +51,9 @@ void checkReceived(const Frame& frame) {
   const auto payload_error = [](CodecError e) {
     return e == CodecError::kWrongLength || e == CodecError::kRemoteFrame || e == CodecError::kBadMode;
   };
-  if (kind == FrameKind::kSetpoint && !setpoint) CYBER_FUZZ_CHECK(payload_error(setpoint.error()));
-  if (kind == FrameKind::kStatus && !status) CYBER_FUZZ_CHECK(payload_error(status.error()));
-  if (kind == FrameKind::kHeartbeat && !heartbeat) CYBER_FUZZ_CHECK(payload_error(heartbeat.error()));
+  if (kind == FrameKind::kSetpoint && !setpoint) CYBER_FUZZ_CHECK(payload_error(setpoint.status()));
+  if (kind == FrameKind::kStatus && !status) CYBER_FUZZ_CHECK(payload_error(status.status()));
+  if (kind == FrameKind::kHeartbeat && !heartbeat) CYBER_FUZZ_CHECK(payload_error(heartbeat.status()));
 
   if (setpoint) {
     const auto again = encodeSetpoint(setpoint.value().device, setpoint.value().setpoint);

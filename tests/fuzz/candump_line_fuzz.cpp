@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view line(reinterpret_cast<const char*>(data), size);
   const auto parsed = cyber::can::parseLogLine(line);
   if (!parsed) {
-    CYBER_FUZZ_CHECK(!parsed.error().reason.empty());
+    CYBER_FUZZ_CHECK(!parsed.error().message.empty());
     return 0;
   }
   const cyber::can::LogRecord& record = parsed.value();

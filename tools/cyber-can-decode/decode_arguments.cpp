@@ -33,12 +33,12 @@ const char* decodeUsage() {
          "  --joint1-device N   device number of joint 1 (default: the config's; 2 for the arm)\n";
 }
 
-cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>& args) {
+Result<DecodeArguments, cli::ArgumentStatus> parseDecodeArguments(const std::vector<std::string>& args) {
   DecodeArguments out;
   cli::ArgumentParser parser;
   parser.flag("--csv", [&] { out.format = OutputFormat::kCsv; });
   parser.flag("--strict", [&] { out.strict = true; });
-  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--config", cli::store(out.config_path));
   parser.option("--joint0-device", device(&out.devices[0]));
   parser.option("--joint1-device", device(&out.devices[1]));
   parser.positional([&](const std::string& path) -> std::string {

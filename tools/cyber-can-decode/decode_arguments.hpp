@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 #include "decoded_line.hpp"
 
 namespace cyber::tools {
@@ -21,7 +21,7 @@ struct DecodeArguments {
   bool help = false;
 };
 
-cli::Parsed<DecodeArguments> parseDecodeArguments(const std::vector<std::string>& args);
+Result<DecodeArguments, cli::ArgumentStatus> parseDecodeArguments(const std::vector<std::string>& args);
 
 // The joints' devices, names and units: the config's (--config, else the embedded reference
 // config), device numbers overridden by --joint0-device / --joint1-device. Throws on a config

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <iterator>
-#include <optional>
 #include <string_view>
 
 #include "cyber/can/bus_error.hpp"
@@ -128,15 +127,15 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
     row.device = std::to_string(can::unpackFrcId(frame.id).device);
   }
 
-  // A decoder error leaves `problem` set: the frame has one of our ids but a bad payload.
-  std::optional<can::CodecError> problem;
+  // A decoder error sets `problem`: the frame has one of our ids but a bad payload.
+  can::CodecError problem = can::CodecError::kOk;
   switch (kind) {
     case can::FrameKind::kSetpoint: {
       const auto decoded = can::decodeSetpoint(frame);
       if (decoded) {
         fillSetpoint(decoded.value(), joints, row, text);
       } else {
-        problem = decoded.error();
+        problem = decoded.status();
       }
       break;
     }
@@ -145,7 +144,7 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
       if (decoded) {
         fillStatus(decoded.value(), row, text);
       } else {
-        problem = decoded.error();
+        problem = decoded.status();
       }
       break;
     }
@@ -155,7 +154,7 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
       if (decoded) {
         fillHeartbeat(decoded.value(), row, text);
       } else {
-        problem = decoded.error();
+        problem = decoded.status();
       }
       break;
     }
@@ -168,10 +167,10 @@ std::string decodeRecord(const can::LogRecord& record, const JointDevices& joint
     case can::FrameKind::kOther: text += " " + row.id + "#" + row.data; break;
   }
 
-  if (problem) {
+  if (problem != can::CodecError::kOk) {
     ++counts.undecodable;
     row.kind = "undecodable";
-    row.error = std::string(can::toString(*problem));
+    row.error = std::string(can::toString(problem));
     text = row.time_s + " " + row.iface + " undecodable " + std::string(can::toString(kind)) + " " + row.id + "#" +
            row.data + ": " + row.error;
   } else if (kind == can::FrameKind::kOther) {

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   std::istream* input = &std::cin;
   if (path && *path != "-") {
     file.open(*path);
-    if (!file) return cyber::cli::reportBadUsage(program, {"cannot open '" + *path + "'"});
+    if (!file) return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("cannot open '" + *path + "'"));
     input = &file;
   }
 
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     const auto record = cyber::can::parseLogLine(line);
     if (!record) {
       ++counts.malformed;
-      std::cerr << "line " << line_number << ": malformed: " << record.error().reason << '\n';
+      std::cerr << "line " << line_number << ": malformed: " << record.error().message << '\n';
       continue;
     }
     std::cout << cyber::tools::decodeRecord(record.value(), joints, args.format, counts) << '\n';

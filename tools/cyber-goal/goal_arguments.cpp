@@ -22,7 +22,7 @@ std::string goalUsage() {
          "Exit: 0 done, 3 rejected, 4 failed, 5 cancelled, 6 timed out, 2 bad arguments, 1 LCM error.\n";
 }
 
-cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& args) {
+Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<std::string>& args) {
   GoalArguments out;
   bool have_target = false;
   cli::ArgumentParser parser;
@@ -56,14 +56,14 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
     have_target = true;
     return "";
   });
-  parser.option("--scene", cli::store(&out.scene));
+  parser.option("--scene", cli::store(out.scene));
   parser.option("--id", [&](const std::string& value) -> std::string {
     const auto id = cli::parseInteger(value);
     if (!id) return "expects an integer, got '" + value + "'";
     out.request_id = *id;
     return "";
   });
-  parser.option("--lcm-url", cli::store(&out.lcm_url));
+  parser.option("--lcm-url", cli::store(out.lcm_url));
   parser.option("--timeout", [&](const std::string& value) -> std::string {
     const auto seconds = cli::parseNumber(value);
     if (!seconds || !(*seconds > 0.0)) return "expects seconds > 0, got '" + value + "'";
@@ -71,7 +71,7 @@ cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& ar
     return "";
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
-  if (!have_target) return cli::ArgumentError{"--to J0,J1 is required"};
+  if (!have_target) return cli::badUsage("--to J0,J1 is required");
   return out;
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 #include "cyber/config/daemon_settings.hpp"
 
 namespace cyber::tools {
@@ -25,7 +25,7 @@ struct GoalArguments {
 
 // NaN and infinite targets and offsets, unknown, repeated or too many piece names are accepted on
 // purpose: cyber-goal does not read the config, and the daemon's answer is the one to see.
-cli::Parsed<GoalArguments> parseGoalArguments(const std::vector<std::string>& args);
+Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<std::string>& args);
 
 std::string goalUsage();
 

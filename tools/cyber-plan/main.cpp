@@ -77,15 +77,15 @@ int main(int argc, char** argv) {
       if (spacing.reason != tools::FinerCsvReason::kNone)
         std::fprintf(stderr, "%s\n", tools::finerCsvMessage(spacing).c_str());
     }
-    if (!tools::writeTrajectoryCsv(trajectory, robot.joints, args->csv_path, &error, step_s)) return fail(2, error);
+    if (const auto written = tools::writeTrajectoryCsv(trajectory, robot.joints, args->csv_path, step_s); !written)
+      return fail(2, written.error().message);
   }
   if (!args->plot_path.empty()) {
     const std::string title = "cyber-plan " + poseText(robot, args->from) + " -> " + poseText(robot, args->to) +
                               (pieces->empty() ? "" : " +" + robot.pieceSetName(*pieces));
-    if (!plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, *pieces, title), args->plot_path,
-                                   &error)) {
-      return fail(2, error);
-    }
+    const auto drawn =
+        plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, *pieces, title), args->plot_path);
+    if (!drawn) return fail(2, drawn.error().message);
   }
   if (args->json) {
     std::printf("%s\n", tools::planSummaryJson(plan.value()).c_str());

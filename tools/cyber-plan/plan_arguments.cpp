@@ -40,12 +40,12 @@ cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
 
 }  // namespace
 
-cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args) {
+Result<PlanArguments, cli::ArgumentStatus> parsePlanArguments(const std::vector<std::string>& args) {
   PlanArguments out;
   bool have_from = false;
   bool have_to = false;
   cli::ArgumentParser parser;
-  parser.option("--config", cli::store(&out.config_path));
+  parser.option("--config", cli::store(out.config_path));
   parser.option("--from", [&, pair = jointPair(&out.from, "Q0,Q1")](const std::string& v) {
     have_from = true;
     return pair(v);
@@ -55,15 +55,15 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
     return pair(v);
   });
   parser.option("--from-velocity", jointPair(&out.from_velocity, "V0,V1"));
-  parser.option("--pieces", cli::store(&out.pieces));
-  parser.option("--scene", cli::store(&out.scene));
+  parser.option("--pieces", cli::store(out.pieces));
+  parser.option("--scene", cli::store(out.scene));
   parser.option("--scene-offset", [&](const std::string& value) -> std::string {
     const auto offset = cli::parseNumber(value);
     if (!offset) return "expects a finite number of metres, got '" + value + "'";
     out.scene_offset_m = *offset;
     return "";
   });
-  parser.option("--csv", cli::store(&out.csv_path));
+  parser.option("--csv", cli::store(out.csv_path));
   parser.option("--csv-step", [&](const std::string& value) -> std::string {
     const auto step = cli::parseNumber(value);
     if (!step || *step < kMinCsvStepS || *step > kMaxCsvStepS)
@@ -71,11 +71,11 @@ cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& ar
     out.csv_step_s = *step;
     return "";
   });
-  parser.option("--plot", cli::store(&out.plot_path));
+  parser.option("--plot", cli::store(out.plot_path));
   parser.flag("--json", [&] { out.json = true; });
   if (auto decided = parser.parseInto(args, out)) return *decided;
   if (!have_from || !have_to)
-    return cli::ArgumentError{std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)"};
+    return cli::badUsage(std::string("missing ") + (have_from ? "--to" : "--from") + " (see --help)");
   return out;
 }
 

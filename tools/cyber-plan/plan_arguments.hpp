@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 #include "cyber/planner.hpp"
 
 namespace cyber::tools {
@@ -40,7 +40,7 @@ struct PlanArguments {
   bool help = false;
 };
 
-cli::Parsed<PlanArguments> parsePlanArguments(const std::vector<std::string>& args);
+Result<PlanArguments, cli::ArgumentStatus> parsePlanArguments(const std::vector<std::string>& args);
 
 const char* planUsage();
 

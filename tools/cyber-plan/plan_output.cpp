@@ -75,13 +75,12 @@ std::string finerCsvMessage(const CsvSpacing& spacing) {
       spacing.step_s * 1e3, kCsvStepS * 1e3, why);
 }
 
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
-                        const std::string& path, std::string* error, double step_s) {
+Result<Done, PlanOutputStatus> writeTrajectoryCsv(const planner::Trajectory& trajectory,
+                                                  const planner::JointChain& joints, const std::string& path,
+                                                  double step_s) {
+  using Written = Result<Done, PlanOutputStatus>;
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
-  if (!file) {
-    *error = path + ": cannot open for writing";
-    return false;
-  }
+  if (!file) return Written::failure(PlanOutputStatus::kCannotWrite, path + ": cannot open for writing");
   std::fputs("t", file.get());
   for (const planner::ChainJoint& joint : joints) {
     for (const char* column : plot::kCsvColumns)
@@ -95,11 +94,8 @@ bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::Jo
     }
     std::fputs("\n", file.get());
   });
-  if (std::ferror(file.get()) != 0) {
-    *error = path + ": write failed";
-    return false;
-  }
-  return true;
+  if (std::ferror(file.get()) != 0) return Written::failure(PlanOutputStatus::kCannotWrite, path + ": write failed");
+  return Done{};
 }
 
 std::string planSummaryJson(const planner::Plan& plan) {

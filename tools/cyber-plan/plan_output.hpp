@@ -7,14 +7,19 @@
 #include "cyber/planner.hpp"
 #include "cyber/plot/trajectory_csv.hpp"
 #include "cyber/plot/trajectory_plot.hpp"
+#include "cyber/result.hpp"
 #include "plan_arguments.hpp"
 
 namespace cyber::tools {
 
+// Why cyber-plan could not write an output; the message starts with the file's path.
+enum class PlanOutputStatus { kOk, kCannotWrite };
+
 // Header (cyber/plot/trajectory_csv.hpp, with the joints' names) and one row per `step_s` (1 ms
 // unless --csv-step says otherwise), plus the final sample at the exact duration.
-bool writeTrajectoryCsv(const planner::Trajectory& trajectory, const planner::JointChain& joints,
-                        const std::string& path, std::string* error, double step_s = kCsvStepS);
+Result<Done, PlanOutputStatus> writeTrajectoryCsv(const planner::Trajectory& trajectory,
+                                                  const planner::JointChain& joints, const std::string& path,
+                                                  double step_s = kCsvStepS);
 
 // Why a CSV's samples are closer than 1 ms: at 1 ms its columns would not integrate to each other
 // (MotionSettings' tolerances), or a ride along its samples would be more than kCsvRideShare

@@ -69,14 +69,14 @@ int main(int argc, char** argv) {
   const cyber::planner::JointVector initial_q = options.initial_q.value_or(defaultInitialPose(config));
   if (!robot.withinLimits(initial_q)) {
     return cyber::cli::reportBadUsage(
-        program, {"--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
-                  " is outside the joint ranges of " + robot.name});
+        program, cyber::cli::badUsage("--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
+                                      " is outside the joint ranges of " + robot.name));
   }
   for (const std::string& piece : options.pieces) {
     if (robot.pieceIndex(piece) < 0) {
       std::string error;
       (void)robot.piecesNamed(piece, &error);
-      return cyber::cli::reportBadUsage(program, {"--pieces: " + error});
+      return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + error));
     }
   }
   const auto& devices = config.daemon.devices;

@@ -22,6 +22,11 @@ int fail(const std::string& message) {
   return 2;
 }
 
+// 0 when the picture is written, else fail's.
+int exitOf(const cyber::Result<cyber::Done, cyber::plot::PlotStatus>& written) {
+  return written ? 0 : fail(written.error().message);
+}
+
 // The robot at the named poses of its held-piece set, or at a few poses spread over the joint
 // ranges when the description names none.
 int previewConfig(const cyber::config::Config& config, int scene, cyber::planner::HeldPieces pieces,
@@ -50,9 +55,7 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
       named ? "poses of [poses." + set_name + "]" : "no [poses] for these pieces: poses across the ranges";
   const std::string title =
       robot.name + " (" + source + "): " + which + ", scene " + robot.scenes[static_cast<size_t>(scene)].name;
-  std::string error;
-  if (!plot::renderConfigPreviewPng(robot, scene, pieces, poses, title, out, &error)) return fail(error);
-  return 0;
+  return exitOf(plot::renderConfigPreviewPng(robot, scene, pieces, poses, title, out));
 }
 
 }  // namespace
@@ -89,32 +92,25 @@ int main(int argc, char** argv) {
     const std::string title =
         fmt::format("{} at {:.3f} {}, {:.3f} {}{}{}", robot.name, q[0], planner::unitName(robot.joints[0].type), q[1],
                     planner::unitName(robot.joints[1].type), pieces_label, scene_label);
-    if (!plot::renderWorldPng(robot, scene, pieces, q, title, out, &error)) return fail(error);
-    return 0;
+    return exitOf(plot::renderWorldPng(robot, scene, pieces, q, title, out));
   }
 
-  plot::TrajectoryPlotData data;
-  const bool ok = csv.empty()
-                      ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot, data, &error)
-                      : tools::readPlanCsv(csv, robot.joints, data, &error);
-  if (!ok) return fail(error);
+  auto source = csv.empty() ? tools::readTrajectoryFromLog(args.log_path, channel, args.request_id, robot)
+                            : tools::readPlanCsv(csv, robot.joints);
+  if (!source) return fail(source.error().message);
+  plot::TrajectoryPlotData& data = source.value();
   if (data.title.empty()) data.title = "trajectory " + csv;
   data.title += pieces_label;
   if (args.world) {
     const plot::Move move = plot::moveOf(data);
-    if (!plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out, &error))
-      return fail(error);
-    if (!args.animation_path.empty() &&
-        !plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path, &error)) {
-      return fail(error);
-    }
-    return 0;
+    const auto strip = plot::renderFilmstripPng(robot, scene, pieces, move, args.frames, data.title + scene_label, out);
+    if (!strip || args.animation_path.empty()) return exitOf(strip);
+    return exitOf(plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path));
   }
   data.cspace = plot::sampleCSpace(robot, scene, pieces);
   for (int j = 0; j < 2; ++j) {
     data.voltage_limit_volts[j] = robot.drive(j).voltage_limit_volts;
     data.current_limit_amps[j] = robot.drive(j).current_limit_amps;
   }
-  if (!plot::renderTrajectoryPng(data, out, &error)) return fail(error);
-  return 0;
+  return exitOf(plot::renderTrajectoryPng(data, out));
 }

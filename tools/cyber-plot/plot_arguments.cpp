@@ -23,18 +23,18 @@ const char* plotUsage() {
          "  --animation FILE  with --world and a trajectory: also an animated PNG (APNG, 25 frames/s)\n";
 }
 
-cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& args) {
+Result<PlotArguments, cli::ArgumentStatus> parsePlotArguments(const std::vector<std::string>& args) {
   PlotArguments out;
   cli::ArgumentParser parser;
   parser.flag("--world", [&] { out.world = true; });
-  parser.option("--pieces", cli::store(&out.pieces));
-  parser.option("--config", cli::store(&out.config_path));
-  parser.option("--csv", cli::store(&out.csv_path));
-  parser.option("--lcm-log", cli::store(&out.log_path));
-  parser.option("--channel", cli::store(&out.channel));
-  parser.option("--scene", cli::store(&out.scene));
-  parser.option("--out", cli::store(&out.out_path));
-  parser.option("--animation", cli::store(&out.animation_path));
+  parser.option("--pieces", cli::store(out.pieces));
+  parser.option("--config", cli::store(out.config_path));
+  parser.option("--csv", cli::store(out.csv_path));
+  parser.option("--lcm-log", cli::store(out.log_path));
+  parser.option("--channel", cli::store(out.channel));
+  parser.option("--scene", cli::store(out.scene));
+  parser.option("--out", cli::store(out.out_path));
+  parser.option("--animation", cli::store(out.animation_path));
   parser.option("--frames", [&](const std::string& value) -> std::string {
     const auto frames = cli::parseInteger(value);
     if (!frames || *frames < 2 || *frames > 20) return "expects 2 to 20, got '" + value + "'";
@@ -53,16 +53,15 @@ cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& ar
     return "";
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
-  if (out.out_path.empty()) return cli::ArgumentError{"missing --out FILE.png"};
-  if (!out.world && (!out.animation_path.empty() || out.at))
-    return cli::ArgumentError{"--animation and --at need --world"};
+  if (out.out_path.empty()) return cli::badUsage("missing --out FILE.png");
+  if (!out.world && (!out.animation_path.empty() || out.at)) return cli::badUsage("--animation and --at need --world");
   const int sources = (out.csv_path.empty() ? 0 : 1) + (out.log_path.empty() ? 0 : 1) + (out.at ? 1 : 0);
   if (!out.preview() && sources != 1) {
-    return cli::ArgumentError{out.world ? "give exactly one of --at, --csv and --lcm-log"
-                                        : "give exactly one of --csv and --lcm-log"};
+    return cli::badUsage(out.world ? "give exactly one of --at, --csv and --lcm-log"
+                                   : "give exactly one of --csv and --lcm-log");
   }
   if (out.at && !out.animation_path.empty()) {
-    return cli::ArgumentError{"--animation needs a trajectory (--csv or --lcm-log), not --at"};
+    return cli::badUsage("--animation needs a trajectory (--csv or --lcm-log), not --at");
   }
   return out;
 }

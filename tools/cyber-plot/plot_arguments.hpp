@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 #include "cyber/planner.hpp"
 
 namespace cyber::tools {
@@ -32,7 +32,7 @@ struct PlotArguments {
 };
 
 // Also checks the combinations (exactly one source, --animation only with --world, ...).
-cli::Parsed<PlotArguments> parsePlotArguments(const std::vector<std::string>& args);
+Result<PlotArguments, cli::ArgumentStatus> parsePlotArguments(const std::vector<std::string>& args);
 
 const char* plotUsage();
 

@@ -23,15 +23,15 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
+Error<SourceStatus> sourceError(SourceStatus status, const std::string& path, const std::string& what) {
+  return {status, path + ": " + what};
+}
+
 }  // namespace
 
-bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plot::TrajectoryPlotData& data,
-                 std::string* error) {
+Result<plot::TrajectoryPlotData, SourceStatus> readPlanCsv(const std::string& path, const planner::JointChain& joints) {
   std::ifstream in(path);
-  if (!in) {
-    *error = path + ": cannot open";
-    return false;
-  }
+  if (!in) return sourceError(SourceStatus::kCannotOpen, path, "cannot open");
   std::string line;
   std::getline(in, line);
   const std::vector<std::string> header = split(line);
@@ -44,10 +44,11 @@ bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plo
   }
   for (const std::string& name : needed) {
     if (!column.contains(name)) {
-      *error = path + ": no column \"" + name + "\" (expected cyber-plan --csv output for this robot)";
-      return false;
+      return sourceError(SourceStatus::kMalformed, path,
+                         "no column \"" + name + "\" (expected cyber-plan --csv output for this robot)");
     }
   }
+  plot::TrajectoryPlotData data;
   int row = 1;
   while (std::getline(in, line)) {
     ++row;
@@ -63,8 +64,7 @@ bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plo
     double values[1 + 4 * planner::kJointCount];
     for (size_t i = 0; i < needed.size(); ++i) {
       if (!value(needed[i], &values[i])) {
-        *error = path + ":" + std::to_string(row) + ": not a row of finite numbers";
-        return false;
+        return sourceError(SourceStatus::kMalformed, path + ":" + std::to_string(row), "not a row of finite numbers");
       }
     }
     data.time_s.push_back(values[0]);
@@ -76,20 +76,16 @@ bool readPlanCsv(const std::string& path, const planner::JointChain& joints, plo
       data.joints[j].amps.push_back(joint[3]);
     }
   }
-  if (data.time_s.empty()) {
-    *error = path + ": no samples";
-    return false;
-  }
-  return true;
+  if (data.time_s.empty()) return sourceError(SourceStatus::kNoTrajectory, path, "no samples");
+  return data;
 }
 
-bool readTrajectoryFromLog(const std::string& path, const std::string& channel, std::optional<int64_t> request_id,
-                           const planner::RobotModel& robot, plot::TrajectoryPlotData& data, std::string* error) {
+Result<plot::TrajectoryPlotData, SourceStatus> readTrajectoryFromLog(const std::string& path,
+                                                                     const std::string& channel,
+                                                                     std::optional<int64_t> request_id,
+                                                                     const planner::RobotModel& robot) {
   lcm::LogFile log(path, "r");
-  if (!log.good()) {
-    *error = path + ": cannot open the LCM log";
-    return false;
-  }
+  if (!log.good()) return sourceError(SourceStatus::kCannotOpen, path, "cannot open the LCM log");
   std::optional<cyberplanner::arm_trajectory_t> chosen;
   int undecodable = 0;
   for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
@@ -102,11 +98,12 @@ bool readTrajectoryFromLog(const std::string& path, const std::string& channel, 
     if (!request_id || message.request_id == *request_id) chosen = std::move(message);
   }
   if (!chosen) {
-    *error = path + ": no " + (request_id ? "matching " : "") + "message on " + channel +
-             (undecodable > 0 ? " (" + std::to_string(undecodable) + " undecodable)" : "");
-    return false;
+    return sourceError(SourceStatus::kNoTrajectory, path,
+                       std::string("no ") + (request_id ? "matching " : "") + "message on " + channel +
+                           (undecodable > 0 ? " (" + std::to_string(undecodable) + " undecodable)" : ""));
   }
   const cyberplanner::arm_trajectory_t& m = *chosen;
+  plot::TrajectoryPlotData data;
   for (int k = 0; k < m.num_samples; ++k) {
     const size_t i = static_cast<size_t>(k);
     data.time_s.push_back(m.t_s[i]);
@@ -121,8 +118,9 @@ bool readTrajectoryFromLog(const std::string& path, const std::string& channel, 
       data.joints[j].amps.push_back(robot.drive(j).amps(volts, v));
     }
   }
+  if (data.time_s.empty()) return sourceError(SourceStatus::kNoTrajectory, path, "the trajectory has no samples");
   data.title = "ARM_TRAJECTORY request " + std::to_string(m.request_id);
-  return !data.time_s.empty() || (*error = path + ": the trajectory has no samples", false);
+  return data;
 }
 
 }  // namespace cyber::tools

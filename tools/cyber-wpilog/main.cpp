@@ -34,9 +34,9 @@ std::string lastValue(const cyber::wpilog::Log& log, const cyber::wpilog::Entry&
 
 int list(const std::string& path) {
   using namespace cyber::wpilog;
-  const ReadResult result = readFile(path);
-  if (result.error) return fail(result.error->message);
-  const Log& log = *result.log;
+  const auto result = readFile(path);
+  if (!result) return fail(result.error().message);
+  const Log& log = result.value();
   std::vector<size_t> count(log.entries.size(), 0);
   std::vector<const Record*> last(log.entries.size(), nullptr);
   for (const Record& r : log.records) {
@@ -72,14 +72,13 @@ int main(int argc, char** argv) {
   } catch (const config::ConfigError& e) {
     return fail(e.what());
   }
-  wpilog::Writer writer;
-  wpilog::ConvertStats stats;
-  std::string error;
-  if (!wpilog::convertLcmLog(args.lcm_log_path, config.daemon.channels, wpilog::mechanismGeometry(config.robot),
-                             &writer, &stats, &error) ||
-      !writer.writeFile(args.wpilog_path, &error)) {
-    return fail(error);
+  const auto conversion =
+      wpilog::convertLcmLog(args.lcm_log_path, config.daemon.channels, wpilog::mechanismGeometry(config.robot));
+  if (!conversion) return fail(conversion.error().message);
+  if (const auto written = conversion->writer.writeFile(args.wpilog_path); !written) {
+    return fail(written.error().message);
   }
+  const wpilog::ConvertStats& stats = conversion->stats;
   std::printf("cyber-wpilog: %lld of %lld events converted (%lld undecodable, %lld on other channels) -> %s\n",
               static_cast<long long>(stats.converted), static_cast<long long>(stats.events),
               static_cast<long long>(stats.undecodable), static_cast<long long>(stats.other), args.wpilog_path.c_str());

@@ -15,22 +15,22 @@ const char* wpilogUsage() {
          "  --list FILE    print every entry of a .wpilog: name, type, records, last value\n";
 }
 
-cli::Parsed<WpilogArguments> parseWpilogArguments(const std::vector<std::string>& args) {
+Result<WpilogArguments, cli::ArgumentStatus> parseWpilogArguments(const std::vector<std::string>& args) {
   WpilogArguments out;
   std::vector<std::string> files;
   cli::ArgumentParser parser;
-  parser.option("--config", cli::store(&out.config_path));
-  parser.option("--list", cli::store(&out.list_path));
+  parser.option("--config", cli::store(out.config_path));
+  parser.option("--list", cli::store(out.list_path));
   parser.positional([&](const std::string& file) {
     files.push_back(file);
     return std::string();
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
   if (!out.list_path.empty()) {
-    if (!files.empty()) return cli::ArgumentError{"--list takes no other files"};
+    if (!files.empty()) return cli::badUsage("--list takes no other files");
     return out;
   }
-  if (files.size() != 2) return cli::ArgumentError{"expected IN.lcmlog OUT.wpilog (see --help)"};
+  if (files.size() != 2) return cli::badUsage("expected IN.lcmlog OUT.wpilog (see --help)");
   out.lcm_log_path = files[0];
   out.wpilog_path = files[1];
   return out;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 
 namespace cyber::tools {
 
@@ -17,7 +17,7 @@ struct WpilogArguments {
 };
 
 // Either --list FILE alone, or IN.lcmlog OUT.wpilog.
-cli::Parsed<WpilogArguments> parseWpilogArguments(const std::vector<std::string>& args);
+Result<WpilogArguments, cli::ArgumentStatus> parseWpilogArguments(const std::vector<std::string>& args);
 
 const char* wpilogUsage();
 

@@ -24,8 +24,8 @@ struct Error {
 template <class T, class Status>
 class [[nodiscard]] Result {
  public:
-  Result(T value) : storage_(std::in_place_index<0>, std::move(value)) {}          // NOLINT(implicit)
-  Result(Error<Status> error) : storage_(std::in_place_index<1>, std::move(error)) {}  // NOLINT(implicit)
+  Result(T value) : storage_(std::in_place_index<0>, std::move(value)) {}                 // NOLINT(implicit)
+  Result(Error<Status> error) : storage_(std::in_place_index<1>, std::move(error)) {}     // NOLINT(implicit)
   Result(Status status) : storage_(std::in_place_index<1>, Error<Status>{status, {}}) {}  // NOLINT(implicit)
   static Result failure(Status status, std::string message) {
     return Result(Error<Status>{status, std::move(message)});

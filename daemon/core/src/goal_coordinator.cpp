@@ -44,10 +44,11 @@ void GoalCoordinator::publish(std::int64_t request_id, GoalStatus status, std::s
   sink_.publishStatus(update);
 }
 
-const std::string* GoalCoordinator::stopReason() const {
-  if (released()) return &kReleasedStop;
+std::optional<std::string_view> GoalCoordinator::stopReason() const {
+  if (released()) return kReleasedStop;
   const auto* stopped = std::get_if<Stopped>(&stream_);
-  return stopped != nullptr ? &stopped->reason : nullptr;
+  if (stopped == nullptr) return std::nullopt;
+  return stopped->reason;
 }
 
 // Publishes a final status once: a goal that already has one is left alone.
@@ -237,8 +238,8 @@ void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> res
     startPlanning(now);
     return;
   }
-  if (const std::string* reason = stopReason()) {
-    if (!job.attempt.stop) finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + *reason);
+  if (const auto reason = stopReason()) {
+    if (!job.attempt.stop) finish(id, GoalStatus::kCancelled, "motion stopped while planning: " + std::string(*reason));
     return;
   }
   if (mirror_.id != job.base_id || mirror_.epoch != job.base_epoch) {
@@ -323,9 +324,9 @@ void GoalCoordinator::onRejected(Posted posted, const StreamEvent& event, MonoNs
     startPlanning(now);
     return;
   }
-  if (const std::string* reason = stopReason()) {
+  if (const auto reason = stopReason()) {
     if (!posted.attempt.stop)
-      finish(posted.attempt.goal.request_id, GoalStatus::kCancelled, "motion stopped: " + *reason);
+      finish(posted.attempt.goal.request_id, GoalStatus::kCancelled, "motion stopped: " + std::string(*reason));
     return;
   }
   const bool late = event.reject_reason == RejectReason::kLate;

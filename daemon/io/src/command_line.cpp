@@ -14,12 +14,12 @@ std::string usage() {
          "  --help           this text\n";
 }
 
-cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args) {
+Result<CommandLine, cli::ArgumentStatus> parseCommandLine(const std::vector<std::string>& args) {
   CommandLine out;
   cli::ArgumentParser parser;
-  parser.option("--config", cli::store(&out.config_path));
-  parser.option("--can", cli::store(&out.can_interface));
-  parser.option("--lcm-url", cli::store(&out.lcm_url));
+  parser.option("--config", cli::store(out.config_path));
+  parser.option("--can", cli::store(out.can_interface));
+  parser.option("--lcm-url", cli::store(out.lcm_url));
   if (auto decided = parser.parseInto(args, out)) return *decided;
   return out;
 }

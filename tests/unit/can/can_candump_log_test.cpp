@@ -19,7 +19,7 @@ Frame extendedFrame(std::uint32_t id, std::initializer_list<std::uint8_t> bytes)
 
 LogRecord parseOk(std::string_view line) {
   const auto record = parseLogLine(line);
-  EXPECT_TRUE(record.ok()) << line << ": " << (record.ok() ? "" : record.error().reason);
+  EXPECT_TRUE(record.ok()) << line << ": " << (record.ok() ? "" : record.error().message);
   return record.ok() ? record.value() : LogRecord{};
 }
 
@@ -93,7 +93,7 @@ TEST(CandumpLog, RandomRecordsRoundTrip) {
     record.frame = test::randomFrame(rng);
     const std::string line = formatLogLine(record);
     const auto parsed = parseLogLine(line);
-    ASSERT_TRUE(parsed.ok()) << line << ": " << parsed.error().reason;
+    ASSERT_TRUE(parsed.ok()) << line << ": " << parsed.error().message;
     ASSERT_EQ(parsed.value(), record) << line;
     ASSERT_EQ(formatLogLine(parsed.value()), line);
   }
@@ -136,9 +136,9 @@ TEST(CandumpLog, RejectsMalformedLines) {
   };
   for (const char* line : bad) {
     const auto parsed = parseLogLine(line);
-    EXPECT_FALSE(parsed.ok()) << "accepted: " << line;
+    EXPECT_EQ(parsed.status(), LogParseError::kMalformed) << "accepted: " << line;
     if (!parsed.ok()) {
-      EXPECT_FALSE(parsed.error().reason.empty()) << line;
+      EXPECT_FALSE(parsed.error().message.empty()) << line;
     }
   }
 }

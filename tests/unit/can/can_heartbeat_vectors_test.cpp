@@ -65,7 +65,7 @@ HeartbeatLayout layoutOf(const std::string& name, const VectorLine& line) {
 
 Frame parseFrame(const std::string& text, const VectorLine& line) {
   const auto record = parseLogLine("(0.000000) can0 " + text);
-  EXPECT_TRUE(record.ok()) << where(line) << ": " << (record.ok() ? "" : record.error().reason);
+  EXPECT_TRUE(record.ok()) << where(line) << ": " << (record.ok() ? "" : record.error().message);
   return record.ok() ? record.value().frame : Frame{};
 }
 
@@ -107,7 +107,7 @@ TEST(HeartbeatVectors, Decode) {
     if (line.expected.at(0) == "error") {
       ASSERT_EQ(line.expected.size(), 2u) << where(line);
       ASSERT_FALSE(decoded.ok()) << where(line);
-      EXPECT_EQ(decoded.error(), errorNames().at(line.expected[1])) << where(line);
+      EXPECT_EQ(decoded.status(), errorNames().at(line.expected[1])) << where(line);
       continue;
     }
     ASSERT_EQ(line.expected.size(), 8u) << where(line);

@@ -55,7 +55,7 @@ TEST(LinuxFrame, RejectsLengthAboveEight) {
   std::memset(&raw, 0, sizeof raw);
   raw.can_id = 0x123;
   raw.len = 9;
-  EXPECT_EQ(fromLinuxFrame(raw).error(), CodecError::kWrongLength);
+  EXPECT_EQ(fromLinuxFrame(raw).status(), CodecError::kWrongLength);
 }
 
 TEST(LinuxFrame, IgnoresBytesPastLength) {

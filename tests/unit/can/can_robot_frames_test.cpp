@@ -112,18 +112,18 @@ TEST(Heartbeat, RejectsWrongLengthIdAndFlags) {
     for (std::uint8_t dlc = 0; dlc < 8; ++dlc) {
       Frame frame = heartbeatWith(0x12);
       frame.dlc = dlc;
-      EXPECT_EQ(decodeHeartbeat(frame, layout).error(), CodecError::kWrongLength) << int{dlc};
+      EXPECT_EQ(decodeHeartbeat(frame, layout).status(), CodecError::kWrongLength) << int{dlc};
     }
     Frame wrong_id = heartbeatWith(0x12);
     wrong_id.id = 0x01011841u;
-    EXPECT_EQ(decodeHeartbeat(wrong_id, layout).error(), CodecError::kWrongId);
+    EXPECT_EQ(decodeHeartbeat(wrong_id, layout).status(), CodecError::kWrongId);
     Frame standard = heartbeatWith(0x12);
     standard.extended = false;
     standard.id = 0x040;
-    EXPECT_EQ(decodeHeartbeat(standard, layout).error(), CodecError::kNotExtended);
+    EXPECT_EQ(decodeHeartbeat(standard, layout).status(), CodecError::kNotExtended);
     Frame remote = heartbeatWith(0x12);
     remote.remote = true;
-    EXPECT_EQ(decodeHeartbeat(remote, layout).error(), CodecError::kRemoteFrame);
+    EXPECT_EQ(decodeHeartbeat(remote, layout).status(), CodecError::kRemoteFrame);
   }
 }
 
@@ -189,7 +189,7 @@ TEST(BusError, DecodesErrorClasses) {
   frame.id = CAN_ERR_ACK;
   EXPECT_EQ(decodeBusError(frame).value(), (BusError{false, false, 0, false, false, true}));
   Frame data = encodeHeartbeat(Heartbeat{});
-  EXPECT_EQ(decodeBusError(data).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeBusError(data).status(), CodecError::kWrongId);
 }
 
 }  // namespace

@@ -12,14 +12,14 @@ namespace {
 
 Frame mustEncode(std::uint8_t device, const Setpoint& setpoint) {
   const auto frame = encodeSetpoint(device, setpoint);
-  EXPECT_TRUE(frame.ok()) << toString(frame.ok() ? CodecError::kWrongId : frame.error());
+  EXPECT_TRUE(frame.ok()) << toString(frame.status());
   return frame.ok() ? frame.value() : Frame{};
 }
 
 CodecError encodeError(const Setpoint& setpoint, std::uint8_t device = 1) {
   const auto frame = encodeSetpoint(device, setpoint);
   EXPECT_FALSE(frame.ok());
-  return frame.ok() ? CodecError::kWrongId : frame.error();
+  return frame.status();
 }
 
 TEST(SetpointCodec, HandComputedBytes) {
@@ -182,30 +182,30 @@ TEST(SetpointCodec, DecodeRejectsWrongFrames) {
     Frame frame = good;
     frame.dlc = dlc;
     for (std::uint8_t i = dlc; i < 8; ++i) frame.data[i] = 0;
-    ASSERT_EQ(decodeSetpoint(frame).error(), CodecError::kWrongLength) << int{dlc};
+    ASSERT_EQ(decodeSetpoint(frame).status(), CodecError::kWrongLength) << int{dlc};
   }
   Frame standard = good;
   standard.extended = false;
   standard.id = 0x401;
-  EXPECT_EQ(decodeSetpoint(standard).error(), CodecError::kNotExtended);
+  EXPECT_EQ(decodeSetpoint(standard).status(), CodecError::kNotExtended);
   Frame remote = good;
   remote.remote = true;
-  EXPECT_EQ(decodeSetpoint(remote).error(), CodecError::kRemoteFrame);
+  EXPECT_EQ(decodeSetpoint(remote).status(), CodecError::kRemoteFrame);
   Frame error = good;
   error.error = true;
-  EXPECT_EQ(decodeSetpoint(error).error(), CodecError::kErrorFrame);
+  EXPECT_EQ(decodeSetpoint(error).status(), CodecError::kErrorFrame);
   Frame status_id = good;
   status_id.id = teamFrameId(kStatusApiClass, kStatusApiIndex, 1);
-  EXPECT_EQ(decodeSetpoint(status_id).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeSetpoint(status_id).status(), CodecError::kWrongId);
   Frame other_manufacturer = good;
   other_manufacturer.id = packFrcId(FrcId{10, 5, 1, 0, 1});
-  EXPECT_EQ(decodeSetpoint(other_manufacturer).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeSetpoint(other_manufacturer).status(), CodecError::kWrongId);
   Frame other_type = good;
   other_type.id = packFrcId(FrcId{2, 8, 1, 0, 1});
-  EXPECT_EQ(decodeSetpoint(other_type).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeSetpoint(other_type).status(), CodecError::kWrongId);
   Frame other_index = good;
   other_index.id = packFrcId(FrcId{10, 8, 1, 1, 1});
-  EXPECT_EQ(decodeSetpoint(other_index).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeSetpoint(other_index).status(), CodecError::kWrongId);
 }
 
 TEST(SetpointCodec, EveryErrorHasText) {

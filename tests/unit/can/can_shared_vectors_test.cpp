@@ -74,7 +74,7 @@ std::string where(const VectorLine& line) { return "tests/vectors/can_frames.txt
 
 Frame parseFrame(const std::string& text, const VectorLine& line) {
   const auto record = parseLogLine("(0.000000) can0 " + text);
-  EXPECT_TRUE(record.ok()) << where(line) << ": " << (record.ok() ? "" : record.error().reason);
+  EXPECT_TRUE(record.ok()) << where(line) << ": " << (record.ok() ? "" : record.error().message);
   return record.ok() ? record.value().frame : Frame{};
 }
 
@@ -95,9 +95,10 @@ void expectOutcome(const Result<T, CodecError>& result, const VectorLine& line,
     ASSERT_EQ(line.expected.size(), 2u) << where(line);
     ASSERT_TRUE(errorNames().count(line.expected[1])) << where(line) << ": unknown error name";
     ASSERT_FALSE(result.ok()) << where(line) << ": expected " << line.expected[1];
-    EXPECT_EQ(result.error(), errorNames().at(line.expected[1])) << where(line) << ": got " << toString(result.error());
+    EXPECT_EQ(result.status(), errorNames().at(line.expected[1]))
+        << where(line) << ": got " << toString(result.status());
   } else {
-    ASSERT_TRUE(result.ok()) << where(line) << ": " << toString(result.error());
+    ASSERT_TRUE(result.ok()) << where(line) << ": " << toString(result.status());
     check_value(result.value());
   }
 }

@@ -94,8 +94,8 @@ TEST(StatusCodec, SequenceWraps) {
 }
 
 TEST(StatusCodec, EncodeRejectsBadDeviceAndMode) {
-  EXPECT_EQ(encodeStatus(64, Status{}).error(), CodecError::kDeviceOutOfRange);
-  EXPECT_EQ(encodeStatus(1, Status{static_cast<Mode>(6), 0, 0, 0, 0}).error(), CodecError::kBadMode);
+  EXPECT_EQ(encodeStatus(64, Status{}).status(), CodecError::kDeviceOutOfRange);
+  EXPECT_EQ(encodeStatus(1, Status{static_cast<Mode>(6), 0, 0, 0, 0}).status(), CodecError::kBadMode);
 }
 
 TEST(StatusCodec, DecodeRejectsWrongFrames) {
@@ -103,23 +103,23 @@ TEST(StatusCodec, DecodeRejectsWrongFrames) {
   for (std::uint8_t mode = 6; mode != 0; ++mode) {
     Frame frame = good;
     frame.data[0] = mode;
-    ASSERT_EQ(decodeStatus(frame).error(), CodecError::kBadMode) << int{mode};
+    ASSERT_EQ(decodeStatus(frame).status(), CodecError::kBadMode) << int{mode};
   }
   for (std::uint8_t dlc = 0; dlc < 8; ++dlc) {
     Frame frame = good;
     frame.dlc = dlc;
-    ASSERT_EQ(decodeStatus(frame).error(), CodecError::kWrongLength);
+    ASSERT_EQ(decodeStatus(frame).status(), CodecError::kWrongLength);
   }
   Frame setpoint_id = good;
   setpoint_id.id = teamFrameId(kSetpointApiClass, kSetpointApiIndex, 3);
-  EXPECT_EQ(decodeStatus(setpoint_id).error(), CodecError::kWrongId);
+  EXPECT_EQ(decodeStatus(setpoint_id).status(), CodecError::kWrongId);
   Frame standard = good;
   standard.extended = false;
   standard.id = 0x003;
-  EXPECT_EQ(decodeStatus(standard).error(), CodecError::kNotExtended);
+  EXPECT_EQ(decodeStatus(standard).status(), CodecError::kNotExtended);
   Frame remote = good;
   remote.remote = true;
-  EXPECT_EQ(decodeStatus(remote).error(), CodecError::kRemoteFrame);
+  EXPECT_EQ(decodeStatus(remote).status(), CodecError::kRemoteFrame);
 }
 
 }  // namespace

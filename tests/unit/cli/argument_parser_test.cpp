@@ -13,7 +13,7 @@ struct Seen {
   std::vector<std::string> files;
 };
 
-Parsed<Scan> parseInto(Seen& seen, const std::vector<std::string>& args) {
+Result<Scan, ArgumentStatus> parseInto(Seen& seen, const std::vector<std::string>& args) {
   ArgumentParser parser;
   parser.option("--name", [&](const std::string& v) -> std::string {
     if (v == "bad") return "refuses 'bad'";
@@ -31,7 +31,7 @@ Parsed<Scan> parseInto(Seen& seen, const std::vector<std::string>& args) {
 std::string errorOf(const std::vector<std::string>& args) {
   Seen seen;
   const auto scan = parseInto(seen, args);
-  EXPECT_FALSE(scan.ok());
+  EXPECT_EQ(scan.status(), ArgumentStatus::kBadUsage);
   return scan.ok() ? "" : scan.error().message;
 }
 

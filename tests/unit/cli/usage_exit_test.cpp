@@ -15,9 +15,9 @@ struct Line {
   bool help = false;
 };
 
-std::optional<Parsed<Line>> decided(const std::vector<std::string>& args, Line& out) {
+std::optional<Result<Line, ArgumentStatus>> decided(const std::vector<std::string>& args, Line& out) {
   ArgumentParser parser;
-  parser.option("--name", store(&out.name));
+  parser.option("--name", store(out.name));
   return parser.parseInto(args, out);
 }
 
@@ -53,7 +53,7 @@ const ProgramUsage kShowsUsage{"prog", "usage: prog\n", true};
 TEST(ExitBeforeWork, GoesOnWithAWholeLine) {
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  EXPECT_EQ(exitBeforeWork(Parsed<Line>(Line{"x", false}), kShowsUsage), std::nullopt);
+  EXPECT_EQ(exitBeforeWork(Result<Line, ArgumentStatus>(Line{"x", false}), kShowsUsage), std::nullopt);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
@@ -61,7 +61,7 @@ TEST(ExitBeforeWork, GoesOnWithAWholeLine) {
 TEST(ExitBeforeWork, PrintsTheUsageOnStdoutAndExitsZeroOnHelp) {
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  EXPECT_EQ(exitBeforeWork(Parsed<Line>(Line{"", true}), kQuiet), 0);
+  EXPECT_EQ(exitBeforeWork(Result<Line, ArgumentStatus>(Line{"", true}), kQuiet), 0);
   EXPECT_EQ(testing::internal::GetCapturedStdout(), "usage: prog\n");
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 }
@@ -70,7 +70,7 @@ TEST(ExitBeforeWork, NamesTheProgramOnStderrAndExitsTwoOnABadLine) {
   for (const ProgramUsage* program : {&kQuiet, &kShowsUsage}) {
     testing::internal::CaptureStdout();
     testing::internal::CaptureStderr();
-    EXPECT_EQ(exitBeforeWork(Parsed<Line>(ArgumentError{"--x: no"}), *program), kExitBadUsage);
+    EXPECT_EQ(exitBeforeWork(Result<Line, ArgumentStatus>(badUsage("--x: no")), *program), kExitBadUsage);
     EXPECT_EQ(kExitBadUsage, 2);
     EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
     EXPECT_EQ(testing::internal::GetCapturedStderr(),

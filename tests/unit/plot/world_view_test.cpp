@@ -89,9 +89,9 @@ class WorldView : public ::testing::Test {
 
 TEST_F(WorldView, ReefObstacleVerticesAreWhereTheConfigPutsThem) {
   const std::string path = tempPath("world_stow");
-  std::string error;
   const planner::JointVector stow = test::publicPoses("none").front().q;
-  ASSERT_TRUE(renderWorldPng(robot_, 0, {}, stow, "STOW", path, &error)) << error;
+  const auto written = renderWorldPng(robot_, 0, {}, stow, "STOW", path);
+  ASSERT_TRUE(written.ok()) << written.error().message;
   const Image image(path);
   ASSERT_TRUE(image.ok());
   const WorldCanvas c = worldPngCanvas(robot_);
@@ -131,8 +131,8 @@ TEST_F(WorldView, ArmTipAndHeldCoralAreWhereTheGeometryPutsThem) {
   const Point2 coral_mid = centroid(coral.vertices());
   for (const auto& pose : test::publicPoses("coral")) {
     const std::string path = tempPath("world_" + pose.name);
-    std::string error;
-    ASSERT_TRUE(renderWorldPng(robot_, 0, test::referencePieces("coral"), pose.q, pose.name, path, &error)) << error;
+    const auto written = renderWorldPng(robot_, 0, test::referencePieces("coral"), pose.q, pose.name, path);
+    ASSERT_TRUE(written.ok()) << written.error().message;
     const Image image(path);
     ASSERT_TRUE(image.ok());
     const planner::LinkFrame p = planner::linkFrames(robot_.joints, pose.q)[1];
@@ -170,8 +170,8 @@ TEST_F(WorldView, AnimationIsAWellFormedApng) {
     move.q.emplace_back(0.20 + s * (0.58 - 0.20), 1.57 + s * (2.97 - 1.57));  // STOW -> INTAKE
   }
   const std::string path = tempPath("anim");
-  std::string error;
-  ASSERT_TRUE(renderAnimationApng(robot_, 0, {}, move, 10, "STOW -> INTAKE", path, &error)) << error;
+  const auto written = renderAnimationApng(robot_, 0, {}, move, 10, "STOW -> INTAKE", path);
+  ASSERT_TRUE(written.ok()) << written.error().message;
   std::ifstream in(path, std::ios::binary);
   const std::vector<uint8_t> b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   ASSERT_GT(b.size(), 8u);
@@ -201,6 +201,18 @@ TEST_F(WorldView, AnimationIsAWellFormedApng) {
   const Image first(path);
   EXPECT_TRUE(first.ok());
   std::filesystem::remove(path);
+}
+
+TEST_F(WorldView, PicturesThatCannotBeMadeSayWhyWithTheirPath) {
+  const auto empty = renderFilmstripPng(robot_, 0, {}, Move{}, 4, "empty", "/tmp/empty.png");
+  ASSERT_EQ(empty.status(), PlotStatus::kNothingToDraw);
+  EXPECT_EQ(empty.error().message, "/tmp/empty.png: the move has no samples");
+  EXPECT_EQ(renderAnimationApng(robot_, 0, {}, Move{}, 10, "empty", "/tmp/empty.png").status(),
+            PlotStatus::kNothingToDraw);
+  const planner::JointVector stow = test::publicPoses("none").front().q;
+  const auto unwritable = renderWorldPng(robot_, 0, {}, stow, "STOW", "/nonexistent/world.png");
+  ASSERT_EQ(unwritable.status(), PlotStatus::kCannotWrite);
+  EXPECT_EQ(unwritable.error().message.rfind("/nonexistent/world.png: ", 0), 0u) << unwritable.error().message;
 }
 
 TEST_F(WorldView, SmallestClearanceIsTheMinimumOverTheSamples) {

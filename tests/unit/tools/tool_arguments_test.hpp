@@ -8,7 +8,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 
 namespace cyber::tools {
 
@@ -23,7 +23,7 @@ auto parsedOk(Parse parse, const std::vector<std::string>& args) {
 template <class Parse>
 std::string parseError(Parse parse, const std::vector<std::string>& args) {
   const auto parsed = parse(args);
-  EXPECT_FALSE(parsed.ok());
+  EXPECT_EQ(parsed.status(), cli::ArgumentStatus::kBadUsage);
   return parsed.ok() ? "" : parsed.error().message;
 }
 

@@ -59,14 +59,14 @@ class LcmToWpilog : public ::testing::Test {
       path_ = recorded;
     }
     read();
-    std::string error;
     config_ = config::loadEmbeddedDefaultConfig();
-    ASSERT_TRUE(convertLcmLog(path_.string(), config_.daemon.channels, mechanismGeometry(config_.robot), &writer_,
-                              &stats_, &error))
-        << error;
-    ReadResult r = parse(writer_.bytes());
-    ASSERT_FALSE(r.error) << r.error->message;
-    log_ = std::move(*r.log);
+    auto conversion = convertLcmLog(path_.string(), config_.daemon.channels, mechanismGeometry(config_.robot));
+    ASSERT_TRUE(conversion.ok()) << conversion.error().message;
+    writer_ = std::move(conversion.value().writer);
+    stats_ = conversion->stats;
+    auto r = parse(writer_.bytes());
+    ASSERT_TRUE(r.ok()) << r.error().message;
+    log_ = std::move(r).value();
   }
   void TearDown() override {
     if (synthetic_) std::filesystem::remove(path_);
@@ -454,11 +454,10 @@ TEST_F(LcmToWpilog, MechanismFollowsTheMeasuredState) {
 }
 
 TEST(LcmToWpilogErrors, MissingAndForeignLogsAreErrors) {
-  Writer w;
-  std::string error;
   const config::ChannelNames channels;
-  EXPECT_FALSE(convertLcmLog("/nonexistent.lcmlog", channels, {}, &w, nullptr, &error));
-  EXPECT_NE(error.find("cannot open"), std::string::npos);
+  const auto missing = convertLcmLog("/nonexistent.lcmlog", channels, {});
+  ASSERT_EQ(missing.status(), WpilogStatus::kCannotOpen);
+  EXPECT_NE(missing.error().message.find("cannot open"), std::string::npos);
   const auto path = std::filesystem::temp_directory_path() / ("foreign_" + std::to_string(getpid()) + ".lcmlog");
   {
     lcm::LogFile log(path.string(), "w");
@@ -469,8 +468,9 @@ TEST(LcmToWpilogErrors, MissingAndForeignLogsAreErrors) {
     e.data = bytes.data();
     ASSERT_EQ(log.writeEvent(&e), 0);
   }
-  EXPECT_FALSE(convertLcmLog(path.string(), channels, {}, &w, nullptr, &error));
-  EXPECT_NE(error.find("1 undecodable"), std::string::npos) << error;
+  const auto foreign = convertLcmLog(path.string(), channels, {});
+  ASSERT_EQ(foreign.status(), WpilogStatus::kNoMessages);
+  EXPECT_NE(foreign.error().message.find("1 undecodable"), std::string::npos) << foreign.error().message;
   std::filesystem::remove(path);
 }
 

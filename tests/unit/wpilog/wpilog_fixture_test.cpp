@@ -9,9 +9,9 @@ namespace cyber::wpilog {
 namespace {
 
 const Log& fixture() {
-  static const ReadResult result = readFile(CYBER_WPILOG_FIXTURE);
-  EXPECT_FALSE(result.error) << result.error->message;
-  return *result.log;
+  static const auto result = readFile(CYBER_WPILOG_FIXTURE);
+  EXPECT_TRUE(result.ok()) << result.error().message;
+  return result.value();
 }
 
 const Record& last(const Log& log, const char* name) {

@@ -17,9 +17,9 @@ std::vector<uint8_t> tail(const std::vector<uint8_t>& bytes, size_t from) {
 }
 
 Log parsed(const Writer& w) {
-  ReadResult r = parse(w.bytes());
-  EXPECT_FALSE(r.error.has_value()) << r.error->message;
-  return std::move(*r.log);
+  auto r = parse(w.bytes());
+  EXPECT_TRUE(r.ok()) << r.error().message;
+  return r.ok() ? std::move(r).value() : Log{};
 }
 
 TEST(WpilogFormat, HeaderIsTheSpecificationsEmptyHeader) {
@@ -150,11 +150,11 @@ TEST(WpilogFormat, AnIdReusedAfterFinishIsANewEntry) {
   bytes.insert(bytes.end(), restart.begin(), restart.end());
   const std::vector<uint8_t> value{0x00, 0x01, 0x02, 0x04, 'h', 'i'};
   bytes.insert(bytes.end(), value.begin(), value.end());
-  const ReadResult r = parse(bytes);
-  ASSERT_FALSE(r.error) << r.error->message;
-  ASSERT_EQ(r.log->entries.size(), 2u);
-  EXPECT_EQ(r.log->entries[r.log->records.back().entry].name, "/b");
-  EXPECT_EQ(asString(r.log->payload(r.log->records.back())), "hi");
+  const auto r = parse(bytes);
+  ASSERT_TRUE(r.ok()) << r.error().message;
+  ASSERT_EQ(r->entries.size(), 2u);
+  EXPECT_EQ(r->entries[r->records.back().entry].name, "/b");
+  EXPECT_EQ(asString(r->payload(r->records.back())), "hi");
 }
 
 TEST(WpilogFormat, Pose3dArraysRoundTripWithTheirSchemas) {
@@ -180,10 +180,10 @@ TEST(WpilogFormat, Pose3dArraysRoundTripWithTheirSchemas) {
   EXPECT_EQ(back[1].qy, -0.5);
 }
 
-ReadErrorKind errorOf(std::vector<uint8_t> bytes) {
-  const ReadResult r = parse(std::move(bytes));
-  EXPECT_FALSE(r.log.has_value());
-  return r.error ? r.error->kind : ReadErrorKind::kCannotOpen;
+WpilogStatus errorOf(std::vector<uint8_t> bytes) {
+  const auto r = parse(std::move(bytes));
+  EXPECT_FALSE(r.ok());
+  return r.status();
 }
 
 TEST(WpilogFormat, MalformedFilesAreTypedErrors) {
@@ -192,34 +192,34 @@ TEST(WpilogFormat, MalformedFilesAreTypedErrors) {
   w.appendDouble(id, 1, 2.0);
   const std::vector<uint8_t> good = w.bytes();
 
-  EXPECT_EQ(errorOf({}), ReadErrorKind::kTruncated);
+  EXPECT_EQ(errorOf({}), WpilogStatus::kTruncated);
   std::vector<uint8_t> magic = good;
   magic[0] = 'X';
-  EXPECT_EQ(errorOf(magic), ReadErrorKind::kBadMagic);
+  EXPECT_EQ(errorOf(magic), WpilogStatus::kBadMagic);
   std::vector<uint8_t> version = good;
   version[7] = 2;
-  EXPECT_EQ(errorOf(version), ReadErrorKind::kUnsupportedVersion);
+  EXPECT_EQ(errorOf(version), WpilogStatus::kUnsupportedVersion);
   std::vector<uint8_t> extra = good;
   extra[8] = 0xff;  // extra header longer than the file
-  EXPECT_EQ(errorOf(extra), ReadErrorKind::kTruncated);
+  EXPECT_EQ(errorOf(extra), WpilogStatus::kTruncated);
   // Every cut inside a record is a truncation, never a crash or a silently short log.
   for (size_t cut = 13; cut < good.size(); ++cut) {
     if (cut == 12 + 29) continue;  // the boundary between the Start record and the data record
-    EXPECT_EQ(errorOf({good.begin(), good.begin() + static_cast<long>(cut)}), ReadErrorKind::kTruncated) << cut;
+    EXPECT_EQ(errorOf({good.begin(), good.begin() + static_cast<long>(cut)}), WpilogStatus::kTruncated) << cut;
   }
   std::vector<uint8_t> unknown = good;
   unknown[unknown.size() - 11] = 7;  // the data record's entry id
-  EXPECT_EQ(errorOf(unknown), ReadErrorKind::kUnknownEntry);
+  EXPECT_EQ(errorOf(unknown), WpilogStatus::kUnknownEntry);
   std::vector<uint8_t> control = good;
   control[12 + 4] = 9;  // control type of the Start record
-  EXPECT_EQ(errorOf(control), ReadErrorKind::kBadControlRecord);
+  EXPECT_EQ(errorOf(control), WpilogStatus::kBadControlRecord);
   std::vector<uint8_t> name = good;
   name[12 + 9] = 0x7f;  // name length past the record
-  EXPECT_EQ(errorOf(name), ReadErrorKind::kBadControlRecord);
+  EXPECT_EQ(errorOf(name), WpilogStatus::kBadControlRecord);
   Writer finish;
   finish.finish(5, 0);
-  EXPECT_EQ(errorOf(finish.bytes()), ReadErrorKind::kUnknownEntry);
-  EXPECT_EQ(readFile("/nonexistent/x.wpilog").error->kind, ReadErrorKind::kCannotOpen);
+  EXPECT_EQ(errorOf(finish.bytes()), WpilogStatus::kUnknownEntry);
+  EXPECT_EQ(readFile("/nonexistent/x.wpilog").status(), WpilogStatus::kCannotOpen);
 }
 
 TEST(WpilogFormat, DecodersRejectPayloadsOfTheWrongSize) {
@@ -235,6 +235,12 @@ TEST(WpilogFormat, DecodersRejectPayloadsOfTheWrongSize) {
   EXPECT_FALSE(asStringArray(count_too_big));
   std::vector<Pose3d> poses;
   EXPECT_FALSE(unpackPose3dArray(std::vector<uint8_t>(8, 0), &poses));
+}
+
+TEST(WpilogFormat, WriteFileNamesAPathItCannotWrite) {
+  const auto written = Writer().writeFile("/nonexistent/x.wpilog");
+  ASSERT_EQ(written.status(), WpilogStatus::kCannotWrite);
+  EXPECT_EQ(written.error().message, "/nonexistent/x.wpilog: cannot write");
 }
 
 }  // namespace

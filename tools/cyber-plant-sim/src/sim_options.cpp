@@ -70,7 +70,7 @@ cli::ValueHandler gains(std::optional<PdGains>* into) {
 
 std::string_view simUsage() { return kUsage; }
 
-cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args) {
+Result<SimArguments, cli::ArgumentStatus> parseSimArguments(const std::vector<std::string>& args) {
   SimArguments result;
   SimOptions& o = result.options;
   cli::ArgumentParser parser;
@@ -92,11 +92,11 @@ cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args
     return "";
   });
   parser.flag("--no-heartbeat", [&] { o.heartbeat = false; });
-  parser.option("--config", cli::store(&o.config_path));
-  parser.option("--can", cli::store(&o.can_interface));
-  parser.option("--lcm-url", cli::store(&o.lcm_url));
-  parser.option("--log", cli::store(&o.log_path));
-  parser.option("--control", cli::store(&o.control_path));
+  parser.option("--config", cli::store(o.config_path));
+  parser.option("--can", cli::store(o.can_interface));
+  parser.option("--lcm-url", cli::store(o.lcm_url));
+  parser.option("--log", cli::store(o.log_path));
+  parser.option("--control", cli::store(o.control_path));
   parser.option("--initial", [&](const std::string& v) -> std::string {
     const auto q = cli::parseNumberPair(v);
     if (!q) return "must be Q0,Q1 (joint 0, joint 1: m or rad), got '" + v + "'";

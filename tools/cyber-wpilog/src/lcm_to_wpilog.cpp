@@ -316,12 +316,11 @@ MechanismGeometry mechanismGeometry(const planner::RobotModel& robot) {
   return g;
 }
 
-bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels, const MechanismGeometry& geometry,
-                   Writer* writer, ConvertStats* stats, std::string* error) {
+Result<Conversion, WpilogStatus> convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels,
+                                               const MechanismGeometry& geometry) {
   lcm::LogFile log(lcm_path, "r");
   if (!log.good()) {
-    *error = lcm_path + ": cannot open the LCM log";
-    return false;
+    return Result<Conversion, WpilogStatus>::failure(WpilogStatus::kCannotOpen, lcm_path + ": cannot open the LCM log");
   }
   std::vector<Event> events;
   for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
@@ -331,9 +330,8 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
   ConvertStats s;
   s.events = static_cast<int64_t>(events.size());
   s.first_event_unix_us = events.empty() ? 0 : static_cast<uint64_t>(events.front().timestamp_us);
-  *writer =
-      Writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
-  Entries entries(*writer);
+  Writer writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
+  Entries entries(writer);
   Converter converter(entries, geometry);
   using Handler = std::function<bool(const Event&, uint64_t)>;
   auto handler = [&converter]<typename Message>(void (Converter::*method)(uint64_t, const Message&)) -> Handler {
@@ -368,13 +366,13 @@ bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& chan
     }
   }
   converter.finish();
-  if (stats != nullptr) *stats = s;
   if (s.converted == 0) {
-    *error = lcm_path + ": no cyber-planner message in " + std::to_string(s.events) + " events" +
-             (s.undecodable > 0 ? " (" + std::to_string(s.undecodable) + " undecodable)" : "");
-    return false;
+    return Result<Conversion, WpilogStatus>::failure(
+        WpilogStatus::kNoMessages,
+        lcm_path + ": no cyber-planner message in " + std::to_string(s.events) + " events" +
+            (s.undecodable > 0 ? " (" + std::to_string(s.undecodable) + " undecodable)" : ""));
   }
-  return true;
+  return Conversion{std::move(writer), s};
 }
 
 }  // namespace cyber::wpilog

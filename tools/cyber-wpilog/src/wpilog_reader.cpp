@@ -35,9 +35,7 @@ struct Cursor {
   }
 };
 
-ReadResult failure(ReadErrorKind kind, size_t offset, std::string message) {
-  return ReadResult{std::nullopt, ReadError{kind, offset, std::move(message)}};
-}
+Error<WpilogStatus> failure(WpilogStatus status, std::string message) { return {status, std::move(message)}; }
 
 template <typename T, typename Decode>
 std::optional<std::vector<T>> fixedArray(std::span<const uint8_t> payload, size_t width, Decode decode) {
@@ -65,35 +63,32 @@ std::vector<const Record*> Log::recordsOf(size_t index) const {
   return out;
 }
 
-ReadResult parse(std::vector<uint8_t> bytes) {
+Result<Log, WpilogStatus> parse(std::vector<uint8_t> bytes) {
   Log log;
   log.bytes = std::move(bytes);
   Cursor c{log.bytes};
-  if (!c.has(6)) return failure(ReadErrorKind::kTruncated, 0, "shorter than the 12-byte header");
+  if (!c.has(6)) return failure(WpilogStatus::kTruncated, "shorter than the 12-byte header");
   if (std::memcmp(log.bytes.data(), "WPILOG", 6) != 0)
-    return failure(ReadErrorKind::kBadMagic, 0, "does not start with WPILOG");
+    return failure(WpilogStatus::kBadMagic, "does not start with WPILOG");
   c.at = 6;
   uint64_t version = 0;
-  if (!c.le(2, &version)) return failure(ReadErrorKind::kTruncated, c.at, "header ends in the version");
+  if (!c.le(2, &version)) return failure(WpilogStatus::kTruncated, "header ends in the version");
   log.version = static_cast<uint16_t>(version);
   if ((log.version >> 8) != 1) {
-    return failure(ReadErrorKind::kUnsupportedVersion, 6,
-                   "version " + std::to_string(log.version >> 8) + "." + std::to_string(log.version & 0xff) +
-                       " (only 1.x is known)");
+    return failure(WpilogStatus::kUnsupportedVersion, "version " + std::to_string(log.version >> 8) + "." +
+                                                          std::to_string(log.version & 0xff) + " (only 1.x is known)");
   }
-  if (!c.string(&log.extra_header))
-    return failure(ReadErrorKind::kTruncated, c.at, "header ends in the extra header string");
+  if (!c.string(&log.extra_header)) return failure(WpilogStatus::kTruncated, "header ends in the extra header string");
 
   std::map<uint32_t, size_t> open;  // entry id -> index into log.entries
   while (c.at < log.bytes.size()) {
-    const size_t record_at = c.at;
     const uint8_t lengths = log.bytes[c.at++];
     const int id_bytes = (lengths & 0x3) + 1;
     const int size_bytes = ((lengths >> 2) & 0x3) + 1;
     const int time_bytes = ((lengths >> 4) & 0x7) + 1;
     uint64_t id = 0, size = 0, timestamp = 0;
     if (!c.le(id_bytes, &id) || !c.le(size_bytes, &size) || !c.le(time_bytes, &timestamp) || !c.has(size)) {
-      return failure(ReadErrorKind::kTruncated, record_at, "the file ends inside a record");
+      return failure(WpilogStatus::kTruncated, "the file ends inside a record");
     }
     const size_t payload_at = c.at;
     c.at += size;
@@ -101,7 +96,7 @@ ReadResult parse(std::vector<uint8_t> bytes) {
     if (id != 0) {
       const auto it = open.find(static_cast<uint32_t>(id));
       if (it == open.end()) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at,
+        return failure(WpilogStatus::kUnknownEntry,
                        "record for entry " + std::to_string(id) + ", which is not started");
       }
       log.records.push_back(Record{it->second, timestamp, payload_at, size});
@@ -109,7 +104,7 @@ ReadResult parse(std::vector<uint8_t> bytes) {
     }
     Cursor p{payload};
     uint64_t control = 0, target = 0;
-    auto bad = [&](const std::string& what) { return failure(ReadErrorKind::kBadControlRecord, record_at, what); };
+    auto bad = [&](const std::string& what) { return failure(WpilogStatus::kBadControlRecord, what); };
     if (!p.le(1, &control) || !p.le(4, &target)) return bad("control record shorter than 5 bytes");
     const uint32_t target_id = static_cast<uint32_t>(target);
     if (control == 0) {
@@ -125,7 +120,7 @@ ReadResult parse(std::vector<uint8_t> bytes) {
     } else if (control == 1) {
       if (p.at != payload.size()) return bad("malformed Finish record");
       if (open.erase(target_id) == 0) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at,
+        return failure(WpilogStatus::kUnknownEntry,
                        "Finish for entry " + std::to_string(target_id) + ", which is not started");
       }
     } else if (control == 2) {
@@ -133,7 +128,7 @@ ReadResult parse(std::vector<uint8_t> bytes) {
       if (!p.string(&metadata) || p.at != payload.size()) return bad("malformed Set Metadata record");
       const auto it = open.find(target_id);
       if (it == open.end()) {
-        return failure(ReadErrorKind::kUnknownEntry, record_at,
+        return failure(WpilogStatus::kUnknownEntry,
                        "Set Metadata for entry " + std::to_string(target_id) + ", which is not started");
       }
       log.entries[it->second].metadata = std::move(metadata);
@@ -141,15 +136,15 @@ ReadResult parse(std::vector<uint8_t> bytes) {
       return bad("unknown control record type " + std::to_string(control));
     }
   }
-  return ReadResult{std::move(log), std::nullopt};
+  return log;
 }
 
-ReadResult readFile(const std::string& path) {
+Result<Log, WpilogStatus> readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return failure(ReadErrorKind::kCannotOpen, 0, path + ": cannot open");
+  if (!in) return failure(WpilogStatus::kCannotOpen, path + ": cannot open");
   std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  ReadResult result = parse(std::move(bytes));
-  if (result.error) result.error->message = path + ": " + result.error->message;
+  Result<Log, WpilogStatus> result = parse(std::move(bytes));
+  if (!result) return failure(result.status(), path + ": " + result.error().message);
   return result;
 }
 

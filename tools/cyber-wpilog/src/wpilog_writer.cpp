@@ -134,15 +134,12 @@ void Writer::appendStringArray(uint32_t entry, uint64_t timestamp_us, std::span<
   record(entry, timestamp_us, payload);
 }
 
-bool Writer::writeFile(const std::string& path, std::string* error) const {
+Result<Done, WpilogStatus> Writer::writeFile(const std::string& path) const {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(bytes_.data()), static_cast<std::streamsize>(bytes_.size()));
   out.close();
-  if (!out) {
-    if (error != nullptr) *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  if (!out) return Result<Done, WpilogStatus>::failure(WpilogStatus::kCannotWrite, path + ": cannot write");
+  return Done{};
 }
 
 }  // namespace cyber::wpilog

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "drawing.hpp"
+
 namespace cyber::plot {
 namespace {
 
@@ -58,21 +60,19 @@ void putChunk(std::vector<uint8_t>& out, const std::string& type, const std::vec
 
 }  // namespace
 
-bool writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const std::string& path, std::string* error) {
-  auto fail = [&](const std::string& what) {
-    if (error != nullptr) *error = path + ": " + what;
-    return false;
-  };
-  if (frames.empty()) return fail("no frames");
+Result<Done, PlotStatus> writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const std::string& path) {
+  auto fail = [&](PlotStatus status, const std::string& what) { return detail::pictureError(status, path, what); };
+  if (frames.empty()) return fail(PlotStatus::kNothingToDraw, "no frames");
   std::vector<uint8_t> out(kSignature, kSignature + 8);
   uint32_t sequence = 0;
   std::vector<uint8_t> ihdr;
   for (size_t f = 0; f < frames.size(); ++f) {
     std::vector<uint8_t> png;
     if (cairo_surface_write_to_png_stream(frames[f], appendBytes, &png) != CAIRO_STATUS_SUCCESS)
-      return fail("cairo cannot encode a frame");
+      return fail(PlotStatus::kCannotEncode, "cairo cannot encode a frame");
     std::vector<Chunk> chunks;
-    if (!chunksOf(png, &chunks) || chunks.empty() || chunks.front().type != "IHDR") return fail("cairo wrote no PNG");
+    if (!chunksOf(png, &chunks) || chunks.empty() || chunks.front().type != "IHDR")
+      return fail(PlotStatus::kCannotEncode, "cairo wrote no PNG");
     if (f == 0) {
       ihdr = chunks.front().data;
       putChunk(out, "IHDR", ihdr);
@@ -81,7 +81,7 @@ bool writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const 
       putBe32(actl, 0);  // plays: forever
       putChunk(out, "acTL", actl);
     } else if (chunks.front().data != ihdr) {
-      return fail("frames differ in size or format");
+      return fail(PlotStatus::kCannotEncode, "frames differ in size or format");
     }
     std::vector<uint8_t> fctl;
     putBe32(fctl, sequence++);
@@ -111,7 +111,8 @@ bool writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const 
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
   file.write(reinterpret_cast<const char*>(out.data()), static_cast<std::streamsize>(out.size()));
   file.close();
-  return file ? true : fail("cannot write");
+  if (!file) return fail(PlotStatus::kCannotWrite, "cannot write");
+  return Done{};
 }
 
 }  // namespace cyber::plot

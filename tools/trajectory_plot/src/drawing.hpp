@@ -1,12 +1,14 @@
 #pragma once
-// Small cairo helpers shared by the trajectory plot and the world view.
+// Small cairo helpers shared by the trajectory plot, the world view and the APNG writer.
 
 #include <cairo.h>
 
 #include <string>
 #include <vector>
 
+#include "cyber/plot/plot_status.hpp"
 #include "cyber/plot/world_view.hpp"
+#include "cyber/result.hpp"
 
 namespace cyber::plot::detail {
 
@@ -29,14 +31,17 @@ inline void text(cairo_t* cr, double x, double y, const std::string& s, double s
   cairo_show_text(cr, s.c_str());
 }
 
-// Writes a surface to a PNG file; false with `error` set when cairo cannot.
-inline bool writePng(cairo_surface_t* surface, const std::string& path, std::string* error) {
+// The error of a picture at `path`: its message is "PATH: what".
+inline Error<PlotStatus> pictureError(PlotStatus status, const std::string& path, const std::string& what) {
+  return {status, path + ": " + what};
+}
+
+// Writes a surface to a PNG file; kCannotWrite with cairo's reason when cairo cannot.
+inline Result<Done, PlotStatus> writePng(cairo_surface_t* surface, const std::string& path) {
   const cairo_status_t status = cairo_surface_write_to_png(surface, path.c_str());
-  if (status != CAIRO_STATUS_SUCCESS) {
-    if (error != nullptr) *error = path + ": " + cairo_status_to_string(status);
-    return false;
-  }
-  return true;
+  if (status != CAIRO_STATUS_SUCCESS)
+    return pictureError(PlotStatus::kCannotWrite, path, cairo_status_to_string(status));
+  return Done{};
 }
 
 // The C-space map in a box with the poses marked (render_png.cpp draws it as cyber-plan --plot).

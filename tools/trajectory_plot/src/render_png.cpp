@@ -223,7 +223,7 @@ void detail::drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::v
   for (const NamedJointPose& p : poses) marker(cr, ax, p.q[1], p.q[0], p.name);
 }
 
-bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, std::string* error) {
+Result<Done, PlotStatus> renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, kWidth, kHeight);
   cairo_t* cr = cairo_create(surface);
   cairo_set_source_rgb(cr, 0.96, 0.96, 0.97);
@@ -261,9 +261,9 @@ bool renderTrajectoryPng(const TrajectoryPlotData& d, const std::string& path, s
       labels("A", "A"), true);
 
   cairo_destroy(cr);
-  const bool ok = detail::writePng(surface, path, error);
+  auto written = detail::writePng(surface, path);
   cairo_surface_destroy(surface);
-  return ok;
+  return written;
 }
 
 }  // namespace cyber::plot

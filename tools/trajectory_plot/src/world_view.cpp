@@ -220,10 +220,10 @@ std::vector<double> frameTimes(const Move& move, int count, double clearance_tim
   return times;
 }
 
-bool emptyMove(const Move& move, const std::string& path, std::string* error) {
-  if (!move.q.empty() && move.q.size() == move.time_s.size()) return false;
-  if (error != nullptr) *error = path + ": the move has no samples";
-  return true;
+// kNothingToDraw unless the move has samples (as many poses as times).
+Result<Done, PlotStatus> checkMove(const Move& move, const std::string& path) {
+  if (!move.q.empty() && move.q.size() == move.time_s.size()) return Done{};
+  return detail::pictureError(PlotStatus::kNothingToDraw, path, "the move has no samples");
 }
 
 // One frame of a move: scene, tip trace, the robot at t, the smallest clearance when at it.
@@ -327,8 +327,8 @@ WorldCanvas worldPngCanvas(const planner::RobotModel& robot) {
   return fitWorld(robot, 20, 50, kWorldWidth - 40, kWorldHeight - 70);
 }
 
-bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const JointVector& q,
-                    const std::string& title, const std::string& path, std::string* error) {
+Result<Done, PlotStatus> renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                        const JointVector& q, const std::string& title, const std::string& path) {
   Surface s(kWorldWidth, kWorldHeight);
   const WorldCanvas c = worldPngCanvas(robot);
   drawScene(s.cr, c, robot, scene);
@@ -341,12 +341,13 @@ bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPi
   endScene(s.cr, c);
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   text(s.cr, kWorldWidth / 2.0, 32, title, 16, true);
-  return detail::writePng(s.surface, path, error);
+  return detail::writePng(s.surface, path);
 }
 
-bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
-                        int frames, const std::string& title, const std::string& path, std::string* error) {
-  if (emptyMove(move, path, error)) return false;
+Result<Done, PlotStatus> renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                            const Move& move, int frames, const std::string& title,
+                                            const std::string& path) {
+  if (auto checked = checkMove(move, path); !checked) return checked;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const std::vector<double> times = frameTimes(move, std::max(2, frames), smallest.time_s);
   constexpr int kPanelW = 250, kPanelH = 360, kGap = 12;
@@ -364,12 +365,13 @@ bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::He
        fmt::format("smallest clearance {:.3f} m at t = {:.2f} s (red frame); green: path of the chain's tip",
                    smallest.distance_m, smallest.time_s - move.time_s.front()),
        13, true);
-  return detail::writePng(s.surface, path, error);
+  return detail::writePng(s.surface, path);
 }
 
-bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
-                         int fps, const std::string& title, const std::string& path, std::string* error) {
-  if (emptyMove(move, path, error)) return false;
+Result<Done, PlotStatus> renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                             const Move& move, int fps, const std::string& title,
+                                             const std::string& path) {
+  if (auto checked = checkMove(move, path); !checked) return checked;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const double duration = move.time_s.back() - move.time_s.front();
   constexpr int kMaxFrames = 200;
@@ -389,12 +391,12 @@ bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::H
     cairo_surface_flush(s.surface);
     frames.push_back(s.surface);
   }
-  return writeApng(frames, std::max(1, 1000 / std::max(1, fps)), path, error);
+  return writeApng(frames, std::max(1, 1000 / std::max(1, fps)), path);
 }
 
-bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
-                            const std::vector<NamedJointPose>& poses, const std::string& title, const std::string& path,
-                            std::string* error) {
+Result<Done, PlotStatus> renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                                const std::vector<NamedJointPose>& poses, const std::string& title,
+                                                const std::string& path) {
   constexpr int kW = 1500, kH = 940;
   Surface s(kW, kH);
   const WorldCanvas c = fitWorld(robot, 20, 60, 620, kH - 80);
@@ -410,7 +412,7 @@ bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner
   detail::drawCSpaceWithPoses(s.cr, sampleCSpace(robot, scene, pieces), poses, 760, 60, 700, kH - 130);
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   text(s.cr, kW / 2.0, 34, title, 18, true);
-  return detail::writePng(s.surface, path, error);
+  return detail::writePng(s.surface, path);
 }
 
 }  // namespace cyber::plot

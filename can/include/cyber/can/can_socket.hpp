@@ -1,17 +1,17 @@
 #pragma once
-// A non-blocking SocketCAN raw socket bound to one interface. No exceptions: open() returns a
-// typed error, read()/write() an IoResult the caller can count without allocating.
+// A non-blocking SocketCAN raw socket bound to one interface. No exceptions: open() returns an
+// OpenError with a message that names the interface and the cause, read()/write() an IoResult the
+// caller can count without allocating.
 
 #include <cstdint>
 #include <optional>
-#include <string>
 #include <string_view>
 #include <vector>
 
 #include "cyber/can/frame.hpp"
 #include "cyber/can/id_filter.hpp"
 #include "cyber/can/io_result.hpp"
-#include "cyber/can/result.hpp"
+#include "cyber/result.hpp"
 
 namespace cyber::can {
 
@@ -23,21 +23,16 @@ struct SocketOptions {
 };
 
 enum class OpenError {
+  kOk,
   kInvalidName,       // empty, too long, or containing '/' or white space
   kKernelWithoutCan,  // socket(PF_CAN) not supported: no can / can-raw modules
   kNoSuchInterface,   // no network interface of that name
   kSetupFailed,       // a socket option or bind() failed
 };
 
-struct SocketError {
-  OpenError kind = OpenError::kSetupFailed;
-  int error_number = 0;  // errno, 0 when not from a system call
-  std::string message;   // names the interface and the cause
-};
-
 class CanSocket {
  public:
-  static Result<CanSocket, SocketError> open(std::string_view ifname, const SocketOptions& options = {});
+  static Result<CanSocket, OpenError> open(std::string_view ifname, const SocketOptions& options = {});
   // Takes ownership of an already open descriptor (tests use a socketpair in place of CAN).
   static CanSocket adopt(int fd) { return CanSocket(fd); }
 

@@ -15,7 +15,7 @@
 #include <string_view>
 
 #include "cyber/can/frame.hpp"
-#include "cyber/can/result.hpp"
+#include "cyber/result.hpp"
 
 namespace cyber::can {
 
@@ -35,15 +35,14 @@ struct LogRecord {
   bool operator==(const LogRecord&) const = default;
 };
 
-struct LogParseError {
-  std::string reason;
-};
+// A line that is not a frame of this format; the message says what is wrong with it.
+enum class LogParseError { kOk, kMalformed };
 
 // One line without its newline. Expects a well-formed frame (isWellFormed) and microseconds below
 // one million (a larger value carries into the seconds).
 std::string formatLogLine(const LogRecord& record);
 
-// Parses one line (a trailing "\n" or "\r\n" is allowed). The reason names what is wrong.
+// Parses one line (a trailing "\n" or "\r\n" is allowed).
 Result<LogRecord, LogParseError> parseLogLine(std::string_view line);
 
 }  // namespace cyber::can

@@ -1,12 +1,14 @@
 #pragma once
-// Why a frame could not be encoded or decoded. Values, not text, so the daemon can count each
-// kind; toString gives the text for logs.
+// Why a frame could not be encoded or decoded: the status of the codecs' cyber::Result. Values,
+// not text, so the daemon can count each kind (and the streaming path allocates nothing);
+// toString gives the text for logs.
 
 #include <string_view>
 
 namespace cyber::can {
 
 enum class CodecError {
+  kOk,                  // encoded or decoded (the status of a value)
   kDeviceOutOfRange,    // device number > 63
   kPositionOutOfRange,  // does not fit signed 24-bit at 1e-5 (or is not finite)
   kVelocityOutOfRange,  // does not fit int16 at 1e-3 (or is not finite)

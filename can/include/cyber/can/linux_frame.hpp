@@ -5,7 +5,7 @@
 
 #include "cyber/can/codec_error.hpp"
 #include "cyber/can/frame.hpp"
-#include "cyber/can/result.hpp"
+#include "cyber/result.hpp"
 
 namespace cyber::can {
 

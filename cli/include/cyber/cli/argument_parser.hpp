@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 
 namespace cyber::cli {
 
@@ -17,9 +17,9 @@ namespace cyber::cli {
 // parser prefixes the option's name).
 using ValueHandler = std::function<std::string(const std::string& value)>;
 
-// A handler that keeps the value as it is.
-ValueHandler store(std::string* into);
-ValueHandler store(std::optional<std::string>* into);
+// A handler that keeps the value as it is in `into`, which must outlive the parse.
+ValueHandler store(std::string& into);
+ValueHandler store(std::optional<std::string>& into);
 
 enum class Scan { kComplete, kHelp };
 
@@ -30,18 +30,21 @@ class ArgumentParser {
   // Arguments that are not options (including "-"); without a handler they are errors.
   void positional(ValueHandler take);
 
-  [[nodiscard]] Parsed<Scan> parse(const std::vector<std::string>& args) const;
+  [[nodiscard]] Result<Scan, ArgumentStatus> parse(const std::vector<std::string>& args) const;
 
   // The start of every program's parse function: scans `args` (the handlers store into `out`) and
   // returns the result when the scan alone decides it: the error, or `out` with `help` set after
   // --help/-h. Nothing: the program's own checks of the whole line follow.
   template <class Arguments>
-  [[nodiscard]] std::optional<Parsed<Arguments>> parseInto(const std::vector<std::string>& args, Arguments& out) const {
-    const Parsed<Scan> scan = parse(args);
-    if (!scan) return Parsed<Arguments>(scan.error());
+  [[nodiscard]] std::optional<Result<Arguments, ArgumentStatus>> parseInto(const std::vector<std::string>& args,
+                                                                           Arguments& out) const {
+    // Built in place: a temporary Result moved into the optional trips GCC 12's
+    // -Wmaybe-uninitialized on the variant it holds.
+    const Result<Scan, ArgumentStatus> scan = parse(args);
+    if (!scan) return std::optional<Result<Arguments, ArgumentStatus>>(std::in_place, scan.error());
     if (scan.value() != Scan::kHelp) return std::nullopt;
     out.help = true;
-    return Parsed<Arguments>(out);
+    return std::optional<Result<Arguments, ArgumentStatus>>(std::in_place, out);
   }
 
  private:

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 
 namespace cyber::cli {
 
@@ -16,12 +16,13 @@ struct ProgramUsage {
   bool usage_on_error = false;  // also print the usage after the error line
 };
 
-int printUsage(const ProgramUsage& program);                                  // 0
-int reportBadUsage(const ProgramUsage& program, const ArgumentError& error);  // kExitBadUsage
+int printUsage(const ProgramUsage& program);                                          // 0
+int reportBadUsage(const ProgramUsage& program, const Error<ArgumentStatus>& error);  // kExitBadUsage
 
 // The exit status when the command line ends the program before its work; nothing: go on.
 template <class Arguments>
-[[nodiscard]] std::optional<int> exitBeforeWork(const Parsed<Arguments>& parsed, const ProgramUsage& program) {
+[[nodiscard]] std::optional<int> exitBeforeWork(const Result<Arguments, ArgumentStatus>& parsed,
+                                                const ProgramUsage& program) {
   if (!parsed) return reportBadUsage(program, parsed.error());
   if (parsed.value().help) return printUsage(program);
   return std::nullopt;

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -177,7 +178,7 @@ class GoalCoordinator {
   void onExecuting(const StreamEvent& event, MonoNs now);
 
   [[nodiscard]] bool shutDown() const { return std::holds_alternative<ShutDown>(stream_); }
-  [[nodiscard]] const std::string* stopReason() const;  // nullptr unless Stopped or Released
+  [[nodiscard]] std::optional<std::string_view> stopReason() const;  // nothing unless Stopped or Released
   void publish(std::int64_t request_id, GoalStatus status, std::string reason = {});
   void finish(std::int64_t request_id, GoalStatus status, std::string reason);
   void reject(std::int64_t request_id, std::string reason);

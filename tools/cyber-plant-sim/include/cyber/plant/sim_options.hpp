@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 #include "cyber/planner.hpp"
 #include "cyber/plant/fault_schedule.hpp"
 #include "cyber/plant/plant_simulation.hpp"
@@ -39,7 +39,7 @@ struct SimArguments {
   SimOptions options;
 };
 
-cli::Parsed<SimArguments> parseSimArguments(const std::vector<std::string>& args);
+Result<SimArguments, cli::ArgumentStatus> parseSimArguments(const std::vector<std::string>& args);
 
 std::string_view simUsage();
 

@@ -10,6 +10,8 @@
 
 #include "cyber/config/daemon_settings.hpp"
 #include "cyber/planner.hpp"
+#include "cyber/result.hpp"
+#include "cyber/wpilog/wpilog_status.hpp"
 #include "cyber/wpilog/wpilog_writer.hpp"
 
 namespace cyber::wpilog {
@@ -31,10 +33,16 @@ struct ConvertStats {
   uint64_t first_event_unix_us = 0;
 };
 
-// Reads the LCM log at `lcm_path` into a new log in `writer` (its extra header names the source
-// and the Unix time of the first event). False with `error` when
-// the log cannot be opened or holds no message of the channels.
-bool convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels, const MechanismGeometry& geometry,
-                   Writer* writer, ConvertStats* stats, std::string* error);
+// A converted LCM log: the new WPILOG (its extra header names the source and the Unix time of the
+// first event) and what went into it.
+struct Conversion {
+  Writer writer;
+  ConvertStats stats;
+};
+
+// Reads the LCM log at `lcm_path`: kCannotOpen when it cannot be opened, kNoMessages when it holds
+// no message of the channels.
+Result<Conversion, WpilogStatus> convertLcmLog(const std::string& lcm_path, const config::ChannelNames& channels,
+                                               const MechanismGeometry& geometry);
 
 }  // namespace cyber::wpilog

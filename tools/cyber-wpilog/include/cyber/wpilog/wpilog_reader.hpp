@@ -1,6 +1,6 @@
 #pragma once
 // Reads WPILib data log (.wpilog) files, version 1.0: the entries a log starts and the records
-// that refer to them, with typed errors for every malformed input (docs/operations.md,
+// that refer to them, with a status for every malformed input (docs/operations.md,
 // "AdvantageScope").
 
 #include <cstdint>
@@ -9,6 +9,9 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "cyber/result.hpp"
+#include "cyber/wpilog/wpilog_status.hpp"
 
 namespace cyber::wpilog {
 
@@ -41,28 +44,9 @@ struct Log {
   [[nodiscard]] std::vector<const Record*> recordsOf(size_t index) const;
 };
 
-enum class ReadErrorKind {
-  kCannotOpen,
-  kBadMagic,            // not "WPILOG"
-  kUnsupportedVersion,  // major version other than 1
-  kTruncated,           // the file ends inside the header or a record
-  kBadControlRecord,    // unknown control type or malformed Start/Finish/Set Metadata
-  kUnknownEntry,        // a data record or Finish for an id that is not started
-};
-
-struct ReadError {
-  ReadErrorKind kind;
-  size_t offset = 0;  // byte position where reading stopped
-  std::string message;
-};
-
-struct ReadResult {
-  std::optional<Log> log;
-  std::optional<ReadError> error;
-};
-
-ReadResult parse(std::vector<uint8_t> bytes);
-ReadResult readFile(const std::string& path);
+// A malformed file is one of kBadMagic .. kUnknownEntry; readFile's messages start with the path.
+Result<Log, WpilogStatus> parse(std::vector<uint8_t> bytes);
+Result<Log, WpilogStatus> readFile(const std::string& path);
 
 // Payload decoders for the standard types; nullopt when the size does not fit the type.
 std::optional<bool> asBoolean(std::span<const uint8_t> payload);

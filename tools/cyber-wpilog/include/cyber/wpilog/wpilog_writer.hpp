@@ -9,6 +9,9 @@
 #include <string_view>
 #include <vector>
 
+#include "cyber/result.hpp"
+#include "cyber/wpilog/wpilog_status.hpp"
+
 namespace cyber::wpilog {
 
 class Writer {
@@ -35,8 +38,8 @@ class Writer {
   void appendStringArray(uint32_t entry, uint64_t timestamp_us, std::span<const std::string> values);
 
   [[nodiscard]] const std::vector<uint8_t>& bytes() const { return bytes_; }
-  // Writes bytes() to `path`; false with `error` set when the file cannot be written.
-  bool writeFile(const std::string& path, std::string* error) const;
+  // Writes bytes() to `path`; kCannotWrite when the file cannot be written.
+  Result<Done, WpilogStatus> writeFile(const std::string& path) const;
 
  private:
   void record(uint32_t entry, uint64_t timestamp_us, std::span<const uint8_t> payload);

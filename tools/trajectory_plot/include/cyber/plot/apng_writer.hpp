@@ -9,10 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "cyber/plot/plot_status.hpp"
+#include "cyber/result.hpp"
+
 namespace cyber::plot {
 
-// All frames must be image surfaces of one size. Loops forever. False with `error` set when a
-// frame cannot be encoded or the file cannot be written.
-bool writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const std::string& path, std::string* error);
+// All frames must be image surfaces of one size. Loops forever.
+Result<Done, PlotStatus> writeApng(const std::vector<cairo_surface_t*>& frames, int delay_ms, const std::string& path);
 
 }  // namespace cyber::plot

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "cyber/planner.hpp"
+#include "cyber/plot/plot_status.hpp"
+#include "cyber/result.hpp"
 
 namespace cyber::plot {
 
@@ -38,7 +40,7 @@ struct TrajectoryPlotData {
 // a cell is blocked where the robot is closer than the clearance to an obstacle of `scene`.
 CSpaceMap sampleCSpace(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, int cells = 200);
 
-// Writes the PNG; returns false with `error` set when cairo cannot write the file.
-bool renderTrajectoryPng(const TrajectoryPlotData& data, const std::string& path, std::string* error);
+// Writes the PNG; kCannotWrite when cairo cannot write the file.
+Result<Done, PlotStatus> renderTrajectoryPng(const TrajectoryPlotData& data, const std::string& path);
 
 }  // namespace cyber::plot

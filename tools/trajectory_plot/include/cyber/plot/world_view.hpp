@@ -59,23 +59,26 @@ constexpr int kWorldHeight = 900;
 
 // Where renderWorldPng puts the world.
 WorldCanvas worldPngCanvas(const planner::RobotModel& robot);
-// One pose: the robot over its scene, kWorldWidth x kWorldHeight px. False with `error` set when
-// the file cannot be written.
-bool renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
-                    const planner::JointVector& q, const std::string& title, const std::string& path,
-                    std::string* error);
+// One pose: the robot over its scene, kWorldWidth x kWorldHeight px. Like every picture here,
+// kCannotWrite when the file cannot be written.
+Result<Done, PlotStatus> renderWorldPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                        const planner::JointVector& q, const std::string& title,
+                                        const std::string& path);
 // `frames` poses at even times of the move side by side, the one nearest the smallest clearance
-// moved to it and framed in red.
-bool renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
-                        int frames, const std::string& title, const std::string& path, std::string* error);
+// moved to it and framed in red; kNothingToDraw for a move without samples.
+Result<Done, PlotStatus> renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                            const Move& move, int frames, const std::string& title,
+                                            const std::string& path);
 // The move as an animated PNG (APNG) at `fps` (at most 200 frames), each frame with its closest
 // pair in grey and the smallest clearance of the move in red; one frame is at that smallest.
-bool renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces, const Move& move,
-                         int fps, const std::string& title, const std::string& path, std::string* error);
+// kNothingToDraw for a move without samples.
+Result<Done, PlotStatus> renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                             const Move& move, int fps, const std::string& title,
+                                             const std::string& path);
 // A robot description at a glance: the robot at `poses` over the obstacles of `scene`, and the
 // C-space map of `pieces` with the poses marked.
-bool renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
-                            const std::vector<NamedJointPose>& poses, const std::string& title, const std::string& path,
-                            std::string* error);
+Result<Done, PlotStatus> renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
+                                                const std::vector<NamedJointPose>& poses, const std::string& title,
+                                                const std::string& path);
 
 }  // namespace cyber::plot

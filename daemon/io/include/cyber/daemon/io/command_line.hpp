@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "cyber/cli/parsed.hpp"
+#include "cyber/cli/argument_status.hpp"
 
 namespace cyber::daemon::io {
 
@@ -17,7 +17,7 @@ struct CommandLine {
 };
 
 // Parses argv[1..]; an error message names the offending argument.
-cli::Parsed<CommandLine> parseCommandLine(const std::vector<std::string>& args);
+Result<CommandLine, cli::ArgumentStatus> parseCommandLine(const std::vector<std::string>& args);
 
 std::string usage();
 
