@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
   }
 
   auto planning = daemon::makeMotionPlannerService(config.robot);
-  if (!planning) return fail(1, "planner set-up failed: " + planning.error().reason);
+  if (!planning) return fail(1, "planner set-up failed: " + planning.error().message);
   try {
     daemon::io::Daemon daemon(config.robot, options, *planning.value(), &signals);
     return daemon.run();

@@ -89,7 +89,7 @@ void BM_ToppAnalytic(benchmark::State& state) {
   for (auto _ : state) {
     auto result = solver.solve(path, testing::referenceDrives());
     benchmark::DoNotOptimize(result);
-    if (!result) state.SkipWithError(result.error().reason.c_str());
+    if (!result) state.SkipWithError(result.error().message.c_str());
   }
 }
 BENCHMARK(BM_ToppAnalytic)->DenseRange(0, 5)->Unit(benchmark::kMillisecond);

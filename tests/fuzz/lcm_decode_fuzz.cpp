@@ -74,12 +74,12 @@ void checkGoal(const cyberplanner::arm_goal_t& message) {
   const cyber::daemon::GoalRequest goal = cyber::daemon::io::goalFromMessage(message);
   const auto valid = cyber::daemon::validateGoal(goal, robot());
   if (!valid) {
-    CYBER_FUZZ_CHECK(!valid.error().reason.empty());
+    CYBER_FUZZ_CHECK(!valid.error().message.empty());
     // The answer the daemon publishes encodes to exactly the bytes it sends.
     cyber::daemon::StatusUpdate update;
     update.request_id = goal.request_id;
     update.status = cyber::daemon::GoalStatus::kRejected;
-    update.reason = valid.error().reason;
+    update.reason = valid.error().message;
     const auto answer = cyber::daemon::io::statusMessage(update, 0);
     CYBER_FUZZ_CHECK(!hasNul(answer.reason));
     encode(answer);

@@ -25,7 +25,7 @@ const ShippedRobot& shippedRobot(const std::string& name) {
     config::Config config = config::loadConfigFile(sourceFile("config/" + name + ".toml"));
     auto planner = planner::MotionPlanner::create(config.robot);
     if (!planner.ok()) {
-      ADD_FAILURE() << name << ": " << planner.error().reason;
+      ADD_FAILURE() << name << ": " << planner.error().message;
       std::abort();
     }
     slot = std::make_unique<ShippedRobot>(ShippedRobot{std::move(config), std::move(planner).value()});

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
 
   // Only the grids this move needs: the start-up is most of a cyber-plan run.
   auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m});
-  if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().reason);
+  if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().message);
 
   planner::PlanRequest request;
   request.start = args->from;
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   const auto plan = planner.value().plan(request);
   if (!plan) {
     return fail(planner::exitCodeOf(plan.status()),
-                std::string(planner::toString(plan.status())) + ": " + plan.error().reason);
+                std::string(planner::toString(plan.status())) + ": " + plan.error().message);
   }
 
   if (!args->csv_path.empty()) {

@@ -80,7 +80,7 @@ void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict ga
   ++counters_.goals_received;
   auto valid = validateGoal(goal, robot_);
   if (!valid) {
-    reject(goal.request_id, std::string(planner::toString(valid.error().status)) + ": " + valid.error().reason);
+    reject(goal.request_id, std::string(planner::toString(valid.error().status)) + ": " + valid.error().message);
     return;
   }
   if (shutDown()) {
@@ -204,7 +204,7 @@ bool GoalCoordinator::retryFromRest(const Attempt& attempt, const planner::PlanE
   // A rejection is the goal's own fault (bad input, a goal out of range or in collision): no
   // start changes it.
   if (statusOfPlanError(error.status) != GoalStatus::kFailed) return false;
-  const std::string what = std::string(planner::toString(error.status)) + ": " + error.reason;
+  const std::string what = std::string(planner::toString(error.status)) + ": " + error.message;
   if (waiting_) {
     // A newer goal is already waiting: it is planned instead, from the same motion.
     finish(attempt.goal.request_id, GoalStatus::kCancelled, superseded(waiting_->goal.request_id));
@@ -248,7 +248,7 @@ void GoalCoordinator::onPlanned(Planning job, planner::Result<PlannedMotion> res
   }
   if (!result) {
     const planner::PlanError& error = result.error();
-    const std::string what = std::string(planner::toString(error.status)) + ": " + error.reason;
+    const std::string what = std::string(planner::toString(error.status)) + ": " + error.message;
     if (job.attempt.stop) {
       // The running motion is collision-free and ends at rest: finishing it is the safe answer.
       sink_.note(NoteLevel::kWarn, "ARM_CANCEL hold: no admissible stop for request " + std::to_string(id) + " (" +

@@ -33,7 +33,7 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   Result<Trajectory> escape = clearanceEscape(model, world, request.start, solver);
   if (!escape) {
     return Result<Plan>::failure(PlanStatus::kStartInCollision,
-                                 fmt::format("{}; {}", refused.error().reason, escape.error().reason));
+                                 fmt::format("{}; {}", refused.error().message, escape.error().message));
   }
   const Result<Plan> onward =
       timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces, JointVector::Zero());

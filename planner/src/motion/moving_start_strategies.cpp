@@ -205,7 +205,7 @@ Result<Plan> planMovingStart(const MovingStartInputs& in, std::span<const Moving
   if (candidates.empty()) return Result<Plan>::failure(PlanStatus::kInvalidInput, "no moving-start strategy");
   PlanError error = errorOf(0);
   for (size_t i = 1; i < candidates.size(); ++i) {
-    error.reason += "; " + std::string(strategies[i].name) + ": " + errorOf(i).reason;
+    error.message += "; " + std::string(strategies[i].name) + ": " + errorOf(i).message;
   }
   return error;
 }

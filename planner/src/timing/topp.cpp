@@ -275,7 +275,7 @@ ToppSolver::Attempt ToppSolver::solveRows(const Move& move, const topp::AlSettin
   if (!trajectory) {
     return {Attempt::End::kBroken,
             PlanError{PlanStatus::kInternalError,
-                      "the solved profile is not a valid trajectory: " + trajectory.error().reason}};
+                      "the solved profile is not a valid trajectory: " + trajectory.error().message}};
   }
   const bool within = checkLimits(trajectory.value(), settings_, margins_, report);
   return {within ? Attempt::End::kWithinLimits : Attempt::End::kOverLimits, std::move(trajectory)};

@@ -213,7 +213,7 @@ int main() {
   const cyber::config::Config config = cyber::config::loadEmbeddedDefaultConfig();
   auto planning = cyber::daemon::makeMotionPlannerService(config.robot);
   if (!planning) {
-    std::fprintf(stderr, "planner set-up failed: %s\n", planning.error().reason.c_str());
+    std::fprintf(stderr, "planner set-up failed: %s\n", planning.error().message.c_str());
     return 1;
   }
 

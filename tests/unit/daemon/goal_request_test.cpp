@@ -34,14 +34,14 @@ std::string refused(const GoalRequest& goal, PlanStatus status = PlanStatus::kIn
   auto result = validateGoal(goal, cyber::test::referenceModel());
   EXPECT_FALSE(result);
   if (result) return "";
-  EXPECT_EQ(result.error().status, status) << result.error().reason;
-  return result.error().reason;
+  EXPECT_EQ(result.error().status, status) << result.error().message;
+  return result.error().message;
 }
 
 TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
   const auto& robot = cyber::test::referenceModel();
   auto valid = validateGoal(holding({"coral"}), robot);
-  ASSERT_TRUE(valid) << valid.error().reason;
+  ASSERT_TRUE(valid) << valid.error().message;
   EXPECT_EQ(valid.value().request_id, 7);
   EXPECT_EQ(valid.value().q, planner::JointVector(1.0, 1.5));
   EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral"));
@@ -52,10 +52,10 @@ TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
 TEST(ValidateGoal, PiecesComeByTheConfigsNamesInAnyOrder) {
   const auto& robot = cyber::test::referenceModel();
   auto both = validateGoal(holding({"algae", "coral"}), robot);
-  ASSERT_TRUE(both) << both.error().reason;
+  ASSERT_TRUE(both) << both.error().message;
   EXPECT_EQ(both.value().pieces, cyber::test::referencePieces("coral+algae"));
   auto none = validateGoal(holding({}), robot);
-  ASSERT_TRUE(none) << none.error().reason;
+  ASSERT_TRUE(none) << none.error().message;
   EXPECT_EQ(none.value().pieces, cyber::test::referencePieces("none"));
 }
 
@@ -125,7 +125,7 @@ TEST(ValidateGoal, TakesASceneOffsetWithinTheScenesRange) {
   GoalRequest goal = goalAt(0.5, 1.0, "reef");
   goal.scene_offset_m = 0.3;
   auto valid = validateGoal(goal, robot);
-  ASSERT_TRUE(valid) << valid.error().reason;
+  ASSERT_TRUE(valid) << valid.error().message;
   EXPECT_EQ(valid.value().scene_offset_m, 0.3);
   goal.scene_offset_m = 0.0;
   EXPECT_TRUE(validateGoal(goal, robot));
@@ -164,7 +164,7 @@ TEST(ValidateGoal, RefusesSceneNamesThatAreNotShortPrintableWordsWithoutEchoingT
   // 64 printable characters are a name (an unknown one).
   const auto long_name = validateGoal(goalAt(0.5, 1.0, std::string(64, 'a')), robot);
   ASSERT_FALSE(long_name);
-  EXPECT_NE(long_name.error().reason.find("unknown scene"), std::string::npos) << long_name.error().reason;
+  EXPECT_NE(long_name.error().message.find("unknown scene"), std::string::npos) << long_name.error().message;
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ TEST(PublicMoveDurations, EveryMoveIsAtMostItsStoredDuration) {
       EXPECT_FALSE(plan.ok()) << "a move stored as unreachable was planned";
       continue;
     }
-    ASSERT_TRUE(plan.ok()) << plan.error().reason;
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
     EXPECT_LE(plan.value().trajectory->duration_s(), stored->ceiling_s);
     ++checked;
   }

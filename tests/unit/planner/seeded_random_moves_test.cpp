@@ -58,7 +58,7 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
       moving += moving_start ? 1 : 0;
       continue;
     }
-    ASSERT_EQ(plan.status(), PlanStatus::kNoPath) << label << ": " << plan.error().reason;
+    ASSERT_EQ(plan.status(), PlanStatus::kNoPath) << label << ": " << plan.error().message;
     auto& slot = components[{request.pieces.index(), request.scene_offset_m}];
     if (!slot) {
       const CollisionWorld world(model, model.scenes.front(), request.pieces, request.scene_offset_m);

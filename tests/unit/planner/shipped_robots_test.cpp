@@ -49,7 +49,7 @@ TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
       ++refused;
       continue;
     }
-    ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().reason;
+    ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().message;
     EXPECT_LE(plan.value().trajectory->duration_s(), move.ceiling_s) << label;
     expectSound(model, *plan.value().trajectory, *pieces, 0.0, label);
     worst_ratio[move.robot] =
@@ -79,7 +79,7 @@ TEST(ShippedRobots, MovesBetweenPosesOnTheTelescopesLimitsArePlannedInsideTheLim
       request.pieces = *model.piecesNamed(set, nullptr);
       ASSERT_FALSE(model.withinLimits(request.start, -1e-3) && model.withinLimits(request.goal, -1e-3)) << label;
       const auto plan = robot.planner.plan(request);
-      ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().reason;
+      ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().message;
       const Trajectory& trajectory = *plan.value().trajectory;
       EXPECT_EQ(trajectory.sampleMotion(0.0).q, request.start) << label;
       EXPECT_NEAR((trajectory.sampleMotion(trajectory.duration_s()).q - request.goal).norm(), 0.0, 1e-9) << label;
@@ -116,7 +116,7 @@ TEST(ShippedRobots, AShortMoveAfterAShortStopIsSlowedUntilTheJoinedColumnsAgree)
   request.goal = JointVector(1.9864, 3.7218);
   request.start_velocity = JointVector(-2.61471287, 0.391380071);
   const auto plan = robot.planner.plan(request);
-  ASSERT_TRUE(plan.ok()) << plan.error().reason;
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_NE(plan.value().path_method.find("slowed to agree after the stop"), std::string::npos)
       << plan.value().path_method;
   const ColumnConsistency c = columnConsistency(*plan.value().trajectory, 0.001);
@@ -153,7 +153,7 @@ TEST(ShippedRobots, AnOffsetThatMovesTheReefIntoThePlanYieldsAnotherPlanThatKeep
       request.scene_offset_m = offset;
       const std::string label = move.label + " at offset " + std::to_string(offset);
       const auto shifted = planner.value().plan(request);
-      ASSERT_TRUE(shifted.ok()) << label << ": " << shifted.error().reason;
+      ASSERT_TRUE(shifted.ok()) << label << ": " << shifted.error().message;
       expectSound(model, *shifted.value().trajectory, move.pieces, offset, label);
       ++moved_into;
       break;

@@ -56,7 +56,7 @@ TEST(ShortMove, TheRefereesShortMovesAgreeAtOneMillisecond) {
     request.goal = move.to;
     request.pieces = move.pieces;
     const auto plan = planner.value().plan(request);
-    ASSERT_TRUE(plan.ok()) << plan.error().reason;
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
     const Trajectory& trajectory = *plan.value().trajectory;
     expectConsistent(trajectory);
     // Slowed by at most two sample steps.

@@ -11,6 +11,8 @@
 
 #include <Eigen/Core>
 
+#include "cyber/result.hpp"
+
 namespace cyber::planner {
 
 using JointVector = Eigen::Vector2d;  // joint positions (or their rates), chain order
@@ -61,30 +63,12 @@ std::string_view toString(PlanStatus status);
 // 3 no feasible motion (out of range, in collision, no path, solver did not converge).
 int exitCodeOf(PlanStatus status);
 
-struct PlanError {
-  PlanStatus status = PlanStatus::kInternalError;
-  std::string reason;
-};
+/// What went wrong: a PlanStatus and a message for a person (cyber/result.hpp).
+using PlanError = cyber::Error<PlanStatus>;
 
-// A value or a PlanError. Small on purpose: has_value / value / error.
+/// A value or a PlanError: ok() / value() / error() / status() (cyber/result.hpp).
 template <class T>
-class Result {
- public:
-  Result(T value) : storage_(std::move(value)) {}          // NOLINT(implicit)
-  Result(PlanError error) : storage_(std::move(error)) {}  // NOLINT(implicit)
-  static Result failure(PlanStatus status, std::string reason) { return Result(PlanError{status, std::move(reason)}); }
-
-  [[nodiscard]] bool ok() const { return std::holds_alternative<T>(storage_); }
-  explicit operator bool() const { return ok(); }
-  [[nodiscard]] const T& value() const& { return std::get<T>(storage_); }
-  [[nodiscard]] T& value() & { return std::get<T>(storage_); }
-  [[nodiscard]] T&& value() && { return std::get<T>(std::move(storage_)); }
-  [[nodiscard]] const PlanError& error() const { return std::get<PlanError>(storage_); }
-  [[nodiscard]] PlanStatus status() const { return ok() ? PlanStatus::kOk : error().status; }
-
- private:
-  std::variant<T, PlanError> storage_;
-};
+using Result = cyber::Result<T, PlanStatus>;
 
 // A geometric path q(s), s in [0, length]: what the path stage produces and TOPP consumes.
 // s is the weighted arc length of algorithm.md section 2.4 for splines; TOPP only needs q, q', q''.

@@ -43,7 +43,7 @@ TEST(LcmMessages, GoalFieldsSurviveTheWireAndAreCopied) {
   EXPECT_EQ(goal.scene_offset_m, 0.125);
   // ... and validate to the pieces and the offset the planner is asked for.
   const auto valid = validateGoal(goal, cyber::test::referenceModel());
-  ASSERT_TRUE(valid) << valid.error().reason;
+  ASSERT_TRUE(valid) << valid.error().message;
   EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral+algae"));
   EXPECT_EQ(valid.value().scene_offset_m, 0.125);
 }

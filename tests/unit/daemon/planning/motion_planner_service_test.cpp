@@ -28,7 +28,7 @@ const test::PublicMove& publicMove(const std::string& label) {
 TEST(MotionPlannerService, FeedforwardStaysWithinTheVoltageLimitOtherwiseFollowsThePlan) {
   const planner::RobotModel& model = test::referenceModel();
   auto service = makeMotionPlannerService(model);
-  ASSERT_TRUE(service.ok()) << service.error().reason;
+  ASSERT_TRUE(service.ok()) << service.error().message;
   auto planner = planner::MotionPlanner::create(model);
   ASSERT_TRUE(planner.ok());
   const double limits[2] = {model.drive(0).voltage_limit_volts, model.drive(1).voltage_limit_volts};
@@ -41,7 +41,7 @@ TEST(MotionPlannerService, FeedforwardStaysWithinTheVoltageLimitOtherwiseFollows
     request.goal = move.to;
     request.pieces = move.pieces;
     const auto motion = service.value()->plan(request);
-    ASSERT_TRUE(motion.ok()) << motion.error().reason;
+    ASSERT_TRUE(motion.ok()) << motion.error().message;
     planner::PlanRequest plan_request;
     plan_request.start = move.from;
     plan_request.goal = move.to;
@@ -78,7 +78,7 @@ TEST(MotionPlannerService, FeedforwardStaysWithinTheVoltageLimitOtherwiseFollows
 TEST(MotionPlannerService, AStopRequestIsThePlannersFastestStop) {
   const planner::RobotModel& model = test::referenceModel();
   auto service = makeMotionPlannerService(model);
-  ASSERT_TRUE(service.ok()) << service.error().reason;
+  ASSERT_TRUE(service.ok()) << service.error().message;
   auto planner = planner::MotionPlanner::create(model);
   ASSERT_TRUE(planner.ok());
   const test::PublicMove& move = publicMove("coral:L1->NET");
@@ -98,7 +98,7 @@ TEST(MotionPlannerService, AStopRequestIsThePlannersFastestStop) {
   request.goal = moving.q;
   request.pieces = move.pieces;
   const auto stop = service.value()->plan(request);
-  ASSERT_TRUE(stop.ok()) << stop.error().reason;
+  ASSERT_TRUE(stop.ok()) << stop.error().message;
   const SetpointSource& source = *stop.value().trajectory;
   planner::PlanRequest stop_request;
   stop_request.start = moving.q;

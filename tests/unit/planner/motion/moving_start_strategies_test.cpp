@@ -56,7 +56,7 @@ TEST(MovingStartStrategies, LeavingAlongTheVelocityStartsWithThatVelocity) {
   EXPECT_TRUE(std::isfinite(candidate.estimate_s));
   EXPECT_LT(candidate.lower_bound_s, candidate.estimate_s);
   const Result<Plan> plan = candidate.time();
-  ASSERT_TRUE(plan.ok()) << plan.error().reason;
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
   const Trajectory& trajectory = *plan.value().trajectory;
   EXPECT_EQ(plan.value().path_method.rfind("stop", 0), std::string::npos) << plan.value().path_method;
   EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
@@ -71,7 +71,7 @@ TEST(MovingStartStrategies, StoppingFirstComesToRestAlongTheVelocityThenPlans) {
       stopFirst(MovingStartInputs{test::referenceModel(), drawnPathPlanner(referencePlanner(), 0), request});
   ASSERT_FALSE(candidate.refused) << candidate.refused->reason;
   const Result<Plan> plan = candidate.time();
-  ASSERT_TRUE(plan.ok()) << plan.error().reason;
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_EQ(plan.value().path_method.rfind("stop, then", 0), 0u) << plan.value().path_method;
   const Trajectory& trajectory = *plan.value().trajectory;
   EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
@@ -125,7 +125,7 @@ TEST(MovingStartStrategies, TheWholeListIsWhatMotionPlannerPlans) {
     const Result<Plan> planned = referencePlanner().plan(request);
     ASSERT_EQ(listed.ok(), planned.ok()) << i;
     if (!listed) {
-      EXPECT_EQ(listed.error().reason, planned.error().reason);
+      EXPECT_EQ(listed.error().message, planned.error().message);
       continue;
     }
     ++compared;
@@ -248,7 +248,7 @@ TEST_F(MovingStartChooser, ARefusalGivesEveryStrategysReason) {
   const Result<Plan> chosen = chooseFakes();
   ASSERT_FALSE(chosen.ok());
   EXPECT_EQ(chosen.status(), PlanStatus::kInfeasibleStart);
-  EXPECT_EQ(chosen.error().reason, "cannot leave; second: cannot stop");
+  EXPECT_EQ(chosen.error().message, "cannot leave; second: cannot stop");
 }
 
 TEST_F(MovingStartChooser, AnErrorOfTheRequestItselfIsReturnedAtOnce) {
@@ -257,7 +257,7 @@ TEST_F(MovingStartChooser, AnErrorOfTheRequestItselfIsReturnedAtOnce) {
   const Result<Plan> chosen = chooseFakes();
   ASSERT_FALSE(chosen.ok());
   EXPECT_EQ(chosen.status(), PlanStatus::kGoalInCollision);
-  EXPECT_EQ(chosen.error().reason, "goal too close");
+  EXPECT_EQ(chosen.error().message, "goal too close");
   EXPECT_EQ(fakes[1].prepared, 0);
 }
 

@@ -64,7 +64,7 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
     const double stop_first_s = stop.value().duration_s() + rest_plan.value().trajectory->duration_s();
 
     const auto plan = planner.value().plan(request);
-    ASSERT_TRUE(plan.ok()) << plan.error().reason;
+    ASSERT_TRUE(plan.ok()) << plan.error().message;
     const Trajectory& trajectory = *plan.value().trajectory;
     ++compared;
     stopped_first += plan.value().path_method.rfind("stop", 0) == 0 ? 1 : 0;
@@ -102,7 +102,7 @@ Result<Plan> planMovingStart(const JointVector& start, const JointVector& goal, 
 TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
   const auto plan =
       planMovingStart(JointVector(0.5441, 4.4945), JointVector(0.4446, 5.9159), JointVector(-0.243, -1.828));
-  ASSERT_TRUE(plan.ok()) << plan.error().reason;
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
   // Looping round along the velocity took 0.255 s; braking first takes 0.186 s.
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.19);
   const ColumnConsistency c = columnConsistency(*plan.value().trajectory, kStepS);
@@ -116,7 +116,7 @@ TEST(MovingStart, AShortMoveAfterTheStopIsSlowedRatherThanLosingToTheSlowerCandi
   const auto plan = planMovingStart(JointVector(0.79572848625775672, 2.9642388715108963),
                                     JointVector(0.80615715896675055, 2.7645670388188806),
                                     JointVector(0.7081390749417088, -4.7212700707904016));
-  ASSERT_TRUE(plan.ok()) << plan.error().reason;
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_EQ(plan.value().path_method.rfind("stop", 0), 0u) << plan.value().path_method;
   // Stopping first took 0.0675 s before the short move was slowed (by at most two steps).
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.0675 + 2.5 * kStepS);
@@ -140,9 +140,9 @@ TEST(MovingStart, ARefusalSaysWhyStoppingFirstFailedToo) {
   const auto plan = planner.value().plan(request);
   ASSERT_FALSE(plan.ok());
   EXPECT_NE(
-      plan.error().reason.find("; stopping first: braking along the start velocity comes closer than the clearance"),
+      plan.error().message.find("; stopping first: braking along the start velocity comes closer than the clearance"),
       std::string::npos)
-      << plan.error().reason;
+      << plan.error().message;
 }
 
 // The reef scene without game pieces, for fastestStop on its own.
@@ -156,7 +156,7 @@ TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
   ReefWithoutPieces reef;
   const JointVector start(1.0, 3.0), velocity(0.8, -3.0);
   const auto stop = fastestStop(reef.model, reef.world, start, velocity, reef.solver);
-  ASSERT_TRUE(stop.ok()) << stop.error().reason;
+  ASSERT_TRUE(stop.ok()) << stop.error().message;
   const Trajectory& t = stop.value();
   EXPECT_LT((t.sample(0.0).qdot - velocity).norm(), 1e-9);
   EXPECT_LT(t.sample(t.duration_s()).qdot.norm(), 1e-9);

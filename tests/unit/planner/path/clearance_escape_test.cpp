@@ -48,7 +48,7 @@ TEST(ClearanceEscape, PlansFromInsideTheClearanceLeaveWithoutComingCloser) {
     const Result<Plan> plan = planner.value().plan(request);
     if (!plan) {
       // Only a start with no straight way out may be refused, and then as a start in collision.
-      EXPECT_EQ(plan.status(), PlanStatus::kStartInCollision) << plan.error().reason;
+      EXPECT_EQ(plan.status(), PlanStatus::kStartInCollision) << plan.error().message;
       continue;
     }
     ++planned;
@@ -108,7 +108,7 @@ TEST(ClearanceEscape, AStartTouchingAnObstacleIsStillRefused) {
   const Result<Plan> plan = planner.value().plan(request);
   ASSERT_FALSE(plan.ok());
   EXPECT_EQ(plan.status(), PlanStatus::kStartInCollision);
-  EXPECT_NE(plan.error().reason.find("touches an obstacle"), std::string::npos) << plan.error().reason;
+  EXPECT_NE(plan.error().message.find("touches an obstacle"), std::string::npos) << plan.error().message;
 }
 
 }  // namespace

@@ -82,7 +82,7 @@ void checkEveryPublicMove(const PathPlanner& planner) {
     const auto result = planner.plan(move.from, move.to, move.pieces);
     if (!result.ok()) {
       // Only a goal in another component of the free space may be refused.
-      ASSERT_EQ(result.status(), PlanStatus::kNoPath) << move.label << ": " << result.error().reason;
+      ASSERT_EQ(result.status(), PlanStatus::kNoPath) << move.label << ": " << result.error().message;
       EXPECT_NE(components(move.pieces).of(move.from), components(move.pieces).of(move.to)) << move.label;
       ++disconnected;
       continue;
@@ -159,7 +159,7 @@ TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
   const JointVector start(0.2137, 1.5731), goal(0.7813, 6.0871);
   ASSERT_EQ(components(test::referencePieces("coral")).of(start), components(test::referencePieces("coral")).of(goal));
   const auto result = planner().plan(start, goal, test::referencePieces("coral"));
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_EQ(result.value().path->at(0.0).q, start);
   EXPECT_NEAR((result.value().path->at(result.value().path->length()).q - goal).norm(), 0.0, 1e-12);
 }
@@ -167,7 +167,7 @@ TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
 TEST(PathPlanner, ZeroLengthMoveIsATrivialPath) {
   const JointVector q(0.2, 1.57);
   const auto result = planner().plan(q, q, HeldPieces{});
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const GeometricPath& path = *result.value().path;
   EXPECT_EQ(path.length(), 0.0);
   const PathPoint p = path.at(0.0);
@@ -180,7 +180,7 @@ TEST(PathPlanner, VeryShortMovesAreValid) {
   for (double step : {1e-8, 1e-6, 1e-4, 1e-2}) {
     const JointVector start(0.58, 2.97), goal = start + JointVector(step, -step);
     const auto result = planner().plan(start, goal, test::referencePieces("coral+algae"));
-    ASSERT_TRUE(result.ok()) << step << ": " << result.error().reason;
+    ASSERT_TRUE(result.ok()) << step << ": " << result.error().message;
     const GeometricPath& path = *result.value().path;
     EXPECT_GT(path.length(), 0.0);
     EXPECT_NEAR((path.at(path.length()).q - goal).norm(), 0.0, 1e-12);
@@ -205,7 +205,7 @@ TEST(PathPlanner, BadInputsGiveTypedErrors) {
   ASSERT_LT(planner().world(none).distance(in_floor).value, model().clearance_m);
   const auto start_hit = planner().plan(in_floor, ok_goal, none);
   EXPECT_EQ(start_hit.status(), PlanStatus::kStartInCollision);
-  EXPECT_FALSE(start_hit.error().reason.empty());
+  EXPECT_FALSE(start_hit.error().message.empty());
   EXPECT_EQ(planner().plan(ok_start, in_floor, none).status(), PlanStatus::kGoalInCollision);
   // Held pieces count: a pose that is free for the bare arm but not with algae.
   std::mt19937 rng(8);
@@ -241,19 +241,19 @@ TEST(PathPlanner, CagedGoalIsNoPath) {
   ASSERT_GE(cage.world(HeldPieces{}).distance(inside).value, caged.clearance_m);
   ASSERT_GE(cage.world(HeldPieces{}).distance(outside).value, caged.clearance_m);
   const auto in = cage.plan(outside, inside, HeldPieces{});
-  EXPECT_EQ(in.status(), PlanStatus::kNoPath) << (in.ok() ? "found a path" : in.error().reason);
+  EXPECT_EQ(in.status(), PlanStatus::kNoPath) << (in.ok() ? "found a path" : in.error().message);
   const auto out = cage.plan(inside, outside, HeldPieces{});
-  EXPECT_EQ(out.status(), PlanStatus::kNoPath) << (out.ok() ? "found a path" : out.error().reason);
+  EXPECT_EQ(out.status(), PlanStatus::kNoPath) << (out.ok() ? "found a path" : out.error().message);
   // The rest of the scene is open: other moves still work.
   const auto open = cage.plan(outside, JointVector(0.6, 3.0), HeldPieces{});
-  EXPECT_TRUE(open.ok()) << open.error().reason;
+  EXPECT_TRUE(open.ok()) << open.error().message;
 }
 
 TEST(PathPlanner, StartVelocitySetsTheStartDirectionWithUnitSpeed) {
   const JointVector start(1.0, 1.57), goal(0.2, 1.57);
   const JointVector v0(0.8, 2.0);  // moving up and rotating while the goal is below
   const auto result = planner().plan(start, goal, HeldPieces{}, v0);
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const PathPoint p = result.value().path->at(0.0);
   const JointVector& metric = model().planner.metric;
   const double speed = std::sqrt(metric[0] * v0[0] * v0[0] + metric[1] * v0[1] * v0[1]);
@@ -268,7 +268,7 @@ TEST(PathPlanner, StartVelocityIntoALimitShortensTheLeadIn) {
   // Moving down fast near the bottom of the rail: the lead-in is halved until it fits.
   const JointVector start(0.2, 1.57), goal(1.2, 1.57), v0(-5.0, 0.0);
   const auto result = planner().plan(start, goal, HeldPieces{}, v0);
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_TRUE(result.value().lead_in);
   const JointVector lead = result.value().waypoints[1];
   EXPECT_LT(lead[0], start[0]);
@@ -282,7 +282,7 @@ TEST(PathPlanner, StartVelocityIntoALimitShortensTheLeadIn) {
 TEST(PathPlanner, MovingStartWithTheSameGoalGoesOutAndBack) {
   const JointVector q(1.0, 1.57), v0(0.5, 1.0);
   const auto result = planner().plan(q, q, HeldPieces{}, v0);
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const GeometricPath& path = *result.value().path;
   EXPECT_GT(path.length(), 0.0);
   EXPECT_NEAR((path.at(path.length()).q - q).norm(), 0.0, 1e-12);
@@ -305,8 +305,8 @@ TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
       ++refused;
       no_path += result.status() == PlanStatus::kNoPath ? 1 : 0;
       EXPECT_TRUE(result.status() == PlanStatus::kNoPath || result.status() == PlanStatus::kClearanceNotMet)
-          << toString(result.status()) << ": " << result.error().reason;
-      EXPECT_FALSE(result.error().reason.empty());
+          << toString(result.status()) << ": " << result.error().message;
+      EXPECT_FALSE(result.error().message.empty());
       if (result.status() == PlanStatus::kNoPath && v0.isZero()) {
         EXPECT_NE(components(pieces).of(start), components(pieces).of(goal))
             << start.transpose() << " -> " << goal.transpose();

@@ -21,7 +21,7 @@ using test::shippedRobot;
 
 std::shared_ptr<const Trajectory> planned(const ShippedRobot& robot, const PlanRequest& request) {
   const auto plan = robot.planner.plan(request);
-  EXPECT_TRUE(plan.ok()) << plan.error().reason;
+  EXPECT_TRUE(plan.ok()) << plan.error().message;
   return plan.value().trajectory;
 }
 

@@ -30,7 +30,7 @@ TEST(ToppPublicMoves, EveryPlannedMoveMeetsTheLimitsAndTheReference) {
     const auto& path = planned.value().path;
     ToppReport report;
     const Result<Trajectory> result = solver.solve(path, model.driveModel({}), 0.0, &report);
-    ASSERT_TRUE(result.ok()) << result.error().reason;
+    ASSERT_TRUE(result.ok()) << result.error().message;
     const Trajectory& trajectory = result.value();
     ++solved;
 

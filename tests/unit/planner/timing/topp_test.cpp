@@ -137,7 +137,7 @@ TEST(Topp, TypicalPathsMeetEveryLimitAndTheFineReference) {
     SCOPED_TRACE(c.name);
     ToppReport report;
     const Result<Trajectory> result = solver.solve(c.path, referenceDrives(), 0.0, &report);
-    ASSERT_TRUE(result.ok()) << result.error().reason;
+    ASSERT_TRUE(result.ok()) << result.error().message;
     const Trajectory& trajectory = result.value();
     checkTrajectory(trajectory, *c.path, elevatorDrive(), armDrive(), 0.0);
 
@@ -174,7 +174,7 @@ TEST(Topp, VelocityAndAccelerationLimitsHoldAtOneMillisecond) {
   arm.acceleration_limit = 25.0;  // rad/s^2, well below the current-limited ~200 rad/s^2
   const auto path = std::make_shared<LinePath>(JointVector(0.2, 0.5), JointVector(1.9, 5.5));
   const Result<Trajectory> result = parameterizeTimeOptimal(path, drivesOf(elevator, arm), {});
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const Checked checked = checkTrajectory(result.value(), *path, elevator, arm, 0.0);
   EXPECT_GT(checked.peak_velocity_ratio, 0.99);
   EXPECT_GT(checked.peak_acceleration_ratio, 0.99);
@@ -197,7 +197,7 @@ TEST(Topp, VelocityCapsOverMostOfTheMoveSolveInFewIterations) {
   ToppSolver solver;
   ToppReport report;
   const Result<Trajectory> result = solver.solve(path, drivesOf(elevator, arm), 0.0, &report);
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const Checked checked = checkTrajectory(result.value(), *path, elevator, arm, 0.0);
   EXPECT_GT(checked.peak_velocity_ratio, 0.99);
   EXPECT_LE(checked.peak_velocity_ratio, 1.0 + kLimitTolerance);
@@ -215,7 +215,7 @@ TEST(Topp, MovingStartBeginsWithExactlyThatVelocity) {
     SCOPED_TRACE(fraction);
     const double b_start = fraction * rest_report.controllable_start_b;
     const Result<Trajectory> moving = solver.solve(path, referenceDrives(), b_start);
-    ASSERT_TRUE(moving.ok()) << moving.error().reason;
+    ASSERT_TRUE(moving.ok()) << moving.error().message;
     checkTrajectory(moving.value(), *path, elevatorDrive(), armDrive(), b_start);
     const TrajectorySample first = moving.value().sample(0.0);
     EXPECT_NEAR(first.sdot, std::sqrt(b_start), 1e-12);
@@ -238,7 +238,7 @@ TEST(Topp, StartSpeedThatCannotBeStoppedIsATypedFailure) {
   const Result<Trajectory> too_fast = solver.solve(path, referenceDrives(), 1.5 * limit, &report);
   ASSERT_FALSE(too_fast.ok());
   EXPECT_EQ(too_fast.status(), PlanStatus::kInfeasibleStart);
-  EXPECT_NE(too_fast.error().reason.find("cannot be brought to rest"), std::string::npos) << too_fast.error().reason;
+  EXPECT_NE(too_fast.error().message.find("cannot be brought to rest"), std::string::npos) << too_fast.error().message;
   EXPECT_TRUE(solver.solve(path, referenceDrives(), 0.95 * limit).ok());
 }
 
@@ -260,7 +260,7 @@ TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
     SCOPED_TRACE(speed_factor);
     const double b_start = limit * speed_factor * speed_factor;
     const Result<Trajectory> result = solver.solve(path, referenceDrives(), b_start, &report);
-    ASSERT_TRUE(result.ok()) << result.error().reason;
+    ASSERT_TRUE(result.ok()) << result.error().message;
     // The grid follows each start's own profile (algorithm.md section 3, "Grid"), so the edge
     // moves with the grid by far less than the tolerance; the start sits on this solve's edge.
     const double edge = report.controllable_start_b;
@@ -291,8 +291,8 @@ TEST(Topp, NonConvergenceIsReportedWithResiduals) {
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), settings, 0.0, &report);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.status(), PlanStatus::kSolverNotConverged);
-  EXPECT_NE(result.error().reason.find("primal residual"), std::string::npos) << result.error().reason;
-  EXPECT_NE(result.error().reason.find("dual residual"), std::string::npos);
+  EXPECT_NE(result.error().message.find("primal residual"), std::string::npos) << result.error().message;
+  EXPECT_NE(result.error().message.find("dual residual"), std::string::npos);
   EXPECT_EQ(report.outer_iterations, 1);
   EXPECT_LE(report.inner_iterations, 2);
   EXPECT_GT(report.primal_residual + report.dual_residual, 0.0);
@@ -312,7 +312,7 @@ TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
 TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
   const auto path = std::make_shared<LinePath>(JointVector(0.7, 2.0), JointVector(0.7, 2.0));
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_EQ(result.value().duration_s(), 0.0);
   for (double t : {-1.0, 0.0, 0.5}) {
     const TrajectorySample s = result.value().sample(t);
@@ -330,7 +330,7 @@ TEST(Topp, VeryShortPathsGiveValidTrajectories) {
     SCOPED_TRACE(length);
     const auto path = std::make_shared<LinePath>(JointVector(0.5, 1.0), JointVector(0.5 + length, 1.0));
     const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
-    ASSERT_TRUE(result.ok()) << result.error().reason;
+    ASSERT_TRUE(result.ok()) << result.error().message;
     EXPECT_GT(result.value().duration_s(), 0.0);
     EXPECT_LT(result.value().duration_s(), 0.05);
     checkTrajectory(result.value(), *path, elevatorDrive(), armDrive(), 0.0);
@@ -346,7 +346,7 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   const auto path =
       std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2);
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   const Trajectory& trajectory = result.value();
   checkTrajectory(trajectory, *path, elevatorDrive(), armDrive(), 0.0);
   // Find the turnaround and check the feedforward uses kS with the sign of the motion each side.
@@ -370,7 +370,7 @@ TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {
   settings.grid_points = 12;
   ToppReport report;
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), settings, 0.0, &report);
-  ASSERT_TRUE(result.ok()) << result.error().reason;
+  ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_GT(report.refinements, 0);
   EXPECT_GT(report.grid_points, 12);
   checkTrajectory(result.value(), *path, elevatorDrive(), armDrive(), 0.0);
@@ -422,7 +422,7 @@ TEST(Topp, BadInputsAreTypedErrors) {
   weak.kG_volts = 13.0;
   const Result<Trajectory> hopeless = parameterizeTimeOptimal(good, drivesOf(weak, armDrive()), {});
   EXPECT_EQ(hopeless.status(), PlanStatus::kInvalidInput);
-  EXPECT_FALSE(hopeless.error().reason.empty());
+  EXPECT_FALSE(hopeless.error().message.empty());
 }
 
 }  // namespace

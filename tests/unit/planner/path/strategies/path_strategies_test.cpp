@@ -46,7 +46,7 @@ std::vector<PlannedPath> candidatesOf(const PathPlanner& planner, const std::str
                                       const JointVector& start_velocity = JointVector::Zero()) {
   const test::PublicMove& m = test::publicMove(move);
   auto found = planner.candidates(m.from, m.to, m.pieces, start_velocity, strategies);
-  EXPECT_TRUE(found.ok()) << move << ": " << (found.ok() ? "" : found.error().reason);
+  EXPECT_TRUE(found.ok()) << move << ": " << (found.ok() ? "" : found.error().message);
   return found.ok() ? std::move(found).value() : std::vector<PlannedPath>{};
 }
 
