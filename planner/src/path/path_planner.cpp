@@ -113,129 +113,156 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
                     alternatives == PathAlternatives::kSearch ? all : all.first(0));
 }
 
-Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
-                                                         HeldPieces pieces, const JointVector& start_velocity,
-                                                         std::span<const PathStrategy> strategies) const {
-  using R = Result<std::vector<PlannedPath>>;
-  if (!start.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start pose is not a finite number");
-  if (!goal.allFinite()) return R::failure(PlanStatus::kInvalidInput, "goal pose is not a finite number");
-  if (!start_velocity.allFinite())
-    return R::failure(PlanStatus::kInvalidInput, "start velocity is not a finite number");
+std::optional<PlanError> PathPlanner::checkEndpoints(const JointVector& start, const JointVector& goal,
+                                                     const JointVector& start_velocity,
+                                                     const CollisionWorld& world) const {
+  if (!start.allFinite()) return PlanError{PlanStatus::kInvalidInput, "start pose is not a finite number"};
+  if (!goal.allFinite()) return PlanError{PlanStatus::kInvalidInput, "goal pose is not a finite number"};
+  if (!start_velocity.allFinite()) return PlanError{PlanStatus::kInvalidInput, "start velocity is not a finite number"};
   if (!model_.withinLimits(start)) {
-    return R::failure(PlanStatus::kStartOutOfRange,
-                      "start " + poseText(model_, start) + " is outside the joint limits: " + rangeText(model_));
+    return PlanError{PlanStatus::kStartOutOfRange,
+                     "start " + poseText(model_, start) + " is outside the joint limits: " + rangeText(model_)};
   }
   if (!model_.withinLimits(goal)) {
-    return R::failure(PlanStatus::kGoalOutOfRange,
-                      "goal " + poseText(model_, goal) + " is outside the joint limits: " + rangeText(model_));
+    return PlanError{PlanStatus::kGoalOutOfRange,
+                     "goal " + poseText(model_, goal) + " is outside the joint limits: " + rangeText(model_)};
   }
-  const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
-  const CSpaceGrid& grid = this->grid(pieces);
   const double clearance = model_.clearance_m;
-  const JointVector& metric = model_.planner.metric;
-  const SmoothingSettings& smoothing = model_.planner.smoothing;
   auto too_close = [&](const char* which, const JointVector& q, const SignedDistance& d) {
     return fmt::format("{} {} is {:.4f} m from {} (clearance {:.4f} m)", which, poseText(model_, q), d.value,
                        obstacleName(scene_, d.obstacle), clearance);
   };
   const SignedDistance d_start = world.distance(start);
-  if (d_start.value < clearance) return R::failure(PlanStatus::kStartInCollision, too_close("start", start, d_start));
+  if (d_start.value < clearance) return PlanError{PlanStatus::kStartInCollision, too_close("start", start, d_start)};
   const SignedDistance d_goal = world.distance(goal);
-  if (d_goal.value < clearance) return R::failure(PlanStatus::kGoalInCollision, too_close("goal", goal, d_goal));
+  if (d_goal.value < clearance) return PlanError{PlanStatus::kGoalInCollision, too_close("goal", goal, d_goal)};
+  return std::nullopt;
+}
 
+// A straight piece along the start velocity, shortened until it is inside the limits and clear
+// (or dropped): appended to `polyline`, and its end returned (the start when there is none).
+JointVector PathPlanner::leadIn(const JointVector& start, const JointVector& start_velocity,
+                                const CollisionWorld& world, std::vector<JointVector>& polyline,
+                                PlannedPath& out) const {
+  const double start_speed = weightedNorm(start_velocity, model_.planner.metric);
+  if (!(start_speed > 0.0)) return start;
+  const SmoothingSettings& smoothing = model_.planner.smoothing;
+  const JointVector direction = start_velocity / start_speed;
+  double lead = std::min(smoothing.max_lead_in, start_speed * smoothing.lead_in_time_s);
+  for (int attempt = 0; attempt <= kLeadInHalvings && lead > kSamePoseWeighted; ++attempt, lead *= 0.5) {
+    const JointVector candidate = start + lead * direction;
+    if (model_.withinLimits(candidate) && checkSegment(world, start, candidate, model_.clearance_m).clear) {
+      polyline.push_back(candidate);
+      out.lead_in = true;
+      return candidate;
+    }
+  }
+  return start;
+}
+
+// The first path from `from` (the lead-in's end): the straight segment when it is clear, else the
+// grid search's nodes; appended to the inputs' polyline, with the search's cells and connections.
+std::optional<PlanError> PathPlanner::searchFirstPath(const JointVector& from, const JointVector& goal,
+                                                      HeldPieces pieces, CandidateInputs& inputs,
+                                                      PlannedPath& out) const {
+  const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
+  const CSpaceGrid& grid = this->grid(pieces);
+  const double clearance = model_.clearance_m;
+  if (checkSegment(world, from, goal, clearance).clear) {
+    out.direct = true;
+    inputs.polyline.push_back(goal);
+    return std::nullopt;
+  }
+  const std::vector<SearchEndpoint> sources = connectToGrid(grid, world, from, clearance);
+  if (sources.empty()) {
+    return PlanError{PlanStatus::kNoPath, "no free grid node near the start " + poseText(model_, from) +
+                                              " can be reached in a straight line with the clearance"};
+  }
+  const std::vector<SearchEndpoint> goals = connectToGrid(grid, world, goal, clearance);
+  if (goals.empty()) {
+    return PlanError{PlanStatus::kNoPath, "no free grid node near the goal " + poseText(model_, goal) +
+                                              " can be reached in a straight line with the clearance"};
+  }
+  const auto found = astarSearch(grid, sources, goals, goal);
+  if (!found) {
+    return PlanError{PlanStatus::kNoPath, "the goal " + poseText(model_, goal) + " cannot be reached from " +
+                                              poseText(model_, from) + " without coming closer than the clearance"};
+  }
+  out.search_expanded = found->expanded;
+  for (int cell : found->cells) inputs.polyline.push_back(grid.node(cell));
+  inputs.polyline.push_back(goal);
+  inputs.first_cells = found->cells;
+  inputs.first_cost = found->cost;
+  inputs.source_links = sources;
+  inputs.goal_links = goals;
+  return std::nullopt;
+}
+
+// The start and goal as one pose, at rest: the path that stays there.
+Result<std::vector<PlannedPath>> PathPlanner::stayingPath(const JointVector& start, double start_distance_m,
+                                                          PlannedPath out) const {
+  const std::vector<JointVector> single{start};
+  auto trivial = CubicSplinePath::through(single, model_.planner.metric);
+  if (!trivial.ok()) return trivial.error();
+  out.path = std::make_shared<const CubicSplinePath>(std::move(trivial).value());
+  out.waypoints = out.search_waypoints = single;
+  out.min_clearance_m = start_distance_m;
+  out.direct = true;
+  out.method = "zero-length";
+  return std::vector<PlannedPath>{out};
+}
+
+Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,
+                                                         HeldPieces pieces, const JointVector& start_velocity,
+                                                         std::span<const PathStrategy> strategies) const {
+  const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
+  if (auto refused = checkEndpoints(start, goal, start_velocity, world)) return *refused;
+  const JointVector& metric = model_.planner.metric;
   const Clock::time_point t_search = Clock::now();
   PlannedPath out;
   out.pieces = pieces;
   const double start_speed = weightedNorm(start_velocity, metric);
   if (weightedNorm(goal - start, metric) < kSamePoseWeighted && start_speed == 0.0) {
-    const std::vector<JointVector> single{start};
-    auto trivial = CubicSplinePath::through(single, metric);
-    if (!trivial.ok()) return trivial.error();
-    out.path = std::make_shared<const CubicSplinePath>(std::move(trivial).value());
-    out.waypoints = out.search_waypoints = single;
-    out.min_clearance_m = d_start.value;
-    out.direct = true;
-    out.method = "zero-length";
     out.search_ms = millisecondsSince(t_search);
-    return std::vector<PlannedPath>{out};
+    return stayingPath(start, world.distance(start).value, std::move(out));
   }
-
-  // Lead-in: a straight piece along the start velocity, shortened until it is inside the limits
-  // and clear (or dropped).
-  std::vector<JointVector> polyline{start};
-  JointVector from = start;
-  if (start_speed > 0.0) {
-    const JointVector direction = start_velocity / start_speed;
-    double lead = std::min(smoothing.max_lead_in, start_speed * smoothing.lead_in_time_s);
-    for (int attempt = 0; attempt <= kLeadInHalvings && lead > kSamePoseWeighted; ++attempt, lead *= 0.5) {
-      const JointVector candidate = start + lead * direction;
-      if (model_.withinLimits(candidate) && checkSegment(world, start, candidate, clearance).clear) {
-        from = candidate;
-        polyline.push_back(candidate);
-        out.lead_in = true;
-        break;
-      }
-    }
-  }
-
-  std::vector<int> first_cells;
-  double first_cost = 0.0;  // in the search's metric
-  std::vector<SearchEndpoint> source_links, goal_links;
-  if (checkSegment(world, from, goal, clearance).clear) {
-    out.direct = true;
-    polyline.push_back(goal);
-  } else {
-    const std::vector<SearchEndpoint> sources = connectToGrid(grid, world, from, clearance);
-    if (sources.empty()) {
-      return R::failure(PlanStatus::kNoPath, "no free grid node near the start " + poseText(model_, from) +
-                                                 " can be reached in a straight line with the clearance");
-    }
-    const std::vector<SearchEndpoint> goals = connectToGrid(grid, world, goal, clearance);
-    if (goals.empty()) {
-      return R::failure(PlanStatus::kNoPath, "no free grid node near the goal " + poseText(model_, goal) +
-                                                 " can be reached in a straight line with the clearance");
-    }
-    const auto found = astarSearch(grid, sources, goals, goal);
-    if (!found) {
-      return R::failure(PlanStatus::kNoPath, "the goal " + poseText(model_, goal) + " cannot be reached from " +
-                                                 poseText(model_, from) + " without coming closer than the clearance");
-    }
-    out.search_expanded = found->expanded;
-    for (int cell : found->cells) polyline.push_back(grid.node(cell));
-    polyline.push_back(goal);
-    first_cells = found->cells;
-    first_cost = found->cost;
-    source_links = sources;
-    goal_links = goals;
-  }
-  out.search_waypoints = polyline;
-  out.search_ms = millisecondsSince(t_search);
-
-  // Smoothing of the first path, then the strategies' candidates (docs/algorithm.md section 2.6);
-  // the one the reachability pass times fastest comes first.
-  const Clock::time_point t_smooth = Clock::now();
   CandidateInputs inputs{.model = model_,
                          .world = world,
-                         .grid = grid,
+                         .grid = grid(pieces),
                          .drives = model_.driveModel(pieces),
                          .start = start,
                          .goal = goal,
                          .start_velocity = start_velocity,
                          .b_start = start_speed * start_speed,
-                         .polyline = std::move(polyline),
-                         .fixed_head = out.lead_in ? 2 : 1,
-                         .direct = out.direct,
-                         .first_cells = std::move(first_cells),
-                         .first_cost = first_cost,
-                         .source_links = std::move(source_links),
-                         .goal_links = std::move(goal_links),
+                         .polyline = {start},
+                         .fixed_head = 1,
+                         .direct = false,
+                         .first_cells = {},
+                         .first_cost = 0.0,
+                         .source_links = {},
+                         .goal_links = {},
                          .straight_estimate_s = 0.0,
-                         .first = out};
+                         .first = {}};
+  const JointVector from = leadIn(start, start_velocity, world, inputs.polyline, out);
+  if (auto refused = searchFirstPath(from, goal, pieces, inputs, out)) return *refused;
+  out.search_waypoints = inputs.polyline;
+  out.search_ms = millisecondsSince(t_search);
+  inputs.fixed_head = out.lead_in ? 2 : 1;
+  inputs.direct = out.direct;
+  inputs.first = out;
+  return smoothedCandidates(inputs, strategies);
+}
+
+// The first path smoothed, then the strategies' candidates (docs/algorithm.md section 2.6); the
+// one the reachability pass times fastest comes first.
+Result<std::vector<PlannedPath>> PathPlanner::smoothedCandidates(CandidateInputs& inputs,
+                                                                 std::span<const PathStrategy> strategies) const {
+  const Clock::time_point t_smooth = Clock::now();
   CandidateList list;
   if (smoothPolyline(inputs, inputs.polyline, "", inputs.first, list)) list.putFirst(inputs.first);
   if (!strategies.empty() && !inputs.direct) {
-    inputs.straight_estimate_s =
-        straightEstimate(inputs.from(), goal, inputs.drives, metric, model_.planner.strategies.timing_grid_points);
+    inputs.straight_estimate_s = straightEstimate(inputs.from(), inputs.goal, inputs.drives, model_.planner.metric,
+                                                  model_.planner.strategies.timing_grid_points);
   }
   for (const PathStrategy& strategy : strategies) strategy.run(inputs, list);
   const ClearanceCheck& last_check = list.last_check;
@@ -243,12 +270,12 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const double smooth_ms = millisecondsSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
   if (candidates.empty()) {
-    return R::failure(
+    return Result<std::vector<PlannedPath>>::failure(
         PlanStatus::kClearanceNotMet,
         fmt::format("no smoothed path keeps the clearance {:.4f} m and the joint limits (last attempt: {}, {:.4f} m at "
                     "s = {:.4f})",
-                    clearance, last_check.within_limits ? "closest" : "outside the limits", last_check.min_distance_m,
-                    last_check.at_s));
+                    model_.clearance_m, last_check.within_limits ? "closest" : "outside the limits",
+                    last_check.min_distance_m, last_check.at_s));
   }
   return candidates;
 }

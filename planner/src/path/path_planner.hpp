@@ -13,6 +13,7 @@
 #include <array>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,7 +29,8 @@ namespace cyber::planner {
 // Whether candidates() also smooths and times the other ways to the goal it finds.
 enum class PathAlternatives { kNone, kSearch };
 
-struct PathStrategy;  // path_strategies.hpp
+struct PathStrategy;     // path_strategies.hpp
+struct CandidateInputs;  // path_strategies.hpp
 
 struct PlannedPath {
   std::shared_ptr<const CubicSplinePath> path;  // q(s), s in [0, length]; a GeometricPath
@@ -85,6 +87,22 @@ class PathPlanner {
   }
 
  private:
+  // The steps of candidates(): the request's own errors; the lead-in along the start velocity;
+  // the first path (straight or searched); the path that stays where it is; smoothing and the
+  // strategies.
+  [[nodiscard]] std::optional<PlanError> checkEndpoints(const JointVector& start, const JointVector& goal,
+                                                        const JointVector& start_velocity,
+                                                        const CollisionWorld& world) const;
+  JointVector leadIn(const JointVector& start, const JointVector& start_velocity, const CollisionWorld& world,
+                     std::vector<JointVector>& polyline, PlannedPath& out) const;
+  [[nodiscard]] std::optional<PlanError> searchFirstPath(const JointVector& from, const JointVector& goal,
+                                                         HeldPieces pieces, CandidateInputs& inputs,
+                                                         PlannedPath& out) const;
+  [[nodiscard]] Result<std::vector<PlannedPath>> stayingPath(const JointVector& start, double start_distance_m,
+                                                             PlannedPath out) const;
+  [[nodiscard]] Result<std::vector<PlannedPath>> smoothedCandidates(CandidateInputs& inputs,
+                                                                    std::span<const PathStrategy> strategies) const;
+
   struct Grids {  // by HeldPieces::index(), shared by the planners of every offset in the band
     std::vector<CSpaceGrid> grids;
     std::vector<double> build_ms;

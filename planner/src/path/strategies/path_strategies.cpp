@@ -1,17 +1,14 @@
 #include "path/strategies/path_strategies.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <optional>
+#include <vector>
 
 #include "math/weighted_norm.hpp"
 #include "path/joined_path.hpp"
 #include "path/path_optimizer.hpp"
 #include "path/path_shaping.hpp"
-#include "path/synchronised_path.hpp"
 #include "timing/path_timing.hpp"
 
 namespace cyber::planner {
@@ -20,6 +17,14 @@ namespace {
 double estimateOf(const CandidateInputs& in, const PlannedPath& candidate, int grid_points) {
   return estimateDuration(*candidate.path, in.drives, in.b_start, grid_points);
 }
+
+// The strategies the test programs register at static initialisation (PathStrategyRegistration).
+std::vector<PathStrategy>& registeredStrategies() {
+  static std::vector<PathStrategy> registered;
+  return registered;
+}
+
+}  // namespace
 
 // `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid than
 // the searches' own confirms it faster (a coarse estimate can be fooled between its points).
@@ -94,53 +99,12 @@ double shortcutClearance(const CandidateInputs& in) {
   return in.model.clearance_m * (1.0 + in.settings().shortcut_margin_clearances);
 }
 
-// Every node within `radius` index steps of the path's cells, except those within `radius` of
-// its two ends (the search must still leave the start and reach the goal): blocking this band
-// makes the search find the way round the other side of an obstacle, when there is one.
-std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<int>& cells, int radius) {
-  std::vector<std::uint8_t> band(static_cast<size_t>(grid.cellCount()), 0);
-  if (cells.empty()) return band;
-  const int ni = grid.firstAxis().count, nj = grid.secondAxis().count;
-  auto near_end = [&](int i, int j) {
-    for (int end : {cells.front(), cells.back()}) {
-      if (std::abs(i - grid.firstIndex(end)) <= radius && std::abs(j - grid.secondIndex(end)) <= radius) return true;
-    }
-    return false;
-  };
-  for (int cell : cells) {
-    const int i0 = grid.firstIndex(cell), j0 = grid.secondIndex(cell);
-    for (int i = std::max(0, i0 - radius); i <= std::min(ni - 1, i0 + radius); ++i) {
-      for (int j = std::max(0, j0 - radius); j <= std::min(nj - 1, j0 + radius); ++j) {
-        if (!near_end(i, j)) band[static_cast<size_t>(grid.cell(i, j))] = 1;
-      }
-    }
-  }
-  return band;
-}
-
 // `line` smoothed as a copy of the first path, added in the order of estimated time.
 void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line,
                  const char* label) {
   PlannedPath alternative = in.first;
   if (smoothPolyline(in, line, label, alternative, list)) list.addInTimeOrder(in, std::move(alternative));
 }
-
-constexpr std::array kStrategies{
-    PathStrategy{"shape the straight segment",
-                 "a straight segment is not the fastest path when the joints' limits differ (gravity, voltage)",
-                 shapeStraightSegment},
-    PathStrategy{"shortcut", "the search's grid and potential bend the path; time favours straight segments",
-                 shortcutSearchPath},
-    PathStrategy{"other ways round", "the search finds one way round an obstacle; another may be faster",
-                 searchOtherWays},
-    PathStrategy{"shape the fastest path", "the fastest path keeps to the middle of the free space; time may not",
-                 shapeFastestPath},
-    PathStrategy{"synchronise the joints",
-                 "from rest, many moves are as fast as their slower joint alone; the search's paths lose 3-5 %",
-                 synchroniseJoints},
-};
-
-}  // namespace
 
 double CandidateList::estimate(const CandidateInputs& in, size_t i) {
   if (std::isnan(estimates_s_[i])) estimates_s_[i] = estimateOf(in, paths_[i], in.settings().timing_grid_points);
@@ -215,95 +179,23 @@ double slowerJointAlone(const JointVector& from, const JointVector& to, const Dr
   return slower;
 }
 
-std::span<const PathStrategy> pathStrategies() { return kStrategies; }
-
-// A direct path, bent by the shape search from knots spread evenly along it; only when the
-// segment is estimated slower than its slower joint moving alone (otherwise that joint's limits
-// bind all along and no shape can be faster).
-void shapeStraightSegment(const CandidateInputs& in, CandidateList& list) {
-  if (!in.direct || list.empty()) return;
-  const PathStrategySettings& s = in.settings();
-  const JointVector& metric = in.model.planner.metric;
-  if (!(straightEstimate(in.from(), in.goal, in.drives, metric, s.gate_grid_points) >
-        s.direct_shape_ratio * slowerJointAlone(in.from(), in.goal, in.drives, metric, s.gate_grid_points))) {
-    return;
-  }
-  const std::vector<JointVector> tail(in.polyline.begin() + in.fixed_head - 1, in.polyline.end());
-  std::vector<JointVector> knots(in.polyline.begin(), in.polyline.begin() + in.fixed_head - 1);
-  const double tail_length = weightedNorm(tail.back() - tail.front(), metric);
-  const std::vector<JointVector> spread = resamplePolyline(tail, metric, tail_length / (s.direct_shape_knots - 1));
-  knots.insert(knots.end(), spread.begin(), spread.end());
-  const PlannedPath straight = list.front();
-  addShaped(in, list, straight, knots);
+std::span<const PathStrategy> pathStrategies() {
+  // Every file of path/strategies/ but this one is a strategy; the build lists them
+  // (planner/CMakeLists.txt), and the order each names decides when it is tried.
+  static const std::vector<PathStrategy> ordered = [] {
+    std::vector<PathStrategy> all;
+    for (const PathStrategy* strategy : builtInPathStrategies()) all.push_back(*strategy);
+    const std::vector<PathStrategy>& registered = registeredStrategies();
+    all.insert(all.end(), registered.begin(), registered.end());
+    std::stable_sort(all.begin(), all.end(),
+                     [](const PathStrategy& a, const PathStrategy& b) { return a.order < b.order; });
+    return all;
+  }();
+  return ordered;
 }
 
-// The search's polyline with every run of nodes that one clear straight segment can replace
-// replaced by it (docs/performance.md, "Choosing the path for time").
-void shortcutSearchPath(const CandidateInputs& in, CandidateList& list) {
-  if (in.direct) return;
-  const std::vector<JointVector> shortcut =
-      shortcutPolyline(in.world, in.polyline, in.fixed_head, shortcutClearance(in));
-  if (shortcut.size() < in.polyline.size()) addSmoothed(in, list, shortcut, "shortcut, ");
-}
-
-// When the fastest path is a detour (estimated well above the straight segment): the search again
-// with the first path's band blocked or, where C-space has holes, on the other side of each.
-void searchOtherWays(const CandidateInputs& in, CandidateList& list) {
-  if (in.direct || list.empty()) return;
-  const PathStrategySettings& s = in.settings();
-  if (!(list.estimate(in, 0) > s.detour_ratio * in.straight_estimate_s)) return;
-  auto add_search = [&](const std::optional<SearchPath>& found, const char* label) {
-    if (!found) return;
-    std::vector<JointVector> around(in.polyline.begin(), in.polyline.begin() + in.fixed_head);
-    for (int cell : found->cells) around.push_back(in.grid.node(cell));
-    around.push_back(in.goal);
-    addSmoothed(in, list, shortcutPolyline(in.world, around, in.fixed_head, shortcutClearance(in)), label);
-  };
-  // Without a hole the other way round is the search with the first path's band blocked; with
-  // holes, the other side of each (the band also blocks a narrow corridor both ways share, leaving
-  // a low pose with a piece held for example, and finds nothing).
-  const std::vector<GridHole>& holes = in.grid.holes();
-  if (holes.empty()) {
-    const std::vector<std::uint8_t> band = bandAround(in.grid, in.first_cells, s.band_radius_nodes);
-    add_search(astarSearch(in.grid, in.source_links, in.goal_links, in.goal, SearchOptions{.also_blocked = band}),
-               "other way round, ");
-  }
-  for (size_t h = 0; h < std::min(holes.size(), static_cast<size_t>(s.max_hole_sides)); ++h) {
-    const SideOfHole other_side{holes[h], 1 - rayCrossingParity(in.grid, holes[h], in.first_cells)};
-    add_search(astarSearch(in.grid, in.source_links, in.goal_links, in.goal,
-                           SearchOptions{.side = other_side, .max_cost = s.max_side_cost * in.first_cost}),
-               "other side, ");
-  }
-}
-
-// The fastest searched candidate's shape searched against its estimated time, when it is
-// estimated well above the straight segment.
-void shapeFastestPath(const CandidateInputs& in, CandidateList& list) {
-  if (in.direct || list.empty()) return;
-  if (!(list.estimate(in, 0) > in.settings().shape_ratio * in.straight_estimate_s)) return;
-  const PlannedPath fastest = list.front();
-  addShaped(in, list, fastest, fastest.waypoints);
-}
-
-// From rest, the joints' own fastest motions side by side (synchronised_path.hpp), inside a window
-// of the fastest candidate's estimate over the slower joint alone. That coarser estimate first:
-// the joints' own profiles cost five times as much, and half the public moves are already within
-// a per cent of it.
-void synchroniseJoints(const CandidateInputs& in, CandidateList& list) {
-  if (list.empty() || !(in.start_velocity.array() == 0.0).all()) return;
-  const PathStrategySettings& s = in.settings();
-  const PlannedPath fastest = list.front();
-  const double fastest_s = estimateDuration(*fastest.path, in.drives, 0.0, s.check_grid_points);
-  const double slower_alone_s =
-      slowerJointAlone(in.start, in.goal, in.drives, in.model.planner.metric, s.timing_grid_points);
-  if (!(fastest_s > s.synchronised_ratio * slower_alone_s && fastest_s < s.synchronised_max_ratio * slower_alone_s)) {
-    return;
-  }
-  if (auto synchronised = synchronisedPath(in.start, in.goal, in.world, in.model, fastest_s / s.synchronised_ratio,
-                                           in.model.planner.synchronised)) {
-    putFirstIfFaster(in, list, fastest, fastest_s, std::move(synchronised->path), std::move(synchronised->waypoints),
-                     synchronised->min_clearance_m, "synchronised joints");
-  }
+PathStrategyRegistration::PathStrategyRegistration(const PathStrategy& strategy) {
+  registeredStrategies().push_back(strategy);
 }
 
 }  // namespace cyber::planner

@@ -1,9 +1,12 @@
 #pragma once
 // The candidate paths of one move as an explicit, ordered list of strategies (docs/algorithm.md
 // section 2.6). PathPlanner finds and smooths the first path (the straight segment when it is
-// clear, else the search's); each strategy then may add candidates, fastest estimate first. A
-// strategy is one function with its own gate, its own test and a one-line reason for being
-// tried; its thresholds are PathStrategySettings (planner_settings.hpp).
+// clear, else the search's); each strategy then may add candidates, fastest estimate first.
+// A strategy is one file of this folder (named after it, defining path_strategies::<file name>)
+// with its own gate, its own test and a one-line reason for being tried; the build lists every
+// file here as a strategy (planner/CMakeLists.txt), so adding or removing one touches nothing
+// else. Its thresholds are PathStrategySettings (planner_settings.hpp). This unit holds what the
+// strategies share: their inputs, the candidate list, smoothing, and the registry.
 
 #include <span>
 #include <string>
@@ -82,20 +85,44 @@ double straightEstimate(const JointVector& from, const JointVector& to, const Dr
 double slowerJointAlone(const JointVector& from, const JointVector& to, const DriveModel& drives,
                         const JointVector& metric, int grid_points);
 
+// `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid than
+// the searches' own confirms it faster (a coarse estimate can be fooled between its points).
+// fastest_s: `fastest`'s estimate on that grid.
+void putFirstIfFaster(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest, double fastest_s,
+                      CubicSplinePath path, std::vector<JointVector> waypoints, double min_clearance_m,
+                      std::string method);
+// The shape search from `knots` (through which `fastest` runs), refined further when its shape
+// is still estimated well above the slower joint moving alone; put first when faster.
+void addShaped(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest,
+               const std::vector<JointVector>& knots);
+// The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
+// can replace replaced by it; the first fixed_head points are kept.
+std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std::vector<JointVector>& polyline,
+                                          int fixed_head, double clearance_m);
+// The clearance a shortcut keeps: the model's, with PathStrategySettings' margin.
+double shortcutClearance(const CandidateInputs& in);
+// `line` smoothed as a copy of the first path, added in the order of estimated time.
+void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line,
+                 const char* label);
+
 struct PathStrategy {
   std::string_view name;
   std::string_view reason;  // why it is tried
-  void (*run)(const CandidateInputs&, CandidateList&);
+  int order = 0;            // strategies are tried in increasing order (docs/algorithm.md section 2.6)
+  void (*run)(const CandidateInputs&, CandidateList&) = nullptr;
 };
 
-// The strategies, in the order they are tried.
+// The strategies, in the order they are tried: every file of this folder, and any registered.
 std::span<const PathStrategy> pathStrategies();
 
-// Each strategy on its own (the list's entries), for tests.
-void shapeStraightSegment(const CandidateInputs& in, CandidateList& list);
-void shortcutSearchPath(const CandidateInputs& in, CandidateList& list);
-void searchOtherWays(const CandidateInputs& in, CandidateList& list);
-void shapeFastestPath(const CandidateInputs& in, CandidateList& list);
-void synchroniseJoints(const CandidateInputs& in, CandidateList& list);
+// The strategies of this folder's files, as the build lists them (in no particular order).
+std::span<const PathStrategy* const> builtInPathStrategies();
+
+// Adds a strategy made outside this folder (a test's) to pathStrategies(): a registration is a
+// static object, made before the first call of pathStrategies() (later ones are not seen).
+class PathStrategyRegistration {
+ public:
+  explicit PathStrategyRegistration(const PathStrategy& strategy);
+};
 
 }  // namespace cyber::planner
