@@ -4,7 +4,8 @@
 Usage: check_planner_layout.py ROOT
 
   - the public include folder (planner/include) holds at most 8 headers;
-  - every unit planner/src/DIR/NAME.cpp has its test, tests/unit/planner/DIR/NAME_test.cpp;
+  - every source file of planner/src has its test: the same path under tests/unit/planner, with
+    _test added to its name;
   - outside the planner, its tests (tests/unit/planner, tests/support) and its benchmarks
     (tests/bench), code includes only the umbrella header cyber/planner.hpp of the planner;
   - a public header includes no private one.
