@@ -15,6 +15,7 @@ std::string_view toString(PlanStatus status) {
     case PlanStatus::kInfeasibleStart: return "infeasible start";
     case PlanStatus::kSolverNotConverged: return "solver did not converge";
     case PlanStatus::kInternalError: return "internal error";
+    case PlanStatus::kColumnsDisagree: return "columns disagree";
   }
   return "unknown";
 }

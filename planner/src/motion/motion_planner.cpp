@@ -37,7 +37,7 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   }
   const Result<Plan> onward =
       timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces, JointVector::Zero());
-  Result<Plan> plan = joinAfter("out of the clearance", request, escape.value(), onward);
+  Result<Plan> plan = joinAfter(PlanMethod::kLeftTheClearance, request, escape.value(), onward);
   // The way out is a few millimetres, timed in tens of milliseconds: its switch from accelerating
   // to braking, and the jump at the junction, are large next to its peak speed, so its columns
   // may disagree at 1 ms as a short move's do. It is slowed as one is (consistentSlowdown), by
@@ -46,7 +46,7 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   if (plan && !columnsAgree(settings, *plan.value().trajectory)) {
     Result<Plan> joined = plan;
     const auto joined_agrees = [&](const Trajectory& slower) {
-      joined = joinAfter("out of the clearance", request, slower, onward);
+      joined = joinAfter(PlanMethod::kLeftTheClearance, request, slower, onward);
       return joined && columnsAgree(settings, *joined.value().trajectory);
     };
     if (shortestSlowdown(model, escape.value(), settings.escape_slower_steps, joined_agrees)) plan = std::move(joined);

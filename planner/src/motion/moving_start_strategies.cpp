@@ -25,7 +25,7 @@ bool requestError(PlanStatus status) {
 // The rest-to-rest plan from where `stop` ends, after it.
 Result<Plan> planAfterStop(const MovingStartInputs& in, const Trajectory& stop) {
   return joinAfter(
-      "stop", in.request, stop,
+      PlanMethod::kStoppedFirst, in.request, stop,
       timedPath(in.model, in.paths, restOf(stop), in.request.goal, in.request.pieces, JointVector::Zero()));
 }
 
@@ -44,7 +44,7 @@ struct StopAndOnward {
 Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& prepared) {
   const Trajectory& stop = prepared.stop;
   const Result<Plan> onward = timePaths(in.model, prepared.onward, JointVector::Zero());
-  Result<Plan> plan = joinAfter("stop", in.request, stop, onward);
+  Result<Plan> plan = joinAfter(PlanMethod::kStoppedFirst, in.request, stop, onward);
   const MotionSettings& settings = in.model.planner.motion;
   const double steps = stop.duration_s() / settings.consistency_step_s;
   // The later instants of rest in the middle half between two samples (where the trapezoid across
@@ -68,8 +68,8 @@ Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& pre
     const auto joined_agrees = [&](const Trajectory& slower) {
       Plan slowed = onward.value();
       slowed.trajectory = std::make_shared<const Trajectory>(slower);
-      slowed.path_method += ", slowed to agree after the stop";
-      joined = joinAfter("stop", in.request, stop, std::move(slowed));
+      slowed.method.repairs |= PlanMethod::kSlowedAfterStop;
+      joined = joinAfter(PlanMethod::kStoppedFirst, in.request, stop, std::move(slowed));
       return joined && columnsAgree(settings, *joined.value().trajectory);
     };
     if (shortestSlowdown(in.model, *onward.value().trajectory, settings.onward_slower_steps, joined_agrees)) {

@@ -59,7 +59,7 @@ std::optional<Trajectory> consistentStart(const RobotModel& model, const Traject
 
 Result<Plan> inconsistentPlan() {
   return Result<Plan>::failure(
-      PlanStatus::kSolverNotConverged,
+      PlanStatus::kColumnsDisagree,
       "the trajectory's velocities or accelerations do not integrate to its positions at 1 ms");
 }
 
@@ -104,16 +104,16 @@ Result<Plan> timePaths(const RobotModel& model, const std::vector<PlannedPath>& 
       continue;
     }
     bool agree = columnsAgree(model.planner.motion, trajectory.value());
-    plan.path_method = path.method;
+    plan.method = path.method;
     // From rest, slowing this path by at most two steps costs less than a slower path would.
     if (!agree && speed == 0.0) {
       if (std::optional<Trajectory> slower = consistentSlowdown(model, trajectory.value())) {
         trajectory = std::move(*slower);
-        plan.path_method += ", slowed to agree at 1 ms";
+        plan.method.repairs |= PlanMethod::kSlowedToAgree;
         agree = true;
       } else if (std::optional<Trajectory> gentler = consistentStart(model, trajectory.value())) {
         trajectory = std::move(*gentler);
-        plan.path_method += ", gentler start to agree at 1 ms";
+        plan.method.repairs |= PlanMethod::kGentlerStart;
         agree = true;
       }
     }
@@ -151,14 +151,15 @@ double estimatedSeconds(const RobotModel& model, const Result<std::vector<Planne
 
 JointVector restOf(const Trajectory& trajectory) { return trajectory.path().at(trajectory.path().length()).q; }
 
-Result<Plan> joinAfter(const char* what, const PlanRequest& request, const Trajectory& first, Result<Plan> onward) {
+Result<Plan> joinAfter(PlanMethod::Repair first_is, const PlanRequest& request, const Trajectory& first,
+                       Result<Plan> onward) {
   if (!onward) return onward;
   Result<Trajectory> joined = joinAtRest(first, *onward.value().trajectory);
   if (!joined) return joined.error();
   Plan plan = std::move(onward).value();
   plan.trajectory = std::make_shared<const Trajectory>(std::move(joined).value());
   plan.waypoints.insert(plan.waypoints.begin(), request.start);
-  plan.path_method = fmt::format("{}, then {}", what, plan.path_method);
+  plan.method.repairs |= first_is;
   return plan;
 }
 

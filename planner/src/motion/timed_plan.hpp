@@ -41,8 +41,9 @@ double estimatedSeconds(const RobotModel& model, const Result<std::vector<Planne
 // Where a trajectory ends.
 JointVector restOf(const Trajectory& trajectory);
 
-// `first` (a stop, or a way out of the clearance, named by `what`), then the rest-to-rest plan
-// `onward` from where it ends.
-Result<Plan> joinAfter(const char* what, const PlanRequest& request, const Trajectory& first, Result<Plan> onward);
+// `first` (a stop, or a way out of the clearance: which one, `first_is`), then the rest-to-rest
+// plan `onward` from where it ends.
+Result<Plan> joinAfter(PlanMethod::Repair first_is, const PlanRequest& request, const Trajectory& first,
+                       Result<Plan> onward);
 
 }  // namespace cyber::planner

@@ -208,7 +208,7 @@ Result<std::vector<PlannedPath>> PathPlanner::stayingPath(const JointVector& sta
   out.waypoints = out.search_waypoints = single;
   out.min_clearance_m = start_distance_m;
   out.direct = true;
-  out.method = "zero-length";
+  out.method.smoothing = PlanMethod::Smoothing::kStaying;
   return std::vector<PlannedPath>{out};
 }
 
@@ -259,12 +259,15 @@ Result<std::vector<PlannedPath>> PathPlanner::smoothedCandidates(CandidateInputs
                                                                  std::span<const PathStrategy> strategies) const {
   const Clock::time_point t_smooth = Clock::now();
   CandidateList list;
-  if (smoothPolyline(inputs, inputs.polyline, "", inputs.first, list)) list.putFirst(inputs.first);
+  if (smoothPolyline(inputs, inputs.polyline, inputs.first, list)) list.putFirst(inputs.first);
   if (!strategies.empty() && !inputs.direct) {
     inputs.straight_estimate_s = straightEstimate(inputs.from(), inputs.goal, inputs.drives, model_.planner.metric,
                                                   model_.planner.strategies.timing_grid_points);
   }
-  for (const PathStrategy& strategy : strategies) strategy.run(inputs, list);
+  for (const PathStrategy& strategy : strategies) {
+    list.adding_for = strategy.name;
+    strategy.run(inputs, list);
+  }
   const ClearanceCheck& last_check = list.last_check;
   std::vector<PlannedPath> candidates = list.release();
   const double smooth_ms = millisecondsSince(t_smooth);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cyber/planner/collision_world.hpp"
+#include "cyber/planner/motion_planner.hpp"
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
 #include "path/cspace_grid.hpp"
@@ -43,8 +44,8 @@ struct PlannedPath {
   bool lead_in = false;  // a straight lead-in along the start velocity was added
   int search_expanded = 0;
   int optimizer_iterations = 0;
-  std::string method;  // which attempt produced the path (e.g. "optimised", "prior")
-  HeldPieces pieces;   // held along it (its collision world's, and its drives' under rigid-body dynamics)
+  PlanMethod method;  // the strategy that added it and how it was smoothed
+  HeldPieces pieces;  // held along it (its collision world's, and its drives' under rigid-body dynamics)
 };
 
 class PathPlanner {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -38,13 +39,52 @@ struct PlanRequest {
 
 using SolverReport = ToppReport;
 
+/// How a plan was made (docs/algorithm.md section 2.6): which path strategy's candidate it follows,
+/// how that path became a spline, and what was done to the timed plan. Tests assert on it; logs
+/// and JSON print name().
+struct PlanMethod {
+  /// The strategy of a path that no strategy added: the straight segment or the search's path.
+  static constexpr std::string_view kFirstPath = "first path";
+
+  /// How the path's waypoints became a spline that keeps the clearance, in the order tried.
+  enum class Smoothing {
+    kStraight,                ///< a clear straight segment, as it is
+    kOptimised,               ///< the optimised waypoints (eq. 8)
+    kStrongerObstacleWeight,  ///< optimised again with ten times the obstacle weight
+    kPrior,                   ///< the resampled polyline, not optimised
+    kDensePrior,              ///< the polyline resampled four times as densely
+    kShaped,                  ///< another candidate's path shaped for time (shaped_from)
+    kSynchronised,            ///< the joints' own fastest motions side by side
+    kStaying,                 ///< start and goal are one pose
+  };
+
+  /// What was done to make or keep the timed plan sound (a set of these bits).
+  enum Repair : unsigned {
+    kStoppedFirst = 1U << 0,      ///< braked along the start velocity, then planned from rest
+    kLeftTheClearance = 1U << 1,  ///< out of the clearance along the steepest way, then planned
+    kSlowedToAgree = 1U << 2,     ///< slowed uniformly until its 1 ms columns agree
+    kGentlerStart = 1U << 3,      ///< its first acceleration made gentler until they agree
+    kSlowedAfterStop = 1U << 4,   ///< the plan after a stop slowed until the joined columns agree
+  };
+
+  std::string_view strategy = kFirstPath;  ///< PathStrategy::name, or kFirstPath
+  std::string_view shaped_from;            ///< kShaped: the strategy of the path that was shaped
+  Smoothing smoothing = Smoothing::kOptimised;
+  unsigned repairs = 0;  ///< Repair bits
+
+  [[nodiscard]] bool has(Repair repair) const { return (repairs & repair) != 0; }
+  /// One line for a person, e.g. "stop, then shortcut (optimised), slowed to agree at 1 ms".
+  [[nodiscard]] std::string name() const;
+  friend bool operator==(const PlanMethod&, const PlanMethod&) = default;
+};
+
 struct Plan {
   std::shared_ptr<const Trajectory> trajectory;
   std::vector<JointVector> waypoints;  // the spline's knots, exact start to exact goal
   StageTimesMs times_ms;
   SolverReport solver;
   double min_clearance_m = 0.0;  // smallest distance to an obstacle found along the path
-  std::string path_method;       // which path attempt succeeded (see PlannedPath::method)
+  PlanMethod method;             // how the path was found and the plan made sound
 };
 
 // Which grids create() builds: every one (the daemon, which must answer any goal without

@@ -55,12 +55,17 @@ enum class PlanStatus {
   kInfeasibleStart,     // the start velocity cannot be followed and brought to rest
   kSolverNotConverged,  // TOPP did not meet its residual tolerances within its cap
   kInternalError,       // an invariant the planner checks itself failed
+  // The timed trajectory's velocity or acceleration columns do not integrate to the columns above
+  // them at the consumer's 1 ms (docs/moving-starts.md, "Consistent columns"), and no slower or
+  // gentler variant of the plan made them agree.
+  kColumnsDisagree,
 };
 
 std::string_view toString(PlanStatus status);
 
 // Exit code of a status for command-line tools (design.md): 2 bad input (malformed or non-finite),
-// 3 no feasible motion (out of range, in collision, no path, solver did not converge).
+// 3 no feasible motion (out of range, in collision, no path, solver did not converge, columns
+// that disagree).
 int exitCodeOf(PlanStatus status);
 
 /// What went wrong: a PlanStatus and a message for a person (cyber/result.hpp).

@@ -31,14 +31,15 @@ std::vector<PathStrategy>& registeredStrategies() {
 // fastest_s: `fastest`'s estimate on that grid.
 void putFirstIfFaster(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest, double fastest_s,
                       CubicSplinePath path, std::vector<JointVector> waypoints, double min_clearance_m,
-                      std::string method) {
+                      PlanMethod::Smoothing smoothing) {
   const PathStrategySettings& s = in.settings();
   if (!(estimateDuration(path, in.drives, in.b_start, s.check_grid_points) < (1.0 - s.shape_gain) * fastest_s)) return;
   PlannedPath better = fastest;
   better.path = std::make_shared<const CubicSplinePath>(std::move(path));
   better.waypoints = std::move(waypoints);
   better.min_clearance_m = min_clearance_m;
-  better.method = std::move(method);
+  better.method.shaped_from = smoothing == PlanMethod::Smoothing::kShaped ? fastest.method.strategy : "";
+  better.method.smoothing = smoothing;
   list.putFirst(std::move(better));
 }
 
@@ -63,7 +64,7 @@ void addShaped(const CandidateInputs& in, CandidateList& list, const PlannedPath
   if (shaped.improvements == 0) return;
   putFirstIfFaster(in, list, fastest, estimateOf(in, fastest, settings.strategies.check_grid_points),
                    std::move(shaped.path), std::move(shaped.waypoints), shaped.min_clearance_m,
-                   "shaped for time, " + fastest.method);
+                   PlanMethod::Smoothing::kShaped);
 }
 
 // The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
@@ -100,10 +101,9 @@ double shortcutClearance(const CandidateInputs& in) {
 }
 
 // `line` smoothed as a copy of the first path, added in the order of estimated time.
-void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line,
-                 const char* label) {
+void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line) {
   PlannedPath alternative = in.first;
-  if (smoothPolyline(in, line, label, alternative, list)) list.addInTimeOrder(in, std::move(alternative));
+  if (smoothPolyline(in, line, alternative, list)) list.addInTimeOrder(in, std::move(alternative));
 }
 
 double CandidateList::estimate(const CandidateInputs& in, size_t i) {
@@ -112,6 +112,7 @@ double CandidateList::estimate(const CandidateInputs& in, size_t i) {
 }
 
 void CandidateList::addInTimeOrder(const CandidateInputs& in, PlannedPath path) {
+  path.method.strategy = adding_for;
   const double seconds = estimateOf(in, path, in.settings().timing_grid_points);
   size_t at = 0;
   while (at < paths_.size() && estimate(in, at) <= seconds) ++at;
@@ -120,12 +121,14 @@ void CandidateList::addInTimeOrder(const CandidateInputs& in, PlannedPath path) 
 }
 
 void CandidateList::putFirst(PlannedPath path) {
+  path.method.strategy = adding_for;
   estimates_s_.insert(estimates_s_.begin(), std::numeric_limits<double>::quiet_NaN());
   paths_.insert(paths_.begin(), std::move(path));
 }
 
-bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& line, const std::string& label,
-                    PlannedPath& into, CandidateList& list) {
+bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& line, PlannedPath& into,
+                    CandidateList& list) {
+  using Smoothing = PlanMethod::Smoothing;
   const JointVector& metric = in.model.planner.metric;
   const SmoothingSettings& smoothing = in.model.planner.smoothing;
   const int fixed_head = in.fixed_head;
@@ -136,7 +139,7 @@ bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& l
     prior.insert(prior.end(), resampled.begin(), resampled.end());
     return prior;
   };
-  auto accept = [&](const std::vector<JointVector>& waypoints, const std::string& method) {
+  auto accept = [&](const std::vector<JointVector>& waypoints, Smoothing smoothing) {
     auto spline = CubicSplinePath::through(waypoints, metric, in.start_velocity);
     if (!spline.ok()) return false;
     list.last_check = checkPath(spline.value(), in.world, in.model, in.model.clearance_m);
@@ -144,21 +147,21 @@ bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& l
     into.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
     into.waypoints = waypoints;
     into.min_clearance_m = list.last_check.min_distance_m;
-    into.method = label + method;
+    into.method.smoothing = smoothing;
     return true;
   };
-  if (in.direct && fixed_head == 1) return accept(line, "straight");
+  if (in.direct && fixed_head == 1) return accept(line, Smoothing::kStraight);
   const std::vector<JointVector> prior = prior_at(smoothing.waypoint_spacing);
   const SmoothingResult optimised = optimizePath(in.world, prior, fixed_head, in.model, smoothing);
   into.optimizer_iterations += optimised.lbfgs.iterations;
-  if (accept(optimised.waypoints, "optimised")) return true;
+  if (accept(optimised.waypoints, Smoothing::kOptimised)) return true;
   SmoothingSettings stronger = smoothing;
   stronger.obstacle_weight *= 10.0;
   const SmoothingResult pushed = optimizePath(in.world, prior, fixed_head, in.model, stronger);
   into.optimizer_iterations += pushed.lbfgs.iterations;
-  if (accept(pushed.waypoints, "optimised, obstacle weight x10")) return true;
-  if (accept(prior, "prior")) return true;
-  return accept(prior_at(0.25 * smoothing.waypoint_spacing), "dense prior");
+  if (accept(pushed.waypoints, Smoothing::kStrongerObstacleWeight)) return true;
+  if (accept(prior, Smoothing::kPrior)) return true;
+  return accept(prior_at(0.25 * smoothing.waypoint_spacing), Smoothing::kDensePrior);
 }
 
 double straightEstimate(const JointVector& from, const JointVector& to, const DriveModel& drives,

@@ -66,6 +66,8 @@ class CandidateList {
   void putFirst(PlannedPath path);
   // The clearance check of the last smoothing attempt: the reason when no candidate is left.
   ClearanceCheck last_check;
+  // The strategy whose run adds candidates now: what each added one's PlanMethod names.
+  std::string_view adding_for = PlanMethod::kFirstPath;
 
  private:
   std::vector<PlannedPath> paths_;
@@ -73,10 +75,10 @@ class CandidateList {
 };
 
 // Smooths `line` (which starts with the inputs' fixed head) into `into`: resample, optimise
-// (eq. 8), spline, continuous check, weaker smoothing on failure; `label` prefixes the method.
-// False when no attempt keeps the clearance and the limits (the last check is in `list`).
-bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& line, const std::string& label,
-                    PlannedPath& into, CandidateList& list);
+// (eq. 8), spline, continuous check, weaker smoothing on failure (PlanMethod::Smoothing says which
+// held). False when no attempt keeps the clearance and the limits (the last check is in `list`).
+bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& line, PlannedPath& into,
+                    CandidateList& list);
 
 // The straight-segment estimate from rest (obstacles ignored), 0 between the same poses.
 double straightEstimate(const JointVector& from, const JointVector& to, const DriveModel& drives,
@@ -90,7 +92,7 @@ double slowerJointAlone(const JointVector& from, const JointVector& to, const Dr
 // fastest_s: `fastest`'s estimate on that grid.
 void putFirstIfFaster(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest, double fastest_s,
                       CubicSplinePath path, std::vector<JointVector> waypoints, double min_clearance_m,
-                      std::string method);
+                      PlanMethod::Smoothing smoothing);
 // The shape search from `knots` (through which `fastest` runs), refined further when its shape
 // is still estimated well above the slower joint moving alone; put first when faster.
 void addShaped(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest,
@@ -102,8 +104,7 @@ std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std
 // The clearance a shortcut keeps: the model's, with PathStrategySettings' margin.
 double shortcutClearance(const CandidateInputs& in);
 // `line` smoothed as a copy of the first path, added in the order of estimated time.
-void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line,
-                 const char* label);
+void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line);
 
 struct PathStrategy {
   std::string_view name;

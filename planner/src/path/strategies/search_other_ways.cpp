@@ -36,12 +36,12 @@ void searchOtherWays(const CandidateInputs& in, CandidateList& list) {
   if (in.direct || list.empty()) return;
   const PathStrategySettings& s = in.settings();
   if (!(list.estimate(in, 0) > s.detour_ratio * in.straight_estimate_s)) return;
-  auto add_search = [&](const std::optional<SearchPath>& found, const char* label) {
+  auto add_search = [&](const std::optional<SearchPath>& found) {
     if (!found) return;
     std::vector<JointVector> around(in.polyline.begin(), in.polyline.begin() + in.fixed_head);
     for (int cell : found->cells) around.push_back(in.grid.node(cell));
     around.push_back(in.goal);
-    addSmoothed(in, list, shortcutPolyline(in.world, around, in.fixed_head, shortcutClearance(in)), label);
+    addSmoothed(in, list, shortcutPolyline(in.world, around, in.fixed_head, shortcutClearance(in)));
   };
   // Without a hole the other way round is the search with the first path's band blocked; with
   // holes, the other side of each (the band also blocks a narrow corridor both ways share, leaving
@@ -49,14 +49,12 @@ void searchOtherWays(const CandidateInputs& in, CandidateList& list) {
   const std::vector<GridHole>& holes = in.grid.holes();
   if (holes.empty()) {
     const std::vector<std::uint8_t> band = bandAround(in.grid, in.first_cells, s.band_radius_nodes);
-    add_search(astarSearch(in.grid, in.source_links, in.goal_links, in.goal, SearchOptions{.also_blocked = band}),
-               "other way round, ");
+    add_search(astarSearch(in.grid, in.source_links, in.goal_links, in.goal, SearchOptions{.also_blocked = band}));
   }
   for (size_t h = 0; h < std::min(holes.size(), static_cast<size_t>(s.max_hole_sides)); ++h) {
     const SideOfHole other_side{holes[h], 1 - rayCrossingParity(in.grid, holes[h], in.first_cells)};
     add_search(astarSearch(in.grid, in.source_links, in.goal_links, in.goal,
-                           SearchOptions{.side = other_side, .max_cost = s.max_side_cost * in.first_cost}),
-               "other side, ");
+                           SearchOptions{.side = other_side, .max_cost = s.max_side_cost * in.first_cost}));
   }
 }
 

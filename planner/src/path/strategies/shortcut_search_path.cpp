@@ -10,7 +10,7 @@ void shortcutSearchPath(const CandidateInputs& in, CandidateList& list) {
   if (in.direct) return;
   const std::vector<JointVector> shortcut =
       shortcutPolyline(in.world, in.polyline, in.fixed_head, shortcutClearance(in));
-  if (shortcut.size() < in.polyline.size()) addSmoothed(in, list, shortcut, "shortcut, ");
+  if (shortcut.size() < in.polyline.size()) addSmoothed(in, list, shortcut);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ void synchroniseJoints(const CandidateInputs& in, CandidateList& list) {
   if (auto synchronised = synchronisedPath(in.start, in.goal, in.world, in.model, fastest_s / s.synchronised_ratio,
                                            in.model.planner.synchronised)) {
     putFirstIfFaster(in, list, fastest, fastest_s, std::move(synchronised->path), std::move(synchronised->waypoints),
-                     synchronised->min_clearance_m, "synchronised joints");
+                     synchronised->min_clearance_m, PlanMethod::Smoothing::kSynchronised);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <random>
 #include <string>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
@@ -52,13 +53,13 @@ TEST(MovingStartStrategies, LeavingAlongTheVelocityStartsWithThatVelocity) {
   const PlanRequest request = aheadRequest();
   const MovingStartCandidate candidate =
       leaveAlongVelocity(MovingStartInputs{test::referenceModel(), drawnPathPlanner(referencePlanner(), 0), request});
-  ASSERT_FALSE(candidate.refused) << candidate.refused->reason;
+  ASSERT_FALSE(candidate.refused) << candidate.refused->message;
   EXPECT_TRUE(std::isfinite(candidate.estimate_s));
   EXPECT_LT(candidate.lower_bound_s, candidate.estimate_s);
   const Result<Plan> plan = candidate.time();
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   const Trajectory& trajectory = *plan.value().trajectory;
-  EXPECT_EQ(plan.value().path_method.rfind("stop", 0), std::string::npos) << plan.value().path_method;
+  EXPECT_FALSE(plan.value().method.has(PlanMethod::kStoppedFirst)) << plan.value().method.name();
   EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
   EXPECT_LT((trajectory.sample(trajectory.duration_s()).q - request.goal).norm(), 1e-6);
   // Its estimate is what the chooser compares: within the reachability pass's error of the time.
@@ -69,10 +70,10 @@ TEST(MovingStartStrategies, StoppingFirstComesToRestAlongTheVelocityThenPlans) {
   const PlanRequest request = awayRequest();
   const MovingStartCandidate candidate =
       stopFirst(MovingStartInputs{test::referenceModel(), drawnPathPlanner(referencePlanner(), 0), request});
-  ASSERT_FALSE(candidate.refused) << candidate.refused->reason;
+  ASSERT_FALSE(candidate.refused) << candidate.refused->message;
   const Result<Plan> plan = candidate.time();
   ASSERT_TRUE(plan.ok()) << plan.error().message;
-  EXPECT_EQ(plan.value().path_method.rfind("stop, then", 0), 0u) << plan.value().path_method;
+  EXPECT_TRUE(plan.value().method.has(PlanMethod::kStoppedFirst)) << plan.value().method.name();
   const Trajectory& trajectory = *plan.value().trajectory;
   EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
   // In its first half it comes to rest (the slowest instant there, found at 10 us steps, is all but
@@ -101,7 +102,7 @@ TEST(MovingStartStrategies, StoppingFirstIsRefusedWhenTheJointLimitComesFirst) {
   const MovingStartCandidate candidate =
       stopFirst(MovingStartInputs{model, drawnPathPlanner(referencePlanner(), 0), request});
   ASSERT_TRUE(candidate.refused);
-  EXPECT_EQ(candidate.refused->status, PlanStatus::kInfeasibleStart) << candidate.refused->reason;
+  EXPECT_EQ(candidate.refused->status, PlanStatus::kInfeasibleStart) << candidate.refused->message;
   EXPECT_FALSE(candidate.time);
 }
 
@@ -130,7 +131,7 @@ TEST(MovingStartStrategies, TheWholeListIsWhatMotionPlannerPlans) {
     }
     ++compared;
     EXPECT_EQ(listed.value().trajectory->duration_s(), planned.value().trajectory->duration_s()) << i;
-    EXPECT_EQ(listed.value().path_method, planned.value().path_method) << i;
+    EXPECT_EQ(listed.value().method, planned.value().method) << i;
   }
   EXPECT_GE(compared, 6);
 }
@@ -143,11 +144,11 @@ struct Fake {
 };
 std::array<Fake, 2> fakes;
 
-Plan restPlan(const std::string& method) {
+Plan restPlan(std::string_view method) {  // a literal: the plan keeps a view of it
   PlanRequest request = aheadRequest();
   request.start_velocity = JointVector::Zero();
   Plan plan = referencePlanner().plan(request).value();
-  plan.path_method = method;
+  plan.method.strategy = method;
   return plan;
 }
 
@@ -202,7 +203,7 @@ TEST_F(MovingStartChooser, DoesNotTimeACandidateThatCannotBeatOneTimedAlready) {
   fakes[1].candidate = timedAs(2.0 * duration, 1.5 * duration, restPlan("second"));
   const Result<Plan> chosen = chooseFakes();
   ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().path_method, "first");
+  EXPECT_EQ(chosen.value().method.strategy, "first");
   EXPECT_EQ(fakes[0].timed, 1);
   EXPECT_EQ(fakes[1].prepared, 1);
   EXPECT_EQ(fakes[1].timed, 0);
@@ -216,7 +217,7 @@ TEST_F(MovingStartChooser, TimesACandidateLeftOutWhenTheOneThatPromisedMoreFails
   fakes[1].candidate = timedAs(duration, 0.9 * duration, Result<Plan>(inconsistentPlan()));
   const Result<Plan> chosen = chooseFakes();
   ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().path_method, "first");
+  EXPECT_EQ(chosen.value().method.strategy, "first");
   EXPECT_EQ(fakes[0].timed, 1);
   EXPECT_EQ(fakes[1].timed, 1);
 }
@@ -232,14 +233,14 @@ TEST_F(MovingStartChooser, TheShorterAgreeingPlanWinsAndTiesGoToTheEarlierStrate
   fakes[1].candidate = timedAs(duration, 0.5 * duration, faster);
   Result<Plan> chosen = chooseFakes();
   ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().path_method, "second");
+  EXPECT_EQ(chosen.value().method.strategy, "second");
 
   fakes = {};
   fakes[0].candidate = timedAs(duration, 0.5 * duration, restPlan("first"));
   fakes[1].candidate = timedAs(duration, 0.5 * duration, restPlan("second"));
   chosen = chooseFakes();
   ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().path_method, "first");
+  EXPECT_EQ(chosen.value().method.strategy, "first");
 }
 
 TEST_F(MovingStartChooser, ARefusalGivesEveryStrategysReason) {

@@ -67,19 +67,19 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
     ASSERT_TRUE(plan.ok()) << plan.error().message;
     const Trajectory& trajectory = *plan.value().trajectory;
     ++compared;
-    stopped_first += plan.value().path_method.rfind("stop", 0) == 0 ? 1 : 0;
+    stopped_first += plan.value().method.has(PlanMethod::kStoppedFirst) ? 1 : 0;
     // Where the jump of acceleration at the instant of rest falls badly between two samples, the
     // stop is made gentler by at most 1.5 sample steps (docs/moving-starts.md).
     EXPECT_LE(trajectory.duration_s(), std::max(1.005 * stop_first_s, stop_first_s + 1.5 * kStepS))
-        << plan.value().path_method;
+        << plan.value().method.name();
     over_bound += trajectory.duration_s() > 1.005 * stop_first_s ? 1 : 0;
     EXPECT_LT((trajectory.sample(0.0).q - request.start).norm(), 1e-9);
     EXPECT_LT((trajectory.sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
     EXPECT_LT((trajectory.sample(trajectory.duration_s()).q - request.goal).norm(), 1e-6);
     EXPECT_LT(trajectory.sample(trajectory.duration_s()).qdot.norm(), 1e-6);
     const ColumnConsistency c = columnConsistency(trajectory, kStepS);
-    EXPECT_LE(c.position_error, 0.01) << plan.value().path_method;
-    EXPECT_LE(c.velocity_error, 0.02) << plan.value().path_method;
+    EXPECT_LE(c.position_error, 0.01) << plan.value().method.name();
+    EXPECT_LE(c.velocity_error, 0.02) << plan.value().method.name();
   }
   // Most random starts can stop and reach their goal; both candidates win somewhere.
   EXPECT_GE(compared, kStarts / 2);
@@ -117,7 +117,7 @@ TEST(MovingStart, AShortMoveAfterTheStopIsSlowedRatherThanLosingToTheSlowerCandi
                                     JointVector(0.80615715896675055, 2.7645670388188806),
                                     JointVector(0.7081390749417088, -4.7212700707904016));
   ASSERT_TRUE(plan.ok()) << plan.error().message;
-  EXPECT_EQ(plan.value().path_method.rfind("stop", 0), 0u) << plan.value().path_method;
+  EXPECT_TRUE(plan.value().method.has(PlanMethod::kStoppedFirst)) << plan.value().method.name();
   // Stopping first took 0.0675 s before the short move was slowed (by at most two steps).
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.0675 + 2.5 * kStepS);
   const ColumnConsistency c = columnConsistency(*plan.value().trajectory, kStepS);

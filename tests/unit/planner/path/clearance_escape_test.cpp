@@ -53,7 +53,7 @@ TEST(ClearanceEscape, PlansFromInsideTheClearanceLeaveWithoutComingCloser) {
     }
     ++planned;
     const Trajectory& trajectory = *plan.value().trajectory;
-    EXPECT_EQ(plan.value().path_method.rfind("out of the clearance, then ", 0), 0u) << plan.value().path_method;
+    EXPECT_TRUE(plan.value().method.has(PlanMethod::kLeftTheClearance)) << plan.value().method.name();
     EXPECT_LT((trajectory.sample(0.0).q - start).norm(), 1e-12);
     EXPECT_LT((trajectory.sample(trajectory.duration_s()).q - kStow).norm(), 1e-9);
     const double d_start = world.distance(start).value;

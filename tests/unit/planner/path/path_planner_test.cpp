@@ -98,7 +98,7 @@ void checkEveryPublicMove(const PathPlanner& planner) {
     EXPECT_EQ(planned.search_waypoints.back(), move.to);
     const DenseCheck check = denseCheck(path, planner.world(move.pieces));
     EXPECT_LE(check.max_step, 1e-3) << move.label;
-    EXPECT_GE(check.min_distance, model().clearance_m) << move.label << " via " << planned.method;
+    EXPECT_GE(check.min_distance, model().clearance_m) << move.label << " via " << planned.method.name();
     EXPECT_TRUE(check.within_limits) << move.label;
     // The planner's own minimum (certified steps, then a dense scan around the closest sample)
     // agrees with the dense one to within the sampling.
@@ -132,18 +132,20 @@ TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
     const auto found = planner().candidates(move.from, move.to, move.pieces);
     if (!found.ok() || !found.value().back().direct) continue;
     const std::vector<PlannedPath>& all = found.value();
-    EXPECT_EQ(all.back().method, "straight") << move.label;
+    EXPECT_EQ(all.back().method.smoothing, PlanMethod::Smoothing::kStraight) << move.label;
     if (all.size() == 1) {
       ++straight;
       continue;
     }
     ASSERT_LE(all.size(), 3U) << move.label;
     for (size_t i = 0; i + 1 < all.size(); ++i) {
-      const std::string& method = all[i].method;
-      const bool known = method == "shaped for time, straight" || method == "synchronised joints";
-      EXPECT_TRUE(known) << move.label << ": " << method;
-      shaped += method == "shaped for time, straight" ? 1 : 0;
-      synchronised += method == "synchronised joints" ? 1 : 0;
+      const PlanMethod& method = all[i].method;
+      const bool shaped_straight =
+          method.smoothing == PlanMethod::Smoothing::kShaped && method.shaped_from == PlanMethod::kFirstPath;
+      const bool joints = method.smoothing == PlanMethod::Smoothing::kSynchronised;
+      EXPECT_TRUE(shaped_straight || joints) << move.label << ": " << method.name();
+      shaped += shaped_straight ? 1 : 0;
+      synchronised += joints ? 1 : 0;
       EXPECT_LT(estimateDuration(*all[i].path, drives, 0.0, 100), estimateDuration(*all[i + 1].path, drives, 0.0, 100))
           << move.label;
       EXPECT_GE(all[i].min_clearance_m, model().clearance_m) << move.label;

@@ -88,7 +88,7 @@ TEST(RefineShapeForTime, HoldingTheTouchedPlaceStillFindsAFasterShape) {
   ASSERT_TRUE(found.ok());
   const PlannedPath* shortcut = nullptr;
   for (const PlannedPath& c : found.value()) {
-    if (c.method.starts_with("shortcut")) shortcut = &c;
+    if (c.method.strategy == "shortcut") shortcut = &c;
   }
   ASSERT_NE(shortcut, nullptr);
   const CollisionWorld& world = planner().world(move.pieces);

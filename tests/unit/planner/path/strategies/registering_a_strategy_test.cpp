@@ -16,12 +16,9 @@ namespace {
 
 constexpr const char* kThrowAway = "throw-away";
 
-// A copy of the fastest candidate, marked as this strategy's and put first.
+// A copy of the fastest candidate put first: the list marks it as this strategy's.
 void markTheFastest(const CandidateInputs& /*in*/, CandidateList& list) {
-  if (list.empty()) return;
-  PlannedPath mine = list.front();
-  mine.method = kThrowAway;
-  list.putFirst(std::move(mine));
+  if (!list.empty()) list.putFirst(list.front());
 }
 
 const PathStrategyRegistration kRegistration{
@@ -41,7 +38,7 @@ TEST(RegisteringAStrategy, TheChooserTriesItAndCanSelectIt) {
   const test::PublicMove& move = test::publicMove("none:STOW->L4");
   const auto candidates = test::referencePathPlanner().candidates(move.from, move.to, move.pieces);
   ASSERT_TRUE(candidates.ok()) << candidates.error().message;
-  EXPECT_EQ(candidates.value().front().method, kThrowAway);
+  EXPECT_EQ(candidates.value().front().method.strategy, kThrowAway);
 
   auto planner = MotionPlanner::create(test::referenceModel());
   ASSERT_TRUE(planner.ok()) << planner.error().message;
@@ -51,7 +48,7 @@ TEST(RegisteringAStrategy, TheChooserTriesItAndCanSelectIt) {
   request.pieces = move.pieces;
   const auto plan = planner.value().plan(request);
   ASSERT_TRUE(plan.ok()) << plan.error().message;
-  EXPECT_EQ(plan.value().path_method.rfind(kThrowAway, 0), 0u) << plan.value().path_method;
+  EXPECT_EQ(plan.value().method.strategy, kThrowAway) << plan.value().method.name();
 }
 
 }  // namespace

@@ -7,7 +7,7 @@ namespace cyber::planner::test_strategies {
 namespace {
 
 const MadeFor kMadeFor[] = {
-    {"other ways round", "none:L1->NET", "other side, ", false},
+    {"other ways round", "none:L1->NET", PlanMethod::Smoothing::kOptimised, false},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 

@@ -7,7 +7,7 @@ namespace cyber::planner::test_strategies {
 namespace {
 
 const MadeFor kMadeFor[] = {
-    {"shape the fastest path", "none:STOW->L4", "shaped for time, ", true},
+    {"shape the fastest path", "none:STOW->L4", PlanMethod::Smoothing::kShaped, true},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 

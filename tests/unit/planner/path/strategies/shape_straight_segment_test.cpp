@@ -7,7 +7,7 @@ namespace cyber::planner::test_strategies {
 namespace {
 
 const MadeFor kMadeFor[] = {
-    {"shape the straight segment", "none:STOW->INTAKE", "shaped for time, straight", true},
+    {"shape the straight segment", "none:STOW->INTAKE", PlanMethod::Smoothing::kShaped, true},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 

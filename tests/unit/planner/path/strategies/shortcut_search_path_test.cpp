@@ -7,7 +7,7 @@ namespace cyber::planner::test_strategies {
 namespace {
 
 const MadeFor kMadeFor[] = {
-    {"shortcut", "none:INTAKE->L4", "shortcut, ", false},
+    {"shortcut", "none:INTAKE->L4", PlanMethod::Smoothing::kOptimised, false},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 

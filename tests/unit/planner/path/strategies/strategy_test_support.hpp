@@ -50,13 +50,11 @@ inline std::vector<PlannedPath> candidatesOf(const PathPlanner& planner, const s
   return found.ok() ? std::move(found).value() : std::vector<PlannedPath>{};
 }
 
-inline bool startsWith(const std::string& text, std::string_view prefix) { return text.rfind(prefix, 0) == 0; }
-
 struct MadeFor {
   const char* strategy;
-  const char* move;    // a public move of the reference robot
-  const char* method;  // the prefix of the candidate's method
-  bool put_first;      // it replaces the fastest only when faster (else: in the order of its estimate)
+  const char* move;                 // a public move of the reference robot
+  PlanMethod::Smoothing smoothing;  // how its candidate becomes a spline
+  bool put_first;                   // it replaces the fastest only when faster (else: in the order of its estimate)
 };
 
 inline void PrintTo(const MadeFor& c, std::ostream* os) { *os << c.strategy << " on " << c.move; }
@@ -71,9 +69,10 @@ TEST_P(StrategyMadeFor, AddsAClearCandidateOnItsMove) {
   const std::vector<PlannedPath> with = candidatesOf(planner, c.move, {&strategy, 1});
   ASSERT_EQ(first.size(), 1u);
   ASSERT_GT(with.size(), first.size());
-  const auto added =
-      std::find_if(with.begin(), with.end(), [&](const auto& p) { return startsWith(p.method, c.method); });
-  ASSERT_NE(added, with.end()) << c.move << ": first " << with.front().method;
+  const auto added = std::find_if(with.begin(), with.end(), [&](const auto& p) {
+    return p.method.strategy == c.strategy && p.method.smoothing == c.smoothing;
+  });
+  ASSERT_NE(added, with.end()) << c.move << ": first " << with.front().method.name();
   EXPECT_GE(added->min_clearance_m, planner.model().clearance_m);
   EXPECT_TRUE(added->waypoints.front().isApprox(test::publicMove(c.move).from));
   EXPECT_TRUE(added->waypoints.back().isApprox(test::publicMove(c.move).to));
@@ -111,7 +110,7 @@ TEST_P(StrategyAddsNothing, WhenItsGateIsShutOrItDoesNotApply) {
   const std::vector<PlannedPath> first = candidatesOf(planner, c.move, {}, c.start_velocity);
   const std::vector<PlannedPath> with = candidatesOf(planner, c.move, {&strategy, 1}, c.start_velocity);
   ASSERT_EQ(with.size(), first.size());
-  EXPECT_EQ(with.front().method, first.front().method);
+  EXPECT_EQ(with.front().method, first.front().method) << with.front().method.name();
 }
 
 }  // namespace cyber::planner::test_strategies

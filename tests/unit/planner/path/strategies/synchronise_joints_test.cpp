@@ -7,8 +7,8 @@ namespace cyber::planner::test_strategies {
 namespace {
 
 const MadeFor kMadeFor[] = {
-    {"synchronise the joints", "none:INTAKE->STOW", "synchronised joints", true},
-    {"synchronise the joints", "coral:INTAKE->STOW", "synchronised joints", true},
+    {"synchronise the joints", "none:INTAKE->STOW", PlanMethod::Smoothing::kSynchronised, true},
+    {"synchronise the joints", "coral:INTAKE->STOW", PlanMethod::Smoothing::kSynchronised, true},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 
