@@ -159,10 +159,9 @@ planner::ConvexPolygon polygonFrom(const toml::node& node, const std::string& pa
   if (a == nullptr) failAt(path, "expected a polygon: an array of [x, y] vertices");
   std::vector<planner::Point2> vertices;
   for (size_t i = 0; i < a->size(); ++i) vertices.push_back(pointFrom((*a)[i], path + "[" + std::to_string(i) + "]"));
-  std::string why;
-  planner::ConvexPolygon polygon = planner::ConvexPolygon::fromVertices(std::move(vertices), &why);
-  if (polygon.empty()) failAt(path, why);
-  return polygon;
+  auto polygon = planner::ConvexPolygon::fromVertices(std::move(vertices));
+  if (!polygon) failAt(path, polygon.error().message);
+  return std::move(polygon).value();
 }
 
 }  // namespace cyber::config::detail

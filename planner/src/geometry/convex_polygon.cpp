@@ -11,11 +11,8 @@ double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * 
 
 }  // namespace
 
-ConvexPolygon ConvexPolygon::fromVertices(std::vector<Point2> v, std::string* error) {
-  auto fail = [&](const std::string& why) {
-    if (error != nullptr) *error = why;
-    return ConvexPolygon{};
-  };
+Result<ConvexPolygon> ConvexPolygon::fromVertices(std::vector<Point2> v) {
+  auto fail = [](std::string why) { return PlanError{PlanStatus::kInvalidInput, std::move(why)}; };
   const int n = static_cast<int>(v.size());
   if (n < 3) return fail("a polygon needs at least 3 vertices, got " + std::to_string(n));
   for (const Point2& p : v) {
@@ -45,7 +42,6 @@ ConvexPolygon ConvexPolygon::fromVertices(std::vector<Point2> v, std::string* er
     winding += std::atan2(cross(e0, e1), e0.dot(e1));
   }
   if (std::abs(winding - 2.0 * std::numbers::pi) > 1e-6) return fail("polygon is not convex (self-intersecting)");
-  if (error != nullptr) error->clear();
   return ConvexPolygon(std::move(v));
 }
 

@@ -98,10 +98,9 @@ class ConvexPolygon {
  public:
   ConvexPolygon() = default;
 
-  // Accepts either orientation and stores counter-clockwise. Returns an empty optional-like
-  // error text when the vertices are fewer than 3, non-finite, collinear or not convex.
-  // `error` is set to the reason on failure (and the returned polygon is empty).
-  static ConvexPolygon fromVertices(std::vector<Point2> vertices, std::string* error);
+  // Accepts either orientation and stores counter-clockwise. kInvalidInput, with the reason, when
+  // the vertices are fewer than 3, non-finite, collinear or not convex.
+  static Result<ConvexPolygon> fromVertices(std::vector<Point2> vertices);
 
   // Everything the polygon covers while it slides along x from lo_m to hi_m (lo_m <= hi_m): the
   // convex hull of its two end copies (a Minkowski sum with a segment). For lo_m == hi_m, the

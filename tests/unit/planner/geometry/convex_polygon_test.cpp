@@ -30,8 +30,8 @@ ConvexPolygon randomPolygon(std::mt19937& rng) {
     const double angle = 2 * M_PI * (i + 0.5 * u(rng)) / n;
     v.push_back(centre + Point2(radii.x() * std::cos(angle), radii.y() * std::sin(angle)));
   }
-  std::string error;
-  return ConvexPolygon::fromVertices(v, &error);
+  auto polygon = ConvexPolygon::fromVertices(v);
+  return polygon ? std::move(polygon).value() : ConvexPolygon{};
 }
 
 TEST(ConvexPolygon, ASweepIsConvexAndCoversExactlyWhereThePolygonSlides) {
@@ -43,8 +43,8 @@ TEST(ConvexPolygon, ASweepIsConvexAndCoversExactlyWhereThePolygonSlides) {
     if (p.empty()) continue;
     const double lo = u(rng) - 0.5, hi = lo + (trial % 5 == 0 ? 0.0 : u(rng));
     const ConvexPolygon swept = p.sweptAlongX(lo, hi);
-    std::string error;
-    ASSERT_FALSE(ConvexPolygon::fromVertices(swept.vertices(), &error).empty()) << error;
+    const auto valid = ConvexPolygon::fromVertices(swept.vertices());
+    ASSERT_TRUE(valid.ok()) << valid.error().message;
     // Every copy along the way is inside.
     for (int k = 0; k <= 10; ++k) {
       const double dx = lo + (hi - lo) * k / 10.0;

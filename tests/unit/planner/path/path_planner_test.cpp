@@ -229,8 +229,7 @@ TEST(PathPlanner, CagedGoalIsNoPath) {
   // clearance, but any motion out of it comes closer than the clearance.
   const Point2 pivot = linkFrames(model().joints, JointVector(1.0, 0.0))[1].origin_m;
   auto box = [](double x0, double y0, double x1, double y1) {
-    std::string error;
-    return ConvexPolygon::fromVertices({Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)}, &error);
+    return ConvexPolygon::fromVertices({Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)}).value();
   };
   Scene scene{"cage", {}, {}, {}};
   scene.obstacles.push_back({"floor", box(-2.0, -1.0, 2.0, 0.0)});
