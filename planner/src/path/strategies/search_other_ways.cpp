@@ -60,12 +60,7 @@ void searchOtherWays(const CandidateInputs& in, CandidateList& list) {
 
 }  // namespace
 
-namespace path_strategies {
-extern const PathStrategy search_other_ways;
-const PathStrategy search_other_ways{.name = "other ways round",
-                                     .reason = "the search finds one way round an obstacle; another may be faster",
-                                     .order = 30,
-                                     .run = searchOtherWays};
-}  // namespace path_strategies
+CYBER_PATH_STRATEGY(search_other_ways, "other ways round", 30, searchOtherWays,
+                    "the search finds one way round an obstacle; another may be faster");
 
 }  // namespace cyber::planner

@@ -15,12 +15,7 @@ void shapeFastestPath(const CandidateInputs& in, CandidateList& list) {
 
 }  // namespace
 
-namespace path_strategies {
-extern const PathStrategy shape_fastest_path;
-const PathStrategy shape_fastest_path{.name = "shape the fastest path",
-                                      .reason = "the fastest path keeps to the middle of the free space; time may not",
-                                      .order = 40,
-                                      .run = shapeFastestPath};
-}  // namespace path_strategies
+CYBER_PATH_STRATEGY(shape_fastest_path, "shape the fastest path", 40, shapeFastestPath,
+                    "the fastest path keeps to the middle of the free space; time may not");
 
 }  // namespace cyber::planner

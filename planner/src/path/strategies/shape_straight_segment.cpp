@@ -30,13 +30,7 @@ void shapeStraightSegment(const CandidateInputs& in, CandidateList& list) {
 
 }  // namespace
 
-namespace path_strategies {
-extern const PathStrategy shape_straight_segment;
-const PathStrategy shape_straight_segment{
-    .name = "shape the straight segment",
-    .reason = "a straight segment is not the fastest path when the joints' limits differ (gravity, voltage)",
-    .order = 10,
-    .run = shapeStraightSegment};
-}  // namespace path_strategies
+CYBER_PATH_STRATEGY(shape_straight_segment, "shape the straight segment", 10, shapeStraightSegment,
+                    "a straight segment is not the fastest path when the joints' limits differ (gravity, voltage)");
 
 }  // namespace cyber::planner

@@ -15,13 +15,7 @@ void shortcutSearchPath(const CandidateInputs& in, CandidateList& list) {
 
 }  // namespace
 
-namespace path_strategies {
-extern const PathStrategy shortcut_search_path;
-const PathStrategy shortcut_search_path{
-    .name = "shortcut",
-    .reason = "the search's grid and potential bend the path; time favours straight segments",
-    .order = 20,
-    .run = shortcutSearchPath};
-}  // namespace path_strategies
+CYBER_PATH_STRATEGY(shortcut_search_path, "shortcut", 20, shortcutSearchPath,
+                    "the search's grid and potential bend the path; time favours straight segments");
 
 }  // namespace cyber::planner

@@ -30,13 +30,7 @@ void synchroniseJoints(const CandidateInputs& in, CandidateList& list) {
 
 }  // namespace
 
-namespace path_strategies {
-extern const PathStrategy synchronise_joints;
-const PathStrategy synchronise_joints{
-    .name = "synchronise the joints",
-    .reason = "from rest, many moves are as fast as their slower joint alone; the search's paths lose 3-5 %",
-    .order = 50,
-    .run = synchroniseJoints};
-}  // namespace path_strategies
+CYBER_PATH_STRATEGY(synchronise_joints, "synchronise the joints", 50, synchroniseJoints,
+                    "from rest, many moves are as fast as their slower joint alone; the search's paths lose 3-5 %");
 
 }  // namespace cyber::planner
