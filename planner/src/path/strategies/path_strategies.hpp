@@ -115,11 +115,11 @@ struct PathStrategy {
 
 // Defines the strategy of a file of this folder: path_strategies::<the file's name>, which the
 // build's list of the folder names (planner/CMakeLists.txt).
-#define CYBER_PATH_STRATEGY(file_name, name, order, run, reason)  \
-  namespace path_strategies {                                     \
-  extern const PathStrategy file_name;                            \
-  const PathStrategy file_name{(name), (reason), (order), (run)}; \
-  }
+#define CYBER_PATH_STRATEGY(file_name, name, order, run, reason) \
+  namespace path_strategies {                                    \
+  extern const PathStrategy file_name;                           \
+  }                                                              \
+  const PathStrategy path_strategies::file_name { (name), (reason), (order), (run) }
 
 // The strategies, in the order they are tried: every file of this folder, and any registered.
 std::span<const PathStrategy> pathStrategies();
