@@ -18,6 +18,11 @@ struct AlSettings {
   double penalty_max = 1e6;      // beta
   int lbfgs_memory = 8;
   int refresh_interval = 5;  // L-BFGS iterations before the preconditioner is refactored
+  // An outer step's inner solve stops at this share of the primal residual (as a relative dual
+  // residual), at most inner_target_cap and at least dual_tolerance: early outer steps need no
+  // more accuracy than their constraint violation, so they take few inner iterations.
+  double inner_target_share = 0.1;
+  double inner_target_cap = 1e-2;
 };
 
 }  // namespace cyber::planner::topp
@@ -76,6 +81,13 @@ struct ToppSettings {
   double refine_above = 0.02;   // overshoots beyond this fraction refine the grid instead
   int max_grid_factor = 8;      // the grid may grow to this multiple of grid_points
   int timing_grid_points = 64;  // of the coarse grid whose profile places the real one's nodes
+  // Of the real grid, the share placed evenly in the coarse profile's time (the rest by the path's
+  // curvature): the slow ends of a rest-to-rest move, where the limits change fastest in time, get
+  // more points than a grid even in s gives them (docs/algorithm.md section 3, "Grid").
+  double time_grid_share = 0.4;
+  // No cell counts more than this many times the mean time: the ends from rest would otherwise
+  // shrink the first intervals without bound (time ~ sqrt(s)) and the solver's conditioning with them.
+  double max_time_density = 8.0;
   // Tolerances, caps and penalty schedule of the solver; [planner.topp] sets all but the L-BFGS ones.
   topp::AlSettings solver;
 };
@@ -205,6 +217,29 @@ struct MotionSettings {
   double rest_estimate_low = 0.95;
 };
 
+// The fastest stop along a start velocity (planner/src/motion/fastest_stop.hpp; docs/moving-starts.md):
+// the shortest line along v0 on which the start speed brakes to rest, found by bracketing and false
+// position on how much more than the start speed each line can stop from.
+struct StopSettings {
+  // Grid of the first estimate from below of the braking distance (an outer bound on the
+  // deceleration): fine enough that the bracket around it rarely needs more than a step or two.
+  int estimate_points = 200;
+  // The bracket widens around the estimate by this factor at a time, at most bracket_steps times
+  // each way: 1.2^12 (about 9) covers an estimate off by an order of magnitude.
+  double bracket_growth = 1.2;
+  int bracket_steps = 12;
+  // The line is at most this share longer than the shortest that stops: a stop 0.01 % longer than
+  // needed costs well under a microsecond.
+  double length_tolerance = 1e-4;
+  // When neither the braking profile nor the optimiser's refined limits stop on that line, it is
+  // lengthened by this factor, at most max_retries times (1.002^8, 1.6 % longer, at worst).
+  double retry_growth = 1.002;
+  int max_retries = 8;
+  // The line never runs further than this (weighted C-space units) when no joint limit comes first:
+  // far beyond any stop of a mechanism that fits a robot, it only bounds the bracket.
+  double max_length = 10.0;
+};
+
 struct PlannerSettings {
   JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
   GridSettings grid;
@@ -216,6 +251,7 @@ struct PlannerSettings {
   ShapeRefinementSettings shape_refinement;
   SynchronisedSettings synchronised;
   MotionSettings motion;
+  StopSettings stop;
 };
 
 }  // namespace cyber::planner
