@@ -107,7 +107,8 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
     // so lowering the end limits by the excess (plus a little) brings the peak to the limit.
     for (const Excess& e : excesses) {
       double& margin = margins.at(e.interval, e.joint, e.kind);
-      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, settings.max_margin * e.limit);
+      margin = std::min(margin + settings.margin_overshoot * e.amount + settings.margin_floor * e.limit,
+                        settings.max_margin * e.limit);
     }
   }
   return within;

@@ -66,6 +66,10 @@ class LimitMargins {
 // only bounds the reachability search.
 inline constexpr double kSpeedBound = 1e3;
 
+// C_k is a cap for the forward pass and the optimiser absorbs what lies below it, so the backward
+// pass bisects it to this relative width only (topp_reachability.cpp).
+inline constexpr double kControllableTolerance = 1e-5;
+
 // kSpeedBound in the units of the unit-length problem of a path `length` long.
 inline double unitSpeedBound(double length) { return kSpeedBound / length; }
 
@@ -88,7 +92,7 @@ struct Problem {
   // No speed c = sqrt(b) above this is searched for (in the problem's units; unitSpeedBound).
   double speed_bound = kSpeedBound;
   // The backward pass bisects each C_k to this relative width (a cap for the forward pass).
-  double controllable_tolerance = 1e-5;
+  double controllable_tolerance = kControllableTolerance;
   [[nodiscard]] int gridPoints() const { return static_cast<int>(s.size()); }
   [[nodiscard]] int intervals() const { return gridPoints() - 1; }
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }

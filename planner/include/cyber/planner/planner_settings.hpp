@@ -35,6 +35,9 @@ namespace cyber::planner {
 
 struct GridSettings {
   JointVector step = JointVector(0.02, 0.02);  // cell size of each joint, joint units
+  // Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
+  // a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
+  double joint_limit_margin = 0.005;
 };
 
 struct SearchSettings {
@@ -67,6 +70,9 @@ struct SmoothingSettings {
   // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
   double lead_in_time_s = 0.1;
   double max_lead_in = 0.3;
+  // w_lim of the soft joint-limit term (path_optimizer.hpp): a stiffer one slows L-BFGS down a lot,
+  // and what this one leaves outside the margin is clamped.
+  double joint_limit_weight = 100.0;
 };
 
 struct ToppSettings {
@@ -77,9 +83,14 @@ struct ToppSettings {
   // Of limit_check_tolerance, the share accepted at the check's samples: the rest is left for
   // the overshoot between them (a referee samples other instants).
   double check_share = 0.6;
-  double max_margin = 0.05;     // limits are lowered by at most this fraction of themselves
-  double refine_above = 0.02;   // overshoots beyond this fraction refine the grid instead
-  int max_grid_factor = 8;      // the grid may grow to this multiple of grid_points
+  double max_margin = 0.05;    // limits are lowered by at most this fraction of themselves
+  double refine_above = 0.02;  // overshoots beyond this fraction refine the grid instead
+  int max_grid_factor = 8;     // the grid may grow to this multiple of grid_points
+  // After a failed check, a limit's margin grows by this multiple of its overshoot plus this share
+  // of the limit: the bulge between the grid points stays about the same when the limits at the
+  // ends move, so the excess and a little more bring the peak to the limit.
+  double margin_overshoot = 1.1;
+  double margin_floor = 1e-6;
   int timing_grid_points = 64;  // of the coarse grid whose profile places the real one's nodes
   // Of the real grid, the share placed evenly in the coarse profile's time (the rest by the path's
   // curvature): the slow ends of a rest-to-rest move, where the limits change fastest in time, get
@@ -99,6 +110,9 @@ struct ShapeSearchSettings {
   int grid_points = 40;                  // of each estimate
   JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]; about 10 ms of top speed each
   double min_step_fraction = 0.125;      // stop when the steps have shrunk to this share
+  // A shape (here and in the refinement) is taken only when it is estimated at least this share
+  // faster: smaller gains are the estimate's noise.
+  double min_gain = 1e-4;
 };
 
 // The shape search's refinement (path_shaping.hpp): more bumps, each with its own step.
@@ -240,6 +254,16 @@ struct StopSettings {
   double max_length = 10.0;
 };
 
+// The way out of the clearance from a start inside it (planner/src/path/clearance_escape.hpp).
+struct EscapeSettings {
+  // How far past the clearance the escape ends [m], so that the plan from there starts clear of it.
+  double margin_m = 0.002;
+  // The first line's length is the distance's first-order estimate; while its end falls short of
+  // the target distance it grows by this factor, at most length_tries times.
+  double length_growth = 1.5;
+  int length_tries = 8;
+};
+
 struct PlannerSettings {
   JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
   GridSettings grid;
@@ -252,6 +276,7 @@ struct PlannerSettings {
   SynchronisedSettings synchronised;
   MotionSettings motion;
   StopSettings stop;
+  EscapeSettings escape;
 };
 
 }  // namespace cyber::planner
