@@ -37,20 +37,13 @@ TOKEN = re.compile(
 CONSTEXPR = re.compile(r"\bconstexpr\b(?P<type>[^;{}()=]*?)\b(?P<name>[A-Za-z_]\w*)\s*(?P<open>=|\{)")
 
 
-def blank(text, start, end):
-    """The text with [start, end) replaced by spaces, newlines kept so that line numbers hold."""
-    return text[:start] + re.sub(r"[^\n]", " ", text[start:end]) + text[end:]
-
-
 def strip(text):
     """The source with comments, strings and character literals blanked, and its numbers."""
     out = []
     numbers = []
     last = 0
     for m in TOKEN.finditer(text):
-        kind = m.lastgroup if m.lastgroup != "delim" else "raw"
-        if m.group("raw") is not None:
-            kind = "raw"
+        kind = "raw" if m.group("raw") is not None else m.lastgroup
         out.append(text[last:m.start()])
         if kind in ("comment", "raw", "string", "char"):
             out.append(re.sub(r"[^\n]", " ", m.group(0)))
@@ -75,7 +68,7 @@ def floating_value(token):
     return float(t.rstrip("fFlL"))
 
 
-def statement_end(code, start, open_kind):
+def statement_end(code, start):
     """Where the declaration that starts at start ends: after its ';' at brace depth 0."""
     depth = 0
     i = start
@@ -97,7 +90,7 @@ def constants(code):
     """Each constexpr variable's name and the span of its initialiser."""
     found = []
     for m in CONSTEXPR.finditer(code):
-        found.append((m.group("name"), m.start("open"), statement_end(code, m.start("open"), m.group("open"))))
+        found.append((m.group("name"), m.start("open"), statement_end(code, m.start("open"))))
     return found
 
 

@@ -73,6 +73,11 @@ struct SmoothingSettings {
   // w_lim of the soft joint-limit term (path_optimizer.hpp): a stiffer one slows L-BFGS down a lot,
   // and what this one leaves outside the margin is clamped.
   double joint_limit_weight = 100.0;
+  // When the smoothed path misses the clearance, smoothing is tried again with the obstacle weight
+  // multiplied by this, then the prior itself, then a prior with waypoints this share of
+  // waypoint_spacing apart: the fallbacks of path_strategies.cpp, which still spell them 10.0, 0.25.
+  double retry_obstacle_factor = 10.0;
+  double dense_prior_share = 0.25;
 };
 
 struct ToppSettings {
