@@ -86,7 +86,7 @@ std::optional<std::string> readPieces(const GoalRequest& goal, const planner::Ro
 planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
   if (!isName(goal.scene_name))
     return Failure::failure(PlanStatus::kInvalidInput, notAName("scene_name", goal.scene_name));
-  if (auto problem = checkPosition(goal.position, robot)) return Failure::failure(problem->status, problem->reason);
+  if (auto problem = checkPosition(goal.position, robot)) return Failure::failure(problem->status, problem->message);
   ValidGoal valid;
   valid.request_id = goal.request_id;
   valid.q = goal.position;
