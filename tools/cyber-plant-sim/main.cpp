@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +42,120 @@ cyber::planner::JointVector defaultInitialPose(const cyber::config::Config& conf
   return {0.5 * (robot.range(0).min + robot.range(0).max), 0.5 * (robot.range(1).min + robot.range(1).max)};
 }
 
+// Refuses an --initial outside the ranges, an unknown piece and a bad [daemon.devices]: the exit
+// status to leave with, or none when the options hold.
+std::optional<int> refusedOptions(const cyber::config::Config& config, const SimOptions& options,
+                                  const cyber::planner::JointVector& initial_q,
+                                  const cyber::cli::ProgramUsage& program) {
+  const auto& robot = config.robot;
+  if (!robot.withinLimits(initial_q)) {
+    return cyber::cli::reportBadUsage(
+        program, cyber::cli::badUsage("--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
+                                      " is outside the joint ranges of " + robot.name));
+  }
+  for (const std::string& piece : options.pieces) {
+    if (robot.pieceIndex(piece) < 0) {
+      std::string error;
+      (void)robot.piecesNamed(piece, &error);
+      return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + error));
+    }
+  }
+  const auto& devices = config.daemon.devices;
+  if (!validDevice(devices.joints[0]) || !validDevice(devices.joints[1]) || devices.joints[0] == devices.joints[1]) {
+    std::cerr << "cyber-plant-sim: [daemon.devices] " << robot.joints[0].name << " and " << robot.joints[1].name
+              << " must be distinct numbers 0..63\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
+// What the simulator runs: devices, names and units of the joints, the channels, and the plant
+// with the held pieces' mass (moved with a rigid-body chain; a feedforward drive ignores it).
+cyber::plant::RunnerSetup runnerSetup(const cyber::config::Config& config, const SimOptions& options,
+                                      const cyber::planner::JointVector& initial_q) {
+  const auto& robot = config.robot;
+  cyber::plant::RunnerSetup setup;
+  setup.options = options;
+  setup.options.initial_q = initial_q;
+  for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
+    setup.joint_devices[j] = static_cast<std::uint8_t>(config.daemon.devices.joints[j]);
+    setup.joint_names[j] = robot.joints[j].name;
+    setup.joint_units[j] = cyber::planner::unitName(robot.joints[j].type);
+  }
+  setup.state_channel = config.daemon.channels.state;
+  setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
+  auto& sim = setup.simulation;
+  std::string piece_names;
+  for (const std::string& piece : options.pieces) piece_names += (piece_names.empty() ? "" : ",") + piece;
+  const cyber::planner::HeldPieces held =
+      robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
+  sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
+                                         options.controller_bandwidth_radps);
+  for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {
+    if (options.joint_gains[joint]) sim.gains[joint] = *options.joint_gains[joint];
+  }
+  sim.setpoint_timeout_s = options.setpoint_timeout_s;
+  return setup;
+}
+
+// Only the two setpoint ids reach the simulator; the kernel drops everything else.
+cyber::can::SocketOptions setpointSocketOptions(const cyber::plant::RunnerSetup& setup) {
+  cyber::can::SocketOptions socket_options;
+  socket_options.filters = std::vector<cyber::can::IdFilter>{
+      cyber::can::IdFilter::exact(
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[0]),
+          true),
+      cyber::can::IdFilter::exact(
+          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[1]),
+          true)};
+  return socket_options;
+}
+
+// The state log with its header (null without --log); false when it cannot be opened.
+bool openStateLog(const SimOptions& options, const cyber::config::Config& config, std::FILE*& log) {
+  log = nullptr;
+  if (!options.log_path) return true;
+  log = std::fopen(options.log_path->c_str(), "w");
+  if (log == nullptr) {
+    std::perror(("cyber-plant-sim: " + *options.log_path).c_str());
+    return false;
+  }
+  std::setvbuf(log, nullptr, _IOFBF, 1 << 16);
+  std::fprintf(log, "%s\n", cyber::plant::stateLogHeader(config.robot.joints).c_str());
+  return true;
+}
+
+// SCHED_FIFO at --realtime's priority (none when 0); false when the kernel refuses.
+bool applyRealtimePriority(const SimOptions& options) {
+  if (options.realtime_priority <= 0) return true;
+  sched_param param{};
+  param.sched_priority = options.realtime_priority;
+  if (sched_setscheduler(0, SCHED_FIFO, &param) != 0) {
+    std::perror("cyber-plant-sim: --realtime: sched_setscheduler");
+    return false;
+  }
+  return true;
+}
+
+// The control FIFO (-1 without --control), opened read-write: it then never reports end-of-file
+// when a writer such as `echo KIND > FIFO` closes it. False when it cannot be made or opened.
+bool openControlFifo(const SimOptions& options, int& control_fd) {
+  control_fd = -1;
+  if (!options.control_path) return true;
+  const char* path = options.control_path->c_str();
+  if (::mkfifo(path, 0600) != 0 && errno != EEXIST) {
+    std::perror(("cyber-plant-sim: mkfifo " + *options.control_path).c_str());
+    return false;
+  }
+  control_fd = ::open(path, O_RDWR | O_NONBLOCK | O_CLOEXEC);
+  struct stat info {};
+  if (control_fd < 0 || ::fstat(control_fd, &info) != 0 || !S_ISFIFO(info.st_mode)) {
+    std::cerr << "cyber-plant-sim: --control " << *options.control_path << " is not a FIFO it can open\n";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -65,108 +180,26 @@ int main(int argc, char** argv) {
     std::cerr << "cyber-plant-sim: " << error.what() << "\n";
     return 2;
   }
-  const auto& robot = config.robot;
   const cyber::planner::JointVector initial_q = options.initial_q.value_or(defaultInitialPose(config));
-  if (!robot.withinLimits(initial_q)) {
-    return cyber::cli::reportBadUsage(
-        program, cyber::cli::badUsage("--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
-                                      " is outside the joint ranges of " + robot.name));
-  }
-  for (const std::string& piece : options.pieces) {
-    if (robot.pieceIndex(piece) < 0) {
-      std::string error;
-      (void)robot.piecesNamed(piece, &error);
-      return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + error));
-    }
-  }
-  const auto& devices = config.daemon.devices;
-  if (!validDevice(devices.joints[0]) || !validDevice(devices.joints[1]) || devices.joints[0] == devices.joints[1]) {
-    std::cerr << "cyber-plant-sim: [daemon.devices] " << robot.joints[0].name << " and " << robot.joints[1].name
-              << " must be distinct numbers 0..63\n";
-    return 2;
-  }
+  if (const std::optional<int> status = refusedOptions(config, options, initial_q, program)) return *status;
+  const cyber::plant::RunnerSetup setup = runnerSetup(config, options, initial_q);
 
-  cyber::plant::RunnerSetup setup;
-  setup.options = options;
-  setup.options.initial_q = initial_q;
-  for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
-    setup.joint_devices[j] = static_cast<std::uint8_t>(devices.joints[j]);
-    setup.joint_names[j] = robot.joints[j].name;
-    setup.joint_units[j] = cyber::planner::unitName(robot.joints[j].type);
-  }
-  setup.state_channel = config.daemon.channels.state;
-  setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
-  auto& sim = setup.simulation;
-  // The held pieces' mass moves with a rigid-body chain (a feedforward drive ignores it).
-  std::string piece_names;
-  for (const std::string& piece : options.pieces) piece_names += (piece_names.empty() ? "" : ",") + piece;
-  const cyber::planner::HeldPieces held =
-      robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
-  sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
-                                         options.controller_bandwidth_radps);
-  for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {
-    if (options.joint_gains[joint]) sim.gains[joint] = *options.joint_gains[joint];
-  }
-  sim.setpoint_timeout_s = options.setpoint_timeout_s;
-
-  // Only the two setpoint ids reach us; the kernel drops everything else.
-  cyber::can::SocketOptions socket_options;
-  socket_options.filters = std::vector<cyber::can::IdFilter>{
-      cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[0]),
-          true),
-      cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[1]),
-          true)};
-  auto socket = cyber::can::CanSocket::open(setup.can_interface, socket_options);
+  auto socket = cyber::can::CanSocket::open(setup.can_interface, setpointSocketOptions(setup));
   if (!socket) {
     std::cerr << "cyber-plant-sim: " << socket.error().message << "\n";
     return 1;
   }
-
   const std::string lcm_url = options.lcm_url.value_or(config.daemon.lcm_url);
   lcm::LCM lcm(lcm_url);
   if (!lcm.good()) {
     std::cerr << "cyber-plant-sim: cannot open LCM at " << lcm_url << "\n";
     return 1;
   }
-
   std::FILE* log = nullptr;
-  if (options.log_path) {
-    log = std::fopen(options.log_path->c_str(), "w");
-    if (log == nullptr) {
-      std::perror(("cyber-plant-sim: " + *options.log_path).c_str());
-      return 1;
-    }
-    std::setvbuf(log, nullptr, _IOFBF, 1 << 16);
-    std::fprintf(log, "%s\n", cyber::plant::stateLogHeader(robot.joints).c_str());
-  }
-
-  if (options.realtime_priority > 0) {
-    sched_param param{};
-    param.sched_priority = options.realtime_priority;
-    if (sched_setscheduler(0, SCHED_FIFO, &param) != 0) {
-      std::perror("cyber-plant-sim: --realtime: sched_setscheduler");
-      return 1;
-    }
-  }
-
-  // The control FIFO is opened read-write: it then never reports end-of-file when a writer such
-  // as `echo KIND > FIFO` closes it.
+  if (!openStateLog(options, config, log)) return 1;
+  if (!applyRealtimePriority(options)) return 1;
   int control_fd = -1;
-  if (options.control_path) {
-    const char* path = options.control_path->c_str();
-    if (::mkfifo(path, 0600) != 0 && errno != EEXIST) {
-      std::perror(("cyber-plant-sim: mkfifo " + *options.control_path).c_str());
-      return 1;
-    }
-    control_fd = ::open(path, O_RDWR | O_NONBLOCK | O_CLOEXEC);
-    struct stat info {};
-    if (control_fd < 0 || ::fstat(control_fd, &info) != 0 || !S_ISFIFO(info.st_mode)) {
-      std::cerr << "cyber-plant-sim: --control " << *options.control_path << " is not a FIFO it can open\n";
-      return 1;
-    }
-  }
+  if (!openControlFifo(options, control_fd)) return 1;
 
   const int status = cyber::plant::runSimulator(setup, std::move(socket).value(), lcm, log, control_fd);
   if (control_fd >= 0) ::close(control_fd);

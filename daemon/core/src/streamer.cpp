@@ -119,8 +119,7 @@ bool Streamer::withinLimits(const JointSetpoints& s) const {
   return true;
 }
 
-void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out) {
-  out.reset();
+GateVerdict Streamer::gate(MonoNs now, const RobotInputs& inputs) {
   GateVerdict verdict = evaluateGate(inputs, now, settings_.gate);
   // A disable this tick has not seen stops motion even when an enabled heartbeat already followed it.
   const bool new_disable = inputs.broadcast_disable_count != disables_seen_;
@@ -132,44 +131,34 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   releases_seen_ = inputs.release_generation;
   if (verdict.open() && new_release) verdict.reason = GateReason::kReleased;
   if (verdict.open() && now < fault_until_ns_) verdict.reason = GateReason::kFault;
-  out.gate_reason = verdict.reason;
-  if (!verdict.open()) {
-    if (running_) stop(now, verdict.reason, out);
-    if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
-    out.mode = verdict.reason == GateReason::kFault      ? StreamMode::kFault
-               : verdict.reason == GateReason::kReleased ? StreamMode::kReleased
-               : isRobotDisabledReason(verdict.reason)   ? StreamMode::kRobotDisabled
-                                                         : StreamMode::kNoState;
-    out.request_id = last_request_;
-    return;
-  }
-  if (!running_) {
-    // (Re-)enabled: hold where the mechanism is, not where the last command was.
-    running_ = true;
-    holdOwn(now, inputs.measured_q, HoldCause::kEnabled, out);
-  }
-  if (stop_requested && !shutdown_hold_) {
-    holdOwn(now, last_sample_ns_ == kNever ? inputs.measured_q : last_position_, HoldCause::kShutdown, out);
-    shutdown_hold_ = true;
-  }
-  if (offered != nullptr) consider(now, offered, out);
+  return verdict;
+}
 
-  const ProgramSample sample = program_->sample(now, hold_);
-  if (!withinLimits(sample.setpoints)) {
-    // Never send a wrapped or NaN value: stop streaming, then hold the measured position.
-    StreamEvent fault;
-    fault.kind = StreamEventKind::kFault;
-    fault.time_ns = now;
-    fault.request_id = sample.request_id;
-    out.push(fault);
-    fault_until_ns_ = now + secondsToNs(settings_.fault_stop_s);
-    stop(now, GateReason::kFault, out);
-    out.gate_reason = GateReason::kFault;
-    out.mode = StreamMode::kFault;
-    out.request_id = last_request_;
-    return;
-  }
+void Streamer::closedGate(MonoNs now, const GateVerdict& verdict, Program* offered, TickOutput& out) {
+  if (running_) stop(now, verdict.reason, out);
+  if (offered != nullptr) reject(now, offered, RejectReason::kStaleBase, out);
+  out.mode = verdict.reason == GateReason::kFault      ? StreamMode::kFault
+             : verdict.reason == GateReason::kReleased ? StreamMode::kReleased
+             : isRobotDisabledReason(verdict.reason)   ? StreamMode::kRobotDisabled
+                                                       : StreamMode::kNoState;
+  out.request_id = last_request_;
+}
 
+void Streamer::sampleFault(MonoNs now, const ProgramSample& sample, TickOutput& out) {
+  // Never send a wrapped or NaN value: stop streaming, then hold the measured position.
+  StreamEvent fault;
+  fault.kind = StreamEventKind::kFault;
+  fault.time_ns = now;
+  fault.request_id = sample.request_id;
+  out.push(fault);
+  fault_until_ns_ = now + secondsToNs(settings_.fault_stop_s);
+  stop(now, GateReason::kFault, out);
+  out.gate_reason = GateReason::kFault;
+  out.mode = StreamMode::kFault;
+  out.request_id = last_request_;
+}
+
+void Streamer::reportProgress(MonoNs now, const ProgramSample& sample, TickOutput& out) {
   if (sample.request_id >= 0 && sample.request_id != executing_request_) {
     const Segment& segment = program_->segment(sample.segment);
     if (executing_request_ >= 0 && !done_reported_ && executing_end_ns_ <= segment.start_ns) {
@@ -202,7 +191,9 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
     out.push(event);
   }
   if (sample.request_id >= 0) last_request_ = sample.request_id;
+}
 
+void Streamer::send(MonoNs now, const ProgramSample& sample, TickOutput& out) {
   last_sample_ns_ = now;
   last_position_ = sample.setpoints.position;
   out.send_setpoints = true;
@@ -212,6 +203,34 @@ void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, boo
   out.segment_time_s = sample.segment_time_s;
   const MonoNs end = program_->endNs();
   out.remaining_s = end == kNever ? 0.0 : std::max(0.0, nsToSeconds(end - now));
+}
+
+void Streamer::tick(MonoNs now, const RobotInputs& inputs, Program* offered, bool stop_requested, TickOutput& out) {
+  out.reset();
+  const GateVerdict verdict = gate(now, inputs);
+  out.gate_reason = verdict.reason;
+  if (!verdict.open()) {
+    closedGate(now, verdict, offered, out);
+    return;
+  }
+  if (!running_) {
+    // (Re-)enabled: hold where the mechanism is, not where the last command was.
+    running_ = true;
+    holdOwn(now, inputs.measured_q, HoldCause::kEnabled, out);
+  }
+  if (stop_requested && !shutdown_hold_) {
+    holdOwn(now, last_sample_ns_ == kNever ? inputs.measured_q : last_position_, HoldCause::kShutdown, out);
+    shutdown_hold_ = true;
+  }
+  if (offered != nullptr) consider(now, offered, out);
+
+  const ProgramSample sample = program_->sample(now, hold_);
+  if (!withinLimits(sample.setpoints)) {
+    sampleFault(now, sample, out);
+    return;
+  }
+  reportProgress(now, sample, out);
+  send(now, sample, out);
 }
 
 }  // namespace cyber::daemon

@@ -7,6 +7,13 @@
 namespace cyber::planner {
 namespace {
 
+// Areas and turns (m^2) below these shares are roundoff of collinear points: a polygon is drawn
+// in metres, so its cross products are of order one.
+constexpr double kZeroArea = 1e-12;
+constexpr double kStraightTurn = 1e-12;
+// The turns of a convex polygon sum to 2 pi up to the roundoff of n atan2 calls; a star winds twice.
+constexpr double kWindingTolerance = 1e-6;
+
 double cross(const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
@@ -22,14 +29,14 @@ Result<ConvexPolygon> ConvexPolygon::fromVertices(std::vector<Point2> v) {
   // up to collinear points, which we reject because they make edge normals ambiguous).
   double twice_area = 0.0;
   for (int i = 0; i < n; ++i) twice_area += cross(v[static_cast<size_t>(i)], v[static_cast<size_t>((i + 1) % n)]);
-  if (std::abs(twice_area) < 1e-12) return fail("polygon has zero area");
+  if (std::abs(twice_area) < kZeroArea) return fail("polygon has zero area");
   if (twice_area < 0) std::reverse(v.begin(), v.end());
   for (int i = 0; i < n; ++i) {
     const Point2& a = v[static_cast<size_t>(i)];
     const Point2& b = v[static_cast<size_t>((i + 1) % n)];
     const Point2& c = v[static_cast<size_t>((i + 2) % n)];
     const double turn = cross(b - a, c - b);
-    if (turn <= 1e-12 * std::max(1.0, (b - a).squaredNorm() + (c - b).squaredNorm())) {
+    if (turn <= kStraightTurn * std::max(1.0, (b - a).squaredNorm() + (c - b).squaredNorm())) {
       return fail("polygon is not convex (or has collinear or repeated vertices) at vertex " +
                   std::to_string((i + 1) % n));
     }
@@ -41,7 +48,8 @@ Result<ConvexPolygon> ConvexPolygon::fromVertices(std::vector<Point2> v) {
     const Point2 e1 = v[static_cast<size_t>((i + 2) % n)] - v[static_cast<size_t>((i + 1) % n)];
     winding += std::atan2(cross(e0, e1), e0.dot(e1));
   }
-  if (std::abs(winding - 2.0 * std::numbers::pi) > 1e-6) return fail("polygon is not convex (self-intersecting)");
+  if (std::abs(winding - 2.0 * std::numbers::pi) > kWindingTolerance)
+    return fail("polygon is not convex (self-intersecting)");
   return ConvexPolygon(std::move(v));
 }
 

@@ -91,6 +91,8 @@ inline Point2 closestOnSegment(const Point2& x, const Point2& a, const Point2& b
 // the closest pair has its vertex in front of the edge it is closest to (or, for a closest
 // vertex of Q, in front of one of its two edges), so nothing is lost. The small tolerance keeps
 // touching contacts, where that "in front" is lost in roundoff.
+inline constexpr double kInFrontTolerance = 1e-9;  // m: the roundoff of a touching contact
+
 template <class P, class Q>
 void vertexEdgeDistances(const P& p, const Q& q, bool p_is_a, double* best2, PairDistance* out) {
   for (int j = 0; j < q.size(); ++j) {
@@ -99,7 +101,7 @@ void vertexEdgeDistances(const P& p, const Q& q, bool p_is_a, double* best2, Pai
     const Point2 n = q.normal(j);
     for (int i = 0; i < p.size(); ++i) {
       const Point2 x = p.vertex(i);
-      if (n.dot(x - a) < -1e-9) continue;
+      if (n.dot(x - a) < -kInFrontTolerance) continue;
       const Point2 c = closestOnSegment(x, a, b);
       const double d2 = (x - c).squaredNorm();
       if (d2 < *best2) {

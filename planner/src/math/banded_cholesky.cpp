@@ -22,6 +22,14 @@ double BandedCholesky::entry(Eigen::Index i, Eigen::Index j) const {
   return i - j > w_ ? 0.0 : at(i, j);
 }
 
+namespace {
+
+// Near the smallest normal double: a zero diagonal still gets a positive floor, and its square
+// root and reciprocal stay finite.
+constexpr double kTinyPivot = 1e-300;
+
+}  // namespace
+
 int BandedCholesky::factor(double min_pivot) {
   int replaced = 0;
   for (Eigen::Index j = 0; j < n_; ++j) {
@@ -29,9 +37,9 @@ int BandedCholesky::factor(double min_pivot) {
     const double original = at(j, j);
     double pivot = original;
     for (Eigen::Index k = first; k < j; ++k) pivot -= at(j, k) * at(j, k);
-    const double floor = min_pivot * std::max(std::abs(original), 1e-300);
+    const double floor = min_pivot * std::max(std::abs(original), kTinyPivot);
     if (!(pivot > floor)) {
-      pivot = std::max(floor, 1e-300);
+      pivot = std::max(floor, kTinyPivot);
       ++replaced;
     }
     const double diag = std::sqrt(pivot);

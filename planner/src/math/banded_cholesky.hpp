@@ -6,6 +6,10 @@
 
 namespace cyber::planner {
 
+// A pivot below this share of its diagonal entry has lost every digit to cancellation (a double
+// keeps about 16): the factor would be singular to roundoff.
+inline constexpr double kMinPivot = 1e-12;
+
 class BandedCholesky {
  public:
   // Clears to an n x n zero matrix of lower bandwidth w (entries (i, j) with i - w <= j <= i).
@@ -19,7 +23,7 @@ class BandedCholesky {
   // Factors in place. A pivot below `min_pivot` times its diagonal entry (or not positive) is
   // replaced by that floor, so the result is always a usable preconditioner; returns the number
   // of pivots replaced.
-  int factor(double min_pivot = 1e-12);
+  int factor(double min_pivot = kMinPivot);
   // x <- L^{-1} x and x <- L^{-T} x with the factor (x of size(); a vector or a contiguous
   // segment of one).
   void solveLower(Eigen::Ref<Eigen::VectorXd> x) const;

@@ -44,6 +44,81 @@ void twoLoopDirection(LbfgsWorkspace& w, int stored, int newest, double gamma) {
   }
 }
 
+// Pairs whose curvature s'y is below this share of |s| |y| are roundoff, not curvature: storing
+// one would make the inverse Hessian estimate singular or indefinite.
+constexpr double kCurvatureTolerance = 1e-12;
+
+// Evaluates f at x; the result's status is final (kNonFinite, kConverged) when there is nothing
+// to iterate, kMaxIterations otherwise. Split off so that the iteration reads on its own.
+LbfgsResult evaluateStart(const LbfgsObjective& f, const Eigen::VectorXd& x, const LbfgsSettings& settings,
+                          LbfgsWorkspace& w, double& cost) {
+  LbfgsResult result{LbfgsStatus::kMaxIterations, 0, 0, 0.0, 0.0};
+  if (!finite(x)) {
+    result.status = LbfgsStatus::kNonFinite;
+    result.cost = std::numeric_limits<double>::quiet_NaN();
+    result.gradient_norm = std::numeric_limits<double>::quiet_NaN();
+    return result;
+  }
+  cost = f(x, w.gradient);
+  ++result.evaluations;
+  result.cost = cost;
+  result.gradient_norm = w.gradient.norm();
+  if (!std::isfinite(cost) || !finite(w.gradient)) {
+    result.status = LbfgsStatus::kNonFinite;
+    return result;
+  }
+  if (x.size() == 0 || result.gradient_norm <= settings.gradient_tolerance) {
+    result.status = LbfgsStatus::kConverged;
+  }
+  return result;
+}
+
+// Lewis-Overton bracketing: [lo, hi] contains weak-Wolfe points; double until an upper bound is
+// found, then bisect. Returns whether a step was accepted (its point in w.x_trial and
+// w.gradient_trial, its cost in trial_cost); its own function so that the iteration stays short.
+bool weakWolfeLineSearch(const LbfgsObjective& f, const Eigen::VectorXd& x, double cost, double slope, double step,
+                         const LbfgsSettings& settings, LbfgsWorkspace& w, LbfgsResult& result, double& trial_cost) {
+  double lo = 0.0;
+  double hi = std::numeric_limits<double>::infinity();
+  const double roundoff = settings.roundoff_tolerance * std::max(1.0, std::abs(cost));
+  for (int ls = 0; ls < settings.max_line_search_steps; ++ls) {
+    w.x_trial = x + step * w.direction;
+    trial_cost = f(w.x_trial, w.gradient_trial);
+    ++result.evaluations;
+    const bool trial_finite = std::isfinite(trial_cost) && finite(w.gradient_trial);
+    const double trial_slope = trial_finite ? w.gradient_trial.dot(w.direction) : 0.0;
+    const bool sufficient = trial_finite && trial_cost <= cost + settings.armijo_c1 * step * slope;
+    const bool approximate = trial_finite && trial_cost <= cost + roundoff &&
+                             trial_slope >= settings.curvature_c2 * slope &&
+                             trial_slope <= (2.0 * settings.armijo_c1 - 1.0) * slope;
+    if (approximate || (sufficient && trial_slope >= settings.curvature_c2 * slope)) return true;
+    if (!sufficient) {
+      hi = step;
+    } else {
+      lo = step;
+    }
+    step = std::isinf(hi) ? 2.0 * lo : 0.5 * (lo + hi);
+  }
+  return false;
+}
+
+// Store the pair (s, y) of the accepted step; skip it when the curvature is not safely positive
+// (the inverse Hessian estimate must stay positive definite).
+void storePair(LbfgsWorkspace& w, const Eigen::VectorXd& x, int memory, int& newest, int& stored, double& gamma) {
+  newest = (newest + 1) % memory;
+  w.s_history.col(newest) = w.x_trial - x;
+  w.y_history.col(newest) = w.gradient_trial - w.gradient;
+  const double sy = w.s_history.col(newest).dot(w.y_history.col(newest));
+  const double yy = w.y_history.col(newest).squaredNorm();
+  if (sy > kCurvatureTolerance * std::sqrt(yy) * w.s_history.col(newest).norm() && yy > 0.0) {
+    w.rho[newest] = 1.0 / sy;
+    gamma = sy / yy;
+    stored = std::min(stored + 1, memory);
+  } else {
+    newest = (newest - 1 + memory) % memory;
+  }
+}
+
 }  // namespace
 
 LbfgsResult minimizeLbfgs(const LbfgsObjective& f, Eigen::VectorXd& x, const LbfgsSettings& settings) {
@@ -55,26 +130,9 @@ LbfgsResult minimizeLbfgs(const LbfgsObjective& f, Eigen::VectorXd& x, const Lbf
                           LbfgsWorkspace& w) {
   const int memory = std::max(1, settings.memory);
   w.resize(x.size(), memory);
-  LbfgsResult result{LbfgsStatus::kMaxIterations, 0, 0, 0.0, 0.0};
-
-  if (!finite(x)) {
-    result.status = LbfgsStatus::kNonFinite;
-    result.cost = std::numeric_limits<double>::quiet_NaN();
-    result.gradient_norm = std::numeric_limits<double>::quiet_NaN();
-    return result;
-  }
-  double cost = f(x, w.gradient);
-  ++result.evaluations;
-  result.cost = cost;
-  result.gradient_norm = w.gradient.norm();
-  if (!std::isfinite(cost) || !finite(w.gradient)) {
-    result.status = LbfgsStatus::kNonFinite;
-    return result;
-  }
-  if (x.size() == 0 || result.gradient_norm <= settings.gradient_tolerance) {
-    result.status = LbfgsStatus::kConverged;
-    return result;
-  }
+  double cost = 0.0;
+  LbfgsResult result = evaluateStart(f, x, settings, w, cost);
+  if (result.status != LbfgsStatus::kMaxIterations) return result;
 
   int stored = 0;
   int newest = memory - 1;
@@ -92,52 +150,12 @@ LbfgsResult minimizeLbfgs(const LbfgsObjective& f, Eigen::VectorXd& x, const Lbf
     double step = 1.0;
     if (stored == 0) step = settings.first_step > 0.0 ? settings.first_step : std::min(1.0, 1.0 / w.direction.norm());
 
-    // Lewis-Overton bracketing: [lo, hi] contains weak-Wolfe points; double until an upper
-    // bound is found, then bisect.
-    double lo = 0.0;
-    double hi = std::numeric_limits<double>::infinity();
-    bool accepted = false;
     double trial_cost = cost;
-    const double roundoff = settings.roundoff_tolerance * std::max(1.0, std::abs(cost));
-    for (int ls = 0; ls < settings.max_line_search_steps; ++ls) {
-      w.x_trial = x + step * w.direction;
-      trial_cost = f(w.x_trial, w.gradient_trial);
-      ++result.evaluations;
-      const bool trial_finite = std::isfinite(trial_cost) && finite(w.gradient_trial);
-      const double trial_slope = trial_finite ? w.gradient_trial.dot(w.direction) : 0.0;
-      const bool sufficient = trial_finite && trial_cost <= cost + settings.armijo_c1 * step * slope;
-      const bool approximate = trial_finite && trial_cost <= cost + roundoff &&
-                               trial_slope >= settings.curvature_c2 * slope &&
-                               trial_slope <= (2.0 * settings.armijo_c1 - 1.0) * slope;
-      if (approximate || (sufficient && trial_slope >= settings.curvature_c2 * slope)) {
-        accepted = true;
-        break;
-      }
-      if (!sufficient) {
-        hi = step;
-      } else {
-        lo = step;
-      }
-      step = std::isinf(hi) ? 2.0 * lo : 0.5 * (lo + hi);
-    }
-    if (!accepted) {
+    if (!weakWolfeLineSearch(f, x, cost, slope, step, settings, w, result, trial_cost)) {
       result.status = LbfgsStatus::kLineSearchFailed;
       break;
     }
-
-    // Store the pair (s, y); skip it when the curvature is not safely positive.
-    newest = (newest + 1) % memory;
-    w.s_history.col(newest) = w.x_trial - x;
-    w.y_history.col(newest) = w.gradient_trial - w.gradient;
-    const double sy = w.s_history.col(newest).dot(w.y_history.col(newest));
-    const double yy = w.y_history.col(newest).squaredNorm();
-    if (sy > 1e-12 * std::sqrt(yy) * w.s_history.col(newest).norm() && yy > 0.0) {
-      w.rho[newest] = 1.0 / sy;
-      gamma = sy / yy;
-      stored = std::min(stored + 1, memory);
-    } else {
-      newest = (newest - 1 + memory) % memory;
-    }
+    storePair(w, x, memory, newest, stored, gamma);
 
     const double decrease = cost - trial_cost;
     x.swap(w.x_trial);

@@ -8,18 +8,27 @@
 
 namespace cyber::planner {
 
+// The usual weak-Wolfe constants of quasi-Newton methods (Nocedal and Wright, Numerical
+// Optimization, section 3.1): facts of the method, not tuned on the planner's problems.
+inline constexpr double kArmijoC1 = 1e-4;
+inline constexpr double kCurvatureC2 = 0.9;
+// Some hundreds of ulps of a double (2.2e-16): below this share of the cost, decreases are roundoff.
+inline constexpr double kRoundoffTolerance = 1e-13;
+// For a direct caller; the planner's own set theirs (SmoothingSettings, ToppSettings::solver).
+inline constexpr double kDefaultGradientTolerance = 1e-6;
+
 struct LbfgsSettings {
   int memory = 8;
   int max_iterations = 200;
-  double gradient_tolerance = 1e-6;  // stop when the Euclidean norm of the gradient is below
+  double gradient_tolerance = kDefaultGradientTolerance;  // stop when the gradient's norm is below
   int max_line_search_steps = 40;
-  double armijo_c1 = 1e-4;    // sufficient decrease (weak Wolfe condition 1)
-  double curvature_c2 = 0.9;  // weak curvature condition (weak Wolfe condition 2)
+  double armijo_c1 = kArmijoC1;        // sufficient decrease (weak Wolfe condition 1)
+  double curvature_c2 = kCurvatureC2;  // weak curvature condition (weak Wolfe condition 2)
   // Near the optimum, cost differences drown in roundoff and the sufficient-decrease test fails
   // on good steps. A step is then accepted by the approximate Wolfe test of Hager and Zhang
   // (slope in [c2, 1 - 2 c1] times the initial slope) if its cost is within this fraction of
   // max(1, |cost|) above the current cost. 0 disables it.
-  double roundoff_tolerance = 1e-13;
+  double roundoff_tolerance = kRoundoffTolerance;
   // Optional second stopping rule (0 disables it): stop as converged when an accepted step lowers
   // the cost by less than this fraction of max(1, |cost|). Useful for inner solves.
   double relative_cost_tolerance = 0.0;

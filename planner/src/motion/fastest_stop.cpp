@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,12 +18,9 @@ namespace cyber::planner {
 namespace {
 
 constexpr double kNoStop = std::numeric_limits<double>::infinity();
-constexpr int kEstimatePoints = 200;
-constexpr double kBracketGrowth = 1.2;  // widens the bracket around the estimate
-constexpr int kBracketSteps = 12;
-constexpr double kLengthTolerance = 1e-4;  // relative: the line is at most this much longer than needed
-constexpr double kRetryGrowth = 1.002;     // when the solver (with refined limits) still cannot stop
-constexpr int kMaxRetries = 8;
+// False position keeps its point this share of the bracket inside either end, so that a bracket
+// whose one end hardly moves still shrinks from the other (the Illinois halving's safeguard).
+constexpr double kFalsePositionGuard = 0.01;
 
 // Weighted distance from `start` along `direction` to the first joint limit.
 double distanceToLimits(const RobotModel& model, const JointVector& start, const JointVector& direction) {
@@ -37,10 +35,10 @@ double distanceToLimits(const RobotModel& model, const JointVector& start, const
 
 // Where braking as hard as the rows at each node allow brings b_start to rest on a line of
 // `length` (an outer bound on the admissible deceleration, so an estimate from below).
-double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives, double b_start, topp::Problem& problem,
-                            topp::LimitMargins& margins) {
+double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives, double b_start, int points,
+                            topp::Problem& problem, topp::LimitMargins& margins) {
   const double length = line.length();
-  topp::sampleGrid(line, kEstimatePoints, problem);
+  topp::sampleGrid(line, points, problem);
   margins.reset(problem.intervals());
   std::string error;
   if (!topp::buildRows(drives, margins, problem, &error)) return kNoStop;
@@ -71,7 +69,7 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
   if (!topp::buildRows(drives, margins, problem, &error)) return R::failure(PlanStatus::kInvalidInput, error);
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
-  problem.speed_bound = 1e3 / length;
+  problem.speed_bound = topp::unitSpeedBound(length);
   const topp::ReachabilityResult r = topp::forwardBackward(problem, profile, controllable);
   if (r.status != topp::ReachabilityStatus::kOk || r.start_b != problem.b_start) {
     return R::failure(PlanStatus::kInfeasibleStart, "the start speed cannot be braked to rest on this line");
@@ -85,35 +83,22 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
   return trajectory;
 }
 
-}  // namespace
+// Lines along `direction` from `start` being sized for the stop, and the buffers their profiles
+// reuse: the length search below asks it about one length after another.
+struct StopLines {
+  const JointVector& start;
+  const JointVector& direction;
+  const DriveModel& drives;
+  double b_start;
+  int points;
+  topp::Problem& problem;
+  topp::LimitMargins& margins;
+  std::vector<double>& profile;
+  std::vector<double>& controllable;
 
-Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& world, const JointVector& start,
-                               const JointVector& velocity, ToppSolver& solver) {
-  using R = Result<Trajectory>;
-  const double speed = weightedNorm(velocity, model.planner.metric);
-  if (!std::isfinite(speed) || speed <= 0.0) return R::failure(PlanStatus::kInvalidInput, "no velocity to stop from");
-  const JointVector direction = velocity / speed;
-  const double b_start = speed * speed;
-  const DriveModel drives = model.driveModel(world.pieces());
-  const double reach = std::min(distanceToLimits(model, start, direction), 10.0);
-  const auto cannot_stop = [] {
-    return R::failure(PlanStatus::kInfeasibleStart,
-                      "the start velocity cannot be braked to rest inside the joint limits");
-  };
-  if (reach <= 0.0) return cannot_stop();
-
-  topp::Problem problem;
-  topp::LimitMargins margins;
-  const double estimate =
-      stopDistanceEstimate(StraightPath(start, direction, reach), drives, b_start, problem, margins);
-  if (estimate == kNoStop) return cannot_stop();
-  // The shortest line whose controllable start (on the solver's own grid) holds b_start: on it the
-  // time-optimal profile brakes from the first instant (a longer one would first speed up).
-  const int points = std::max(3, solver.settings().grid_points);
-  std::vector<double> profile, controllable;
   // How much more than b_start the line of `length` can still stop from, relative (negative: it
   // cannot stop b_start; -1 when no profile exists). Increasing in length.
-  auto margin = [&](double length) {
+  double margin(double length) const {
     if (length <= 0.0) return -1.0;
     topp::sampleGrid(StraightPath(start, direction, length), points, problem);
     margins.reset(problem.intervals());
@@ -121,36 +106,57 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
     if (!topp::buildRows(drives, margins, problem, &error)) return -1.0;
     problem.b_start = 0.0;
     problem.b_end = 0.0;
-    problem.speed_bound = 1e3 / length;
+    problem.speed_bound = topp::unitSpeedBound(length);
     const topp::ReachabilityResult r = topp::forwardBackward(problem, profile, controllable);
     if (r.status != topp::ReachabilityStatus::kOk) return -1.0;
     return r.controllable_start_b * length * length / b_start - 1.0;
-  };
+  }
+};
+
+// Lengths lo < hi whose margins m_lo < 0 <= m_hi enclose the shortest line that stops.
+struct StopBracket {
+  double lo;
+  double hi;
+  double m_lo;
+  double m_hi;
+};
+
+// Widens a bracket around the estimate until it encloses the shortest stopping line; none when
+// no line up to `reach` stops. Its own step, before the root finding, so each reads alone.
+std::optional<StopBracket> bracketStop(const StopLines& lines, double reach, double estimate,
+                                       const StopSettings& settings) {
   double hi = std::min(reach, estimate);
-  double m_hi = margin(hi);
-  for (int i = 0; i < kBracketSteps && m_hi < 0.0; ++i) {
-    if (hi >= reach) return cannot_stop();
-    hi = std::min(reach, kBracketGrowth * hi);
-    m_hi = margin(hi);
+  double m_hi = lines.margin(hi);
+  for (int i = 0; i < settings.bracket_steps && m_hi < 0.0; ++i) {
+    if (hi >= reach) return std::nullopt;
+    hi = std::min(reach, settings.bracket_growth * hi);
+    m_hi = lines.margin(hi);
   }
-  if (m_hi < 0.0) return cannot_stop();
-  double lo = hi / kBracketGrowth;
-  double m_lo = margin(lo);
-  for (int i = 0; i < kBracketSteps && m_lo >= 0.0; ++i) {
+  if (m_hi < 0.0) return std::nullopt;
+  double lo = hi / settings.bracket_growth;
+  double m_lo = lines.margin(lo);
+  for (int i = 0; i < settings.bracket_steps && m_lo >= 0.0; ++i) {
     hi = lo, m_hi = m_lo;
-    lo /= kBracketGrowth;
-    m_lo = margin(lo);
+    lo /= settings.bracket_growth;
+    m_lo = lines.margin(lo);
   }
-  // The stoppable b grows about in proportion to the length (b = 2 a d), so the margin is nearly
-  // linear in it: false position with the Illinois halving converges in a few passes where
-  // bisection takes a dozen; bisection where the lower end has no profile.
+  return StopBracket{lo, hi, m_lo, m_hi};
+}
+
+// The shortest stopping length within length_tolerance, from above. The stoppable b grows about in
+// proportion to the length (b = 2 a d), so the margin is nearly linear in it: false position with
+// the Illinois halving converges in a few passes where bisection takes a dozen; bisection where
+// the lower end has no profile.
+double shortestStopLength(const StopLines& lines, StopBracket bracket, double length_tolerance) {
+  double lo = bracket.lo, hi = bracket.hi, m_lo = bracket.m_lo, m_hi = bracket.m_hi;
   double f_lo = m_lo, f_hi = m_hi;  // the interpolated values, halved on the side that stays
   int kept_side = 0;
-  while (hi - lo > kLengthTolerance * hi && m_hi > kLengthTolerance) {
+  while (hi - lo > length_tolerance * hi && m_hi > length_tolerance) {
     double mid = 0.5 * (lo + hi);
     if (m_lo > -1.0)
-      mid = std::clamp(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));
-    const double m_mid = margin(mid);
+      mid = std::clamp(hi - f_hi * (hi - lo) / (f_hi - f_lo), lo + kFalsePositionGuard * (hi - lo),
+                       hi - kFalsePositionGuard * (hi - lo));
+    const double m_mid = lines.margin(mid);
     if (m_mid >= 0.0) {
       hi = mid, m_hi = f_hi = m_mid;
       if (kept_side == -1) f_lo *= 0.5;
@@ -161,9 +167,43 @@ Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& wo
       kept_side = 1;
     }
   }
+  return hi;
+}
 
-  double length = hi;
-  for (int attempt = 0; attempt <= kMaxRetries; ++attempt, length = std::min(reach, kRetryGrowth * length)) {
+}  // namespace
+
+Result<Trajectory> fastestStop(const RobotModel& model, const CollisionWorld& world, const JointVector& start,
+                               const JointVector& velocity, ToppSolver& solver) {
+  using R = Result<Trajectory>;
+  const StopSettings& settings = model.planner.stop;
+  const double speed = weightedNorm(velocity, model.planner.metric);
+  if (!std::isfinite(speed) || speed <= 0.0) return R::failure(PlanStatus::kInvalidInput, "no velocity to stop from");
+  const JointVector direction = velocity / speed;
+  const double b_start = speed * speed;
+  const DriveModel drives = model.driveModel(world.pieces());
+  const double reach = std::min(distanceToLimits(model, start, direction), settings.max_length);
+  const auto cannot_stop = [] {
+    return R::failure(PlanStatus::kInfeasibleStart,
+                      "the start velocity cannot be braked to rest inside the joint limits");
+  };
+  if (reach <= 0.0) return cannot_stop();
+
+  topp::Problem problem;
+  topp::LimitMargins margins;
+  const double estimate = stopDistanceEstimate(StraightPath(start, direction, reach), drives, b_start,
+                                               settings.estimate_points, problem, margins);
+  if (estimate == kNoStop) return cannot_stop();
+  // The shortest line whose controllable start (on the solver's own grid) holds b_start: on it the
+  // time-optimal profile brakes from the first instant (a longer one would first speed up).
+  const int points = std::max(3, solver.settings().grid_points);
+  std::vector<double> profile, controllable;
+  const StopLines lines{start, direction, drives, b_start, points, problem, margins, profile, controllable};
+  const std::optional<StopBracket> bracket = bracketStop(lines, reach, estimate, settings);
+  if (!bracket) return cannot_stop();
+
+  double length = shortestStopLength(lines, *bracket, settings.length_tolerance);
+  for (int attempt = 0; attempt <= settings.max_retries;
+       ++attempt, length = std::min(reach, settings.retry_growth * length)) {
     auto line = std::make_shared<const StraightPath>(start, direction, length);
     R braking = brakingProfile(line, model, drives, b_start, points, problem, margins, profile, controllable);
     // The optimiser's refined limits when the profile's own check fails (docs/moving-starts.md).

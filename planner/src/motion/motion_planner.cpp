@@ -19,6 +19,12 @@
 namespace cyber::planner {
 namespace {
 
+// Bands of scene offsets are never narrower than this [m]: a zero band width would mean infinitely
+// many sets of grids.
+constexpr double kNarrowestBandM = 1e-3;
+// An offset within this of a range's or band's end [m] is inside: the roundoff of a requested value.
+constexpr double kOffsetRoundoffM = 1e-9;
+
 double msSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -80,7 +86,7 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridS
     const JointRange& range = scene.offset_range_m;
     const double span = range.max - range.min;
     if (span <= 0.0 || !moves) continue;
-    const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, 1e-3))));
+    const int count = std::max(1, static_cast<int>(std::ceil(span / std::max(band_width, kNarrowestBandM))));
     for (int k = 0; k < count; ++k) {
       const JointRange band{range.min + span * k / count,
                             k + 1 == count ? range.max : range.min + span * (k + 1) / count};
@@ -137,7 +143,7 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   // Offsets: the scene as drawn, or a band's grids with the worlds of the exact offset.
   const Scene& scene = robot.scenes[static_cast<size_t>(request.scene)];
   const double offset = request.scene_offset_m;
-  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, 1e-9)) {
+  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, kOffsetRoundoffM)) {
     return Result<Plan>::failure(PlanStatus::kInvalidInput,
                                  fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m",
                                              offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
@@ -147,7 +153,7 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const bool drawn = offset == 0.0 || scene.obstacles.empty();
   const auto base = std::find_if(bands.begin(), bands.end(), [&](const PathPlanner& p) {
     const JointRange& band = p.band();
-    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, 1e-9);
+    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, kOffsetRoundoffM);
   });
   if (base == bands.end()) {
     return Result<Plan>::failure(

@@ -16,6 +16,10 @@
 namespace cyber::planner {
 namespace {
 
+// A junction is tried only in the middle half between two samples (within a quarter step of the
+// midpoint), where the trapezoid across an acceleration jump errs by at most a quarter of it.
+constexpr double kMiddleHalf = 0.25;
+
 bool requestError(PlanStatus status) {
   return status == PlanStatus::kInvalidInput || status == PlanStatus::kStartOutOfRange ||
          status == PlanStatus::kGoalOutOfRange || status == PlanStatus::kStartInCollision ||
@@ -54,7 +58,7 @@ Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& pre
                   !columnsAgree(settings, *plan.value().trajectory);
        ++i) {
     const double target = steps + settings.gentler_step * i;
-    if (std::abs(target - std::floor(target) - 0.5) > 0.25) continue;
+    if (std::abs(target - std::floor(target) - 0.5) > kMiddleHalf) continue;
     ++tries;
     Result<Trajectory> gentler = stretchedStop(in.model, in.paths.world(in.request.pieces), stop, target / steps);
     plan = gentler ? planAfterStop(in, gentler.value()) : gentler.error();

@@ -36,39 +36,40 @@ struct EarlierEntry {
   }
 };
 
-}  // namespace
+// Below this |dx - dx_far| the target and the node are level with the ray (in scaled units): the
+// line between them crosses it nowhere in particular, and the midpoint's height serves.
+constexpr double kLevelWithRay = 1e-12;
 
-std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
-                                      std::span<const SearchEndpoint> goals, const JointVector& target,
-                                      const SearchOptions& options) {
-  const bool use_heuristic = options.use_heuristic;
-  const std::span<const std::uint8_t> also_blocked = options.also_blocked;
-  const std::optional<SideOfHole>& side = options.side;
-  // A search node is a grid cell and, with a side, the parity of ray crossings so far: node =
-  // cell + parity * n.
+// Goal nodes are few and close together: a bounding box of their indices makes the membership
+// test on every expansion cheap.
+struct GoalBox {
+  int i_lo;
+  int i_hi;
+  int j_lo;
+  int j_hi;
+  [[nodiscard]] bool contains(int i, int j) const { return i >= i_lo && i <= i_hi && j >= j_lo && j <= j_hi; }
+};
+
+// The box of the free goals; none when no goal is free.
+std::optional<GoalBox> goalBox(const CSpaceGrid& grid, std::span<const SearchEndpoint> goals) {
   const int n = grid.cellCount();
-  const int layers = side ? 2 : 1;
-  const int goal_layer = side ? side->parity : 0;
-  const int goal_node = layers * n;  // virtual node behind every goal connection
-  const double inf = std::numeric_limits<double>::infinity();
-  const int nj = grid.secondAxis().count;
-  const int ni = grid.firstAxis().count;
-  const JointVector metric = grid.metric();
-  const double weight = grid.potentialWeight();
-
-  // Goal nodes are few and close together: a bounding box of their indices makes the membership
-  // test on every expansion cheap.
-  int goal_i_lo = ni, goal_i_hi = -1, goal_j_lo = nj, goal_j_hi = -1;
+  GoalBox box{grid.firstAxis().count, -1, grid.secondAxis().count, -1};
   for (const SearchEndpoint& goal : goals) {
     if (goal.cell < 0 || goal.cell >= n || grid.blocked(goal.cell)) continue;
-    goal_i_lo = std::min(goal_i_lo, grid.firstIndex(goal.cell));
-    goal_i_hi = std::max(goal_i_hi, grid.firstIndex(goal.cell));
-    goal_j_lo = std::min(goal_j_lo, grid.secondIndex(goal.cell));
-    goal_j_hi = std::max(goal_j_hi, grid.secondIndex(goal.cell));
+    box.i_lo = std::min(box.i_lo, grid.firstIndex(goal.cell));
+    box.i_hi = std::max(box.i_hi, grid.firstIndex(goal.cell));
+    box.j_lo = std::min(box.j_lo, grid.secondIndex(goal.cell));
+    box.j_hi = std::max(box.j_hi, grid.secondIndex(goal.cell));
   }
-  if (goal_i_hi < 0) return std::nullopt;
-  // No goal in a source's region: nothing to search (the refused moves would otherwise expand
-  // their whole region).
+  if (box.i_hi < 0) return std::nullopt;
+  return box;
+}
+
+// Whether a goal lies in a free source's region: when none does there is nothing to search (the
+// refused moves would otherwise expand their whole region).
+bool goalInSourceRegion(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
+                        std::span<const SearchEndpoint> goals) {
+  const int n = grid.cellCount();
   bool reachable = false;
   for (const SearchEndpoint& source : sources) {
     if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
@@ -76,133 +77,225 @@ std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const Se
       if (goal.cell >= 0 && goal.cell < n && grid.region(goal.cell) == grid.region(source.cell)) reachable = true;
     }
   }
-  if (!reachable) return std::nullopt;
+  return reachable;
+}
 
-  // In coordinates scaled by sqrt(metric), where |.|_Sigma is Euclidean.
-  const double scale_e = std::sqrt(metric[0]), scale_a = std::sqrt(metric[1]);
-  const double target_x = scale_e * target[0], target_y = scale_a * target[1];
-  // The hole's ray: x = ray_x, y >= ray_y (crossesRay).
-  const double ray_x =
-      side ? scale_e * 0.5 * (grid.firstAxis().at(side->hole.i) + grid.firstAxis().at(side->hole.i + 1)) : 0.0;
-  const double ray_y = side ? scale_a * grid.secondAxis().at(side->hole.j) : 0.0;
-  auto length = [](double a, double b) { return std::sqrt(a * a + b * b); };  // std::hypot is slower
-  // Of the node at indices (i, j) in `layer` (its cell's indices are known where it is pushed:
-  // no divisions on the hot path).
-  const GridAxis& first_axis = grid.firstAxis();
-  const GridAxis& second_axis = grid.secondAxis();
-  auto heuristic = [&](int i, int j, int layer) {
-    if (!use_heuristic) return 0.0;
-    const double q_e = first_axis.at(i), q_a = second_axis.at(j);
-    if (layer == goal_layer) {
-      const double d_e = q_e - target[0], d_a = q_a - target[1];
-      return std::sqrt(metric[0] * d_e * d_e + metric[1] * d_a * d_a);
+// The heuristic of a node at indices (i, j) in `layer` (its cell's indices are known where it is
+// pushed: no divisions on the hot path). Its own type, so that the search loop reads alone.
+class SearchHeuristic {
+ public:
+  SearchHeuristic(const CSpaceGrid& grid, const JointVector& target, const SearchOptions& options)
+      : first_axis_(grid.firstAxis()),
+        second_axis_(grid.secondAxis()),
+        metric_(grid.metric()),
+        target_(target),
+        use_heuristic_(options.use_heuristic),
+        goal_layer_(options.side ? options.side->parity : 0),
+        scale_e_(std::sqrt(metric_[0])),
+        scale_a_(std::sqrt(metric_[1])),
+        target_x_(scale_e_ * target[0]),
+        target_y_(scale_a_ * target[1]),
+        ray_x_(options.side
+                   ? scale_e_ * 0.5 *
+                         (grid.firstAxis().at(options.side->hole.i) + grid.firstAxis().at(options.side->hole.i + 1))
+                   : 0.0),
+        ray_y_(options.side ? scale_a_ * grid.secondAxis().at(options.side->hole.j) : 0.0) {}
+
+  double operator()(int i, int j, int layer) const {
+    if (!use_heuristic_) return 0.0;
+    const double q_e = first_axis_.at(i), q_a = second_axis_.at(j);
+    if (layer == goal_layer_) {
+      const double d_e = q_e - target_[0], d_a = q_a - target_[1];
+      return std::sqrt(metric_[0] * d_e * d_e + metric_[1] * d_a * d_a);
     }
-    const double x = scale_e * q_e, y = scale_a * q_a;
+    const double x = scale_e_ * q_e, y = scale_a_ * q_a;
     // On the wrong side a path must still cross the ray: the shortest way to the target through a
     // point of the ray. Its length is convex along the ray, so the unconstrained best point (the
     // straight line to the target or its mirror image) clamped to the ray. Consistent: a step
     // that crosses the ray is at least as long as the way through its crossing point.
-    const double dx = x - ray_x, dx_target = target_x - ray_x;
+    const double dx = x - ray_x_, dx_target = target_x_ - ray_x_;
     const double dx_far = dx * dx_target > 0.0 ? -dx_target : dx_target;
     const double denominator = dx - dx_far;
-    const double y_best = std::abs(denominator) > 1e-12 ? y + (target_y - y) * dx / denominator : 0.5 * (y + target_y);
-    const double y_ray = std::max(ray_y, y_best);
-    return length(dx, y - y_ray) + length(dx_target, target_y - y_ray);
-  };
-
-  const auto nodes = static_cast<size_t>(goal_node) + 1;
-  std::vector<double> g(nodes, inf);
-  std::vector<int> parent(nodes, -1);
-  std::vector<std::uint8_t> closed(nodes, 0);
-  QuaternaryHeap<OpenEntry, EarlierEntry> open;
-  open.reserve(1024);
-  auto push = [&](int node, double cost, int from, double h) {
-    if (cost >= g[static_cast<size_t>(node)]) return;
-    g[static_cast<size_t>(node)] = cost;
-    parent[static_cast<size_t>(node)] = from;
-    open.push(OpenEntry(cost + h, cost, node));
-  };
-  for (const SearchEndpoint& source : sources) {
-    if (source.cell < 0 || source.cell >= n || grid.blocked(source.cell)) continue;
-    push(source.cell, source.cost, -1, heuristic(grid.firstIndex(source.cell), grid.secondIndex(source.cell), 0));
+    const double y_best =
+        std::abs(denominator) > kLevelWithRay ? y + (target_y_ - y) * dx / denominator : 0.5 * (y + target_y_);
+    const double y_ray = std::max(ray_y_, y_best);
+    return length(dx, y - y_ray) + length(dx_target, target_y_ - y_ray);
   }
 
-  const double step_length[3][3] = {
-      {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
-      {grid.stepLength(0, 1), 0.0, grid.stepLength(0, 1)},
-      {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
-  };
-  int expanded = 0;
-  while (!open.empty()) {
-    const OpenEntry entry = open.pop();
-    const int top = entry.node();
-    // An entry whose node has a cheaper one has a larger f, so the cheaper one came first and
-    // closed the node (barring a tie in rounding, when the node is expanded at its cost in g[]).
-    if (closed[static_cast<size_t>(top)] != 0) continue;
-    if (entry.f() > options.max_cost) break;
-    closed[static_cast<size_t>(top)] = 1;
-    const double g_top = g[static_cast<size_t>(top)];
-    ++expanded;
-    if (top == goal_node) break;
+ private:
+  static double length(double a, double b) { return std::sqrt(a * a + b * b); }  // std::hypot is slower
 
-    const int layer = top >= n ? 1 : 0;
-    const int here = top - layer * n;
-    const int i = grid.firstIndex(here);
-    const int j = grid.secondIndex(here);
-    if (layer == goal_layer && i >= goal_i_lo && i <= goal_i_hi && j >= goal_j_lo && j <= goal_j_hi) {
-      for (const SearchEndpoint& goal : goals) {
-        if (goal.cell == here) push(goal_node, g_top + goal.cost, top, 0.0);
+  const GridAxis& first_axis_;
+  const GridAxis& second_axis_;
+  const JointVector metric_;
+  const JointVector target_;
+  const bool use_heuristic_;
+  const int goal_layer_;
+  // In coordinates scaled by sqrt(metric), where |.|_Sigma is Euclidean.
+  const double scale_e_, scale_a_;
+  const double target_x_, target_y_;
+  // The hole's ray: x = ray_x, y >= ray_y (crossesRay).
+  const double ray_x_, ray_y_;
+};
+
+// The search's state: costs, parents and the open list over nodes (a grid cell and, with a side,
+// the parity of ray crossings so far: node = cell + parity * n, and a virtual goal node behind
+// every goal connection). A type of its own so that one expansion is a function.
+class AStar {
+ public:
+  AStar(const CSpaceGrid& grid, std::span<const SearchEndpoint> goals, const JointVector& target,
+        const SearchOptions& options, GoalBox goal_box)
+      : grid_(grid),
+        goals_(goals),
+        options_(options),
+        heuristic_(grid, target, options),
+        box_(goal_box),
+        n_(grid.cellCount()),
+        goal_layer_(options.side ? options.side->parity : 0),
+        goal_node_((options.side ? 2 : 1) * n_),
+        g_(static_cast<size_t>(goal_node_) + 1, std::numeric_limits<double>::infinity()),
+        parent_(static_cast<size_t>(goal_node_) + 1, -1),
+        closed_(static_cast<size_t>(goal_node_) + 1, 0),
+        step_length_{
+            {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
+            {grid.stepLength(0, 1), 0.0, grid.stepLength(0, 1)},
+            {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
+        } {
+    open_.reserve(1024);
+  }
+
+  void pushSources(std::span<const SearchEndpoint> sources) {
+    for (const SearchEndpoint& source : sources) {
+      if (source.cell < 0 || source.cell >= n_ || grid_.blocked(source.cell)) continue;
+      push(source.cell, source.cost, -1, heuristic_(grid_.firstIndex(source.cell), grid_.secondIndex(source.cell), 0));
+    }
+  }
+
+  // Expands nodes until the goal node is closed, the open list is empty or max_cost is passed;
+  // returns the number of nodes expanded.
+  int run() {
+    int expanded = 0;
+    while (!open_.empty()) {
+      const OpenEntry entry = open_.pop();
+      const int top = entry.node();
+      // An entry whose node has a cheaper one has a larger f, so the cheaper one came first and
+      // closed the node (barring a tie in rounding, when the node is expanded at its cost in g[]).
+      if (closed_[static_cast<size_t>(top)] != 0) continue;
+      if (entry.f() > options_.max_cost) break;
+      closed_[static_cast<size_t>(top)] = 1;
+      ++expanded;
+      if (top == goal_node_) break;
+      expand(top);
+    }
+    return expanded;
+  }
+
+  // The cheapest path found, with the endpoints actually used; none when the goal was not reached.
+  std::optional<SearchPath> path(std::span<const SearchEndpoint> sources, int expanded) const;
+
+ private:
+  void push(int node, double cost, int from, double h) {
+    if (cost >= g_[static_cast<size_t>(node)]) return;
+    g_[static_cast<size_t>(node)] = cost;
+    parent_[static_cast<size_t>(node)] = from;
+    open_.push(OpenEntry(cost + h, cost, node));
+  }
+
+  void expand(int top) {
+    const double g_top = g_[static_cast<size_t>(top)];
+    const std::optional<SideOfHole>& side = options_.side;
+    const std::span<const std::uint8_t> also_blocked = options_.also_blocked;
+    const int nj = grid_.secondAxis().count;
+    const int ni = grid_.firstAxis().count;
+    const double weight = grid_.potentialWeight();
+    const int layer = top >= n_ ? 1 : 0;
+    const int here = top - layer * n_;
+    const int i = grid_.firstIndex(here);
+    const int j = grid_.secondIndex(here);
+    if (layer == goal_layer_ && box_.contains(i, j)) {
+      for (const SearchEndpoint& goal : goals_) {
+        if (goal.cell == here) push(goal_node_, g_top + goal.cost, top, 0.0);
       }
     }
-    const double p_here = grid.potential(here);
+    const double p_here = grid_.potential(here);
     for (int di = -1; di <= 1; ++di) {
       const int a = i + di;
       if (a < 0 || a >= ni) continue;
       for (int dj = -1; dj <= 1; ++dj) {
         const int b = j + dj;
         if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
-        const int next_cell = grid.cell(a, b);
-        const int next_layer = side && grid.crossesRay(side->hole, here, di, dj) ? 1 - layer : layer;
-        const int next = next_cell + next_layer * n;
-        if (closed[static_cast<size_t>(next)] != 0 || !grid.stepFree(here, di, dj)) continue;
+        const int next_cell = grid_.cell(a, b);
+        const int next_layer = side && grid_.crossesRay(side->hole, here, di, dj) ? 1 - layer : layer;
+        const int next = next_cell + next_layer * n_;
+        if (closed_[static_cast<size_t>(next)] != 0 || !grid_.stepFree(here, di, dj)) continue;
         if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
         const double cost =
-            g_top + step_length[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid.potential(next_cell)));
-        if (cost >= g[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
-        push(next, cost, top, heuristic(a, b, next_layer));
+            g_top + step_length_[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid_.potential(next_cell)));
+        if (cost >= g_[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
+        push(next, cost, top, heuristic_(a, b, next_layer));
       }
     }
   }
-  if (closed[static_cast<size_t>(goal_node)] == 0) return std::nullopt;
 
+  const CSpaceGrid& grid_;
+  std::span<const SearchEndpoint> goals_;
+  const SearchOptions& options_;
+  const SearchHeuristic heuristic_;
+  const GoalBox box_;
+  const int n_;
+  const int goal_layer_;
+  const int goal_node_;
+  std::vector<double> g_;
+  std::vector<int> parent_;
+  std::vector<std::uint8_t> closed_;
+  QuaternaryHeap<OpenEntry, EarlierEntry> open_;
+  const double step_length_[3][3];
+};
+
+std::optional<SearchPath> AStar::path(std::span<const SearchEndpoint> sources, int expanded) const {
+  if (closed_[static_cast<size_t>(goal_node_)] == 0) return std::nullopt;
   SearchPath path;
-  path.cost = g[static_cast<size_t>(goal_node)];
+  path.cost = g_[static_cast<size_t>(goal_node_)];
   path.expanded = expanded;
-  const int last = parent[static_cast<size_t>(goal_node)];
-  for (int node = last; node >= 0; node = parent[static_cast<size_t>(node)]) path.cells.push_back(node % n);
+  const int last = parent_[static_cast<size_t>(goal_node_)];
+  for (int node = last; node >= 0; node = parent_[static_cast<size_t>(node)]) path.cells.push_back(node % n_);
   std::reverse(path.cells.begin(), path.cells.end());
   // The endpoints actually used (the cheapest entry when a node is listed twice).
-  const double goal_link = path.cost - g[static_cast<size_t>(last)];
-  double best_goal_error = inf;
-  for (size_t k = 0; k < goals.size(); ++k) {
-    if (goals[k].cell != last % n) continue;
-    const double error = std::abs(goals[k].cost - goal_link);
+  const double goal_link = path.cost - g_[static_cast<size_t>(last)];
+  double best_goal_error = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < goals_.size(); ++k) {
+    if (goals_[k].cell != last % n_) continue;
+    const double error = std::abs(goals_[k].cost - goal_link);
     if (error < best_goal_error) {
       best_goal_error = error;
       path.goal = static_cast<int>(k);
     }
   }
   const int first = path.cells.front();
-  double best_source_error = inf;
+  double best_source_error = std::numeric_limits<double>::infinity();
   for (size_t k = 0; k < sources.size(); ++k) {
     if (sources[k].cell != first) continue;
-    const double error = std::abs(sources[k].cost - g[static_cast<size_t>(first)]);
+    const double error = std::abs(sources[k].cost - g_[static_cast<size_t>(first)]);
     if (error < best_source_error) {
       best_source_error = error;
       path.source = static_cast<int>(k);
     }
   }
   return path;
+}
+
+}  // namespace
+
+std::optional<SearchPath> astarSearch(const CSpaceGrid& grid, std::span<const SearchEndpoint> sources,
+                                      std::span<const SearchEndpoint> goals, const JointVector& target,
+                                      const SearchOptions& options) {
+  const std::optional<GoalBox> box = goalBox(grid, goals);
+  if (!box) return std::nullopt;
+  if (!goalInSourceRegion(grid, sources, goals)) return std::nullopt;
+  AStar search(grid, goals, target, options, *box);
+  search.pushSources(sources);
+  const int expanded = search.run();
+  return search.path(sources, expanded);
 }
 
 int rayCrossingParity(const CSpaceGrid& grid, const GridHole& hole, std::span<const int> cells) {

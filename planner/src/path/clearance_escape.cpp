@@ -13,8 +13,6 @@
 namespace cyber::planner {
 namespace {
 
-constexpr double kLengthGrowth = 1.5;  // when the line's end falls short of the target distance
-constexpr int kLengthTries = 8;
 constexpr double kStartSlack = 1e-9;  // m: the dense check may not go below the start's distance
 
 Result<Trajectory> refuse(std::string reason) {
@@ -37,9 +35,10 @@ Result<Trajectory> clearanceEscape(const RobotModel& model, const CollisionWorld
   if (!(ascent_norm > 0.0)) return refuse("the distance to the nearest obstacle has no direction of increase");
   const JointVector direction = ascent / ascent_norm;
   const double slope = at_start.gradient.dot(direction);  // d per unit length, to first order
-  const double target = clearance + kEscapeMarginM;
+  const EscapeSettings& settings = model.planner.escape;
+  const double target = clearance + settings.margin_m;
   double length = (target - at_start.value) / slope;
-  for (int attempt = 0; attempt < kLengthTries; ++attempt, length *= kLengthGrowth) {
+  for (int attempt = 0; attempt < settings.length_tries; ++attempt, length *= settings.length_growth) {
     const JointVector end = start + length * direction;
     if (!model.withinLimits(end)) break;
     if (world.distance(end).value < target) continue;

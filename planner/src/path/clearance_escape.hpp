@@ -11,11 +11,8 @@
 
 namespace cyber::planner {
 
-// How far past the clearance the escape ends, so that the plan from there starts clear of it.
-inline constexpr double kEscapeMarginM = 0.002;
-
 // From `start` at rest with 0 < d(start) < clearance: the straight line along which the distance
-// grows fastest in the metric Sigma, just long enough to end kEscapeMarginM beyond the clearance,
+// grows fastest in the metric Sigma, just long enough to end EscapeSettings::margin_m beyond the clearance,
 // never closer than the start at any dense sample, timed from rest to rest. kStartInCollision
 // (with the reason) when the start touches or overlaps an obstacle, or no such line exists within
 // the joint range; the solver's errors otherwise.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "math/roundoff.hpp"
 #include "path/path_clearance.hpp"
 
 namespace cyber::planner {
@@ -19,7 +20,7 @@ GridAxis GridAxis::covering(const JointRange& range, double max_step, double ins
     return axis;
   }
   axis.min = range.min + inset;
-  axis.count = static_cast<int>(std::ceil(span / max_step - 1e-9)) + 1;
+  axis.count = static_cast<int>(std::ceil(span / max_step - kWholeCountSlack)) + 1;
   axis.step = span / (axis.count - 1);
   return axis;
 }
@@ -125,8 +126,8 @@ void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
 
 CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
   const GridSettings& settings = model.planner.grid;
-  const GridAxis first = GridAxis::covering(model.range(0), settings.step[0], kJointLimitMargin);
-  const GridAxis second = GridAxis::covering(model.range(1), settings.step[1], kJointLimitMargin);
+  const GridAxis first = GridAxis::covering(model.range(0), settings.step[0], settings.joint_limit_margin);
+  const GridAxis second = GridAxis::covering(model.range(1), settings.step[1], settings.joint_limit_margin);
   const double clearance = model.clearance_m;
   // Half a diagonal step can lose at most this much distance; farther nodes need no exact value.
   const double widest_margin = 0.5 * world.lipschitzBound(JointVector(first.step, second.step));

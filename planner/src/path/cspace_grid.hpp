@@ -24,10 +24,6 @@ struct GridAxis {
   static GridAxis covering(const JointRange& range, double max_step, double inset = 0.0);
 };
 
-// Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
-// a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
-inline constexpr double kJointLimitMargin = 0.005;
-
 // A blocked region that touches no edge of the grid: an obstacle of C-space a path can pass on
 // either side. Its ray runs up (increasing second-joint index) from between nodes (i, j) and (i + 1, j),
 // both in the region (a region with no two such nodes is left out), to the grid's edge; a path's

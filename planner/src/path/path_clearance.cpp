@@ -6,6 +6,11 @@
 namespace cyber::planner {
 namespace {
 
+// A distance this far past the cutoff [m] still counts as beyond it: the roundoff of the bound.
+constexpr double kCutoffSlackM = 1e-9;
+// Speeds and Lipschitz bounds are at least this, so a path at rest does not divide by zero.
+constexpr double kNegligibleRate = 1e-12;
+
 // Walks a curve q(u), u in [u0, u1], whose joint speeds are bounded by abs_speed per unit u.
 // Returns false at the first sample with d < clearance.
 template <class Curve>
@@ -15,7 +20,7 @@ bool walk(const Curve& curve, double u0, double u1, const JointVector& abs_speed
   const double fastest = abs_speed.maxCoeff();
   const double dense_du = fastest > 0.0 ? max_step / fastest : std::numeric_limits<double>::infinity();
   // Distances beyond what the rest of the curve could lose need not be exact.
-  const double cutoff = clearance_m + lipschitz * (u1 - u0) + 1e-9;
+  const double cutoff = clearance_m + lipschitz * (u1 - u0) + kCutoffSlackM;
   double u = u0;
   for (;;) {
     const SignedDistance d = world.distance(curve(u), cutoff);
@@ -82,8 +87,8 @@ ClearanceCheck checkPath(const CubicSplinePath& path, const CollisionWorld& worl
   const int k = std::clamp(static_cast<int>(std::upper_bound(knots.begin(), knots.end(), s_min) - knots.begin()) - 1, 0,
                            path.segmentCount() - 1);
   const JointVector speed = path.segmentBounds(k).abs_dq_max;
-  const double ds = max_step / std::max(speed.maxCoeff(), 1e-12);
-  const double lipschitz = std::max(world.lipschitzBound(speed), 1e-12);
+  const double ds = max_step / std::max(speed.maxCoeff(), kNegligibleRate);
+  const double lipschitz = std::max(world.lipschitzBound(speed), kNegligibleRate);
   const double radius = std::min(ds + (check.min_distance_m - clearance_m) / lipschitz, path.length());
   const int samples = std::min(100, static_cast<int>(std::ceil(radius / ds)));
   for (int i = -samples; i <= samples; ++i) {

@@ -1,5 +1,6 @@
 #include "path/path_optimizer.hpp"
 
+#include "math/roundoff.hpp"
 #include "math/weighted_norm.hpp"
 
 #include <algorithm>
@@ -21,6 +22,7 @@ SmoothingObjective::SmoothingObjective(const CollisionWorld& world, std::vector<
       metric_(model.planner.metric),
       settings_(settings),
       limits_{model.range(0), model.range(1)},
+      limit_margin_(model.planner.grid.joint_limit_margin),
       points_(prior_) {}
 
 Eigen::VectorXd SmoothingObjective::priorVariables() const {
@@ -73,13 +75,13 @@ double SmoothingObjective::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& g
       }
     }
     for (int j = 0; j < kJointCount; ++j) {
-      const double below = limits_[j].min + kJointLimitMargin - q[j];
-      const double above = q[j] - (limits_[j].max - kJointLimitMargin);
+      const double below = limits_[j].min + limit_margin_ - q[j];
+      const double above = q[j] - (limits_[j].max - limit_margin_);
       const double excess = below > 0.0 ? -below : (above > 0.0 ? above : 0.0);
       if (excess != 0.0) {
-        cost += kJointLimitWeight * excess * excess;
+        cost += settings_.joint_limit_weight * excess * excess;
         JointVector g = JointVector::Zero();
-        g[j] = 2.0 * kJointLimitWeight * excess;
+        g[j] = 2.0 * settings_.joint_limit_weight * excess;
         add(i, g);
       }
     }
@@ -174,8 +176,9 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
   result.lbfgs = minimizeLbfgs(f, y, lbfgs);
   to_x(y);
   // The limit term is soft (a stiff one slows L-BFGS down a lot); clamp what it leaves.
-  auto inside = [](double v, const JointRange& range) {
-    const double margin = std::min(kJointLimitMargin, 0.5 * (range.max - range.min));
+  const double limit_margin = model.planner.grid.joint_limit_margin;
+  auto inside = [limit_margin](double v, const JointRange& range) {
+    const double margin = std::min(limit_margin, 0.5 * (range.max - range.min));
     return std::clamp(v, range.min + margin, range.max - margin);
   };
   for (int k = 0; k < m; ++k) {
@@ -195,7 +198,7 @@ std::vector<JointVector> resamplePolyline(const std::vector<JointVector>& polyli
   }
   const double total = cumulative.back();
   if (!(total > 0.0) || !(max_spacing > 0.0)) return {polyline.front(), polyline.back()};
-  const int segments = std::max(1, static_cast<int>(std::ceil(total / max_spacing - 1e-9)));
+  const int segments = std::max(1, static_cast<int>(std::ceil(total / max_spacing - kWholeCountSlack)));
   std::vector<JointVector> out;
   out.reserve(static_cast<size_t>(segments) + 1);
   out.push_back(polyline.front());

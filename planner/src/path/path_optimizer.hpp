@@ -13,7 +13,7 @@
 //  - phi(d) = exp(-d/d0)^2, shifted and tilted to reach 0 with zero slope at
 //    d = kObstacleCutoffDecays * d0 (it differs from exp(-2 d/d0) by < 1e-4 w_o), so pairs farther
 //    away need no exact distance, which keeps the evaluation cheap.
-// The limit term keeps the waypoints kJointLimitMargin inside the joint box (eq. 8 itself knows
+// The limit term keeps the waypoints GridSettings::joint_limit_margin inside the joint box (eq. 8 itself knows
 // no limits); it is soft and what it leaves is clamped.
 //
 // The minimiser is the shared L-BFGS with the Lewis-Overton line search. The quadratic part of J
@@ -33,8 +33,8 @@
 
 namespace cyber::planner {
 
+// phi's cutoff in decay lengths: exp(-12) leaves under 1e-5 of w_o beyond it (see above).
 inline constexpr double kObstacleCutoffDecays = 6.0;
-inline constexpr double kJointLimitWeight = 100.0;
 
 // J of eq. 8 over the free waypoints: indices fixed_head .. N-2 of the prior (the first fixed_head
 // waypoints and the last are fixed). Variables are joint-major: [t of each free waypoint, then
@@ -61,6 +61,7 @@ class SmoothingObjective {
   JointVector metric_;
   SmoothingSettings settings_;
   JointRange limits_[kJointCount];
+  double limit_margin_;                      // GridSettings::joint_limit_margin
   mutable std::vector<JointVector> points_;  // scratch: the whole waypoint list at x
 };
 

@@ -64,7 +64,7 @@ class ShapeSearch {
     auto spline = CubicSplinePath::through(trial_, model_.planner.metric, start_velocity_);
     if (!spline.ok()) return Trial::kNotFaster;
     const double estimate = estimateDuration(spline.value(), drives_, b_start_, grid_points_);
-    if (!(estimate < best_.estimate_s * (1.0 - kMinGain))) return Trial::kNotFaster;
+    if (!(estimate < best_.estimate_s * (1.0 - model_.planner.shape_search.min_gain))) return Trial::kNotFaster;
     const ClearanceCheck check = checkPath(spline.value(), world_, model_, model_.clearance_m);
     if (!check.ok()) {
       const double length = spline.value().length();
@@ -89,7 +89,6 @@ class ShapeSearch {
   ShapedPath take() { return std::move(best_); }
 
  private:
-  static constexpr double kMinGain = 1e-4;  // relative; smaller gains are the estimate's noise
   const CollisionWorld& world_;
   const RobotModel& model_;
   DriveModel drives_;

@@ -33,7 +33,7 @@ TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& dr
   if (!topp::buildRows(drives, margins, problem, &error)) return out;
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
-  problem.speed_bound = 1e3 / length;
+  problem.speed_bound = topp::unitSpeedBound(length);
   problem.controllable_tolerance = kEstimateControllableTolerance;
   std::vector<double> b, controllable;
   if (topp::forwardBackward(problem, b, controllable).status != topp::ReachabilityStatus::kOk) return out;

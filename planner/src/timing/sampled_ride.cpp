@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "math/roundoff.hpp"
+
 namespace cyber::planner {
 namespace {
 
@@ -13,6 +15,11 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // b is the square of the speed relative to the trajectory's own: 1e4 is a hundred times faster,
 // far beyond any ride a drive limit admits where the path moves.
 constexpr double kLargestB = 1e4;
+// b = 4: the trajectory's own speed doubled, a second sample beside b = 1 that separates the
+// terms in b from those in sqrt(b).
+constexpr double kDoubledSpeedB = 4.0;
+// Coefficients and slacks (volts per unit of a, and b) below this are roundoff of a zero.
+constexpr double kNegligible = 1e-12;
 // 60 halvings of [0, kLargestB] reach the precision of a double.
 constexpr int kBisections = 60;
 
@@ -34,7 +41,7 @@ Row rowAt(const DriveModel& drives, const TrajectorySample& s) {
   const JointVector at_rest = drives.volts(s.q, zero, zero);
   const JointVector per_a = drives.volts(s.q, zero, s.qdot) - at_rest;
   const JointVector b1 = drives.volts(s.q, s.qdot, s.qddot) - at_rest;
-  const JointVector b4 = drives.volts(s.q, 2.0 * s.qdot, 4.0 * s.qddot) - at_rest;
+  const JointVector b4 = drives.volts(s.q, 2.0 * s.qdot, kDoubledSpeedB * s.qddot) - at_rest;
   Row row;
   for (int j = 0; j < kJointCount; ++j) {
     JointRow& r = row[static_cast<size_t>(j)];
@@ -55,7 +62,7 @@ struct Interval {
   [[nodiscard]] bool empty() const { return lo > hi; }
   // |c0 + c1 a| <= limit.
   void bound(double c0, double c1, double limit) {
-    if (std::abs(c1) < 1e-12) {
+    if (std::abs(c1) < kNegligible) {
       if (std::abs(c0) > limit) {
         lo = kInfinity;
         hi = -kInfinity;
@@ -117,7 +124,7 @@ std::optional<double> fastestRideAlongSamples(const Trajectory& trajectory, std:
     const bool last = k == intervals;
     const auto accept = [&](double b) {
       const Interval interval = admissible(drives, rows[k], b);
-      return !interval.empty() && (last || b + 2.0 * interval.lo * ds(k) <= controllable[k + 1] + 1e-12);
+      return !interval.empty() && (last || b + 2.0 * interval.lo * ds(k) <= controllable[k + 1] + kNegligible);
     };
     if (!accept(0.0)) return std::nullopt;
     controllable[k] = largestAccepted(kLargestB, accept);
@@ -140,7 +147,7 @@ std::optional<double> fastestRideAlongSamples(const Trajectory& trajectory, std:
 
 std::optional<double> fastestRideAlongPath(const Trajectory& trajectory, double step_s) {
   const double duration = trajectory.duration_s();
-  const auto intervals = static_cast<size_t>(std::max(1.0, std::ceil(duration / step_s - 1e-9)));
+  const auto intervals = static_cast<size_t>(std::max(1.0, std::ceil(duration / step_s - kWholeCountSlack)));
   std::vector<double> times_s(intervals + 1);
   for (size_t k = 0; k <= intervals; ++k)
     times_s[k] = std::min(duration, duration * static_cast<double>(k) / static_cast<double>(intervals));

@@ -15,8 +15,7 @@ namespace {
 
 using topp::LimitKind;
 
-constexpr int kMinGridPoints = 3;    // rest to rest needs one node in between
-constexpr double kSpeedBound = 1e3;  // path units/s: far beyond any motor (reachability search)
+constexpr int kMinGridPoints = 3;  // rest to rest needs one node in between
 
 bool positiveFinite(double v) { return std::isfinite(v) && v > 0.0; }
 
@@ -108,7 +107,8 @@ bool checkLimits(const Trajectory& trajectory, const ToppSettings& settings, top
     // so lowering the end limits by the excess (plus a little) brings the peak to the limit.
     for (const Excess& e : excesses) {
       double& margin = margins.at(e.interval, e.joint, e.kind);
-      margin = std::min(margin + 1.1 * e.amount + 1e-6 * e.limit, settings.max_margin * e.limit);
+      margin = std::min(margin + settings.margin_overshoot * e.amount + settings.margin_floor * e.limit,
+                        settings.max_margin * e.limit);
     }
   }
   return within;
@@ -181,8 +181,10 @@ enum class ToppSolver::RowLimits { kAsGiven, kTightened };
 // Samples the path on `grid_points` points and builds the rows without margins.
 bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
   report.grid_points = grid_points;
-  topp::sampleGrid(*move.path, grid_points, problem_,
-                   timed_ ? topp::ProfileView{&timing_s_, &timing_b_} : topp::ProfileView{});
+  topp::sampleGrid(
+      *move.path, grid_points, problem_,
+      timed_ ? topp::ProfileView{&timing_s_, &timing_b_, settings_.time_grid_share, settings_.max_time_density}
+             : topp::ProfileView{});
   for (const PathPoint& p : problem_.points) {
     if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
       *error = "the path returns non-finite values";
@@ -320,7 +322,7 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   problem_.b_start = move.unit_b_start;
   problem_.b_end = 0.0;
   problem_.cost_scale = 1.0;
-  problem_.speed_bound = kSpeedBound / length;
+  problem_.speed_bound = topp::unitSpeedBound(length);
   std::string error;
   if (!sampleTimedRows(move, initialGridPoints(settings_), report, &error)) {
     return fail(PlanStatus::kInvalidInput, error);

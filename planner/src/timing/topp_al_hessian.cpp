@@ -10,6 +10,15 @@
 namespace cyber::planner::topp {
 namespace {
 
+// Within this share of |v| of a cone's boundary, v is on it (roundoff of the warm start's exact
+// constraints); likewise a row within this share of its value of its bound.
+constexpr double kBoundaryBand = 1e-9;
+// The square of the 2 in d(c^2)/dc = 2 c: the Gauss-Newton terms of c^2 = b.
+constexpr double kTwoSquared = 4.0;
+// Every diagonal entry gets this share of its scale (the sum of its terms' squared coefficients):
+// enough to keep the factor positive definite, far below the terms themselves.
+constexpr double kFloor = 1e-6;
+
 // Derivative of the projection onto Q3 at v (symmetric 3x3): the Hessian of |P_K(v)|^2 / 2.
 void projectionDerivative(const Cone3& v, double out[3][3]) {
   const double norm = std::sqrt(v.x1 * v.x1 + v.x2 * v.x2);
@@ -17,7 +26,7 @@ void projectionDerivative(const Cone3& v, double out[3][3]) {
     for (int j = 0; j < 3; ++j) out[i][j] = 0.0;
   // On (or within roundoff of) a boundary the one-sided derivative of the boundary region is
   // used: a warm start sits exactly on the constraints and is about to cross them.
-  const double band = 1e-9 * (std::abs(v.t) + norm);
+  const double band = kBoundaryBand * (std::abs(v.t) + norm);
   if (norm < v.t - band) {
     out[0][0] = out[1][1] = out[2][2] = 1.0;
     return;
@@ -88,15 +97,15 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
     const double a[3][2] = {{1.0, 0.0}, {1.0, 0.0}, {0.0, 2.0}};
     addConeTerm<2>(h, rho, arg, index, a);
     floor[v.b(k)] += 2.0;
-    floor[v.c(k)] += 4.0;
+    floor[v.c(k)] += kTwoSquared;
 
     // (c^2 - b + nu/rho)^2: Gauss-Newton part plus its own curvature when that helps.
     const double shifted = c * c - b + m.speed_square[k] * inv_rho;
     h.add(v.b(k), v.b(k), rho);
     h.add(v.c(k), v.b(k), -2.0 * rho * c);
-    h.add(v.c(k), v.c(k), 4.0 * rho * c * c + 2.0 * rho * std::max(0.0, shifted));
+    h.add(v.c(k), v.c(k), kTwoSquared * rho * c * c + 2.0 * rho * std::max(0.0, shifted));
     floor[v.b(k)] += 1.0;
-    floor[v.c(k)] += 4.0 * c * c + 1.0;
+    floor[v.c(k)] += kTwoSquared * c * c + 1.0;
 
     if (-b + m.b_nonnegative[k] * inv_rho > 0.0) h.add(v.b(k), v.b(k), rho);
   }
@@ -114,7 +123,7 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
     const double r = rowValue(row, at, x);
     // Rows at or near their bound count as active: the minimiser is about to push past them,
     // and a row that just stepped inside still bounds how far the next step may go.
-    const double near = 1e-9 * (1.0 + std::abs(r));
+    const double near = kBoundaryBand * (1.0 + std::abs(r));
     const bool active = r - row.hi + m.row_upper[static_cast<Eigen::Index>(i)] * inv_rho > -near ||
                         row.lo - r + m.row_lower[static_cast<Eigen::Index>(i)] * inv_rho > -near;
     for (int p = 0; p < 5; ++p) {
@@ -125,7 +134,6 @@ void assembleHessian(const Problem& problem, const Multipliers& m, double rho, c
       }
     }
   }
-  constexpr double kFloor = 1e-6;
   for (Eigen::Index i = 0; i < floor.size(); ++i) h.add(i, i, kFloor * rho * floor[i]);
 }
 

@@ -11,6 +11,10 @@
 namespace cyber::planner::topp {
 namespace {
 
+// Initial d where the speeds at both ends of an interval are zero (a rest-to-rest move's ends):
+// the interval's time is unbounded there, and any large finite value lets the solver find it.
+constexpr double kRestIntervalD = 1e6;
+
 // The multiplier-update pass of the outer loop: new multipliers and the primal residual.
 double updateMultipliers(const Problem& problem, Multipliers& m, double rho, const Eigen::VectorXd& x_vector) {
   const VariableLayout v{problem.gridPoints()};
@@ -108,66 +112,82 @@ void initialGuess(const Problem& problem, const std::vector<double>& b, Eigen::V
   for (int k = 0; k + 1 < kk; ++k) {
     x[v.a(k)] = (b[static_cast<size_t>(k) + 1] - b[static_cast<size_t>(k)]) / (2.0 * problem.ds(k));
     const double sigma = x[v.c(k)] + x[v.c(k + 1)];
-    x[v.d(k)] = sigma > 0.0 ? 1.0 / sigma : 1e6;
+    x[v.d(k)] = sigma > 0.0 ? 1.0 / sigma : kRestIntervalD;
   }
 }
 
-double augmentedLagrangian(const Problem& problem, const Multipliers& m, double rho, const Eigen::VectorXd& x,
-                           Eigen::VectorXd& grad) {
-  const VariableLayout v{problem.gridPoints()};
-  const int kk = problem.gridPoints();
-  const double inv_rho = 1.0 / rho;
-  grad.setZero();
-  double* g = grad.data();
-  const double* xs = x.data();
-  double value = 0.0;
+namespace {
+
+// The terms of L_rho (eq. 21) at xs, each adding to value and g in the order of the original sum:
+// one function per kind of constraint, so each reads alone.
+struct AlTerms {
+  const Problem& problem;
+  const Multipliers& m;
+  VariableLayout v;
+  double rho;
+  double inv_rho;
+  const double* xs;
+  double* g;
+  double value;
 
   // Cost and time cones (eq. 21 with the projection P_K).
-  for (int k = 0; k + 1 < kk; ++k) {
-    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.timeCone(k), inv_rho, timeCone(v, xs, k)));
-    const double cost = costGradient(problem, k);
-    value += cost * xs[v.d(k)];
-    g[v.d(k)] += cost;
-    value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
-    const double sum = rho * (p.t + p.x1);
-    g[v.c(k)] -= sum;
-    g[v.c(k + 1)] -= sum;
-    g[v.d(k)] -= rho * (p.t - p.x1);
-  }
-  // Speed cones, c^2 = b, b >= 0.
-  for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
-    const double b = xs[v.b(k)];
-    const double c = xs[v.c(k)];
-    const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c)));
-    value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
-    g[v.b(k)] -= rho * (p.t + p.x1);
-    g[v.c(k)] -= 2.0 * rho * p.x2;
-
-    const double h = c * c - b + m.speed_square[k] * inv_rho;
-    value += 0.5 * rho * h * h;
-    g[v.c(k)] += 2.0 * rho * h * c;
-    g[v.b(k)] -= rho * h;
-
-    const double neg = -b + m.b_nonnegative[k] * inv_rho;
-    if (neg > 0.0) {
-      value += 0.5 * rho * neg * neg;
-      g[v.b(k)] -= rho * neg;
+  void timeCones() {
+    const int kk = problem.gridPoints();
+    for (int k = 0; k + 1 < kk; ++k) {
+      const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.timeCone(k), inv_rho, timeCone(v, xs, k)));
+      const double cost = costGradient(problem, k);
+      value += cost * xs[v.d(k)];
+      g[v.d(k)] += cost;
+      value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
+      const double sum = rho * (p.t + p.x1);
+      g[v.c(k)] -= sum;
+      g[v.c(k + 1)] -= sum;
+      g[v.d(k)] -= rho * (p.t - p.x1);
     }
   }
-  // Linear equalities.
-  for (int k = 0; k + 1 < kk; ++k) {
-    const double ds = problem.ds(k);
-    const double w = equalityWeight(ds);
-    const double e = baRelation(v, xs, k, ds) * w + m.equality[k] * inv_rho;
-    value += 0.5 * rho * e * e;
-    const double ge = rho * e * w;
-    g[v.b(k + 1)] += ge;
-    g[v.b(k)] -= ge;
-    g[v.a(k)] -= 2.0 * ds * ge;
+
+  // Speed cones, c^2 = b, b >= 0.
+  void speedCones() {
+    const int kk = problem.gridPoints();
+    for (int k = kFirstFree; k < kk - kFirstFree; ++k) {
+      const double b = xs[v.b(k)];
+      const double c = xs[v.c(k)];
+      const Cone3 p = projectOntoSecondOrderCone(shiftedCone(m.speedCone(k), inv_rho, speedCone(b, c)));
+      value += 0.5 * rho * (p.t * p.t + p.x1 * p.x1 + p.x2 * p.x2);
+      g[v.b(k)] -= rho * (p.t + p.x1);
+      g[v.c(k)] -= 2.0 * rho * p.x2;
+
+      const double h = c * c - b + m.speed_square[k] * inv_rho;
+      value += 0.5 * rho * h * h;
+      g[v.c(k)] += 2.0 * rho * h * c;
+      g[v.b(k)] -= rho * h;
+
+      const double neg = -b + m.b_nonnegative[k] * inv_rho;
+      if (neg > 0.0) {
+        value += 0.5 * rho * neg * neg;
+        g[v.b(k)] -= rho * neg;
+      }
+    }
   }
+
+  // Linear equalities.
+  void equalities() {
+    const int kk = problem.gridPoints();
+    for (int k = 0; k + 1 < kk; ++k) {
+      const double ds = problem.ds(k);
+      const double w = equalityWeight(ds);
+      const double e = baRelation(v, xs, k, ds) * w + m.equality[k] * inv_rho;
+      value += 0.5 * rho * e * e;
+      const double ge = rho * e * w;
+      g[v.b(k + 1)] += ge;
+      g[v.b(k)] -= ge;
+      g[v.a(k)] -= 2.0 * ds * ge;
+    }
+  }
+
   // Boundary values. c is pinned as well as b: at rest c^2 = b alone does not hold c at 0 to first
   // order (no constraint qualification), which would leave the multipliers unbounded.
-  {
+  void boundaryValues() {
     const std::array<int, 4> index = v.boundary();
     const std::array<double, 4> target = boundaryTargets(problem);
     for (int i = 0; i < 4; ++i) {
@@ -177,32 +197,99 @@ double augmentedLagrangian(const Problem& problem, const Multipliers& m, double 
       g[index[n]] += rho * e;
     }
   }
+
   // Limit rows.
-  const double* up = m.row_upper.data();
-  const double* low = m.row_lower.data();
-  const size_t rows = problem.rows.size();
-  for (size_t i = 0; i < rows; ++i) {
-    const LinearRow& row = problem.rows[i];
-    const VariableLayout::Row at = v.row(row.interval);
-    const double r = rowValue(row, at, xs);
-    double t = r - row.hi + up[i] * inv_rho;
-    if (t <= 0.0) t = 0.0;
-    double l = row.lo - r + low[i] * inv_rho;  // -inf for one-sided rows
-    if (!(l > 0.0)) l = 0.0;
-    if (t > 0.0 || l > 0.0) {
-      value += 0.5 * rho * (t * t + l * l);
-      const double coef = rho * (t - l);
-      const double w1 = row.at;
-      const double w0 = 1.0 - w1;
-      g[at.a] += coef * row.alpha;
-      g[at.b0] += coef * row.beta * w0;
-      g[at.b1] += coef * row.beta * w1;
-      g[at.c0] += coef * row.gamma * w0;
-      g[at.c1] += coef * row.gamma * w1;
+  void limitRows() {
+    const double* up = m.row_upper.data();
+    const double* low = m.row_lower.data();
+    const size_t rows = problem.rows.size();
+    for (size_t i = 0; i < rows; ++i) {
+      const LinearRow& row = problem.rows[i];
+      const VariableLayout::Row at = v.row(row.interval);
+      const double r = rowValue(row, at, xs);
+      double t = r - row.hi + up[i] * inv_rho;
+      if (t <= 0.0) t = 0.0;
+      double l = row.lo - r + low[i] * inv_rho;  // -inf for one-sided rows
+      if (!(l > 0.0)) l = 0.0;
+      if (t > 0.0 || l > 0.0) {
+        value += 0.5 * rho * (t * t + l * l);
+        const double coef = rho * (t - l);
+        const double w1 = row.at;
+        const double w0 = 1.0 - w1;
+        g[at.a] += coef * row.alpha;
+        g[at.b0] += coef * row.beta * w0;
+        g[at.b1] += coef * row.beta * w1;
+        g[at.c0] += coef * row.gamma * w0;
+        g[at.c1] += coef * row.gamma * w1;
+      }
     }
   }
-  return value;
+};
+
+// |L|_inf of the factor's lower triangle: |g_x|_inf <= |L|_inf |g_z|_2, so it turns the x
+// target into a z tolerance.
+double lowerInfinityNorm(const BandedCholesky& hessian, Eigen::Index n) {
+  double l_norm = 0.0;
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double row = 0.0;
+    for (Eigen::Index j = std::max<Eigen::Index>(0, i - VariableLayout::kBandwidth); j <= i; ++j) {
+      row += std::abs(hessian.entry(i, j));
+    }
+    l_norm = std::max(l_norm, row);
+  }
+  return l_norm;
 }
+
+}  // namespace
+
+double augmentedLagrangian(const Problem& problem, const Multipliers& m, double rho, const Eigen::VectorXd& x,
+                           Eigen::VectorXd& grad) {
+  grad.setZero();
+  AlTerms terms{problem, m, VariableLayout{problem.gridPoints()}, rho, 1.0 / rho, x.data(), grad.data(), 0.0};
+  terms.timeCones();
+  terms.speedCones();
+  terms.equalities();
+  terms.boundaryValues();
+  terms.limitRows();
+  return terms.value;
+}
+
+namespace {
+
+// One outer step's inner minimisation at fixed multipliers and penalty: short L-BFGS runs, each
+// preconditioned by the Hessian where it starts (when the active set moves on, a fresh
+// factorisation beats more quasi-Newton updates). Returns the last run's result.
+template <class Preconditioned>
+LbfgsResult minimizeInner(const Problem& problem, const AlSettings& settings, AlState& state, AlWorkspace& w,
+                          double rho, double target, Preconditioned& preconditioned, AlReport& report) {
+  const Eigen::Index n = w.z.size();
+  Eigen::VectorXd& x = state.x;
+  LbfgsResult r{LbfgsStatus::kMaxIterations, 0, 0, 0.0, 0.0};
+  int inner_used = 0;
+  while (inner_used < settings.max_inner_iterations) {
+    assembleHessian(problem, state.multipliers, rho, x, w.hessian);
+    w.hessian.factor();
+    const double l_norm = lowerInfinityNorm(w.hessian, n);
+    LbfgsSettings inner;
+    inner.memory = settings.lbfgs_memory;
+    inner.max_iterations = std::min(settings.refresh_interval, settings.max_inner_iterations - inner_used);
+    inner.gradient_tolerance = 0.5 * target / l_norm;
+    inner.first_step = 1.0;
+    w.x_ref = x;
+    w.z.setZero();
+    r = minimizeLbfgs(preconditioned, w.z, inner, w.lbfgs);
+    w.step = w.z;
+    w.hessian.solveUpper(w.step);
+    x = w.x_ref + w.step;
+    inner_used += std::max(1, r.iterations);
+    report.evaluations += r.evaluations;
+    if (r.status != LbfgsStatus::kMaxIterations) break;
+  }
+  report.inner_iterations += inner_used;
+  return r;
+}
+
+}  // namespace
 
 AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& settings, AlState& state, AlWorkspace& w) {
   AlReport report;
@@ -231,39 +318,10 @@ AlReport solveAugmentedLagrangian(const Problem& problem, const AlSettings& sett
   double gradient_scale = cost_gradient;
   for (int outer = 0; outer < settings.max_outer_iterations; ++outer) {
     // Early outer steps need no more accuracy than their constraint violation.
-    const double target = std::max(settings.dual_tolerance, std::min(1e-2, 0.1 * primal)) * gradient_scale;
-    LbfgsResult r{LbfgsStatus::kMaxIterations, 0, 0, 0.0, 0.0};
-    int inner_used = 0;
-    // The preconditioner is the Hessian where a run starts; when the active set moves on, a
-    // fresh factorisation beats more quasi-Newton updates, so runs are short.
-    while (inner_used < settings.max_inner_iterations) {
-      assembleHessian(problem, state.multipliers, rho, x, w.hessian);
-      w.hessian.factor();
-      // |g_x|_inf <= |L|_inf |g_z|_2: the z tolerance that guarantees the x target.
-      double l_norm = 0.0;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        double row = 0.0;
-        for (Eigen::Index j = std::max<Eigen::Index>(0, i - VariableLayout::kBandwidth); j <= i; ++j) {
-          row += std::abs(w.hessian.entry(i, j));
-        }
-        l_norm = std::max(l_norm, row);
-      }
-      LbfgsSettings inner;
-      inner.memory = settings.lbfgs_memory;
-      inner.max_iterations = std::min(settings.refresh_interval, settings.max_inner_iterations - inner_used);
-      inner.gradient_tolerance = 0.5 * target / l_norm;
-      inner.first_step = 1.0;
-      w.x_ref = x;
-      w.z.setZero();
-      r = minimizeLbfgs(preconditioned, w.z, inner, w.lbfgs);
-      w.step = w.z;
-      w.hessian.solveUpper(w.step);
-      x = w.x_ref + w.step;
-      inner_used += std::max(1, r.iterations);
-      report.evaluations += r.evaluations;
-      if (r.status != LbfgsStatus::kMaxIterations) break;
-    }
-    report.inner_iterations += inner_used;
+    const double target =
+        std::max(settings.dual_tolerance, std::min(settings.inner_target_cap, settings.inner_target_share * primal)) *
+        gradient_scale;
+    const LbfgsResult r = minimizeInner(problem, settings, state, w, rho, target, preconditioned, report);
     if (r.status == LbfgsStatus::kNonFinite) break;
 
     augmentedLagrangian(problem, state.multipliers, rho, x, w.gradient);

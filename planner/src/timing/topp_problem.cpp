@@ -1,6 +1,7 @@
 #include "timing/topp_problem.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -9,8 +10,12 @@
 namespace cyber::planner::topp {
 namespace {
 
+// Coefficients below this (rows are scaled to order one) are roundoff of a zero: a q' this small
+// has no sign, and a row with no larger coefficient is a fixed condition.
 constexpr double kTinyCoefficient = 1e-14;
-constexpr double kMaxCurvatureWeight = 1e4;  // |q''| (unit-length path) beyond which density stops growing
+// |q''| (unit-length path) beyond which the grid's density stops growing: a kink (a corner of a
+// polyline, where q'' is a spike) would otherwise draw every point of the grid to itself.
+constexpr double kMaxCurvatureWeight = 1e4;
 
 int signOf(double v) { return (v > kTinyCoefficient) - (v < -kTinyCoefficient); }
 
@@ -54,17 +59,14 @@ double nodeMargin(const Problem& problem, const LimitMargins& margins, int n, in
   return margin;
 }
 
-// The share of the grid placed evenly in time when a speed profile is given (sampleGrid).
-constexpr double kTimeShare = 0.4;
-constexpr double kMaxTimeDensity = 8.0;
-
 // Adds the profile's time to the density: cumulative[i] (density integrated up to fine point i,
-// total > 0) becomes (1 - kTimeShare) of it plus kTimeShare of the profile's time up to u = i/fine,
+// total > 0) becomes (1 - time_share) of it plus time_share of the profile's time up to u = i/fine,
 // both normalised to the same total. b is linear in s between the profile's nodes, so the time of
 // a fine cell is exact: 2 du / (sqrt(b_i) + sqrt(b_{i+1})). Cells at rest (b = 0 at both ends) add
 // no time. Leaves cumulative unchanged when the profile takes no time.
-void addTimeDensity(const std::vector<double>& s, const std::vector<double>& b, std::vector<double>& cumulative,
-                    std::vector<double>& time) {
+void addTimeDensity(const ProfileView& timing, std::vector<double>& cumulative, std::vector<double>& time) {
+  const std::vector<double>& s = *timing.s;
+  const std::vector<double>& b = *timing.b;
   const size_t fine = cumulative.size() - 1;
   time.assign(cumulative.size(), 0.0);
   size_t node = 0;
@@ -81,18 +83,16 @@ void addTimeDensity(const std::vector<double>& s, const std::vector<double>& b, 
     time[i] = sum > 0.0 ? 2.0 / (static_cast<double>(fine) * sum) : 0.0;
     previous = speed;
   }
-  // No cell takes more than kMaxTimeDensity times the mean time: the ends from rest would
-  // otherwise shrink the first intervals without bound (time ~ sqrt(s)) and the solver's
-  // conditioning with them.
+  // No cell takes more than max_time_density times the mean time (ToppSettings says why).
   double mean_time = 0.0;
   for (size_t i = 1; i <= fine; ++i) mean_time += time[i];
   mean_time /= static_cast<double>(fine);
   if (!(mean_time > 0.0) || !std::isfinite(mean_time)) return;
-  for (size_t i = 1; i <= fine; ++i) time[i] = time[i - 1] + std::min(time[i], kMaxTimeDensity * mean_time);
+  for (size_t i = 1; i <= fine; ++i) time[i] = time[i - 1] + std::min(time[i], timing.max_time_density * mean_time);
   const double total_time = time.back();
   const double total = cumulative.back();
   for (size_t i = 0; i <= fine; ++i) {
-    cumulative[i] = (1.0 - kTimeShare) * cumulative[i] + kTimeShare * total * time[i] / total_time;
+    cumulative[i] = (1.0 - timing.time_share) * cumulative[i] + timing.time_share * total * time[i] / total_time;
   }
 }
 
@@ -121,7 +121,7 @@ void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem, Pr
     previous = density;
   }
   if (timing.s && timing.b && timing.s->size() >= 2 && timing.s->size() == timing.b->size()) {
-    addTimeDensity(*timing.s, *timing.b, cumulative, problem.time_workspace);
+    addTimeDensity(timing, cumulative, problem.time_workspace);
   }
   const double total = cumulative.back();
   problem.s.resize(static_cast<size_t>(k_points));
@@ -165,90 +165,120 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out) {
   out.speed_bound = in.speed_bound * time_scale_s;
 }
 
+namespace {
+
+// Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and the rows
+// must hold on either side of the flip; both signs where q'_j vanishes; 0 too where the profile is
+// pinned at rest), as {lowest, highest}.
+std::array<int, 2> coulombSigns(const std::array<const PathPoint*, 3>& samples, int j, bool pinned_at_rest) {
+  int sign_lo = 1;
+  int sign_hi = -1;
+  for (const PathPoint* q : samples) {
+    sign_lo = std::min(sign_lo, signOf(q->dq_ds[j]));
+    sign_hi = std::max(sign_hi, signOf(q->dq_ds[j]));
+  }
+  if (sign_lo == 0 && sign_hi == 0) {
+    sign_lo = -1;
+    sign_hi = 1;
+  }
+  if (pinned_at_rest) {
+    sign_lo = std::min(sign_lo, 0);
+    sign_hi = std::max(sign_hi, 0);
+  }
+  return {sign_lo, sign_hi};
+}
+
+// One place of an interval: its index k, its fraction `at` (0, 1 or 1/2), which of the three it
+// is, and its path sample.
+struct RowPlace {
+  int k;
+  double at;
+  int place;
+  const PathPoint& p;
+};
+
+// The rows of joint j at one place: voltage, current, acceleration and (at nodes) velocity. Apart
+// from buildRows so that the loops over intervals and places read on their own.
+bool addJointRows(const DriveParams& d, const PathVoltage& pv, const LimitMargins& margins, const RowPlace& where,
+                  int j, std::array<int, 2> signs, Problem& problem, std::string* error) {
+  const int k = where.k;
+  const double at = where.at;
+  const int place = where.place;
+  const int intervals = problem.intervals();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double qp = where.p.dq_ds[j];
+  const double qpp = where.p.d2q_ds2[j];
+  const double coulomb_lo = d.kS_volts * signs[0];
+  const double coulomb_hi = d.kS_volts * signs[1];
+  const double gravity = pv.offset;
+  const auto joint = static_cast<std::int8_t>(j);
+
+  // Voltage: V = kS sgn + gravity + alpha a + beta b + gamma c (DriveModel::pathVoltage), |V| <= Vmax.
+  const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
+  LinearRow voltage{k,
+                    at,
+                    pv.alpha,
+                    pv.beta,
+                    pv.gamma,
+                    -v_limit - gravity - coulomb_lo,
+                    v_limit - gravity - coulomb_hi,
+                    joint,
+                    LimitKind::kVoltage};
+  if (!addRow(problem, voltage, d.voltage_limit_volts, error)) return false;
+
+  // Current: I R = V - G q' c / Kv, |I| <= Imax.
+  const double r = d.motor.resistanceOhms();
+  const double back_emf = d.gearing / d.motor.kvRadpsPerVolt();
+  const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
+  LinearRow current{k,
+                    at,
+                    pv.alpha,
+                    pv.beta,
+                    pv.gamma - back_emf * qp,
+                    -r * i_limit - gravity - coulomb_lo,
+                    r * i_limit - gravity - coulomb_hi,
+                    joint,
+                    LimitKind::kCurrent};
+  if (!addRow(problem, current, r * d.current_limit_amps, error)) return false;
+
+  if (d.acceleration_limit) {
+    const double a_limit = *d.acceleration_limit - margins.get(k, j, LimitKind::kAcceleration);
+    LinearRow accel{k, at, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
+    if (!addRow(problem, accel, *d.acceleration_limit, error)) return false;
+  }
+  // The velocity limit involves b only: one row per node; between nodes the continuous
+  // check holds it, as it does every limit. Rows at the midpoints as well would make three
+  // rows bound two b's along a stretch at the limit: the multipliers are then not unique and
+  // the solver needs 20-50 times more iterations (docs/algorithm.md section 3).
+  if (d.velocity_limit && place != 2 && (place == 0 || k + 1 == intervals)) {
+    const double v_max = std::max(0.0, *d.velocity_limit - nodeMargin(problem, margins, k + place, j));
+    LinearRow velocity{k, at, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
+    if (!addRow(problem, velocity, *d.velocity_limit * *d.velocity_limit, error)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem, std::string* error) {
   const int intervals = problem.intervals();
   problem.rows.clear();
   problem.row_begin.assign(static_cast<size_t>(intervals) + 1, 0);
-  const double inf = std::numeric_limits<double>::infinity();
   for (int k = 0; k < intervals; ++k) {
     problem.row_begin[static_cast<size_t>(k)] = static_cast<int>(problem.rows.size());
-    const PathPoint* samples[3] = {&problem.points[static_cast<size_t>(k)], &problem.points[static_cast<size_t>(k) + 1],
-                                   &problem.midpoints[static_cast<size_t>(k)]};
+    const std::array<const PathPoint*, 3> samples = {&problem.points[static_cast<size_t>(k)],
+                                                     &problem.points[static_cast<size_t>(k) + 1],
+                                                     &problem.midpoints[static_cast<size_t>(k)]};
     constexpr double kAt[3] = {0.0, 1.0, 0.5};
     for (int place = 0; place < 3; ++place) {
-      const double at = kAt[place];
-      const PathPoint& p = *samples[place];
+      const PathPoint& p = *samples[static_cast<size_t>(place)];
       const bool pinned_at_rest = (place == 0 && k == 0 && problem.b_start == 0.0) ||
                                   (place == 1 && k + 1 == intervals && problem.b_end == 0.0);
       const std::array<PathVoltage, kJointCount> voltages = drives.pathVoltages(p);
       for (int j = 0; j < kJointCount; ++j) {
-        const DriveParams& d = drives.drive(j);
-        const PathVoltage& pv = voltages[static_cast<size_t>(j)];
-        const double qp = p.dq_ds[j];
-        const double qpp = p.d2q_ds2[j];
-        // Signs of qdot_j on the interval (Coulomb friction flips where q'_j changes sign, and
-        // the rows must hold on either side of the flip; both signs where q'_j vanishes; 0 too
-        // where the profile is pinned at rest).
-        int sign_lo = 1;
-        int sign_hi = -1;
-        for (const PathPoint* q : samples) {
-          sign_lo = std::min(sign_lo, signOf(q->dq_ds[j]));
-          sign_hi = std::max(sign_hi, signOf(q->dq_ds[j]));
-        }
-        if (sign_lo == 0 && sign_hi == 0) {
-          sign_lo = -1;
-          sign_hi = 1;
-        }
-        if (pinned_at_rest) {
-          sign_lo = std::min(sign_lo, 0);
-          sign_hi = std::max(sign_hi, 0);
-        }
-        const double coulomb_lo = d.kS_volts * sign_lo;
-        const double coulomb_hi = d.kS_volts * sign_hi;
-        const double gravity = pv.offset;
-        const auto joint = static_cast<std::int8_t>(j);
-
-        // Voltage: V = kS sgn + gravity + alpha a + beta b + gamma c (DriveModel::pathVoltage), |V| <= Vmax.
-        const double v_limit = d.voltage_limit_volts - margins.get(k, j, LimitKind::kVoltage);
-        LinearRow voltage{k,
-                          at,
-                          pv.alpha,
-                          pv.beta,
-                          pv.gamma,
-                          -v_limit - gravity - coulomb_lo,
-                          v_limit - gravity - coulomb_hi,
-                          joint,
-                          LimitKind::kVoltage};
-        if (!addRow(problem, voltage, d.voltage_limit_volts, error)) return false;
-
-        // Current: I R = V - G q' c / Kv, |I| <= Imax.
-        const double r = d.motor.resistanceOhms();
-        const double back_emf = d.gearing / d.motor.kvRadpsPerVolt();
-        const double i_limit = d.current_limit_amps - margins.get(k, j, LimitKind::kCurrent);
-        LinearRow current{k,
-                          at,
-                          pv.alpha,
-                          pv.beta,
-                          pv.gamma - back_emf * qp,
-                          -r * i_limit - gravity - coulomb_lo,
-                          r * i_limit - gravity - coulomb_hi,
-                          joint,
-                          LimitKind::kCurrent};
-        if (!addRow(problem, current, r * d.current_limit_amps, error)) return false;
-
-        if (d.acceleration_limit) {
-          const double a_limit = *d.acceleration_limit - margins.get(k, j, LimitKind::kAcceleration);
-          LinearRow accel{k, at, qp, qpp, 0.0, -a_limit, a_limit, joint, LimitKind::kAcceleration};
-          if (!addRow(problem, accel, *d.acceleration_limit, error)) return false;
-        }
-        // The velocity limit involves b only: one row per node; between nodes the continuous
-        // check holds it, as it does every limit. Rows at the midpoints as well would make three
-        // rows bound two b's along a stretch at the limit: the multipliers are then not unique and
-        // the solver needs 20-50 times more iterations (docs/algorithm.md section 3).
-        if (d.velocity_limit && place != 2 && (place == 0 || k + 1 == intervals)) {
-          const double v_max = std::max(0.0, *d.velocity_limit - nodeMargin(problem, margins, k + place, j));
-          LinearRow velocity{k, at, 0.0, qp * qp, 0.0, -inf, v_max * v_max, joint, LimitKind::kVelocity};
-          if (!addRow(problem, velocity, *d.velocity_limit * *d.velocity_limit, error)) return false;
+        if (!addJointRows(drives.drive(j), voltages[static_cast<size_t>(j)], margins, RowPlace{k, kAt[place], place, p},
+                          j, coulombSigns(samples, j, pinned_at_rest), problem, error)) {
+          return false;
         }
       }
     }

@@ -62,6 +62,17 @@ class LimitMargins {
   std::vector<double> values_;
 };
 
+// No path speed ds/dt above this is searched for (path units/s): far beyond any motor's reach, it
+// only bounds the reachability search.
+inline constexpr double kSpeedBound = 1e3;
+
+// C_k is a cap for the forward pass and the optimiser absorbs what lies below it, so the backward
+// pass bisects it to this relative width only (topp_reachability.cpp).
+inline constexpr double kControllableTolerance = 1e-5;
+
+// kSpeedBound in the units of the unit-length problem of a path `length` long.
+inline double unitSpeedBound(double length) { return kSpeedBound / length; }
+
 // Units: the grid runs over s/L in [0, 1] (L the path length), so b is (ds/dt)^2 / L^2 and the
 // path derivatives are scaled to match (q' L, q'' L^2); scaleTime() further measures time in
 // units of a time scale. The optimiser then sees numbers of order one for any path.
@@ -78,11 +89,10 @@ struct Problem {
   // The cost sum 2 ds_k d_k is multiplied by this (1 / duration of the warm start): the same
   // problem, with multipliers of the same size whatever the length of the path.
   double cost_scale = 1.0;
-  // No speed c = sqrt(b) above this is searched for (a bound far above any motor's reach, in
-  // the problem's units).
-  double speed_bound = 1e3;
+  // No speed c = sqrt(b) above this is searched for (in the problem's units; unitSpeedBound).
+  double speed_bound = kSpeedBound;
   // The backward pass bisects each C_k to this relative width (a cap for the forward pass).
-  double controllable_tolerance = 1e-5;
+  double controllable_tolerance = kControllableTolerance;
   [[nodiscard]] int gridPoints() const { return static_cast<int>(s.size()); }
   [[nodiscard]] int intervals() const { return gridPoints() - 1; }
   [[nodiscard]] double ds(int k) const { return s[static_cast<size_t>(k) + 1] - s[static_cast<size_t>(k)]; }
@@ -92,12 +102,14 @@ struct Problem {
 struct ProfileView {
   const std::vector<double>* s = nullptr;
   const std::vector<double>* b = nullptr;
+  double time_share = ToppSettings{}.time_grid_share;         // of the grid placed evenly in time
+  double max_time_density = ToppSettings{}.max_time_density;  // of a cell, in mean times
 };
 
 // Samples the path (length > 0) on `grid_points` (>= 2) points, denser where the path bends,
 // normalised to unit length: s in [0, 1], q' multiplied by the length, q'' by its square.
-// With a speed profile (a first pass over the same path), 40 % of the points are placed evenly in
-// the profile's time instead: the slow ends of a rest-to-rest move, where the limits change
+// With a speed profile (a first pass over the same path), timing.time_share of the points (40 %)
+// are placed evenly in the profile's time instead: the slow ends of a rest-to-rest move, where the limits change
 // fastest in time, get more of the points than a grid even in s gives them (algorithm.md
 // section 3, "Grid").
 void sampleGrid(const GeometricPath& path, int grid_points, Problem& problem, ProfileView timing = {});

@@ -12,6 +12,18 @@ namespace {
 
 constexpr double kRowTolerance = 1e-11;  // rows are normalised to order one
 constexpr int kMaxCandidates = 64;
+// A coefficient this small is a polynomial of lower degree: dividing by it would overflow.
+constexpr double kNegligibleCoefficient = 1e-300;
+constexpr double kDiscriminantFactor = 4.0;  // b^2 - 4 a c
+// b values (the problem's units) that differ by less than this share plus this much are equal to
+// roundoff: a start on C_0's edge is controllable.
+constexpr double kRelativeRoundoff = 1e-9;
+constexpr double kAbsoluteRoundoff = 1e-12;
+// The search near a guess starts this share of it away (at least that share of kSmallestSpeed) and
+// grows its step this many times each try: the controllable speed varies little between nodes.
+constexpr double kFirstStepShare = 1e-4;
+constexpr double kSmallestSpeed = 1e-3;
+constexpr double kStepGrowth = 4.0;
 
 // A row of interval k as a quadratic q(t) = A t^2 + B t + C in the free end's speed t.
 struct Quadratic {
@@ -24,11 +36,11 @@ void addRoots(double a, double b, double c, double t_max, std::array<double, 4>&
   auto push = [&](double t) {
     if (t >= 0.0 && t <= t_max) out[static_cast<size_t>(count++)] = t;
   };
-  if (std::abs(a) < 1e-300) {
+  if (std::abs(a) < kNegligibleCoefficient) {
     if (b != 0.0) push(-c / b);
     return;
   }
-  const double disc = b * b - 4.0 * a * c;
+  const double disc = b * b - kDiscriminantFactor * a * c;
   if (disc < 0.0) return;
   const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
   push(q / a);
@@ -147,17 +159,17 @@ double bisect(Pred pred, double lo, double hi, double tolerance) {
 template <class Pred>
 double largestTrueNear(Pred pred, double known, double guess, double c_max, double tolerance) {
   guess = std::clamp(guess, known, c_max);
-  double step = 1e-4 * std::max(guess, 1e-3);
+  double step = kFirstStepShare * std::max(guess, kSmallestSpeed);
   if (guess > known && !pred(guess)) {
     double hi = guess;
-    for (double c = guess - step; c > known; step *= 4.0, c = guess - step) {
+    for (double c = guess - step; c > known; step *= kStepGrowth, c = guess - step) {
       if (pred(c)) return bisect(pred, c, hi, tolerance);
       hi = c;
     }
     return bisect(pred, known, hi, tolerance);
   }
   double lo = guess;
-  for (double c = lo + step; c < c_max; step *= 4.0, c = lo + step) {
+  for (double c = lo + step; c < c_max; step *= kStepGrowth, c = lo + step) {
     if (!pred(c)) return bisect(pred, lo, c, tolerance);
     lo = c;
   }
@@ -275,7 +287,7 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
       }
       c = 0.0;
     }
-    if (stoppable(c * (1.0 + 1e-9) + 1e-12)) {
+    if (stoppable(c * (1.0 + kRelativeRoundoff) + kAbsoluteRoundoff)) {
       // The left-end rows alone (a linear interval in a) bound c_k cheaply from above; all rows
       // are checked there and searched below it only when the right-end rows cut it down.
       const double guess = std::max(c, previous);
@@ -290,8 +302,8 @@ ReachabilityResult forwardBackward(const Problem& problem, std::vector<double>& 
   result.controllable_start_b = controllable[0];
 
   const double slack = 1.0 + std::max(0.0, start_speed_tolerance);
-  const bool beyond = problem.b_start > controllable[0] * (1.0 + 1e-9) + 1e-12;
-  if (beyond && problem.b_start > controllable[0] * slack * slack * (1.0 + 1e-9) + 1e-12) {
+  const bool beyond = problem.b_start > controllable[0] * (1.0 + kRelativeRoundoff) + kAbsoluteRoundoff;
+  if (beyond && problem.b_start > controllable[0] * slack * slack * (1.0 + kRelativeRoundoff) + kAbsoluteRoundoff) {
     result.status = ReachabilityStatus::kStartNotControllable;
     result.reason = fmt::format(
         "start speed^2 b = {:.6g} along the path cannot be brought to rest within the limits "

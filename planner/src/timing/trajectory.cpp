@@ -9,6 +9,9 @@
 namespace cyber::planner {
 namespace {
 
+// The grid's last s may differ from the path's length by the roundoff of summing its steps.
+constexpr double kGridEndRoundoff = 1e-9;
+
 // Of ToppSettings::limit_check_tolerance accepted by withinDriveLimits(trajectory, settings).
 constexpr double kOwnCheckShare = 0.5;
 
@@ -29,7 +32,7 @@ Result<Trajectory> Trajectory::create(std::shared_ptr<const GeometricPath> path,
     return Result<Trajectory>::failure(PlanStatus::kInvalidInput,
                                        "a single grid point is only valid for a zero-length path at rest");
   }
-  if (n > 1 && (s_grid.front() != 0.0 || std::abs(s_grid.back() - length) > 1e-9 * std::max(1.0, length))) {
+  if (n > 1 && (s_grid.front() != 0.0 || std::abs(s_grid.back() - length) > kGridEndRoundoff * std::max(1.0, length))) {
     return Result<Trajectory>::failure(PlanStatus::kInvalidInput, "grid does not span [0, path length]");
   }
   for (size_t k = 0; k < n; ++k) {

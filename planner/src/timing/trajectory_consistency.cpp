@@ -3,19 +3,24 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/roundoff.hpp"
+
 namespace cyber::planner {
 namespace {
 
 // Below these a joint's travel or speed is noise, not a scale (m or rad, and per second).
 constexpr double kTravelFloor = 1e-4;
 constexpr double kSpeedFloor = 1e-3;
+// A duration within this of a whole number of steps [s] ends on a step: no extra sample for the
+// roundoff of the division.
+constexpr double kTailRoundoffS = 1e-9;
 
 }  // namespace
 
 ColumnConsistency columnConsistency(const Trajectory& trajectory, double step_s) {
   const double duration = trajectory.duration_s();
-  const long steps = static_cast<long>(std::floor(duration / step_s + 1e-9));
-  const bool tail = duration - static_cast<double>(steps) * step_s > 1e-9;
+  const long steps = static_cast<long>(std::floor(duration / step_s + kWholeCountSlack));
+  const bool tail = duration - static_cast<double>(steps) * step_s > kTailRoundoffS;
   const long count = steps + 1 + (tail ? 1 : 0);
   auto time_of = [&](long i) { return i > steps ? duration : static_cast<double>(i) * step_s; };
 

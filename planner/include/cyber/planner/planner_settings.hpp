@@ -18,6 +18,11 @@ struct AlSettings {
   double penalty_max = 1e6;      // beta
   int lbfgs_memory = 8;
   int refresh_interval = 5;  // L-BFGS iterations before the preconditioner is refactored
+  // An outer step's inner solve stops at this share of the primal residual (as a relative dual
+  // residual), at most inner_target_cap and at least dual_tolerance: early outer steps need no
+  // more accuracy than their constraint violation, so they take few inner iterations.
+  double inner_target_share = 0.1;
+  double inner_target_cap = 1e-2;
 };
 
 }  // namespace cyber::planner::topp
@@ -30,6 +35,9 @@ namespace cyber::planner {
 
 struct GridSettings {
   JointVector step = JointVector(0.02, 0.02);  // cell size of each joint, joint units
+  // Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
+  // a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
+  double joint_limit_margin = 0.005;
 };
 
 struct SearchSettings {
@@ -62,6 +70,14 @@ struct SmoothingSettings {
   // (weighted length, at most max_lead_in), so a fast start does not meet a sharp bend at once.
   double lead_in_time_s = 0.1;
   double max_lead_in = 0.3;
+  // w_lim of the soft joint-limit term (path_optimizer.hpp): a stiffer one slows L-BFGS down a lot,
+  // and what this one leaves outside the margin is clamped.
+  double joint_limit_weight = 100.0;
+  // When the smoothed path misses the clearance, smoothing is tried again with the obstacle weight
+  // multiplied by this, then the prior itself, then a prior with waypoints this share of
+  // waypoint_spacing apart: the fallbacks of path_strategies.cpp, which still spell them 10.0, 0.25.
+  double retry_obstacle_factor = 10.0;
+  double dense_prior_share = 0.25;
 };
 
 struct ToppSettings {
@@ -72,10 +88,22 @@ struct ToppSettings {
   // Of limit_check_tolerance, the share accepted at the check's samples: the rest is left for
   // the overshoot between them (a referee samples other instants).
   double check_share = 0.6;
-  double max_margin = 0.05;     // limits are lowered by at most this fraction of themselves
-  double refine_above = 0.02;   // overshoots beyond this fraction refine the grid instead
-  int max_grid_factor = 8;      // the grid may grow to this multiple of grid_points
+  double max_margin = 0.05;    // limits are lowered by at most this fraction of themselves
+  double refine_above = 0.02;  // overshoots beyond this fraction refine the grid instead
+  int max_grid_factor = 8;     // the grid may grow to this multiple of grid_points
+  // After a failed check, a limit's margin grows by this multiple of its overshoot plus this share
+  // of the limit: the bulge between the grid points stays about the same when the limits at the
+  // ends move, so the excess and a little more bring the peak to the limit.
+  double margin_overshoot = 1.1;
+  double margin_floor = 1e-6;
   int timing_grid_points = 64;  // of the coarse grid whose profile places the real one's nodes
+  // Of the real grid, the share placed evenly in the coarse profile's time (the rest by the path's
+  // curvature): the slow ends of a rest-to-rest move, where the limits change fastest in time, get
+  // more points than a grid even in s gives them (docs/algorithm.md section 3, "Grid").
+  double time_grid_share = 0.4;
+  // No cell counts more than this many times the mean time: the ends from rest would otherwise
+  // shrink the first intervals without bound (time ~ sqrt(s)) and the solver's conditioning with them.
+  double max_time_density = 8.0;
   // Tolerances, caps and penalty schedule of the solver; [planner.topp] sets all but the L-BFGS ones.
   topp::AlSettings solver;
 };
@@ -87,6 +115,9 @@ struct ShapeSearchSettings {
   int grid_points = 40;                  // of each estimate
   JointVector initial_step{0.03, 0.09};  // amplitude steps [m, rad]; about 10 ms of top speed each
   double min_step_fraction = 0.125;      // stop when the steps have shrunk to this share
+  // A shape (here and in the refinement) is taken only when it is estimated at least this share
+  // faster: smaller gains are the estimate's noise.
+  double min_gain = 1e-4;
 };
 
 // The shape search's refinement (path_shaping.hpp): more bumps, each with its own step.
@@ -205,6 +236,39 @@ struct MotionSettings {
   double rest_estimate_low = 0.95;
 };
 
+// The fastest stop along a start velocity (planner/src/motion/fastest_stop.hpp; docs/moving-starts.md):
+// the shortest line along v0 on which the start speed brakes to rest, found by bracketing and false
+// position on how much more than the start speed each line can stop from.
+struct StopSettings {
+  // Grid of the first estimate from below of the braking distance (an outer bound on the
+  // deceleration): fine enough that the bracket around it rarely needs more than a step or two.
+  int estimate_points = 200;
+  // The bracket widens around the estimate by this factor at a time, at most bracket_steps times
+  // each way: 1.2^12 (about 9) covers an estimate off by an order of magnitude.
+  double bracket_growth = 1.2;
+  int bracket_steps = 12;
+  // The line is at most this share longer than the shortest that stops: a stop 0.01 % longer than
+  // needed costs well under a microsecond.
+  double length_tolerance = 1e-4;
+  // When neither the braking profile nor the optimiser's refined limits stop on that line, it is
+  // lengthened by this factor, at most max_retries times (1.002^8, 1.6 % longer, at worst).
+  double retry_growth = 1.002;
+  int max_retries = 8;
+  // The line never runs further than this (weighted C-space units) when no joint limit comes first:
+  // far beyond any stop of a mechanism that fits a robot, it only bounds the bracket.
+  double max_length = 10.0;
+};
+
+// The way out of the clearance from a start inside it (planner/src/path/clearance_escape.hpp).
+struct EscapeSettings {
+  // How far past the clearance the escape ends [m], so that the plan from there starts clear of it.
+  double margin_m = 0.002;
+  // The first line's length is the distance's first-order estimate; while its end falls short of
+  // the target distance it grows by this factor, at most length_tries times.
+  double length_growth = 1.5;
+  int length_tries = 8;
+};
+
 struct PlannerSettings {
   JointVector metric = JointVector(1.0, 0.1);  // diagonal of Sigma: |v|^2 = v' Sigma v
   GridSettings grid;
@@ -216,6 +280,8 @@ struct PlannerSettings {
   ShapeRefinementSettings shape_refinement;
   SynchronisedSettings synchronised;
   MotionSettings motion;
+  StopSettings stop;
+  EscapeSettings escape;
 };
 
 }  // namespace cyber::planner

@@ -89,7 +89,7 @@ TEST(ClearanceEscape, TheLineEndsBeyondTheClearanceAndIsTimedFromRestToRest) {
     if (!escape) continue;
     ++escaped;
     const TrajectorySample end = escape.value().sample(escape.value().duration_s());
-    EXPECT_GE(world.distance(end.q).value, model.clearance_m + kEscapeMarginM);
+    EXPECT_GE(world.distance(end.q).value, model.clearance_m + model.planner.escape.margin_m);
     EXPECT_LT(end.qdot.norm(), 1e-9);
     EXPECT_LT(escape.value().sample(0.0).qdot.norm(), 1e-12);
   }

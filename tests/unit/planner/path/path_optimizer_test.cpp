@@ -132,7 +132,7 @@ TEST(OptimizePath, KeepsWaypointsInsideTheLimits) {
   for (int k = 0; k <= 20; ++k) prior.emplace_back(2.0, 1.0 + 0.05 * k);
   const SmoothingResult result = optimizePath(world, prior, 1, model(), model().planner.smoothing);
   for (size_t k = 1; k + 1 < result.waypoints.size(); ++k) {
-    EXPECT_LE(result.waypoints[k][0], model().range(0).max - kJointLimitMargin + 1e-12);
+    EXPECT_LE(result.waypoints[k][0], model().range(0).max - model().planner.grid.joint_limit_margin + 1e-12);
   }
 }
 

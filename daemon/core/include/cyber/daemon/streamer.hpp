@@ -82,6 +82,14 @@ class Streamer {
   void reject(MonoNs now, Program* offered, RejectReason reason, TickOutput& out);
   [[nodiscard]] bool withinLimits(const JointSetpoints& setpoints) const;
   void dropOwned(TickOutput& out);
+  // The tick's parts, in order: the gate (counting each disable and release once), the answer
+  // while it is closed, the stop on a sample outside the limits, the executing and done events, and
+  // the setpoints sent.
+  GateVerdict gate(MonoNs now, const RobotInputs& inputs);
+  void closedGate(MonoNs now, const GateVerdict& verdict, Program* offered, TickOutput& out);
+  void sampleFault(MonoNs now, const ProgramSample& sample, TickOutput& out);
+  void reportProgress(MonoNs now, const ProgramSample& sample, TickOutput& out);
+  void send(MonoNs now, const ProgramSample& sample, TickOutput& out);
 
   HoldModel hold_;
   StreamerSettings settings_;

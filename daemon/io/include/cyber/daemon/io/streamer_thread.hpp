@@ -7,6 +7,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 #include <thread>
 
 #include "cyber/daemon/frame_writer.hpp"
@@ -105,6 +106,13 @@ class StreamerThread {
 
  private:
   void run();
+  // The parts of one period, in order (each its own function so that run() reads as the period):
+  // the timer's wake-up (none when it woke for nothing), the snapshot for the main thread, what the
+  // main thread is handed (true when it should wake), and the watchdog's datagram.
+  std::optional<MonoNs> waitForPeriod(MonoNs& scheduled);
+  void publishSnapshot(MonoNs now, std::int64_t ticks, const TickOutput& out, const WriteReport& report);
+  bool handOver(MonoNs now, const TickOutput& out, const WriteReport& report);
+  void petWatchdog(MonoNs now, MonoNs& last_watchdog_ns);
 
   StreamerChannels& channels_;
   Streamer& streamer_;
