@@ -10,7 +10,7 @@ std::string_view smoothingName(PlanMethod::Smoothing smoothing) {
   switch (smoothing) {
     case PlanMethod::Smoothing::kStraight: return "straight";
     case PlanMethod::Smoothing::kOptimised: return "optimised";
-    case PlanMethod::Smoothing::kStrongerObstacleWeight: return "optimised, obstacle weight x10";
+    case PlanMethod::Smoothing::kStrongerObstacleWeight: return "optimised, stronger obstacle weight";
     case PlanMethod::Smoothing::kPrior: return "prior";
     case PlanMethod::Smoothing::kDensePrior: return "dense prior";
     case PlanMethod::Smoothing::kShaped: return "shaped for time";

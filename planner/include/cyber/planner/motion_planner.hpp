@@ -50,7 +50,7 @@ struct PlanMethod {
   enum class Smoothing {
     kStraight,                ///< a clear straight segment, as it is
     kOptimised,               ///< the optimised waypoints (eq. 8)
-    kStrongerObstacleWeight,  ///< optimised again with ten times the obstacle weight
+    kStrongerObstacleWeight,  ///< optimised again with SmoothingSettings::retry_obstacle_factor
     kPrior,                   ///< the resampled polyline, not optimised
     kDensePrior,              ///< the polyline resampled four times as densely
     kShaped,                  ///< another candidate's path shaped for time (shaped_from)

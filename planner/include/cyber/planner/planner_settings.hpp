@@ -75,7 +75,7 @@ struct SmoothingSettings {
   double joint_limit_weight = 100.0;
   // When the smoothed path misses the clearance, smoothing is tried again with the obstacle weight
   // multiplied by this, then the prior itself, then a prior with waypoints this share of
-  // waypoint_spacing apart: the fallbacks of path_strategies.cpp, which still spell them 10.0, 0.25.
+  // waypoint_spacing apart (PlanMethod::Smoothing names the one that held).
   double retry_obstacle_factor = 10.0;
   double dense_prior_share = 0.25;
 };

@@ -156,12 +156,12 @@ bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& l
   into.optimizer_iterations += optimised.lbfgs.iterations;
   if (accept(optimised.waypoints, Smoothing::kOptimised)) return true;
   SmoothingSettings stronger = smoothing;
-  stronger.obstacle_weight *= 10.0;
+  stronger.obstacle_weight *= smoothing.retry_obstacle_factor;
   const SmoothingResult pushed = optimizePath(in.world, prior, fixed_head, in.model, stronger);
   into.optimizer_iterations += pushed.lbfgs.iterations;
   if (accept(pushed.waypoints, Smoothing::kStrongerObstacleWeight)) return true;
   if (accept(prior, Smoothing::kPrior)) return true;
-  return accept(prior_at(0.25 * smoothing.waypoint_spacing), Smoothing::kDensePrior);
+  return accept(prior_at(smoothing.dense_prior_share * smoothing.waypoint_spacing), Smoothing::kDensePrior);
 }
 
 double straightEstimate(const JointVector& from, const JointVector& to, const DriveModel& drives,
