@@ -145,41 +145,5 @@ TEST(MovingStart, ARefusalSaysWhyStoppingFirstFailedToo) {
       << plan.error().message;
 }
 
-// The reef scene without game pieces, for fastestStop on its own.
-struct ReefWithoutPieces {
-  const RobotModel& model = test::referenceModel();
-  CollisionWorld world{model, model.scenes.front(), HeldPieces{}};
-  ToppSolver solver{model.planner.topp};
-};
-
-TEST(MovingStart, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
-  ReefWithoutPieces reef;
-  const JointVector start(1.0, 3.0), velocity(0.8, -3.0);
-  const auto stop = fastestStop(reef.model, reef.world, start, velocity, reef.solver);
-  ASSERT_TRUE(stop.ok()) << stop.error().message;
-  const Trajectory& t = stop.value();
-  EXPECT_LT((t.sample(0.0).qdot - velocity).norm(), 1e-9);
-  EXPECT_LT(t.sample(t.duration_s()).qdot.norm(), 1e-9);
-  // Taken from the reachability profile, checked at the solver's step like the solver's results.
-  EXPECT_TRUE(
-      withinDriveLimits(t, reef.model.planner.topp.limit_check_step_s, reef.model.planner.topp.limit_check_tolerance));
-  // Braking all the way: the speed only falls.
-  double previous = t.bGrid().front();
-  for (double b : t.bGrid()) {
-    EXPECT_LE(b, previous * (1.0 + 1e-9));
-    previous = b;
-  }
-}
-
-TEST(MovingStart, NoStopIsOfferedIntoAJointLimit) {
-  ReefWithoutPieces reef;
-  const JointVector start(1.999, 3.0), velocity(2.5, 0.0);
-  const auto stop = fastestStop(reef.model, reef.world, start, velocity, reef.solver);
-  ASSERT_FALSE(stop.ok());
-  EXPECT_EQ(stop.status(), PlanStatus::kInfeasibleStart);
-  EXPECT_EQ(fastestStop(reef.model, reef.world, start, JointVector::Zero(), reef.solver).status(),
-            PlanStatus::kInvalidInput);
-}
-
 }  // namespace
 }  // namespace cyber::planner

@@ -1,7 +1,8 @@
 #pragma once
 // Test support for the time-optimal parameterisation: the reference drives, analytic geometric
-// paths, and an independent fine-grid forward-backward reference (bisection, nothing shared with
-// the planner's own reachability code).
+// paths, an independent fine-grid forward-backward reference (bisection, nothing shared with
+// the planner's own reachability code), and the sampled problem and warm start its parts' tests
+// share.
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +11,13 @@
 #include <numbers>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
+#include "timing/topp_augmented_lagrangian.hpp"
+#include "timing/topp_problem.hpp"
+#include "timing/topp_reachability.hpp"
 
 namespace cyber::planner::testing {
 
@@ -226,5 +232,37 @@ class FineReference {
   std::vector<double> s_;
   std::vector<PathPoint> p_;
 };
+
+// A sampled, normalised problem on the S-curve (q' of the arm changes sign).
+inline topp::Problem wiggleProblem(int points, double b_start = 0.0) {
+  const WigglePath path(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  topp::Problem problem;
+  problem.b_start = b_start;
+  topp::sampleGrid(path, points, problem);
+  topp::LimitMargins margins;
+  margins.reset(problem.intervals());
+  EXPECT_TRUE(topp::buildRows(referenceDrives(), margins, problem, nullptr));
+  problem.speed_bound = 1e3 / path.length();
+  return problem;
+}
+
+// The S-curve's reachability profile as the augmented Lagrangian's x, with the multipliers
+// estimated there: where the solver starts.
+struct WarmStart {
+  topp::Problem problem;
+  std::vector<double> profile;  // b at the grid points
+  Eigen::VectorXd x;
+  topp::Multipliers multipliers;
+  int active_rows = 0;  // what estimateMultipliers returned
+};
+
+inline WarmStart wiggleWarmStart(int points) {
+  WarmStart w{wiggleProblem(points), {}, {}, {}, 0};
+  std::vector<double> controllable;
+  EXPECT_EQ(topp::forwardBackward(w.problem, w.profile, controllable).status, topp::ReachabilityStatus::kOk);
+  topp::initialGuess(w.problem, w.profile, w.x);
+  w.active_rows = topp::estimateMultipliers(w.problem, w.x, w.multipliers);
+  return w;
+}
 
 }  // namespace cyber::planner::testing
