@@ -100,7 +100,7 @@ void BM_Reachability(benchmark::State& state) {
   topp::LimitMargins margins;
   topp::sampleGrid(*path, 200, problem);
   margins.reset(problem.intervals());
-  topp::buildRows(testing::referenceDrives(), margins, problem, nullptr);
+  (void)topp::buildRows(testing::referenceDrives(), margins, problem);
   problem.speed_bound = 1e3 / path->length();
   std::vector<double> b, c;
   for (auto _ : state) {
@@ -117,7 +117,7 @@ void BM_AugmentedLagrangianEvaluation(benchmark::State& state) {
   topp::LimitMargins margins;
   topp::sampleGrid(*path, static_cast<int>(state.range(0)), problem);
   margins.reset(problem.intervals());
-  topp::buildRows(testing::referenceDrives(), margins, problem, nullptr);
+  (void)topp::buildRows(testing::referenceDrives(), margins, problem);
   problem.speed_bound = 1e3 / path->length();
   std::vector<double> b, c;
   topp::forwardBackward(problem, b, c);

@@ -40,8 +40,7 @@ double stopDistanceEstimate(const StraightPath& line, const DriveModel& drives, 
   const double length = line.length();
   topp::sampleGrid(line, points, problem);
   margins.reset(problem.intervals());
-  std::string error;
-  if (!topp::buildRows(drives, margins, problem, &error)) return kNoStop;
+  if (!topp::buildRows(drives, margins, problem)) return kNoStop;
   double b = b_start / (length * length);
   for (int k = 0; k < problem.intervals(); ++k) {
     const topp::AccelInterval a = topp::admissibleAcceleration(problem, k, b);
@@ -65,8 +64,7 @@ Result<Trajectory> brakingProfile(const std::shared_ptr<const StraightPath>& lin
   const double length = line->length();
   topp::sampleGrid(*line, points, problem);
   margins.reset(problem.intervals());
-  std::string error;
-  if (!topp::buildRows(drives, margins, problem, &error)) return R::failure(PlanStatus::kInvalidInput, error);
+  if (auto rows = topp::buildRows(drives, margins, problem); !rows) return rows.error();
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
   problem.speed_bound = topp::unitSpeedBound(length);
@@ -102,8 +100,7 @@ struct StopLines {
     if (length <= 0.0) return -1.0;
     topp::sampleGrid(StraightPath(start, direction, length), points, problem);
     margins.reset(problem.intervals());
-    std::string error;
-    if (!topp::buildRows(drives, margins, problem, &error)) return -1.0;
+    if (!topp::buildRows(drives, margins, problem)) return -1.0;
     problem.b_start = 0.0;
     problem.b_end = 0.0;
     problem.speed_bound = topp::unitSpeedBound(length);

@@ -61,6 +61,48 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   return plan;
 }
 
+// kInvalidInput for an unknown scene, or an offset that is not finite or outside the scene's range.
+std::optional<PlanError> checkSceneAndOffset(const RobotModel& robot, const PlanRequest& request) {
+  if (request.scene < 0 || request.scene >= static_cast<int>(robot.scenes.size())) {
+    return PlanError{PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene)};
+  }
+  const Scene& scene = robot.scenes[static_cast<size_t>(request.scene)];
+  const double offset = request.scene_offset_m;
+  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, kOffsetRoundoffM)) {
+    return PlanError{PlanStatus::kInvalidInput,
+                     fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m", offset,
+                                 scene.name, scene.offset_range_m.min, scene.offset_range_m.max)};
+  }
+  return std::nullopt;
+}
+
+// The path stage of the request's scene at its offset: the scene as drawn, or the band of grids
+// that holds the offset with the exact offset's worlds (in `shifted`). kInvalidInput for a
+// request checkSceneAndOffset refuses, a start velocity that is not finite, or grids a
+// GridSelection left out.
+Result<const PathPlanner*> pathsFor(const RobotModel& robot, const std::vector<std::vector<PathPlanner>>& planners,
+                                    const PlanRequest& request, std::optional<PathPlanner>& shifted) {
+  using R = Result<const PathPlanner*>;
+  if (auto refused = checkSceneAndOffset(robot, request)) return *refused;
+  if (!request.start_velocity.allFinite()) return R::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
+  const Scene& scene = robot.scenes[static_cast<size_t>(request.scene)];
+  const double offset = request.scene_offset_m;
+  const std::vector<PathPlanner>& bands = planners[static_cast<size_t>(request.scene)];
+  const bool drawn = offset == 0.0 || scene.obstacles.empty();
+  const auto base = std::find_if(bands.begin(), bands.end(), [&](const PathPlanner& p) {
+    const JointRange& band = p.band();
+    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, kOffsetRoundoffM);
+  });
+  if (base == bands.end()) {
+    return R::failure(
+        PlanStatus::kInvalidInput,
+        fmt::format("this planner was built without the grids of scene {} at offset {:.4f} m", scene.name, offset));
+  }
+  if (drawn) return &*base;
+  shifted = base->atOffset(offset);
+  return &*shifted;
+}
+
 }  // namespace
 
 Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection) {
@@ -106,23 +148,21 @@ const PathPlanner& drawnPathPlanner(const MotionPlanner& planner, int scene) {
 
 std::vector<JointRange> MotionPlanner::offsetBands(int scene) const {
   std::vector<JointRange> out;
+  if (scene < 0 || scene >= static_cast<int>(scenes_->path_planners.size())) return out;
   for (const PathPlanner& band : scenes_->path_planners[static_cast<size_t>(scene)]) out.push_back(band.band());
   return out;
 }
 
 Result<Plan> MotionPlanner::stop(const PlanRequest& request) const {
-  const RobotModel& robot = model();
-  if (request.scene < 0 || request.scene >= static_cast<int>(robot.scenes.size())) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
-  }
   const auto start_time = std::chrono::steady_clock::now();
+  const RobotModel& robot = model();
+  if (auto refused = checkSceneAndOffset(robot, request)) return *refused;
   ToppSolver solver(robot.planner.topp);
-  // The world the braked motion was planned in: the scene as drawn, or shifted by its offset.
-  const PathPlanner& drawn = drawnPathPlanner(*this, request.scene);
-  std::optional<CollisionWorld> shifted;
-  if (request.scene_offset_m != 0.0) shifted.emplace(robot, drawn.scene(), request.pieces, request.scene_offset_m);
-  Result<Trajectory> braked = fastestStop(robot, shifted ? *shifted : drawn.world(request.pieces), request.start,
-                                          request.start_velocity, solver);
+  // The world the braked motion was planned in: the scene as drawn, or shifted by its offset. A
+  // stop needs no grid, so it is made for any scene, whichever grids the planner was built with.
+  const CollisionWorld world(robot, robot.scenes[static_cast<size_t>(request.scene)], request.pieces,
+                             request.scene_offset_m);
+  Result<Trajectory> braked = fastestStop(robot, world, request.start, request.start_velocity, solver);
   if (!braked) return braked.error();
   Plan plan;
   plan.trajectory = std::make_shared<const Trajectory>(std::move(braked).value());
@@ -134,35 +174,10 @@ Result<Plan> MotionPlanner::stop(const PlanRequest& request) const {
 Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const auto start_time = std::chrono::steady_clock::now();
   const RobotModel& robot = model();
-  if (request.scene < 0 || request.scene >= static_cast<int>(scenes_->path_planners.size())) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput, fmt::format("unknown scene index {}", request.scene));
-  }
-  if (!request.start_velocity.allFinite()) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput, "start velocity is not finite");
-  }
-  // Offsets: the scene as drawn, or a band's grids with the worlds of the exact offset.
-  const Scene& scene = robot.scenes[static_cast<size_t>(request.scene)];
-  const double offset = request.scene_offset_m;
-  if (!std::isfinite(offset) || !scene.offset_range_m.contains(offset, kOffsetRoundoffM)) {
-    return Result<Plan>::failure(PlanStatus::kInvalidInput,
-                                 fmt::format("scene offset {:.4f} m is outside scene {}'s range [{:.4f}, {:.4f}] m",
-                                             offset, scene.name, scene.offset_range_m.min, scene.offset_range_m.max));
-  }
-  // The scene as drawn, or the band of grids that holds the offset with the exact offset's worlds.
-  const std::vector<PathPlanner>& bands = scenes_->path_planners[static_cast<size_t>(request.scene)];
-  const bool drawn = offset == 0.0 || scene.obstacles.empty();
-  const auto base = std::find_if(bands.begin(), bands.end(), [&](const PathPlanner& p) {
-    const JointRange& band = p.band();
-    return drawn ? band.min == 0.0 && band.max == 0.0 : band.max > band.min && band.contains(offset, kOffsetRoundoffM);
-  });
-  if (base == bands.end()) {
-    return Result<Plan>::failure(
-        PlanStatus::kInvalidInput,
-        fmt::format("this planner was built without the grids of scene {} at offset {:.4f} m", scene.name, offset));
-  }
   std::optional<PathPlanner> shifted;
-  if (!drawn) shifted = base->atOffset(offset);
-  const PathPlanner& paths = shifted ? *shifted : *base;
+  const Result<const PathPlanner*> found = pathsFor(robot, scenes_->path_planners, request, shifted);
+  if (!found) return found.error();
+  const PathPlanner& paths = *found.value();
   const bool moving = weightedNorm(request.start_velocity, robot.planner.metric) > 0.0;
   Result<Plan> chosen = inconsistentPlan();
   if (!moving) {

@@ -29,8 +29,7 @@ TimedFractions reachabilityTimes(const GeometricPath& path, const DriveModel& dr
   topp::sampleGrid(path, grid_points, problem);
   topp::LimitMargins margins;
   margins.reset(problem.intervals());
-  std::string error;
-  if (!topp::buildRows(drives, margins, problem, &error)) return out;
+  if (!topp::buildRows(drives, margins, problem)) return out;
   problem.b_start = b_start / (length * length);
   problem.b_end = 0.0;
   problem.speed_bound = topp::unitSpeedBound(length);

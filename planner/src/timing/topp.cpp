@@ -173,13 +173,13 @@ struct ToppSolver::Attempt {
   Result<Trajectory> result;
 };
 
-enum class ToppSolver::GridChange { kRefined, kFinest, kInvalid };
+enum class ToppSolver::GridChange { kRefined, kFinest };
 
 // Whether the rows carry margins from a failed continuous check.
 enum class ToppSolver::RowLimits { kAsGiven, kTightened };
 
 // Samples the path on `grid_points` points and builds the rows without margins.
-bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
+Result<Done> ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& report) {
   report.grid_points = grid_points;
   topp::sampleGrid(
       *move.path, grid_points, problem_,
@@ -187,12 +187,11 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
              : topp::ProfileView{});
   for (const PathPoint& p : problem_.points) {
     if (!p.q.allFinite() || !p.dq_ds.allFinite() || !p.d2q_ds2.allFinite()) {
-      *error = "the path returns non-finite values";
-      return false;
+      return PlanError{PlanStatus::kInvalidInput, "the path returns non-finite values"};
     }
   }
   margins_.reset(problem_.intervals());
-  return topp::buildRows(move.drives, margins_, problem_, error);
+  return topp::buildRows(move.drives, margins_, problem_);
 }
 
 // Samples the grid again, partly evenly in the time of the reachability profile of a coarse
@@ -200,11 +199,10 @@ bool ToppSolver::sampleRows(const Move& move, int grid_points, ToppReport& repor
 // which on a grid even in s is largest at the slow ends of the move. The coarse profile's time
 // is close enough to place points and costs a fraction of a pass on the full grid. Without a
 // profile the grid stays even in s (the warm start then reports why).
-bool ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error) {
+Result<Done> ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& report) {
   timed_ = false;
-  std::string coarse_error;
-  if (!sampleRows(move, std::min(grid_points, settings_.timing_grid_points), report, &coarse_error)) {
-    return sampleRows(move, grid_points, report, error);
+  if (!sampleRows(move, std::min(grid_points, settings_.timing_grid_points), report)) {
+    return sampleRows(move, grid_points, report);
   }
   problem_.b_start = move.unit_b_start;
   const topp::ReachabilityResult reach =
@@ -214,15 +212,16 @@ bool ToppSolver::sampleTimedRows(const Move& move, int grid_points, ToppReport& 
     timing_b_ = profile_;
     timed_ = true;
   }
-  return sampleRows(move, grid_points, report, error);
+  return sampleRows(move, grid_points, report);
 }
 
 // Halves every interval, up to finestGridPoints(): between closer grid points the trajectory
 // stays closer to the limits it meets at them. The new rows carry no margins.
-ToppSolver::GridChange ToppSolver::refineGrid(const Move& move, ToppReport& report, std::string* error) {
+Result<ToppSolver::GridChange> ToppSolver::refineGrid(const Move& move, ToppReport& report) {
   const int points = std::min(finestGridPoints(settings_), 2 * problem_.gridPoints() - 1);
   if (points <= problem_.gridPoints()) return GridChange::kFinest;
-  return sampleRows(move, points, report, error) ? GridChange::kRefined : GridChange::kInvalid;
+  if (auto rows = sampleRows(move, points, report); !rows) return rows.error();
+  return GridChange::kRefined;
 }
 
 // Warm start (algorithm.md section 3): the reachability profile of the current rows, and the
@@ -287,15 +286,16 @@ ToppSolver::Attempt ToppSolver::solveRows(const Move& move, const topp::AlSettin
 // is met with a finer grid, a small one (or one on the finest grid) by lowering the limits of the
 // intervals concerned; limits that can no longer hold once lowered get a finer grid instead.
 Result<ToppSolver::RowLimits> ToppSolver::refineOrTighten(const Move& move, ToppReport& report) {
-  std::string error;
-  GridChange change =
-      peakOvershoot(report) > settings_.refine_above ? refineGrid(move, report, &error) : GridChange::kFinest;
-  if (change == GridChange::kFinest) {
-    if (topp::buildRows(move.drives, margins_, problem_, &error)) return RowLimits::kTightened;
-    change = refineGrid(move, report, &error);
-  }
-  if (change == GridChange::kRefined) return RowLimits::kAsGiven;
-  return Result<RowLimits>::failure(PlanStatus::kInvalidInput, error);
+  Result<GridChange> change =
+      peakOvershoot(report) > settings_.refine_above ? refineGrid(move, report) : GridChange::kFinest;
+  if (!change) return change.error();
+  if (change.value() == GridChange::kRefined) return RowLimits::kAsGiven;
+  const Result<Done> tightened = topp::buildRows(move.drives, margins_, problem_);
+  if (tightened) return RowLimits::kTightened;
+  change = refineGrid(move, report);
+  if (!change) return change.error();
+  if (change.value() == GridChange::kRefined) return RowLimits::kAsGiven;
+  return tightened.error();
 }
 
 Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, const DriveModel& drives,
@@ -323,9 +323,8 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
   problem_.b_end = 0.0;
   problem_.cost_scale = 1.0;
   problem_.speed_bound = topp::unitSpeedBound(length);
-  std::string error;
-  if (!sampleTimedRows(move, initialGridPoints(settings_), report, &error)) {
-    return fail(PlanStatus::kInvalidInput, error);
+  if (auto rows = sampleTimedRows(move, initialGridPoints(settings_), report); !rows) {
+    return fail(PlanStatus::kInvalidInput, rows.error().message);
   }
 
   // Attempts until one passes the continuous check (algorithm.md section 3, "Stopping rules").
@@ -340,9 +339,9 @@ Result<Trajectory> ToppSolver::solve(std::shared_ptr<const GeometricPath> path, 
       case Attempt::End::kHard: {
         // Tightened rows that turned out infeasible or hard are given up for a finer grid.
         if (rows != RowLimits::kTightened || !may_refine) return std::move(attempt.result);
-        const GridChange change = refineGrid(move, report, &error);
-        if (change == GridChange::kInvalid) return fail(PlanStatus::kInvalidInput, error);
-        if (change == GridChange::kFinest) return std::move(attempt.result);
+        const Result<GridChange> change = refineGrid(move, report);
+        if (!change) return fail(PlanStatus::kInvalidInput, change.error().message);
+        if (change.value() == GridChange::kFinest) return std::move(attempt.result);
         rows = RowLimits::kAsGiven;
         ++report.refinements;
         break;

@@ -40,9 +40,9 @@ class ToppSolver {
   struct Attempt;
   enum class GridChange;
   enum class RowLimits;
-  bool sampleRows(const Move& move, int grid_points, ToppReport& report, std::string* error);
-  bool sampleTimedRows(const Move& move, int grid_points, ToppReport& report, std::string* error);
-  GridChange refineGrid(const Move& move, ToppReport& report, std::string* error);
+  Result<Done> sampleRows(const Move& move, int grid_points, ToppReport& report);
+  Result<Done> sampleTimedRows(const Move& move, int grid_points, ToppReport& report);
+  Result<GridChange> refineGrid(const Move& move, ToppReport& report);
   Result<double> warmStart(const Move& move, bool first, ToppReport& report);
   Result<Trajectory> solvedTrajectory(const Move& move, double time_scale) const;
   Attempt solveRows(const Move& move, const topp::AlSettings& al, bool first, ToppReport& report);

@@ -260,8 +260,9 @@ bool addJointRows(const DriveParams& d, const PathVoltage& pv, const LimitMargin
 
 }  // namespace
 
-bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem, std::string* error) {
+Result<Done> buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem) {
   const int intervals = problem.intervals();
+  std::string error;
   problem.rows.clear();
   problem.row_begin.assign(static_cast<size_t>(intervals) + 1, 0);
   for (int k = 0; k < intervals; ++k) {
@@ -277,14 +278,14 @@ bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& p
       const std::array<PathVoltage, kJointCount> voltages = drives.pathVoltages(p);
       for (int j = 0; j < kJointCount; ++j) {
         if (!addJointRows(drives.drive(j), voltages[static_cast<size_t>(j)], margins, RowPlace{k, kAt[place], place, p},
-                          j, coulombSigns(samples, j, pinned_at_rest), problem, error)) {
-          return false;
+                          j, coulombSigns(samples, j, pinned_at_rest), problem, &error)) {
+          return PlanError{PlanStatus::kInvalidInput, std::move(error)};
         }
       }
     }
   }
   problem.row_begin[static_cast<size_t>(intervals)] = static_cast<int>(problem.rows.size());
-  return true;
+  return Done{};
 }
 
 }  // namespace cyber::planner::topp

@@ -120,9 +120,10 @@ void scaleTime(const Problem& in, double time_scale_s, Problem& out);
 
 // Builds the limit rows of algorithm.md section 3 for the sampled grid, at both ends and the
 // middle of every interval. The Coulomb term kS*sgn(qdot) uses every sign qdot takes on the
-// interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest). Returns false with
-// `error` set when a limit cannot hold whatever the motion (e.g. gravity alone needs more than the voltage limit).
-bool buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem, std::string* error);
+// interval (both when q'_j changes sign in it, 0 at a node where the profile is pinned at rest).
+// kInvalidInput, naming the limit and where, when a limit cannot hold whatever the motion (e.g.
+// gravity alone needs more than the voltage limit).
+Result<Done> buildRows(const DriveModel& drives, const LimitMargins& margins, Problem& problem);
 
 // The trajectory along `path` of a speed profile on `problem`'s unit-length grid: s scales by the
 // path's length and b by b_scale (the length squared, over the time scale squared when time was

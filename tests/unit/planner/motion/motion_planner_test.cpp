@@ -150,7 +150,7 @@ TEST(MotionPlanner, APlanFromRestStartsAndEndsWhereAsked) {
   EXPECT_EQ(plan.value().waypoints.front(), move.from);
   EXPECT_EQ(plan.value().waypoints.back(), move.to);
   EXPECT_GE(plan.value().min_clearance_m, model.clearance_m);
-  EXPECT_FALSE(plan.value().path_method.empty());
+  EXPECT_FALSE(plan.value().method.strategy.empty());
   EXPECT_TRUE(withinDriveLimits(t, model.planner.topp));
   const ColumnConsistency c = columnConsistency(t, model.planner.motion.consistency_step_s);
   EXPECT_LE(c.position_error, model.planner.motion.max_position_error);
@@ -228,6 +228,32 @@ TEST(MotionPlanner, StopIsTheFastestStopInTheRequestsWorld) {
   const auto same = reefPlanner().stop(request);
   ASSERT_TRUE(same.ok());
   EXPECT_EQ(same.value().trajectory->sGrid(), reefPlanner().stop(request).value().trajectory->sGrid());
+}
+
+// A stop is refused at an offset a plan is refused at (a NaN offset once made every distance NaN,
+// which no clearance check refuses), and is made for a scene whose grids were left out: it needs
+// none.
+TEST(MotionPlanner, StopChecksTheOffsetAndNeedsNoGrid) {
+  PlanRequest request;
+  request.start = JointVector(1.0, 3.0);
+  request.start_velocity = JointVector(0.8, -3.0);
+  for (const double offset : {-0.01, 0.3001, kNaN, kInf}) {
+    request.scene_offset_m = offset;
+    const auto refused = reefPlanner().stop(request);
+    ASSERT_FALSE(refused.ok()) << offset;
+    EXPECT_EQ(refused.status(), PlanStatus::kInvalidInput) << offset;
+    EXPECT_NE(refused.error().message.find("is outside scene reef's range"), std::string::npos)
+        << refused.error().message;
+  }
+  const RobotModel& model = test::referenceModel();
+  auto other_scene_only = MotionPlanner::create(model, GridSelection{model.sceneIndex("open"), 0.0});
+  ASSERT_TRUE(other_scene_only.ok());
+  request.scene_offset_m = 0.0;
+  const auto stop = other_scene_only.value().stop(request);
+  ASSERT_TRUE(stop.ok()) << stop.error().message;
+  EXPECT_EQ(stop.value().trajectory->duration_s(), reefPlanner().stop(request).value().trajectory->duration_s());
+  EXPECT_TRUE(other_scene_only.value().offsetBands(-1).empty());
+  EXPECT_TRUE(other_scene_only.value().offsetBands(99).empty());
 }
 
 TEST(MotionPlanner, StopRefusesAVelocityThatIsZeroOrNotFinite) {

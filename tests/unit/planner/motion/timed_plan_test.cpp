@@ -137,16 +137,18 @@ TEST(TimedPlan, TimePathsIsTheSolversTrajectoryAlongTheFirstAgreeingCandidate) {
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   ToppSolver solver(model().planner.topp);
   size_t chosen = found.size();
+  PlanMethod unrepaired = plan.value().method;
+  unrepaired.repairs = 0;
   for (size_t i = 0; i < found.size(); ++i) {
-    if (plan.value().path_method.rfind(found[i].method, 0) == 0) {
+    if (unrepaired == found[i].method) {
       chosen = i;
       break;
     }
   }
-  ASSERT_LT(chosen, found.size()) << plan.value().path_method;
+  ASSERT_LT(chosen, found.size()) << plan.value().method.name();
   const auto direct = solver.solve(found[chosen].path, model().driveModel(found[chosen].pieces), 0.0, nullptr);
   ASSERT_TRUE(direct.ok());
-  if (plan.value().path_method == found[chosen].method) {
+  if (plan.value().method.repairs == 0) {
     EXPECT_EQ(plan.value().trajectory->duration_s(), direct.value().duration_s());
   } else {
     EXPECT_GT(plan.value().trajectory->duration_s(), direct.value().duration_s());  // slowed or gentler
@@ -171,7 +173,7 @@ TEST(TimedPlan, NoCandidateIsNoPlan) {
   ASSERT_FALSE(plan.ok());
   EXPECT_EQ(plan.status(), inconsistentPlan().status());
   EXPECT_EQ(plan.error().message, inconsistentPlan().error().message);
-  EXPECT_EQ(inconsistentPlan().status(), PlanStatus::kSolverNotConverged);
+  EXPECT_EQ(inconsistentPlan().status(), PlanStatus::kColumnsDisagree);
 }
 
 // timedPath is the path stage then timePaths: the same plan, and the path stage's refusals as they
@@ -183,7 +185,7 @@ TEST(TimedPlan, TimedPathIsThePathStageThenTimePaths) {
   const auto expected = timePaths(model(), candidates(move), JointVector::Zero());
   ASSERT_TRUE(plan.ok() && expected.ok());
   EXPECT_EQ(plan.value().trajectory->duration_s(), expected.value().trajectory->duration_s());
-  EXPECT_EQ(plan.value().path_method, expected.value().path_method);
+  EXPECT_EQ(plan.value().method, expected.value().method);
   const JointVector outside(model().range(0).max + 0.1, move.to.y());
   const auto refused =
       timedPath(model(), test::referencePathPlanner(), move.from, outside, move.pieces, JointVector::Zero());
@@ -225,22 +227,25 @@ TEST(TimedPlan, JoinAfterPutsTheFirstPartBeforeTheOnwardPlan) {
   PlanRequest request;
   request.start = start;
   request.goal = move.to;
-  const auto joined = joinAfter("a stop", request, stop.value(), onward);
+  const auto joined = joinAfter(PlanMethod::kStoppedFirst, request, stop.value(), onward);
   ASSERT_TRUE(joined.ok()) << joined.error().message;
   EXPECT_NEAR(joined.value().trajectory->duration_s(),
               stop.value().duration_s() + onward.value().trajectory->duration_s(), 1e-12);
   ASSERT_EQ(joined.value().waypoints.size(), onward.value().waypoints.size() + 1);
   EXPECT_EQ(joined.value().waypoints.front(), start);
-  EXPECT_EQ(joined.value().path_method, "a stop, then " + onward.value().path_method);
+  PlanMethod stopped_first = onward.value().method;
+  stopped_first.repairs |= PlanMethod::kStoppedFirst;
+  EXPECT_EQ(joined.value().method, stopped_first);
   EXPECT_LT(joined.value().trajectory->sample(stop.value().duration_s()).qdot.norm(), 1e-12);
 
-  const auto refused = joinAfter("a stop", request, stop.value(), Result<Plan>::failure(PlanStatus::kNoPath, "none"));
+  const auto refused =
+      joinAfter(PlanMethod::kStoppedFirst, request, stop.value(), Result<Plan>::failure(PlanStatus::kNoPath, "none"));
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.status(), PlanStatus::kNoPath);
   EXPECT_EQ(refused.error().message, "none");
   auto still_moving = Trajectory::create(stop_line, model().driveModel(HeldPieces{}), {0.0, 0.01}, {0.04, 0.01});
   ASSERT_TRUE(still_moving.ok());
-  const auto not_at_rest = joinAfter("a stop", request, still_moving.value(), onward);
+  const auto not_at_rest = joinAfter(PlanMethod::kStoppedFirst, request, still_moving.value(), onward);
   ASSERT_FALSE(not_at_rest.ok());
   EXPECT_EQ(not_at_rest.status(), PlanStatus::kInvalidInput);
 }

@@ -241,7 +241,7 @@ inline topp::Problem wiggleProblem(int points, double b_start = 0.0) {
   topp::sampleGrid(path, points, problem);
   topp::LimitMargins margins;
   margins.reset(problem.intervals());
-  EXPECT_TRUE(topp::buildRows(referenceDrives(), margins, problem, nullptr));
+  EXPECT_TRUE(topp::buildRows(referenceDrives(), margins, problem));
   problem.speed_bound = 1e3 / path.length();
   return problem;
 }

@@ -65,7 +65,7 @@ TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
   topp::sampleGrid(path, 100, even);
   topp::LimitMargins margins;
   margins.reset(even.intervals());
-  ASSERT_TRUE(topp::buildRows(testing::referenceDrives(), margins, even, nullptr));
+  ASSERT_TRUE(topp::buildRows(testing::referenceDrives(), margins, even));
   std::vector<double> b, controllable;
   ASSERT_EQ(topp::forwardBackward(even, b, controllable).status, topp::ReachabilityStatus::kOk);
   topp::Problem timed;
@@ -101,7 +101,7 @@ void expectRowsAreTheDriveModel(const DriveModel& drives) {
   topp::sampleGrid(path, 20, p);
   topp::LimitMargins margins;
   margins.reset(p.intervals());
-  ASSERT_TRUE(topp::buildRows(drives, margins, p, nullptr));
+  ASSERT_TRUE(topp::buildRows(drives, margins, p));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(0.1, 3.0), ua(-20.0, 20.0);
   const double length = path.length();
@@ -160,11 +160,10 @@ TEST(ToppProblem, ALimitNoMotionCanMeetIsRefusedWithItsPlace) {
   topp::LimitMargins margins;
   margins.reset(p.intervals());
   auto refusal = [&](const DriveParams& elevator) {
-    std::string error;
-    const bool built = topp::buildRows(testing::drivesOf(elevator, testing::armDrive()), margins, p, &error);
-    EXPECT_EQ(built, error.empty()) << error;
-    EXPECT_EQ(built, topp::buildRows(testing::drivesOf(elevator, testing::armDrive()), margins, p, nullptr));
-    return error;
+    const auto built = topp::buildRows(testing::drivesOf(elevator, testing::armDrive()), margins, p);
+    if (built) return std::string();
+    EXPECT_EQ(built.status(), PlanStatus::kInvalidInput);
+    return built.error().message;
   };
   DriveParams heavy = testing::elevatorDrive();
   heavy.kG_volts = 12.5;  // above the 12 V limit
