@@ -166,10 +166,9 @@ std::vector<PoseSet> readPoses(TableReader t, const planner::RobotModel& robot) 
   std::vector<PoseSet> sets;
   for (const std::string& name : t.keysInFileOrder()) {
     TableReader set = t.table(name);
-    std::string error;
-    const std::optional<planner::HeldPieces> held = robot.piecesNamed(name, &error);
-    if (!held) t.fail(name, error + "; a set is \"none\" or piece names joined by '+'");
-    PoseSet out{name, *held, {}};
+    const auto held = robot.piecesNamed(name);
+    if (!held) t.fail(name, held.error().message + "; a set is \"none\" or piece names joined by '+'");
+    PoseSet out{name, held.value(), {}};
     for (const std::string& pose : set.keysInFileOrder()) {
       const Eigen::Vector2d q = set.vector2(pose);
       if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");

@@ -12,6 +12,7 @@
 #include "bench_measures.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/motion_planner.hpp"
+#include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -31,25 +32,16 @@ void BM_ShippedRobotMoves(benchmark::State& state, const std::string& robot) {
   int planned = 0, refused = 0;
   for (auto _ : state) {
     for (int r = 0; r < kRepetitions; ++r) {
-      for (const config::PoseSet& set : config.poses) {
-        for (const config::NamedPose& from : set.poses) {
-          for (const config::NamedPose& to : set.poses) {
-            if (from.name == to.name) continue;
-            PlanRequest request;
-            request.start = from.q;
-            request.goal = to.q;
-            request.pieces = set.pieces;
-            const double cpu0 = bench::threadCpuMs();
-            const auto plan = planner.value().plan(request);
-            cpu_ms.push_back(bench::threadCpuMs() - cpu0);
-            if (!plan) {
-              refused += r == 0 ? 1 : 0;
-              continue;
-            }
-            planned += r == 0 ? 1 : 0;
-            total_ms.push_back(plan.value().times_ms.total);
-          }
+      for (const test::NamedMove& move : test::namedMoves(config)) {
+        const double cpu0 = bench::threadCpuMs();
+        const auto plan = planner.value().plan(move.request);
+        cpu_ms.push_back(bench::threadCpuMs() - cpu0);
+        if (!plan) {
+          refused += r == 0 ? 1 : 0;
+          continue;
         }
+        planned += r == 0 ? 1 : 0;
+        total_ms.push_back(plan.value().times_ms.total);
       }
     }
   }

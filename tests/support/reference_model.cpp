@@ -25,13 +25,12 @@ const planner::PathPlanner& referencePathPlanner() {
 }
 
 planner::HeldPieces referencePieces(const std::string& names) {
-  std::string error;
-  const auto held = referenceModel().piecesNamed(names, &error);
+  const auto held = referenceModel().piecesNamed(names);
   if (!held) {
-    std::fprintf(stderr, "%s\n", error.c_str());
+    std::fprintf(stderr, "%s\n", held.error().message.c_str());
     std::abort();
   }
-  return *held;
+  return held.value();
 }
 
 }  // namespace cyber::test

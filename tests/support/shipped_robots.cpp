@@ -33,6 +33,23 @@ const ShippedRobot& shippedRobot(const std::string& name) {
   return *slot;
 }
 
+std::vector<NamedMove> namedMoves(const config::Config& config) {
+  std::vector<NamedMove> out;
+  for (const config::PoseSet& set : config.poses) {
+    for (const config::NamedPose& from : set.poses) {
+      for (const config::NamedPose& to : set.poses) {
+        if (from.name == to.name) continue;
+        NamedMove move{set.name + ":" + from.name + "->" + to.name, {}};
+        move.request.start = from.q;
+        move.request.goal = to.q;
+        move.request.pieces = set.pieces;
+        out.push_back(std::move(move));
+      }
+    }
+  }
+  return out;
+}
+
 JointVector namedPose(const config::Config& config, const std::string& set, const std::string& name) {
   for (const config::PoseSet& poses : config.poses) {
     if (poses.name != set) continue;

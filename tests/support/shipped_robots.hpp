@@ -3,6 +3,7 @@
 // planners, once per test binary; and what every plan of theirs must be.
 
 #include <string>
+#include <vector>
 
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/motion_planner.hpp"
@@ -24,6 +25,14 @@ std::string sourceFile(const std::string& relative);
 // config/NAME.toml with its planner (every scene, offset band and held set); a failure to load
 // or plan aborts the test binary.
 const ShippedRobot& shippedRobot(const std::string& name);
+
+// Every ordered pair of distinct poses of each of the config's pose sets, with the set's pieces:
+// the named moves of a robot, labelled "SET:FROM->TO".
+struct NamedMove {
+  std::string label;
+  planner::PlanRequest request;
+};
+std::vector<NamedMove> namedMoves(const config::Config& config);
 
 // The pose NAME of the config's pose set SET (a test failure when there is none).
 planner::JointVector namedPose(const config::Config& config, const std::string& set, const std::string& name);

@@ -33,7 +33,6 @@ int main(int argc, char** argv) {
   const auto args = tools::parsePlanArguments(std::vector<std::string>(argv + 1, argv + argc));
   if (const auto status = cli::exitBeforeWork(args, {"cyber-plan", tools::planUsage()})) return *status;
 
-  std::string error;
   config::Config config;
   try {
     config =
@@ -48,8 +47,8 @@ int main(int argc, char** argv) {
     if (scene < 0) return fail(2, "unknown scene \"" + args->scene + "\"");
   }
 
-  const std::optional<planner::HeldPieces> pieces = robot.piecesNamed(args->pieces, &error);
-  if (!pieces) return fail(2, "--pieces: " + error);
+  const auto pieces = robot.piecesNamed(args->pieces);
+  if (!pieces) return fail(2, "--pieces: " + pieces.error().message);
 
   // Only the grids this move needs: the start-up is most of a cyber-plan run.
   auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m});
@@ -59,7 +58,7 @@ int main(int argc, char** argv) {
   request.start = args->from;
   request.goal = args->to;
   request.start_velocity = args->from_velocity;
-  request.pieces = *pieces;
+  request.pieces = pieces.value();
   request.scene = scene;
   request.scene_offset_m = args->scene_offset_m;
   const auto plan = planner.value().plan(request);
@@ -82,9 +81,9 @@ int main(int argc, char** argv) {
   }
   if (!args->plot_path.empty()) {
     const std::string title = "cyber-plan " + poseText(robot, args->from) + " -> " + poseText(robot, args->to) +
-                              (pieces->empty() ? "" : " +" + robot.pieceSetName(*pieces));
-    const auto drawn =
-        plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, *pieces, title), args->plot_path);
+                              (pieces->empty() ? "" : " +" + robot.pieceSetName(pieces.value()));
+    const auto drawn = plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, pieces.value(), title),
+                                                 args->plot_path);
     if (!drawn) return fail(2, drawn.error().message);
   }
   if (args->json) {

@@ -54,10 +54,8 @@ std::optional<int> refusedOptions(const cyber::config::Config& config, const Sim
                                       " is outside the joint ranges of " + robot.name));
   }
   for (const std::string& piece : options.pieces) {
-    if (robot.pieceIndex(piece) < 0) {
-      std::string error;
-      (void)robot.piecesNamed(piece, &error);
-      return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + error));
+    if (const auto named = robot.piecesNamed(piece); !named) {
+      return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + named.error().message));
     }
   }
   const auto& devices = config.daemon.devices;
@@ -87,8 +85,8 @@ cyber::plant::RunnerSetup runnerSetup(const cyber::config::Config& config, const
   auto& sim = setup.simulation;
   std::string piece_names;
   for (const std::string& piece : options.pieces) piece_names += (piece_names.empty() ? "" : ",") + piece;
-  const cyber::planner::HeldPieces held =
-      robot.piecesNamed(piece_names, nullptr).value_or(cyber::planner::HeldPieces{});
+  const auto named_set = robot.piecesNamed(piece_names);  // each name was checked above
+  const cyber::planner::HeldPieces held = named_set ? named_set.value() : cyber::planner::HeldPieces{};
   sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
                                          options.controller_bandwidth_radps);
   for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {

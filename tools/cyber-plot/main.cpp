@@ -77,10 +77,9 @@ int main(int argc, char** argv) {
   const planner::RobotModel& robot = config.robot;
   const int scene = args.scene.empty() ? 0 : robot.sceneIndex(args.scene);
   if (scene < 0) return fail("unknown scene \"" + args.scene + "\"");
-  std::string error;
-  const std::optional<planner::HeldPieces> held = robot.piecesNamed(args.pieces, &error);
-  if (!held) return fail("--pieces: " + error);
-  const planner::HeldPieces pieces = *held;
+  const auto held = robot.piecesNamed(args.pieces);
+  if (!held) return fail("--pieces: " + held.error().message);
+  const planner::HeldPieces pieces = held.value();
   const std::string channel = args.channel.empty() ? config.daemon.channels.trajectory : args.channel;
   const std::string pieces_label = pieces.empty() ? "" : " +" + robot.pieceSetName(pieces);
   const std::string scene_label = " (scene " + robot.scenes[static_cast<size_t>(scene)].name + ")";

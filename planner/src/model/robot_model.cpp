@@ -33,7 +33,7 @@ DriveModel RobotModel::driveModel(HeldPieces held) const {
   return DriveModel(drives, ChainDynamics(joints, moving));
 }
 
-std::optional<HeldPieces> RobotModel::piecesNamed(std::string_view names, std::string* error) const {
+Result<HeldPieces> RobotModel::piecesNamed(std::string_view names) const {
   HeldPieces held;
   if (names.empty() || names == "none") return held;
   while (true) {
@@ -41,12 +41,10 @@ std::optional<HeldPieces> RobotModel::piecesNamed(std::string_view names, std::s
     const std::string name(names.substr(0, end));
     const int piece = pieceIndex(name);
     if (piece < 0) {
-      if (error) {
-        std::string known;
-        for (const GamePiece& p : pieces) known += (known.empty() ? "" : ", ") + p.name;
-        *error = "unknown game piece \"" + name + "\" (this robot's: " + (known.empty() ? "none" : known) + ")";
-      }
-      return std::nullopt;
+      std::string known;
+      for (const GamePiece& p : pieces) known += (known.empty() ? "" : ", ") + p.name;
+      return PlanError{PlanStatus::kInvalidInput,
+                       "unknown game piece \"" + name + "\" (this robot's: " + (known.empty() ? "none" : known) + ")"};
     }
     held = held.with(piece);
     if (end == std::string_view::npos) return held;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Fails when a floating-point literal other than 0, 1, 2 or 0.5 appears in planner/src outside a
-named constant of the allow-list (issue 33, item 5).
+named constant of the allow-list.
 
 Usage: check_planner_literals.py ROOT [ALLOW_LIST]
 

@@ -36,18 +36,8 @@ std::vector<std::string> currentDurations() {
   std::vector<std::string> lines;
   for (const char* name : test::kShippedRobotNames) {
     const test::ShippedRobot& robot = test::shippedRobot(name);
-    for (const config::PoseSet& set : robot.config.poses) {
-      for (const config::NamedPose& from : set.poses) {
-        for (const config::NamedPose& to : set.poses) {
-          if (from.name == to.name) continue;
-          PlanRequest request;
-          request.start = from.q;
-          request.goal = to.q;
-          request.pieces = set.pieces;
-          lines.push_back(std::string(name) + " " + set.name + ":" + from.name + "->" + to.name + " " +
-                          outcome(robot, request));
-        }
-      }
+    for (const test::NamedMove& move : test::namedMoves(robot.config)) {
+      lines.push_back(std::string(name) + " " + move.label + " " + outcome(robot, move.request));
     }
     test::SeededMoveDraw draw(robot, test::kSeededMovesSeed);
     for (int move = 0; move < test::kSeededMovesPerRobot; ++move) {

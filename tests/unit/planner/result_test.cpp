@@ -31,6 +31,7 @@ constexpr Expected kEveryStatus[] = {
     {PlanStatus::kInfeasibleStart, "infeasible start", 3},
     {PlanStatus::kSolverNotConverged, "solver did not converge", 3},
     {PlanStatus::kInternalError, "internal error", 3},
+    {PlanStatus::kColumnsDisagree, "columns disagree", 3},
 };
 
 TEST(PlanStatusText, EveryStatusHasItsOwnText) {
@@ -40,11 +41,11 @@ TEST(PlanStatusText, EveryStatusHasItsOwnText) {
     EXPECT_TRUE(seen.insert(toString(e.status)).second) << "two statuses print " << toString(e.status);
   }
   // The table above covers the enum: the value after the last one is not a status.
-  EXPECT_EQ(static_cast<int>(PlanStatus::kInternalError) + 1, static_cast<int>(std::size(kEveryStatus)));
+  EXPECT_EQ(static_cast<int>(PlanStatus::kColumnsDisagree) + 1, static_cast<int>(std::size(kEveryStatus)));
 }
 
 TEST(PlanStatusText, AValueOutsideTheEnumIsUnknown) {
-  EXPECT_EQ(toString(static_cast<PlanStatus>(static_cast<int>(PlanStatus::kInternalError) + 1)), "unknown");
+  EXPECT_EQ(toString(static_cast<PlanStatus>(static_cast<int>(PlanStatus::kColumnsDisagree) + 1)), "unknown");
   EXPECT_EQ(toString(static_cast<PlanStatus>(-1)), "unknown");
 }
 

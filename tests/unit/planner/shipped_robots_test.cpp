@@ -36,13 +36,12 @@ TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
     const ShippedRobot& robot = shippedRobot(move.robot);
     const RobotModel& model = robot.config.robot;
     const std::string label = std::string(move.robot) + " " + move.pieces + ":" + move.from + "->" + move.to;
-    std::string error;
-    const auto pieces = model.piecesNamed(move.pieces, &error);
-    ASSERT_TRUE(pieces) << error;
+    const auto pieces = model.piecesNamed(move.pieces);
+    ASSERT_TRUE(pieces.ok()) << pieces.error().message;
     PlanRequest request;
     request.start = namedPose(robot.config, move.pieces, move.from);
     request.goal = namedPose(robot.config, move.pieces, move.to);
-    request.pieces = *pieces;
+    request.pieces = pieces.value();
     const auto plan = robot.planner.plan(request);
     if (move.ceiling_s == test::kRefused) {
       EXPECT_FALSE(plan.ok()) << label << " is now planned: update the table";
@@ -51,7 +50,7 @@ TEST(ShippedRobots, EveryNamedMoveIsPlannedWithinItsCeilingOrRefusedAsStored) {
     }
     ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().message;
     EXPECT_LE(plan.value().trajectory->duration_s(), move.ceiling_s) << label;
-    expectSound(model, *plan.value().trajectory, *pieces, 0.0, label);
+    expectSound(model, *plan.value().trajectory, pieces.value(), 0.0, label);
     worst_ratio[move.robot] =
         std::max(worst_ratio[move.robot], test::expectNearTheFastestRide(*plan.value().trajectory, label));
     ++planned;
@@ -76,7 +75,7 @@ TEST(ShippedRobots, MovesBetweenPosesOnTheTelescopesLimitsArePlannedInsideTheLim
       PlanRequest request;
       request.start = namedPose(robot.config, set, from);
       request.goal = namedPose(robot.config, set, to);
-      request.pieces = *model.piecesNamed(set, nullptr);
+      request.pieces = model.piecesNamed(set).value();
       ASSERT_FALSE(model.withinLimits(request.start, -1e-3) && model.withinLimits(request.goal, -1e-3)) << label;
       const auto plan = robot.planner.plan(request);
       ASSERT_TRUE(plan.ok()) << label << ": " << plan.error().message;
@@ -98,7 +97,7 @@ TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
       std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[0] - drives.volts(JointVector(0.5, 3.0), rest, rest)[0]),
       0.1);
   // A held cone adds its weight.
-  const HeldPieces cone = model.piecesNamed("cone", nullptr).value();
+  const HeldPieces cone = model.piecesNamed("cone").value();
   EXPECT_GT(std::abs(model.driveModel(cone).volts(JointVector(0.5, 1.0), rest, rest)[1]),
             std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[1]));
 }

@@ -17,8 +17,10 @@
 
 namespace cyber::planner {
 
+/// How a joint moves its link: sliding along its axis (m) or turning about it (rad).
 enum class JointType { kPrismatic, kRevolute };
 
+/// The closed interval of a joint's values (m or rad), or of a scene's offsets (m).
 struct JointRange {
   double min = 0.0;
   double max = 0.0;
@@ -27,20 +29,22 @@ struct JointRange {
   }
 };
 
-// The unit of a joint's value: "m" (prismatic) or "rad" (revolute).
+/// The unit of a joint's value: "m" (prismatic) or "rad" (revolute).
 inline const char* unitName(JointType type) { return type == JointType::kPrismatic ? "m" : "rad"; }
 
+/// One joint of the chain: its type, where it sits in its parent's frame, and its range.
 struct ChainJoint {
   std::string name;
   JointType type = JointType::kRevolute;
-  Point2 origin_m = Point2::Zero();  // in the parent frame
-  double axis_rad = 0.0;             // in the parent frame
-  JointRange range;                  // m (prismatic) or rad (revolute)
+  Point2 origin_m = Point2::Zero();  ///< in the parent frame
+  double axis_rad = 0.0;             ///< in the parent frame
+  JointRange range;                  ///< m (prismatic) or rad (revolute)
 };
 
+/// The joints in chain order, each carried by the one before it.
 using JointChain = std::array<ChainJoint, kJointCount>;
 
-// A rigid frame in the world: x_world = origin_m + R(angle) x_link.
+/// A rigid frame in the world: x_world = origin_m + R(angle) x_link.
 struct LinkFrame {
   Point2 origin_m = Point2::Zero();
   double cos_angle = 1.0;
@@ -53,13 +57,13 @@ struct LinkFrame {
   [[nodiscard]] double angle_rad() const { return std::atan2(sin_angle, cos_angle); }
 };
 
-// The frame of a joint's link for joint value q, given its parent's frame.
+/// The frame of a joint's link for joint value q, given its parent's frame.
 inline LinkFrame childFrame(const LinkFrame& parent, const ChainJoint& joint, double q) {
   LinkFrame frame;
   frame.origin_m = parent.toWorld(joint.origin_m);
   const double c = std::cos(joint.axis_rad);
   const double s = std::sin(joint.axis_rad);
-  // Axis direction in the world: the parent's rotation applied to (cos axis, sin axis).
+  /// Axis direction in the world: the parent's rotation applied to (cos axis, sin axis).
   const double axis_c = parent.cos_angle * c - parent.sin_angle * s;
   const double axis_s = parent.sin_angle * c + parent.cos_angle * s;
   if (joint.type == JointType::kPrismatic) {
@@ -75,24 +79,24 @@ inline LinkFrame childFrame(const LinkFrame& parent, const ChainJoint& joint, do
   return frame;
 }
 
-// Both links' frames at q (index = joint index).
+/// Both links' frames at q (index = joint index).
 inline std::array<LinkFrame, kJointCount> linkFrames(const JointChain& chain, const JointVector& q) {
   const LinkFrame first = childFrame(LinkFrame{}, chain[0], q[0]);
   return {first, childFrame(first, chain[1], q[1])};
 }
 
-// (x, y) -> (-y, x): rotation by +90 degrees, the derivative of R(angle) p with respect to angle.
+/// (x, y) -> (-y, x): rotation by +90 degrees, the derivative of R(angle) p with respect to angle.
 inline Point2 perpendicular(const Point2& v) { return Point2(-v.y(), v.x()); }
 
-// Both links' frames at one q, with what the point Jacobians need.
+/// Both links' frames at one q, with what the point Jacobians need.
 struct ChainPose {
   std::array<LinkFrame, kJointCount> frames;
   std::array<JointType, kJointCount> types{JointType::kRevolute, JointType::kRevolute};
-  std::array<Point2, kJointCount> travel;  // a prismatic joint's direction of travel in the world
+  std::array<Point2, kJointCount> travel;  ///< a prismatic joint's direction of travel in the world
 
-  // Velocity of the point of link `link` now at world position x per unit joint rate: column j
-  // is dx/dq_j (zero for joints after the link; a revolute joint turns x about its origin, a
-  // prismatic one moves it along its travel).
+  /// Velocity of the point of link `link` now at world position x per unit joint rate: column j
+  /// is dx/dq_j (zero for joints after the link; a revolute joint turns x about its origin, a
+  /// prismatic one moves it along its travel).
   [[nodiscard]] Eigen::Matrix2d pointJacobian(int link, const Point2& x_world) const {
     Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
     for (int j = 0; j <= link; ++j) {
@@ -104,6 +108,7 @@ struct ChainPose {
   }
 };
 
+/// The frames of every link of the chain at joint values q.
 inline ChainPose chainPose(const JointChain& chain, const JointVector& q) {
   ChainPose pose;
   LinkFrame parent;
@@ -117,10 +122,10 @@ inline ChainPose chainPose(const JointChain& chain, const JointVector& q) {
   return pose;
 }
 
-// A DC motor as WPILib's DCMotor describes it (docs/algorithm.md section 3): V = I R + omega / Kv,
-// torque = Kt I.
+/// A DC motor as WPILib's DCMotor describes it (docs/algorithm.md section 3): V = I R + omega / Kv,
+/// torque = Kt I.
 
-// DC motor figures as WPILib's DCMotor gives them.
+/// DC motor figures as WPILib's DCMotor gives them.
 struct MotorParams {
   double nominal_voltage_volts = 12.0;
   double stall_torque_nm = 0.0;
@@ -129,35 +134,35 @@ struct MotorParams {
   double free_speed_radps = 0.0;
 
   [[nodiscard]] double resistanceOhms() const { return nominal_voltage_volts / stall_current_amps; }
-  // Kv in rad/s per volt of back-EMF.
+  /// Kv in rad/s per volt of back-EMF.
   [[nodiscard]] double kvRadpsPerVolt() const {
     return free_speed_radps / (nominal_voltage_volts - resistanceOhms() * free_current_amps);
   }
   [[nodiscard]] double ktNmPerAmp() const { return stall_torque_nm / stall_current_amps; }
 };
 
-// Coupled rigid-body dynamics of a two-joint serial chain (docs/algorithm.md section 3,
-// "Coupled rigid-body dynamics"): tau = M(q) qdd + c(q, qd) + g(q) for any pair of prismatic and
-// revolute joints, its form along a path q(s) (linear in the path acceleration a and the path
-// speed squared b), and the voltage and current of the motors that drive it.
-//
-// Pure and allocation-free: fixed-size Eigen values, no I/O; the TOPP evaluates it per grid point.
+/// Coupled rigid-body dynamics of a two-joint serial chain (docs/algorithm.md section 3,
+/// "Coupled rigid-body dynamics"): tau = M(q) qdd + c(q, qd) + g(q) for any pair of prismatic and
+/// revolute joints, its form along a path q(s) (linear in the path acceleration a and the path
+/// speed squared b), and the voltage and current of the motors that drive it.
+///
+/// Pure and allocation-free: fixed-size Eigen values, no I/O; the TOPP evaluates it per grid point.
 
 inline constexpr double kStandardGravityMps2 = 9.80665;
 
-// Mass data of everything that moves with one link's frame.
+/// Mass data of everything that moves with one link's frame.
 struct LinkInertia {
   double mass_kg = 0.0;
-  Point2 cg_m = Point2::Zero();  // centre of mass in the link frame
-  double moi_kgm2 = 0.0;         // moment of inertia about the centre of mass
+  Point2 cg_m = Point2::Zero();  ///< centre of mass in the link frame
+  double moi_kgm2 = 0.0;         ///< moment of inertia about the centre of mass
 };
 
-// The one body that two bodies fixed in the same link frame make (parallel-axis theorem): how a
-// held piece adds to its link. Two massless bodies give a massless one at the origin.
+/// The one body that two bodies fixed in the same link frame make (parallel-axis theorem): how a
+/// held piece adds to its link. Two massless bodies give a massless one at the origin.
 [[nodiscard]] LinkInertia combine(const LinkInertia& a, const LinkInertia& b);
 
-// The motors of one joint under the rigid-body model: `motor_count` identical motors, all at the
-// same voltage, geared by `gearing` (motor rad per joint rad or per metre). Limits are per motor.
+/// The motors of one joint under the rigid-body model: `motor_count` identical motors, all at the
+/// same voltage, geared by `gearing` (motor rad per joint rad or per metre). Limits are per motor.
 struct RigidBodyDrive {
   MotorParams motor;
   int motor_count = 1;
@@ -166,65 +171,65 @@ struct RigidBodyDrive {
   double voltage_limit_volts = 12.0;
   double current_limit_amps = 0.0;
 
-  // R / (Kt G n): volts per N m of joint torque (N of force for a prismatic joint).
+  /// R / (Kt G n): volts per N m of joint torque (N of force for a prismatic joint).
   [[nodiscard]] double voltsPerLoad() const;
-  // G / Kv: back-EMF volts per joint rad/s (m/s).
+  /// G / Kv: back-EMF volts per joint rad/s (m/s).
   [[nodiscard]] double backEmfVoltsPerRate() const;
-  // V = kS sgn(qdot) + tau R / (Kt G n) + G qdot / Kv for joint torque (force) `load`.
+  /// V = kS sgn(qdot) + tau R / (Kt G n) + G qdot / Kv for joint torque (force) `load`.
   [[nodiscard]] double volts(double load, double qdot) const;
-  // Current of each motor, I = (V - G qdot / Kv) / R.
+  /// Current of each motor, I = (V - G qdot / Kv) / R.
   [[nodiscard]] double amps(double volts, double qdot) const;
 };
 
-// Joint torques (forces) along a path: tau = alpha a + beta b + gravity, with a = s-ddot and
-// b = s-dot^2.
+/// Joint torques (forces) along a path: tau = alpha a + beta b + gravity, with a = s-ddot and
+/// b = s-dot^2.
 struct PathTorque {
-  JointVector alpha = JointVector::Zero();    // M q'
-  JointVector beta = JointVector::Zero();     // M q'' + c(q, q')
-  JointVector gravity = JointVector::Zero();  // g(q)
+  JointVector alpha = JointVector::Zero();    ///< M q'
+  JointVector beta = JointVector::Zero();     ///< M q'' + c(q, q')
+  JointVector gravity = JointVector::Zero();  ///< g(q)
 
   [[nodiscard]] JointVector at(double a, double b) const { return alpha * a + beta * b + gravity; }
 };
 
-// One joint's motor voltage along a path, kS aside:
-//   V = alpha a + beta b + gamma sqrt(b) + offset + kS sgn(qdot),
-// and its current times R is the same without the gamma term (the back-EMF). The Coulomb term is
-// left to the caller, whose sign rule depends on the interval (topp_problem.hpp).
+/// One joint's motor voltage along a path, kS aside:
+///   V = alpha a + beta b + gamma sqrt(b) + offset + kS sgn(qdot),
+/// and its current times R is the same without the gamma term (the back-EMF). The Coulomb term is
+/// left to the caller, whose sign rule depends on the interval (topp_problem.hpp).
 struct PathVoltage {
-  double alpha = 0.0;   // volts per unit of a
-  double beta = 0.0;    // volts per unit of b
-  double gamma = 0.0;   // G q' / Kv: volts per unit of sqrt(b)
-  double offset = 0.0;  // the gravity term in volts
+  double alpha = 0.0;   ///< volts per unit of a
+  double beta = 0.0;    ///< volts per unit of b
+  double gamma = 0.0;   ///< G q' / Kv: volts per unit of sqrt(b)
+  double offset = 0.0;  ///< the gravity term in volts
 };
 
-// Joint `joint`'s PathVoltage from the chain's PathTorque and the path tangent q'.
+/// Joint `joint`'s PathVoltage from the chain's PathTorque and the path tangent q'.
 [[nodiscard]] PathVoltage pathVoltage(const RigidBodyDrive& drive, const PathTorque& torque, const JointVector& dq_ds,
                                       int joint);
 
-// The chain, the two links' bodies (index = joint index) and gravity g acting in -y.
+/// The chain, the two links' bodies (index = joint index) and gravity g acting in -y.
 class ChainDynamics {
  public:
   ChainDynamics(const JointChain& chain, const std::array<LinkInertia, kJointCount>& bodies,
                 double gravity_mps2 = kStandardGravityMps2);
 
   [[nodiscard]] Eigen::Matrix2d massMatrix(const JointVector& q) const;
-  // c(q, qdot): the Coriolis and centripetal terms, quadratic in qdot.
+  /// c(q, qdot): the Coriolis and centripetal terms, quadratic in qdot.
   [[nodiscard]] JointVector velocityTerms(const JointVector& q, const JointVector& qdot) const;
   [[nodiscard]] JointVector gravityTerms(const JointVector& q) const;
   [[nodiscard]] JointVector torque(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const;
-  // Along q(s): tau = M q' a + (M q'' + c(q, q')) b + g(q), since c(q, q' sdot) = c(q, q') b.
+  /// Along q(s): tau = M q' a + (M q'' + c(q, q')) b + g(q), since c(q, q' sdot) = c(q, q') b.
   [[nodiscard]] PathTorque alongPath(const JointVector& q, const JointVector& dq_ds, const JointVector& d2q_ds2) const;
 
   [[nodiscard]] const std::array<LinkInertia, kJointCount>& bodies() const { return bodies_; }
 
  private:
-  // Positions and Jacobians of the chain at one q.
+  /// Positions and Jacobians of the chain at one q.
   struct Kinematics {
-    std::array<Point2, kJointCount> cg_m;                  // each body's centre of mass, world
-    std::array<Eigen::Matrix2d, kJointCount> cg_jacobian;  // d cg_k / dq
-    std::array<Point2, kJointCount> pivot_m;               // each revolute joint's centre of rotation
-    Eigen::Matrix2d pivot1_jacobian;                       // d pivot_1 / dq (pivot_0 is fixed)
-    std::array<Point2, kJointCount> travel;                // each prismatic joint's unit direction
+    std::array<Point2, kJointCount> cg_m;                  ///< each body's centre of mass, world
+    std::array<Eigen::Matrix2d, kJointCount> cg_jacobian;  ///< d cg_k / dq
+    std::array<Point2, kJointCount> pivot_m;               ///< each revolute joint's centre of rotation
+    Eigen::Matrix2d pivot1_jacobian;                       ///< d pivot_1 / dq (pivot_0 is fixed)
+    std::array<Point2, kJointCount> travel;                ///< each prismatic joint's unit direction
   };
 
   [[nodiscard]] Kinematics kinematics(const JointVector& q) const;
@@ -232,57 +237,57 @@ class ChainDynamics {
   [[nodiscard]] JointVector velocityTerms(const Kinematics& k, const JointVector& qdot) const;
   [[nodiscard]] JointVector gravityTerms(const Kinematics& k) const;
 
-  JointChain chain_;  // names dropped: copies never allocate
+  JointChain chain_;  ///< names dropped: copies never allocate
   std::array<LinkInertia, kJointCount> bodies_;
-  // Row k: d(angle of link k)/dq, constant for a planar chain (1 for each revolute joint <= k).
+  /// Row k: d(angle of link k)/dq, constant for a planar chain (1 for each revolute joint <= k).
   std::array<Eigen::RowVector2d, kJointCount> angle_jacobian_;
   double gravity_mps2_;
 };
 
-// The voltage each joint's motors need for a motion, and the current they draw (docs/algorithm.md
-// section 3): what the TOPP's rows, the trajectory's samples and the limit checks evaluate.
+/// The voltage each joint's motors need for a motion, and the current they draw (docs/algorithm.md
+/// section 3): what the TOPP's rows, the trajectory's samples and the limit checks evaluate.
 
-// f(psi) of the WPILib feedforward's gravity term, psi the joint's absolute angle in the world
-// (RobotModel::gravityAngle): 1, cos psi, sin psi or 0.
+/// f(psi) of the WPILib feedforward's gravity term, psi the joint's absolute angle in the world
+/// (RobotModel::gravityAngle): 1, cos psi, sin psi or 0.
 enum class GravityModel { kConstant, kCosine, kSine, kNone };
 
-// One joint's drive: WPILib feedforward, the motors behind it and its limits.
-// Joint units are m (prismatic) or rad (revolute); kV is V per unit/s, kA V per unit/s^2.
+/// One joint's drive: WPILib feedforward, the motors behind it and its limits.
+/// Joint units are m (prismatic) or rad (revolute); kV is V per unit/s, kA V per unit/s^2.
 struct DriveParams {
   MotorParams motor;
   int motor_count = 1;
-  double gearing = 1.0;  // motor rad per joint unit
+  double gearing = 1.0;  ///< motor rad per joint unit
   double kS_volts = 0.0;
   double kG_volts = 0.0;
   double kV = 0.0;
   double kA = 0.0;
   GravityModel gravity = GravityModel::kConstant;
   double voltage_limit_volts = 12.0;
-  double current_limit_amps = 0.0;           // per motor
-  std::optional<double> velocity_limit;      // joint units/s
-  std::optional<double> acceleration_limit;  // joint units/s^2
+  double current_limit_amps = 0.0;           ///< per motor
+  std::optional<double> velocity_limit;      ///< joint units/s
+  std::optional<double> acceleration_limit;  ///< joint units/s^2
 
-  [[nodiscard]] double gravityFactor(double psi_rad) const;  // f(psi) of algorithm.md section 3
-  // Feedforward voltage V(psi, qdot, qddot) and the per-motor current it draws.
+  [[nodiscard]] double gravityFactor(double psi_rad) const;  ///< f(psi) of algorithm.md section 3
+  /// Feedforward voltage V(psi, qdot, qddot) and the per-motor current it draws.
   [[nodiscard]] double volts(double psi_rad, double qdot, double qddot) const;
   [[nodiscard]] double amps(double volts, double qdot) const;
 };
 
-// How the joints' voltages follow from their motion (docs/algorithm.md section 3): each joint's
-// WPILib feedforward on its own, or the coupled rigid-body dynamics of the chain.
+/// How the joints' voltages follow from their motion (docs/algorithm.md section 3): each joint's
+/// WPILib feedforward on its own, or the coupled rigid-body dynamics of the chain.
 enum class DriveKind { kFeedforward, kRigidBody };
 
-// Both joints' drives with what their voltages need of the chain (no names: copying it allocates
-// nothing). Along a path a joint's voltage is alpha a + beta b + gamma sqrt(b) + offset +
-// kS sgn(qdot) for either kind (PathVoltage, chain.hpp); its current times R is the same
-// with gamma less the back-EMF's G q' / Kv.
+/// Both joints' drives with what their voltages need of the chain (no names: copying it allocates
+/// nothing). Along a path a joint's voltage is alpha a + beta b + gamma sqrt(b) + offset +
+/// kS sgn(qdot) for either kind (PathVoltage, chain.hpp); its current times R is the same
+/// with gamma less the back-EMF's G q' / Kv.
 class DriveModel {
  public:
   DriveModel() = default;
-  // WPILib feedforward per joint.
+  /// WPILib feedforward per joint.
   DriveModel(const JointChain& chain, const std::array<DriveParams, kJointCount>& drives);
-  // Coupled rigid-body dynamics: the drives' motors, gearing, kS and limits (their kG, kV, kA are
-  // not used) driving `dynamics`.
+  /// Coupled rigid-body dynamics: the drives' motors, gearing, kS and limits (their kG, kV, kA are
+  /// not used) driving `dynamics`.
   DriveModel(const std::array<DriveParams, kJointCount>& drives, const ChainDynamics& dynamics);
 
   [[nodiscard]] DriveKind kind() const { return dynamics_ ? DriveKind::kRigidBody : DriveKind::kFeedforward; }
@@ -290,12 +295,12 @@ class DriveModel {
   [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[static_cast<size_t>(joint)]; }
   [[nodiscard]] const std::array<DriveParams, kJointCount>& drives() const { return drives_; }
 
-  // psi_j(q): the absolute angle in the world of joint j's gravity term: a revolute joint's link
-  // x axis, a prismatic joint's direction of travel.
+  /// psi_j(q): the absolute angle in the world of joint j's gravity term: a revolute joint's link
+  /// x axis, a prismatic joint's direction of travel.
   [[nodiscard]] double gravityAngle(int joint, const JointVector& q) const;
   [[nodiscard]] JointVector volts(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const;
   [[nodiscard]] JointVector amps(const JointVector& volts, const JointVector& qdot) const;
-  // Both joints' path coefficients at one path point.
+  /// Both joints' path coefficients at one path point.
   [[nodiscard]] std::array<PathVoltage, kJointCount> pathVoltages(const PathPoint& p) const;
 
  private:

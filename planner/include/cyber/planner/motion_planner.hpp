@@ -19,24 +19,26 @@ namespace cyber::planner {
 
 /// How long each stage of one plan took (docs/algorithm.md sections 2 and 3 name the stages).
 struct StageTimesMs {
-  double grid = 0.0;    // building the grid of this scene and piece set, once at create()
-  double search = 0.0;  // this request: grid search (or the direct check)
-  double smooth = 0.0;  // this request: optimisation, spline, clearance check
-  double topp = 0.0;    // this request: time-optimal parameterisation and its limit check
-  double total = 0.0;   // this request, end to end (excludes the one-off grid build)
+  double grid = 0.0;    ///< building the grid of this scene and piece set, once at create()
+  double search = 0.0;  ///< this request: grid search (or the direct check)
+  double smooth = 0.0;  ///< this request: optimisation, spline, clearance check
+  double topp = 0.0;    ///< this request: time-optimal parameterisation and its limit check
+  double total = 0.0;   ///< this request, end to end (excludes the one-off grid build)
 };
 
+/// One move to plan: from a start (at rest or moving) to a goal at rest, with held pieces, in a scene.
 struct PlanRequest {
-  JointVector start = JointVector::Zero();           // (m, rad)
-  JointVector goal = JointVector::Zero();            // (m, rad)
-  JointVector start_velocity = JointVector::Zero();  // (m/s, rad/s); zero: start at rest
+  JointVector start = JointVector::Zero();           ///< (m, rad)
+  JointVector goal = JointVector::Zero();            ///< (m, rad)
+  JointVector start_velocity = JointVector::Zero();  ///< (m/s, rad/s); zero: start at rest
   HeldPieces pieces;
-  int scene = 0;  // index into RobotModel::scenes
-  // Shift of the scene's field elements in x (> 0: the robot further from them), within the
-  // scene's offset_range_m (docs/algorithm.md section 2, "Scene offsets").
+  int scene = 0;  ///< index into RobotModel::scenes
+  /// Shift of the scene's field elements in x (> 0: the robot further from them), within the
+  /// scene's offset_range_m (docs/algorithm.md section 2, "Scene offsets").
   double scene_offset_m = 0.0;
 };
 
+/// The report of the solver that timed a plan.
 using SolverReport = ToppReport;
 
 /// How a plan was made (docs/algorithm.md section 2.6): which path strategy's candidate it follows,
@@ -78,23 +80,24 @@ struct PlanMethod {
   friend bool operator==(const PlanMethod&, const PlanMethod&) = default;
 };
 
+/// A planned move: its trajectory, the path it follows and how it was found.
 struct Plan {
   std::shared_ptr<const Trajectory> trajectory;
-  std::vector<JointVector> waypoints;  // the spline's knots, exact start to exact goal
+  std::vector<JointVector> waypoints;  ///< the spline's knots, exact start to exact goal
   StageTimesMs times_ms;
   SolverReport solver;
-  double min_clearance_m = 0.0;  // smallest distance to an obstacle found along the path
-  PlanMethod method;             // how the path was found and the plan made sound
+  double min_clearance_m = 0.0;  ///< smallest distance to an obstacle found along the path
+  PlanMethod method;             ///< how the path was found and the plan made sound
 };
 
-// Which grids create() builds: every one (the daemon, which must answer any goal without
-// building one), or only those one move needs (cyber-plan, whose start-up is most of its run).
+/// Which grids create() builds: every one (the daemon, which must answer any goal without
+/// building one), or only those one move needs (cyber-plan, whose start-up is most of its run).
 struct GridSelection {
-  int scene = -1;                        // -1: every scene
-  std::optional<double> scene_offset_m;  // set: only the grids of this offset; unset: every band
+  int scene = -1;                        ///< -1: every scene
+  std::optional<double> scene_offset_m;  ///< set: only the grids of this offset; unset: every band
 };
 
-class PathPlanner;  // the path stage of one scene (internal)
+class PathPlanner;  ///< the path stage of one scene (internal)
 
 /// Plans the motions of one robot. Cheap to copy (its grids are shared, never changed after create()).
 class MotionPlanner {

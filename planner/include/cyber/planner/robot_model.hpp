@@ -14,47 +14,49 @@
 
 namespace cyber::planner {
 
-// Polygons attached to one link of the chain, in that link's frame (chain.hpp).
+/// Polygons attached to one link of the chain, in that link's frame (chain.hpp).
 struct LinkGeometry {
   std::string name;
-  int joint = 0;  // the link of this joint
+  int joint = 0;  ///< the link of this joint
   std::vector<ConvexPolygon> polygons;
 };
 
-// A named game piece: polygons in its joint's link frame, present only while it is held.
+/// A named game piece: polygons in its joint's link frame, present only while it is held.
 struct GamePiece {
   std::string name;
   int joint = 0;
   std::vector<ConvexPolygon> polygons;
 };
 
+/// An obstacle of a scene: a name for messages and a polygon in the world frame.
 struct NamedPolygon {
   std::string name;
-  ConvexPolygon polygon;  // world frame
+  ConvexPolygon polygon;  ///< world frame
 };
 
-// A named set of obstacles; the first scene of a model is its default. A goal may shift the
-// scene's field elements (`obstacles`) by an offset in x within offset_range_m (the robot's
-// distance to them; > 0 = the robot further away); `fixed` ones (keep-outs on the robot, the
-// floor) never move.
+/// A named set of obstacles; the first scene of a model is its default. A goal may shift the
+/// scene's field elements (`obstacles`) by an offset in x within offset_range_m (the robot's
+/// distance to them; > 0 = the robot further away); `fixed` ones (keep-outs on the robot, the
+/// floor) never move.
 struct Scene {
   std::string name;
   std::vector<NamedPolygon> obstacles;
   std::vector<NamedPolygon> fixed;
-  JointRange offset_range_m;  // {0, 0}: the scene does not move
+  JointRange offset_range_m;  ///< {0, 0}: the scene does not move
 };
 
+/// The robot as the planner sees it: joints, link outlines, game pieces, scenes, drives, settings.
 struct RobotModel {
   std::string name;
   JointChain joints;
-  std::vector<LinkGeometry> links;  // at least one polygon in all
-  std::vector<GamePiece> pieces;    // at most HeldPieces::kMaxPieces
-  std::vector<Scene> scenes;        // scenes.front() is the default
+  std::vector<LinkGeometry> links;  ///< at least one polygon in all
+  std::vector<GamePiece> pieces;    ///< at most HeldPieces::kMaxPieces
+  std::vector<Scene> scenes;        ///< scenes.front() is the default
   double clearance_m = 0.0;
   std::array<DriveParams, kJointCount> drives;
   DriveKind drive_kind = DriveKind::kFeedforward;
-  // Rigid-body drives: what moves with each link's frame (index = joint), and each piece's mass
-  // data by piece index (massless unless the description gives it).
+  /// Rigid-body drives: what moves with each link's frame (index = joint), and each piece's mass
+  /// data by piece index (massless unless the description gives it).
   std::array<LinkInertia, kJointCount> bodies{};
   std::vector<LinkInertia> piece_inertias;
   PlannerSettings planner;
@@ -64,21 +66,21 @@ struct RobotModel {
   [[nodiscard]] bool withinLimits(const JointVector& q, double tolerance = 0.0) const {
     return range(0).contains(q[0], tolerance) && range(1).contains(q[1], tolerance);
   }
-  // Index of a scene, a piece or a joint by name; -1 when there is none.
+  /// Index of a scene, a piece or a joint by name; -1 when there is none.
   [[nodiscard]] int sceneIndex(const std::string& name) const;
   [[nodiscard]] int pieceIndex(const std::string& name) const;
   [[nodiscard]] int jointIndex(const std::string& name) const;
-  // The number of distinct held sets (every subset of the pieces).
+  /// The number of distinct held sets (every subset of the pieces).
   [[nodiscard]] int pieceSetCount() const { return HeldPieces::setCount(static_cast<int>(pieces.size())); }
   [[nodiscard]] HeldPieces allPieces() const { return HeldPieces::fromIndex(pieceSetCount() - 1); }
-  // The held set of the named pieces: names separated by ',' or '+', or "" / "none" for none.
-  // Nothing, with `error` naming the piece, when a name is not one of `pieces`.
-  [[nodiscard]] std::optional<HeldPieces> piecesNamed(std::string_view names, std::string* error) const;
-  // "none", or the held pieces' names joined by '+' in declaration order.
+  /// The held set of the named pieces: names separated by ',' or '+', or "" / "none" for none.
+  /// kInvalidInput, naming the piece and the robot's own, when a name is not one of `pieces`.
+  [[nodiscard]] Result<HeldPieces> piecesNamed(std::string_view names) const;
+  /// "none", or the held pieces' names joined by '+' in declaration order.
   [[nodiscard]] std::string pieceSetName(HeldPieces held) const;
 
-  // The voltage model of both joints with these pieces held (chain.hpp; a held piece adds
-  // its mass to its link under the rigid-body model).
+  /// The voltage model of both joints with these pieces held (chain.hpp; a held piece adds
+  /// its mass to its link under the rigid-body model).
   [[nodiscard]] DriveModel driveModel(HeldPieces held) const;
 };
 

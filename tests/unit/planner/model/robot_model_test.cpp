@@ -46,10 +46,9 @@ TEST(RobotModel, EveryHeldSetIsNamedAndReadBack) {
   for (int set = 0; set < model.pieceSetCount(); ++set) {
     const HeldPieces held = HeldPieces::fromIndex(set);
     const std::string name = model.pieceSetName(held);
-    std::string error;
-    const auto read = model.piecesNamed(name, &error);
-    ASSERT_TRUE(read.has_value()) << name << ": " << error;
-    EXPECT_EQ(*read, held) << name;
+    const auto read = model.piecesNamed(name);
+    ASSERT_TRUE(read.ok()) << name << ": " << read.error().message;
+    EXPECT_EQ(read.value(), held) << name;
   }
   // Declaration order, joined by '+', whatever order the bits were set in.
   const std::string& first = model.pieces[0].name;
@@ -64,12 +63,12 @@ TEST(RobotModel, HeldSetsAreReadWithEitherSeparatorInAnyOrder) {
   const RobotModel model = threePieces();
   const HeldPieces coral_cube = HeldPieces{}.with(model.pieceIndex("coral")).with(model.pieceIndex("cube"));
   for (const char* names : {"coral+cube", "cube+coral", "coral,cube", "cube,coral", "coral+cube,coral"}) {
-    const auto held = model.piecesNamed(names, nullptr);
-    ASSERT_TRUE(held.has_value()) << names;
-    EXPECT_EQ(*held, coral_cube) << names;
+    const auto held = model.piecesNamed(names);
+    ASSERT_TRUE(held.ok()) << names;
+    EXPECT_EQ(held.value(), coral_cube) << names;
   }
-  EXPECT_EQ(model.piecesNamed("", nullptr), HeldPieces{});
-  EXPECT_EQ(model.piecesNamed("none", nullptr), HeldPieces{});
+  EXPECT_EQ(model.piecesNamed("").value(), HeldPieces{});
+  EXPECT_EQ(model.piecesNamed("none").value(), HeldPieces{});
 }
 
 // A name that is not one of the pieces is refused, with the name and the robot's own pieces (an
@@ -86,16 +85,18 @@ TEST(RobotModel, AnUnknownPieceIsRefusedWithTheNamesThereAre) {
   // The robot's pieces in declaration order.
   const std::string known = model.pieces[0].name + ", " + model.pieces[1].name;
   for (const auto& r : kRefused) {
-    std::string error;
-    EXPECT_FALSE(model.piecesNamed(r.names, &error).has_value()) << r.names;
-    EXPECT_EQ(error, "unknown game piece \"" + std::string(r.unknown) + "\" (this robot's: " + known + ")") << r.names;
-    EXPECT_FALSE(model.piecesNamed(r.names, nullptr).has_value()) << r.names;
+    const auto refused = model.piecesNamed(r.names);
+    ASSERT_FALSE(refused.ok()) << r.names;
+    EXPECT_EQ(refused.status(), PlanStatus::kInvalidInput) << r.names;
+    EXPECT_EQ(refused.error().message,
+              "unknown game piece \"" + std::string(r.unknown) + "\" (this robot's: " + known + ")")
+        << r.names;
   }
   RobotModel bare = model;
   bare.pieces.clear();
-  std::string error;
-  EXPECT_FALSE(bare.piecesNamed("coral", &error).has_value());
-  EXPECT_EQ(error, "unknown game piece \"coral\" (this robot's: none)");
+  const auto refused = bare.piecesNamed("coral");
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error().message, "unknown game piece \"coral\" (this robot's: none)");
   EXPECT_EQ(bare.pieceSetCount(), 1);
   EXPECT_EQ(bare.allPieces(), HeldPieces{});
 }
