@@ -33,7 +33,7 @@ expect_in() {  # expect_in NAME FILE TEXT
 
 check "plans a public move" 0 --config "$config" --from 0.20,1.57 --to 1.97,5.17 --csv "$tmp/t.csv" --json
 expect_in "json keys" "$tmp/out" '"duration_s":'
-for key in grid_ms search_ms smooth_ms topp_ms total_ms primal_residual dual_residual min_clearance_m; do
+for key in grid_ms search_ms smooth_ms topp_ms total_ms primal_residual dual_residual min_clearance_m method; do
   expect_in "json $key" "$tmp/out" "\"$key\":"
 done
 header='t,elevator_pos,elevator_vel,elevator_acc,elevator_volts,elevator_amps,arm_pos,arm_vel,arm_acc,arm_volts,arm_amps'

@@ -104,9 +104,10 @@ std::string planSummaryJson(const planner::Plan& plan) {
   return fmt::format(
       "{{\"status\":\"ok\",\"duration_s\":{:.9g},\"grid_ms\":{:.9g},\"search_ms\":{:.9g},\"smooth_ms\":{:.9g},"
       "\"topp_ms\":{:.9g},\"total_ms\":{:.9g},\"primal_residual\":{:.9g},\"dual_residual\":{:.9g},"
-      "\"outer_iterations\":{},\"inner_iterations\":{},\"min_clearance_m\":{:.9g},\"waypoints\":{}}}",
+      "\"outer_iterations\":{},\"inner_iterations\":{},\"min_clearance_m\":{:.9g},\"waypoints\":{},"
+      "\"method\":\"{}\"}}",
       plan.trajectory->duration_s(), t.grid, t.search, t.smooth, t.topp, t.total, r.primal_residual, r.dual_residual,
-      r.outer_iterations, r.inner_iterations, plan.min_clearance_m, plan.waypoints.size());
+      r.outer_iterations, r.inner_iterations, plan.min_clearance_m, plan.waypoints.size(), plan.method.name());
 }
 
 plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::RobotModel& robot, int scene,
