@@ -40,7 +40,7 @@ TEST(RegisteringAStrategy, TheChooserTriesItAndCanSelectIt) {
   ASSERT_TRUE(candidates.ok()) << candidates.error().message;
   EXPECT_EQ(candidates.value().front().method.strategy, kThrowAway);
 
-  auto planner = MotionPlanner::create(test::referenceModel());
+  auto planner = MotionPlanner::create(test::referenceModel(), GridSelection{0, 0.0});  // the grids it needs
   ASSERT_TRUE(planner.ok()) << planner.error().message;
   PlanRequest request;
   request.start = move.from;
