@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "elapsed_ms.hpp"
 #include "math/weighted_norm.hpp"
 #include "motion/fastest_stop.hpp"
 #include "motion/moving_start_strategies.hpp"
@@ -24,10 +25,6 @@ namespace {
 constexpr double kNarrowestBandM = 1e-3;
 // An offset within this of a range's or band's end [m] is inside: the roundoff of a requested value.
 constexpr double kOffsetRoundoffM = 1e-9;
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // A start at rest inside the clearance that touches nothing: out along the steepest way, then
 // the rest-to-rest plan from there (docs/algorithm.md section 5). `refused` is the path stage's

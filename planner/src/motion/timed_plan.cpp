@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "cyber/planner/trajectory.hpp"
+#include "elapsed_ms.hpp"
 #include "math/weighted_norm.hpp"
 #include "path/joined_path.hpp"
 #include "timing/path_timing.hpp"
@@ -17,10 +18,6 @@
 
 namespace cyber::planner {
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
 
 // A very short move from rest (tens of milliseconds) whose columns disagree at 1 ms: its switch
 // from full acceleration to full braking is a large share of its peak speed, and the trapezoid

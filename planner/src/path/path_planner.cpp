@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "elapsed_ms.hpp"
 #include "math/weighted_norm.hpp"
 #include "path/astar_search.hpp"
 #include "path/path_clearance.hpp"
@@ -15,10 +16,6 @@ namespace cyber::planner {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
 
 std::string poseText(const RobotModel& model, const JointVector& q) {
   return fmt::format("({:.4f} {}, {:.4f} {})", q[0], unitName(model.joints[0].type), q[1],
@@ -91,7 +88,7 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const Join
       worlds_.emplace_back(model_, scene_, pieces, centre);
       grids->grids.push_back(CSpaceGrid::build(worlds_.back(), model_));
     }
-    grids->build_ms[static_cast<size_t>(set)] = millisecondsSince(t0);
+    grids->build_ms[static_cast<size_t>(set)] = msSince(t0);
   }
   grids_ = std::move(grids);
 }
@@ -223,7 +220,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   out.pieces = pieces;
   const double start_speed = weightedNorm(start_velocity, metric);
   if (weightedNorm(goal - start, metric) < kSamePoseWeighted && start_speed == 0.0) {
-    out.search_ms = millisecondsSince(t_search);
+    out.search_ms = msSince(t_search);
     return stayingPath(start, world.distance(start).value, std::move(out));
   }
   CandidateInputs inputs{.model = model_,
@@ -246,7 +243,7 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
   const JointVector from = leadIn(start, start_velocity, world, inputs.polyline, out);
   if (auto refused = searchFirstPath(from, goal, pieces, inputs, out)) return *refused;
   out.search_waypoints = inputs.polyline;
-  out.search_ms = millisecondsSince(t_search);
+  out.search_ms = msSince(t_search);
   inputs.fixed_head = out.lead_in ? 2 : 1;
   inputs.direct = out.direct;
   inputs.first = out;
@@ -270,7 +267,7 @@ Result<std::vector<PlannedPath>> PathPlanner::smoothedCandidates(CandidateInputs
   }
   const ClearanceCheck& last_check = list.last_check;
   std::vector<PlannedPath> candidates = list.release();
-  const double smooth_ms = millisecondsSince(t_smooth);
+  const double smooth_ms = msSince(t_smooth);
   for (PlannedPath& candidate : candidates) candidate.smooth_ms = smooth_ms;
   if (candidates.empty()) {
     return Result<std::vector<PlannedPath>>::failure(

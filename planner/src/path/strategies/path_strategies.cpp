@@ -26,9 +26,6 @@ std::vector<PathStrategy>& registeredStrategies() {
 
 }  // namespace
 
-// `path` through `waypoints` put first, in `fastest`'s place, when an estimate on a finer grid than
-// the searches' own confirms it faster (a coarse estimate can be fooled between its points).
-// fastest_s: `fastest`'s estimate on that grid.
 void putFirstIfFaster(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest, double fastest_s,
                       CubicSplinePath path, std::vector<JointVector> waypoints, double min_clearance_m,
                       PlanMethod::Smoothing smoothing) {
@@ -43,8 +40,6 @@ void putFirstIfFaster(const CandidateInputs& in, CandidateList& list, const Plan
   list.putFirst(std::move(better));
 }
 
-// The shape search from `knots` (through which `fastest` runs), refined further when its shape
-// is still estimated well above the slower joint moving alone.
 void addShaped(const CandidateInputs& in, CandidateList& list, const PlannedPath& fastest,
                const std::vector<JointVector>& knots) {
   const PlannerSettings& settings = in.model.planner;
@@ -67,10 +62,8 @@ void addShaped(const CandidateInputs& in, CandidateList& list, const PlannedPath
                    PlanMethod::Smoothing::kShaped);
 }
 
-// The search's polyline with every run of nodes that a straight segment (clear by `clearance_m`)
-// can replace replaced by it. The first fixed_head points are kept. From each kept point the
-// farthest reachable node is found by bisection (clear segments are nearly monotone along a
-// search path).
+// From each kept point the farthest reachable node is found by bisection: clear segments are
+// nearly monotone along a search path.
 std::vector<JointVector> shortcutPolyline(const CollisionWorld& world, const std::vector<JointVector>& polyline,
                                           int fixed_head, double clearance_m) {
   std::vector<JointVector> out(polyline.begin(), polyline.begin() + fixed_head);
@@ -100,7 +93,6 @@ double shortcutClearance(const CandidateInputs& in) {
   return in.model.clearance_m * (1.0 + in.settings().shortcut_margin_clearances);
 }
 
-// `line` smoothed as a copy of the first path, added in the order of estimated time.
 void addSmoothed(const CandidateInputs& in, CandidateList& list, const std::vector<JointVector>& line) {
   PlannedPath alternative = in.first;
   if (smoothPolyline(in, line, alternative, list)) list.addInTimeOrder(in, std::move(alternative));
@@ -139,7 +131,7 @@ bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& l
     prior.insert(prior.end(), resampled.begin(), resampled.end());
     return prior;
   };
-  auto accept = [&](const std::vector<JointVector>& waypoints, Smoothing smoothing) {
+  auto accept = [&](const std::vector<JointVector>& waypoints, Smoothing how) {
     auto spline = CubicSplinePath::through(waypoints, metric, in.start_velocity);
     if (!spline.ok()) return false;
     list.last_check = checkPath(spline.value(), in.world, in.model, in.model.clearance_m);
@@ -147,7 +139,7 @@ bool smoothPolyline(const CandidateInputs& in, const std::vector<JointVector>& l
     into.path = std::make_shared<const CubicSplinePath>(std::move(spline).value());
     into.waypoints = waypoints;
     into.min_clearance_m = list.last_check.min_distance_m;
-    into.method.smoothing = smoothing;
+    into.method.smoothing = how;
     return true;
   };
   if (in.direct && fixed_head == 1) return accept(line, Smoothing::kStraight);
