@@ -28,7 +28,10 @@ class ArmControllerTest {
   /** A source that delivers one fresh pair of setpoints per loop, sequence counting up. */
   int sequence;
   DaemonMode mode = DaemonMode.MOVING;
+  boolean daemonOnTheBus = true;
+  ArmState measured = ArmState.of(0.3, 0, 1.5, 0).holding("coral");
   final SetpointSource source = (guard, now) -> {
+    if (!daemonOnTheBus) return;
     guard.onStatus(mode, now);
     guard.onSetpoint(Joint.JOINT_0, new Setpoint(1, 0.5, 0.1, 0.4, sequence & 0xFF), now);
     guard.onSetpoint(Joint.JOINT_1, new Setpoint(2, 1.0, 0.0, 0.1, sequence & 0xFF), now);
@@ -38,7 +41,7 @@ class ArmControllerTest {
   ArmController controller(LCM lcm) {
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 9);
     return new ArmController(new ArmController.Parts(client, source, joint0, joint1,
-        () -> ArmState.of(0.3, 0, 1.5, 0).holding("coral"), () -> enabled, () -> nowMicros),
+        () -> measured, () -> enabled, () -> nowMicros),
         JointGravity.constant(0.37), JointGravity.cosine(0.21));
   }
 
@@ -105,6 +108,36 @@ class ArmControllerTest {
     controller.periodic();
     assertArrayEquals(new double[] {0.3, 0.0, 0.37}, joint0Requests.get(2));
     assertArrayEquals(new double[] {1.5, 0.0, 0.21 * Math.cos(1.5)}, joint1Requests.get(2));
+    controller.client().close();
+  }
+
+  void assertHolding(double joint0Position, double joint1Position) {
+    assertArrayEquals(new double[] {joint0Position, 0.0, 0.37}, joint0Requests.get(joint0Requests.size() - 1));
+    assertArrayEquals(new double[] {joint1Position, 0.0, 0.21 * Math.cos(joint1Position)},
+        joint1Requests.get(joint1Requests.size() - 1));
+  }
+
+  @Test
+  void theHoldIsCapturedAfreshAfterADisableAndAfterAManualOverride() throws Exception {
+    // No daemon: the fallback holds. A disable or an override in between ends that hold, so the
+    // next one is where the mechanism is then, not where the one before began.
+    ArmController controller = controller(new LCM("memq://"));
+    daemonOnTheBus = false;
+    controller.periodic();
+    assertEquals(SetpointGuard.Verdict.DAEMON_LOST, controller.verdict());
+    assertHolding(0.3, 1.5);
+    enabled = false;
+    controller.periodic();
+    measured = ArmState.of(0.25, 0, 1.4, 0);  // it sagged while disabled
+    enabled = true;
+    controller.periodic();
+    assertHolding(0.25, 1.4);
+    controller.beginManualOverride();
+    controller.periodic();
+    measured = ArmState.of(0.6, 0, 2.0, 0);  // the team's command drove it
+    controller.endManualOverride();
+    controller.periodic();
+    assertHolding(0.6, 2.0);
     controller.client().close();
   }
 }
