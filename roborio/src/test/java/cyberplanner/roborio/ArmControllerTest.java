@@ -5,7 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import cyberplanner.arm_cancel_t;
 import cyberplanner.arm_daemon_status_t;
+import cyberplanner.arm_goal_t;
 import cyberplanner.arm_plan_status_t;
 import cyberplanner.roborio.can.DaemonMode;
 import cyberplanner.roborio.can.Setpoint;
@@ -138,6 +140,41 @@ class ArmControllerTest {
     controller.endManualOverride();
     controller.periodic();
     assertHolding(0.6, 2.0);
+    controller.client().close();
+  }
+
+  @Test
+  void aMoveReplacedByAGoalIsNotCancelledAndOneWithoutASuccessorIsHeldNextLoop() throws Exception {
+    LCM lcm = new LCM("memq://");
+    List<arm_goal_t> goals = ClientMemqTest.collect(lcm, "ARM_GOAL", arm_goal_t::new);
+    List<arm_cancel_t> cancels = ClientMemqTest.collect(lcm, "ARM_CANCEL", arm_cancel_t::new);
+    ArmController controller = controller(lcm);
+    MoveHandle first = controller.moveTo(Pose.of(0.78, 6.09));
+    controller.periodic();
+    // A command interrupted by one that sends a goal: the goal replaces the move.
+    controller.cancelUnlessReplaced(first);
+    MoveHandle second = controller.moveTo(Pose.of(1.27, 5.79));
+    controller.periodic();
+    // Interrupted by nothing that sends a goal: held at the next loop. Holds arrive in the order
+    // they were sent, so one for the first move would come before.
+    controller.cancelUnlessReplaced(second);
+    controller.periodic();
+    ClientMemqTest.until(() -> !cancels.isEmpty() && goals.size() == 2);
+    assertEquals(second.requestId(), cancels.get(0).request_id, "the first cancel's request");
+    assertEquals(arm_cancel_t.ACTION_HOLD, cancels.get(0).action);
+    // A manual override's release ends every open goal: no hold after it.
+    MoveHandle third = controller.moveTo(Pose.of(0.2, 1.57));
+    controller.cancelUnlessReplaced(third);
+    controller.beginManualOverride();
+    controller.periodic();
+    controller.endManualOverride();
+    MoveHandle fourth = controller.moveTo(Pose.of(0.58, 2.97));
+    controller.cancel(fourth);  // a cancel of the robot program's own: at once
+    ClientMemqTest.until(() -> cancels.size() >= 3);
+    assertEquals(-1, cancels.get(1).request_id);
+    assertEquals(arm_cancel_t.ACTION_RELEASE, cancels.get(1).action);
+    assertEquals(fourth.requestId(), cancels.get(2).request_id, "the cancel after the release");
+    assertEquals(4, goals.size());
     controller.client().close();
   }
 }
