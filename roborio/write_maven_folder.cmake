@@ -57,13 +57,11 @@ artifact(cyber-planner-wpilib2026 ${WPILIB2026_JAR} ${WPILIB2026_SOURCES} cyberp
 artifact(cyber-planner-wpilib2027 ${WPILIB2027_JAR} ${WPILIB2027_SOURCES} cyberplanner.roborio.wpilib2027
          "${CORE_JAR}:${STANDINS2027_JAR}:${LCMTYPES_JAR}:${LCM_JAR}" ${core})
 
-# The vendordeps: one per WPILib year, the same Maven folder; the year's YEAR_KEY and
-# COMMANDS_FILE come from src/wpilib/years.cmake.
+# The vendordeps: one per WPILib year, the same Maven folder (write_vendordep.cmake; the 2027
+# one's wpilibYear is CYBER_WPILIB_YEAR_2027, which roborio/CMakeLists.txt passes).
 function(vendordep year)
   set(YEAR ${year})
-  set(MAVEN_URL cyber-planner/maven)
-  include(${SOURCE_DIR}/src/wpilib/years.cmake)
-  configure_file(${SOURCE_DIR}/vendordep.json.in ${PUBLISH_DIR}/CyberPlanner-${year}.json @ONLY)
+  include(${SOURCE_DIR}/write_vendordep.cmake)
 endfunction()
 vendordep(2026)
 vendordep(2027)

@@ -2,7 +2,8 @@
 # system.operations_docs: the commands docs/operations.md shows in the sections this checks
 # (install, systemd, CAN, lcm-spy, AdvantageScope, arm64, Systemcore) are exactly the commands the system tests run, as each test
 # prints them with --print-doc-commands (build dir "build"): none shown that no test runs, none
-# run that the page does not show. Other sections of the page are not checked here.
+# run that the page does not show. Other sections of the page are not checked here, but for the
+# keys the Systemcore package changes in its configuration (tools/systemcore-ipk).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 doc=docs/operations.md
@@ -57,5 +58,20 @@ for command in "${!run_by_test[@]}"; do
     status=1
   fi
 done
-((status == 0)) && echo "check_operations_docs: all ${#shown[@]} commands in $doc are run by system tests"
+
+# The Systemcore configuration: the keys tools/systemcore-ipk sets are those the page's table lists,
+# and the page counts them right (it once said three when the tool set four).
+mapfile -t ipk_keys < <(sed -n 's/^set_key \([a-z_]*\) .*/\1/p' tools/systemcore-ipk)
+numbers=(zero one two three four five six seven eight nine)
+count=${#ipk_keys[@]}
+for key in "${ipk_keys[@]}"; do
+  grep -q "^| \`$key\` |" "$doc" || { echo "check_operations_docs: $doc does not list the key $key tools/systemcore-ipk sets" >&2; status=1; }
+done
+for phrase in "with ${numbers[$count]} keys" "exactly those ${numbers[$count]} lines changed"; do
+  tr '\n' ' ' <"$doc" | grep -qF "$phrase" ||
+    { echo "check_operations_docs: $doc does not say '$phrase' (tools/systemcore-ipk sets $count keys)" >&2; status=1; }
+done
+
+((status == 0)) && echo "check_operations_docs: all ${#shown[@]} commands in $doc are run by system tests;" \
+  "the Systemcore configuration's $count keys are listed"
 exit "$status"

@@ -59,7 +59,7 @@ python3 - "$ROBOT_PROJECT" <<'PY' || fail "the vendordep does not resolve in the
 import json, os, sys
 root = sys.argv[1]
 dep = json.load(open(os.path.join(root, "vendordeps", "CyberPlanner-2027.json")))
-assert dep["wpilibYear"] == "2027", dep
+assert dep["wpilibYear"].startswith("2027"), dep
 (url,) = dep["mavenUrls"]
 for j in dep["javaDependencies"]:
     path = os.path.join(root, url, *j["groupId"].split("."), j["artifactId"], j["version"],

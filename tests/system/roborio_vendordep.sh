@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# system.roborio_vendordep_YEAR: a robot project that has only a copy of the Maven folder and the
-# vendordep of one WPILib year (docs/roborio.md, "Installing"), no CMake build tree: every
-# javaDependency resolves through the JSON's relative mavenUrls entry (with its pom, and for our
-# artifacts its -sources and -javadoc jars), and that year's example of the page compiles with
-# plain javac against those jars and the vendors' stand-ins alone, as bytecode 17, and so does the
-# page's Pose example.
+# system.roborio_vendordep_YEAR: the vendordep's year value (for 2027 the build's wpilibYear, and
+# what write_vendordep.cmake writes by default and for an override), and a robot project that has
+# only a copy of the Maven folder and the vendordep of one WPILib year (docs/roborio.md,
+# "Installing"), no CMake build tree: every javaDependency resolves through the JSON's relative
+# mavenUrls entry (with its pom, and for our artifacts its -sources and -javadoc jars), and that
+# year's example of the page compiles with plain javac against those jars and the vendors'
+# stand-ins alone, as bytecode 17, and so does the page's Pose example.
 #   roborio_vendordep.sh BUILD_DIR YEAR STANDINS_JAR
 set -euo pipefail
 build=$1 year=$2 standins=$3
@@ -22,13 +23,39 @@ cp -r "$publish/maven" "$project/cyber-planner/"
 cp "$publish/CyberPlanner-$year.json" "$project/vendordeps/"
 cp "$standins" "$work/standins.jar"
 
+# The year value GradleRIO checks: 2026's frcYear is "2026"; 2027's wpilibYear is the build's
+# CYBER_WPILIB_YEAR_2027, by default the one GradleRIO's 2027 line expects (2027_alpha5, as
+# docs/roborio.md says), and any other the build names (docs/roborio.md, "Installing").
+if [[ $year == 2026 ]]; then
+  key=frcYear expected=2026
+else
+  key=wpilibYear
+  expected=$(sed -n 's/^CYBER_WPILIB_YEAR_2027:STRING=//p' "$build/CMakeCache.txt")
+  [[ -n $expected ]] || fail "no CYBER_WPILIB_YEAR_2027 in $build/CMakeCache.txt"
+  default=$(sed -n 's/^set(CYBER_WPILIB_YEAR_2027_DEFAULT \(.*\))$/\1/p' "$src/roborio/src/wpilib/wpilib_year_2027.cmake")
+  [[ $default == 2027_alpha5 ]] || fail "the default wpilibYear is '$default', docs/roborio.md says 2027_alpha5"
+  grep -q '"wpilibYear": "2027_alpha5"' "$src/docs/roborio.md" || fail "docs/roborio.md does not name the default wpilibYear"
+  version=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["version"])' "$publish/CyberPlanner-2027.json")
+  written() {  # written [-DCYBER_WPILIB_YEAR_2027=...]: the wpilibYear write_vendordep.cmake writes
+    rm -f "$work/CyberPlanner-2027.json"
+    cmake -DSOURCE_DIR="$src/roborio" -DPUBLISH_DIR="$work" -DVERSION="$version" -DYEAR=2027 "$@" \
+      -P "$src/roborio/write_vendordep.cmake" >"$work/cmake.log" 2>&1 || { cat "$work/cmake.log"; return 1; }
+    python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["wpilibYear"])' "$work/CyberPlanner-2027.json"
+  }
+  [[ $(written) == 2027_alpha5 ]] || fail "without CYBER_WPILIB_YEAR_2027 the 2027 vendordep's wpilibYear is not 2027_alpha5"
+  [[ $(written -DCYBER_WPILIB_YEAR_2027=2027_alpha7) == 2027_alpha7 ]] ||
+    fail "-DCYBER_WPILIB_YEAR_2027=2027_alpha7 does not make the 2027 vendordep's wpilibYear 2027_alpha7"
+  if written -DCYBER_WPILIB_YEAR_2027=2027-alpha7 >/dev/null; then fail "wpilibYear 2027-alpha7 was accepted"; fi
+  grep -q "is not a WPILib 2027 year" "$work/cmake.log" || fail "wpilibYear 2027-alpha7 was refused without saying why"
+  echo "vendordep 2027: wpilibYear 2027_alpha5 by default, 2027_alpha7 when the build names it, 2027-alpha7 refused"
+fi
+
 # Resolve as GradleRIO does: a relative mavenUrls entry is a folder of the robot project.
-classpath=$(cd "$project" && python3 - "vendordeps/CyberPlanner-$year.json" "$year" <<'PY'
+classpath=$(cd "$project" && python3 - "vendordeps/CyberPlanner-$year.json" "$year" "$key" "$expected" <<'PY'
 import json, os, sys
 dep = json.load(open(sys.argv[1]))
-year = sys.argv[2]
-key = "frcYear" if year == "2026" else "wpilibYear"
-assert dep.get(key) == year, (key, dep.get(key))
+year, key, expected = sys.argv[2:5]
+assert dep.get(key) == expected, (key, dep.get(key), expected)
 assert [r["uuid"] for r in dep["requires"]] == ["111e20f7-815e-48f8-9dd6-e675ce75b266"], dep["requires"]
 (url,) = dep["mavenUrls"]
 assert "://" not in url and not os.path.isabs(url), url

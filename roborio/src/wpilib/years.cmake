@@ -19,8 +19,19 @@ function(by_year name)
   set(${name} "${ARGV${wpilib_column}}" PARENT_SCOPE)
 endfunction()
 
-# The vendordep: its year key, and WPILib's command-based vendordep it requires.
+# The vendordep: its year key and value, and WPILib's command-based vendordep it requires. The
+# 2027 value is the build's CYBER_WPILIB_YEAR_2027, by default the one GradleRIO's 2027 line
+# expects now (wpilib_year_2027.cmake).
+if(NOT CYBER_WPILIB_YEAR_2027)
+  include(${CMAKE_CURRENT_LIST_DIR}/wpilib_year_2027.cmake)
+  set(CYBER_WPILIB_YEAR_2027 ${CYBER_WPILIB_YEAR_2027_DEFAULT})
+endif()
+if(NOT CYBER_WPILIB_YEAR_2027 MATCHES "^2027(_[a-z]+[0-9]+)?$")
+  message(FATAL_ERROR "CYBER_WPILIB_YEAR_2027 = '${CYBER_WPILIB_YEAR_2027}' is not a WPILib 2027 year "
+                      "as GradleRIO writes it (2027, 2027_alpha5, 2027_beta1, ...)")
+endif()
 by_year(YEAR_KEY frcYear wpilibYear)
+by_year(YEAR_VALUE 2026 ${CYBER_WPILIB_YEAR_2027})
 by_year(COMMANDS_FILE WPILibNewCommands.json CommandsV2.json)
 
 # CyberArmSubsystem and the commands: the robot controller, the command-based library, and whether

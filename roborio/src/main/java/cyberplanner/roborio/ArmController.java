@@ -31,6 +31,7 @@ public final class ArmController {
   private SetpointGuard.Verdict verdict = SetpointGuard.Verdict.DAEMON_LOST;
   private boolean manualOverride;
   private MoveHandle move;
+  private MoveHandle holdUnlessReplaced;
   private MoveState seenMoveState;
   private long moveStateChanges;
 
@@ -48,6 +49,7 @@ public final class ArmController {
 
   /** One robot loop. */
   public void periodic() {
+    sendPendingHold();
     ArmState state = parts.measured().get();
     parts.client().publishState(state);
     long now = parts.clockMicros().getAsLong();
@@ -71,16 +73,40 @@ public final class ArmController {
     output.apply(setpoint.position(), setpoint.velocity(), setpoint.feedforwardVolts());
   }
 
-  /** Sends a goal (ending a manual override: the daemon streams again for it). */
+  /**
+   * Sends a goal (ending a manual override: the daemon streams again for it). It replaces the
+   * running move, which the daemon answers CANCELLED, and is planned from that move's motion; a
+   * hold left by cancelUnlessReplaced is then not sent.
+   */
   public MoveHandle moveTo(Pose pose) {
     manualOverride = false;
     move = parts.client().moveTo(pose);
+    if (move.isFinished()) sendPendingHold();  // not sent (no link): it replaces nothing
+    holdUnlessReplaced = null;
     return move;
   }
 
   /** Stops a move that is not finished: the daemon brakes to rest and holds (CANCELLED). */
   public void cancel(MoveHandle handle) {
+    if (handle == holdUnlessReplaced) holdUnlessReplaced = null;
     if (handle != null && !handle.isFinished()) parts.client().cancel(handle, CancelAction.HOLD);
+  }
+
+  /**
+   * Stops a move at the next periodic() unless a goal is sent first (docs/roborio.md, "Chained
+   * moves"). An interrupted command cannot know whether a command that sends a goal takes over:
+   * the command scheduler ends it before it initializes its successor, in the same loop. A
+   * successor's goal is planned from the running motion, which is never slower than braking
+   * first; a cancel sent at once would brake the mechanism before that goal arrives.
+   */
+  public void cancelUnlessReplaced(MoveHandle handle) {
+    if (handle != null && !handle.isFinished()) holdUnlessReplaced = handle;
+  }
+
+  private void sendPendingHold() {
+    MoveHandle handle = holdUnlessReplaced;
+    holdUnlessReplaced = null;
+    if (handle != null) cancel(handle);
   }
 
   /**
@@ -89,6 +115,7 @@ public final class ArmController {
    */
   public void beginManualOverride() {
     manualOverride = true;
+    holdUnlessReplaced = null;  // the release ends every open goal
     parts.client().release();
   }
 

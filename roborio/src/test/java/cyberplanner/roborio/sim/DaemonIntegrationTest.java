@@ -1,8 +1,10 @@
 package cyberplanner.roborio.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import cyberplanner.arm_plan_status_t;
 import cyberplanner.arm_setpoint_t;
 import cyberplanner.roborio.ArmController;
 import cyberplanner.roborio.ArmState;
@@ -44,6 +46,13 @@ class DaemonIntegrationTest {
   // (1 + 9) e^-9 = 0.12 % of the error they started the settling with.
   static final double SETTLE_S = 0.3;
   static final double SETTLE_WITHIN_S = 10.0;
+  // Speeds (m/s and rad/s together) below this are a mechanism at rest.
+  static final double STILL = 1e-3;
+  // How much the time to a goal after an interruption varies between two runs of the same
+  // interruption: the daemon splices a goal one planning budget ahead, which follows its latest
+  // planning times (docs/operations.md, "What it does"). Measured on the 2-core machine under
+  // load: up to 15 ms.
+  static final double HANDOVER_SPREAD_S = 0.025;
 
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
     for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
@@ -207,6 +216,90 @@ class DaemonIntegrationTest {
           assertEquals(DaemonMode.HOLDING, mode);
         };
       }, () -> restart(loop, mechanism, from, watch));
+    }
+  }
+
+  /** How a move handed over to the next goal, from the robot's interruption of it. */
+  record Handover(MoveHandle first, MoveHandle second, double finishS, int cancels, List<arm_setpoint_t> between,
+      double slowestMeasured) {
+    String describe(String how) {
+      return String.format("%s: %s, %s, at the goal %.3f s after the interruption, %d cancels, %d setpoints "
+          + "before the goal's first, measured speed at least %.3f", how, first, second, finishS, cancels,
+          between.size(), slowestMeasured);
+    }
+  }
+
+  /**
+   * From rest at start, moves to first and, trajectoryS into that move (the daemon's echo says how
+   * far it is), interrupts it for second: handedOver, as MoveToPoseCommand's end(true) and its
+   * successor's initialize() do it; otherwise with a cancel (HOLD) at once and the goal right after.
+   */
+  static Handover interruptForAnotherGoal(ArmController arm, RobotLoop loop, LcmRecorder recorder, Pose start,
+      Pose first, double trajectoryS, Pose second, boolean handedOver) throws InterruptedException {
+    MoveHandle toStart = arm.moveTo(start);
+    for (int i = 0; i < 6000 && !toStart.isFinished(); ++i) loop.runFor(LOOP_S);
+    loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+    MoveHandle toFirst = arm.moveTo(first);
+    for (int i = 0; i < 2000 && !toFirst.isFinished(); ++i) {
+      if (recorder.trajectoryTimeS(toFirst.requestId()) >= trajectoryS) break;
+      loop.runFor(LOOP_S);
+    }
+    recorder.clear();
+    long interruptedMicros = LcmRecorder.wallMicros();
+    if (handedOver) {
+      arm.cancelUnlessReplaced(toFirst);
+    } else {
+      arm.cancel(toFirst);
+    }
+    MoveHandle toSecond = arm.moveTo(second);
+    double slowest = Double.POSITIVE_INFINITY;
+    for (int i = 0; i < 6000 && !toSecond.isFinished(); ++i) {
+      loop.runFor(LOOP_S);
+      if (recorder.firstSetpointOf(toSecond.requestId()) == null) slowest = Math.min(slowest, loop.mechanism.speed());
+    }
+    loop.settle(SETTLE_S, SETTLE_WITHIN_S);
+    long doneMicros = recorder.statusMicros(toSecond.requestId(), arm_plan_status_t.STATUS_DONE);
+    return new Handover(toFirst, toSecond, (doneMicros - interruptedMicros) * 1e-6, recorder.cancels.size(),
+        recorder.setpointsBefore(toSecond.requestId()), slowest);
+  }
+
+  @Test
+  @Order(4)
+  void aMoveInterruptedByAGoalKeepsMovingAndIsNeverSlowerThanBrakingFirst() throws Exception {
+    // A driver asks for L3 while the elevator and arm are on their way from STOW to L4.
+    Pose stow = Pose.of(0.20, 1.57);
+    Pose l4 = Pose.of(1.97, 5.17);
+    Pose l3 = Pose.of(1.22, 5.69);
+    SimulatedMechanism mechanism = new SimulatedMechanism(0.20, 1.57);
+    try (LcmRecorder recorder = new LcmRecorder(URL);
+        CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 8000)) {
+      awaitDaemon(client);
+      ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
+          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
+          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE,
+              JointGravity.NONE));
+      StarvationWatch watch = StarvationWatch.fromDaemon();
+      RobotLoop loop = new RobotLoop(arm, mechanism, watch);
+      loop.runFor(0.5);  // the daemon takes the state (or still holds where order 3 left it: start goes there)
+      watch.checkUnlessStarved("handover: STOW -> L4, L3 0.3 s into it", attempt -> {
+        Handover braked = interruptForAnotherGoal(arm, loop, recorder, stow, l4, 0.3, l3, false);
+        Handover handed = interruptForAnotherGoal(arm, loop, recorder, stow, l4, 0.3, l3, true);
+        System.out.println("handover: " + braked.describe("cancel at once") + "; " + handed.describe("handed over"));
+        return () -> {
+          assertEquals(1, braked.cancels(), "the recorder sees ARM_CANCEL");
+          assertEquals(MoveState.DONE, handed.second().state(), handed.second().toString());
+          assertEquals("superseded by request " + handed.second().requestId(), handed.first().reason());
+          assertEquals(0, handed.cancels(), "ARM_CANCEL between the two moves");
+          assertFalse(handed.between().isEmpty());
+          for (arm_setpoint_t s : handed.between()) {
+            assertEquals(arm_setpoint_t.MODE_MOVING, s.mode, "setpoint mode before the second move's");
+            assertTrue(Math.hypot(s.velocity[0], s.velocity[1]) > STILL, "commanded to rest before the second move");
+          }
+          assertTrue(handed.slowestMeasured() > STILL, "measured at rest before the second move");
+          assertTrue(handed.finishS() <= braked.finishS() + HANDOVER_SPREAD_S, "handed over " + handed.finishS()
+              + " s, braking first " + braked.finishS() + " s");
+        };
+      }, () -> restart(loop, mechanism, ArmState.of(0.20, 0, 1.57, 0), watch));
     }
   }
 

@@ -74,6 +74,11 @@ public final class SimulatedMechanism {
     }
   }
 
+  /** Both joints' speeds together (m/s and rad/s), as measured. */
+  public double speed() {
+    return Math.hypot(joint0.velocity, joint1.velocity);
+  }
+
   public ArmState state() {
     return new ArmState(joint0.position, joint0.velocity, joint1.position, joint1.velocity, pieces);
   }
