@@ -53,6 +53,12 @@ class DaemonIntegrationTest {
   // planning times (docs/operations.md, "What it does"). Measured on the 2-core machine under
   // load: up to 15 ms.
   static final double HANDOVER_SPREAD_S = 0.025;
+  /**
+   * How far into STOW -> L4 (about 0.8 s) the second goal comes: early, so that on a loaded machine
+   * (the echo that tells the test how far the move is arrives late) the first move is still going
+   * when the second is planned. At 0.3 s, at load 17, the first had finished in one run of four.
+   */
+  static final double INTERRUPT_AT_S = 0.15;
 
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
     for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
@@ -281,22 +287,29 @@ class DaemonIntegrationTest {
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
       loop.runFor(0.5);  // the daemon takes the state (or still holds where order 3 left it: start goes there)
-      watch.checkUnlessStarved("handover: STOW -> L4, L3 0.3 s into it", attempt -> {
-        Handover braked = interruptForAnotherGoal(arm, loop, recorder, stow, l4, 0.3, l3, false);
-        Handover handed = interruptForAnotherGoal(arm, loop, recorder, stow, l4, 0.3, l3, true);
-        System.out.println("handover: " + braked.describe("cancel at once") + "; " + handed.describe("handed over"));
+      watch.checkUnlessStarved("handover: STOW -> L4, L3 " + INTERRUPT_AT_S + " s into it", attempt -> {
+        Handover braked = interruptForAnotherGoal(arm, loop, recorder, stow, l4, INTERRUPT_AT_S, l3, false);
+        Handover handed = interruptForAnotherGoal(arm, loop, recorder, stow, l4, INTERRUPT_AT_S, l3, true);
+        // On a loaded machine the daemon may plan the second goal after the first has ended (it then
+        // rightly plans it from rest): that proves nothing either way, so it is tried again.
+        for (int again = 1; again < StarvationWatch.MAX_ATTEMPTS && handed.first().state() == MoveState.DONE; ++again) {
+          System.out.println("handover: the first move ended before the second was planned; once more");
+          handed = interruptForAnotherGoal(arm, loop, recorder, stow, l4, INTERRUPT_AT_S, l3, true);
+        }
+        Handover handedOver = handed;
+        System.out.println("handover: " + braked.describe("cancel at once") + "; " + handedOver.describe("handed over"));
         return () -> {
           assertEquals(1, braked.cancels(), "the recorder sees ARM_CANCEL");
-          assertEquals(MoveState.DONE, handed.second().state(), handed.second().toString());
-          assertEquals("superseded by request " + handed.second().requestId(), handed.first().reason());
-          assertEquals(0, handed.cancels(), "ARM_CANCEL between the two moves");
-          assertFalse(handed.between().isEmpty());
-          for (arm_setpoint_t s : handed.between()) {
+          assertEquals(MoveState.DONE, handedOver.second().state(), handedOver.second().toString());
+          assertEquals("superseded by request " + handedOver.second().requestId(), handedOver.first().reason());
+          assertEquals(0, handedOver.cancels(), "ARM_CANCEL between the two moves");
+          assertFalse(handedOver.between().isEmpty());
+          for (arm_setpoint_t s : handedOver.between()) {
             assertEquals(arm_setpoint_t.MODE_MOVING, s.mode, "setpoint mode before the second move's");
             assertTrue(Math.hypot(s.velocity[0], s.velocity[1]) > STILL, "commanded to rest before the second move");
           }
-          assertTrue(handed.slowestMeasured() > STILL, "measured at rest before the second move");
-          assertTrue(handed.finishS() <= braked.finishS() + HANDOVER_SPREAD_S, "handed over " + handed.finishS()
+          assertTrue(handedOver.slowestMeasured() > STILL, "measured at rest before the second move");
+          assertTrue(handedOver.finishS() <= braked.finishS() + HANDOVER_SPREAD_S, "handed over " + handedOver.finishS()
               + " s, braking first " + braked.finishS() + " s");
         };
       }, () -> restart(loop, mechanism, ArmState.of(0.20, 0, 1.57, 0), watch));
