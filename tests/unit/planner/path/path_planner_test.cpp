@@ -290,6 +290,12 @@ TEST(PathPlanner, ABandsGridWithNoPathGivesWayToTheExactOffsetsGrid) {
   const DenseCheck check = denseCheck(*planned.value().path, world);
   EXPECT_GE(check.min_distance, model().clearance_m);
   EXPECT_TRUE(check.within_limits);
+  // So does a moving start, which searches from its lead-in's end.
+  const auto moving = shifted.plan(start, goal, HeldPieces{}, JointVector(0.2, 0.0));
+  ASSERT_TRUE(moving.ok()) << moving.error().message;
+  EXPECT_TRUE(moving.value().lead_in);
+  EXPECT_TRUE(moving.value().exact_offset_grid);
+  EXPECT_GE(denseCheck(*moving.value().path, world).min_distance, model().clearance_m);
   // A move the band's grid serves keeps to it.
   const auto open = shifted.plan(JointVector(0.49, 6.07), JointVector(1.97, 5.17), HeldPieces{});  // L1 -> L4
   ASSERT_TRUE(open.ok()) << open.error().message;
