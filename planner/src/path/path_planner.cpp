@@ -3,6 +3,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
+#include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -158,41 +161,40 @@ JointVector PathPlanner::leadIn(const JointVector& start, const JointVector& sta
 }
 
 // The first path from `from` (the lead-in's end): the straight segment when it is clear, else the
-// grid search's nodes; appended to the inputs' polyline, with the search's cells and connections.
-std::optional<PlanError> PathPlanner::searchFirstPath(const JointVector& from, const JointVector& goal,
-                                                      HeldPieces pieces, CandidateInputs& inputs,
-                                                      PlannedPath& out) const {
-  const CollisionWorld& world = worlds_[static_cast<size_t>(pieces.index())];
-  const CSpaceGrid& grid = this->grid(pieces);
+// grid search's cells with its connections. A refusal quotes the start asked for, and the lead-in's
+// end when there is one (the search starts there).
+Result<PathPlanner::FirstSearch> PathPlanner::searchFirstPath(const JointVector& start, const JointVector& from,
+                                                              const JointVector& goal, const CollisionWorld& world,
+                                                              const CSpaceGrid& grid) const {
   const double clearance = model_.clearance_m;
+  FirstSearch out;
   if (checkSegment(world, from, goal, clearance).clear) {
     out.direct = true;
-    inputs.polyline.push_back(goal);
-    return std::nullopt;
+    return out;
   }
-  const std::vector<SearchEndpoint> sources = connectToGrid(grid, world, from, clearance);
-  if (sources.empty()) {
-    return PlanError{PlanStatus::kNoPath, "no free grid node near the start " + poseText(model_, from) +
-                                              " can be reached in a straight line with the clearance"};
+  std::string start_text = poseText(model_, start);
+  if (from != start) start_text.append(" (after its lead-in to ").append(poseText(model_, from)).append(")");
+  out.sources = connectToGrid(grid, world, from, clearance);
+  if (out.sources.empty()) {
+    return PlanError{PlanStatus::kNoPath, fmt::format("no free grid node near the start {} can be reached in a "
+                                                      "straight line with the clearance",
+                                                      start_text)};
   }
-  const std::vector<SearchEndpoint> goals = connectToGrid(grid, world, goal, clearance);
-  if (goals.empty()) {
+  out.goals = connectToGrid(grid, world, goal, clearance);
+  if (out.goals.empty()) {
     return PlanError{PlanStatus::kNoPath, "no free grid node near the goal " + poseText(model_, goal) +
                                               " can be reached in a straight line with the clearance"};
   }
-  const auto found = astarSearch(grid, sources, goals, goal);
+  const auto found = astarSearch(grid, out.sources, out.goals, goal);
   if (!found) {
-    return PlanError{PlanStatus::kNoPath, "the goal " + poseText(model_, goal) + " cannot be reached from " +
-                                              poseText(model_, from) + " without coming closer than the clearance"};
+    return PlanError{PlanStatus::kNoPath,
+                     fmt::format("the goal {} cannot be reached from {} without coming closer than the clearance",
+                                 poseText(model_, goal), start_text)};
   }
-  out.search_expanded = found->expanded;
-  for (int cell : found->cells) inputs.polyline.push_back(grid.node(cell));
-  inputs.polyline.push_back(goal);
-  inputs.first_cells = found->cells;
-  inputs.first_cost = found->cost;
-  inputs.source_links = sources;
-  inputs.goal_links = goals;
-  return std::nullopt;
+  out.cells = found->cells;
+  out.cost = found->cost;
+  out.expanded = found->expanded;
+  return out;
 }
 
 // The start and goal as one pose, at rest: the path that stays there.
@@ -223,29 +225,42 @@ Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& star
     out.search_ms = msSince(t_search);
     return stayingPath(start, world.distance(start).value, std::move(out));
   }
+  std::vector<JointVector> polyline{start};
+  const JointVector from = leadIn(start, start_velocity, world, polyline, out);
+  // A band's grid is blocked by the field elements swept across the band: where it finds no path,
+  // the exact offset's own grid decides (docs/algorithm.md section 2, "Scene offsets").
+  std::optional<CSpaceGrid> exact_grid;
+  Result<FirstSearch> first = searchFirstPath(start, from, goal, world, grid(pieces));
+  if (!first && band_.max > band_.min) {
+    exact_grid = CSpaceGrid::build(world, model_);
+    first = searchFirstPath(start, from, goal, world, *exact_grid);
+    out.exact_offset_grid = true;
+  }
+  if (!first) return first.error();
+  const CSpaceGrid& searched = exact_grid ? *exact_grid : grid(pieces);
+  for (int cell : first.value().cells) polyline.push_back(searched.node(cell));
+  polyline.push_back(goal);
+  out.direct = first.value().direct;
+  out.search_expanded = first.value().expanded;
   CandidateInputs inputs{.model = model_,
                          .world = world,
-                         .grid = grid(pieces),
+                         .grid = searched,
                          .drives = model_.driveModel(pieces),
                          .start = start,
                          .goal = goal,
                          .start_velocity = start_velocity,
                          .b_start = start_speed * start_speed,
-                         .polyline = {start},
-                         .fixed_head = 1,
-                         .direct = false,
-                         .first_cells = {},
-                         .first_cost = 0.0,
-                         .source_links = {},
-                         .goal_links = {},
+                         .polyline = std::move(polyline),
+                         .fixed_head = out.lead_in ? 2 : 1,
+                         .direct = out.direct,
+                         .first_cells = std::move(first.value().cells),
+                         .first_cost = first.value().cost,
+                         .source_links = std::move(first.value().sources),
+                         .goal_links = std::move(first.value().goals),
                          .straight_estimate_s = 0.0,
                          .first = {}};
-  const JointVector from = leadIn(start, start_velocity, world, inputs.polyline, out);
-  if (auto refused = searchFirstPath(from, goal, pieces, inputs, out)) return *refused;
   out.search_waypoints = inputs.polyline;
   out.search_ms = msSince(t_search);
-  inputs.fixed_head = out.lead_in ? 2 : 1;
-  inputs.direct = out.direct;
   inputs.first = out;
   return smoothedCandidates(inputs, strategies);
 }

@@ -7,7 +7,9 @@
 // Constructed once per scene and band of scene offsets: builds the collision worlds and grids of
 // every game-piece set. atOffset() gives the planner of one offset in the band: the band's grids
 // (conservative for every offset in it) with the exact offset's worlds, which every clearance check
-// uses (docs/algorithm.md section 2, "Scene offsets").
+// uses (docs/algorithm.md section 2, "Scene offsets"). Where the band's grid, blocked by the field
+// elements swept across the band, finds no path, a grid of the exact offset's world is built for
+// the request and searched instead, so that a refusal at an offset holds at that offset.
 // plan() is const and keeps no state between calls, so one planner may serve several threads.
 
 #include <array>
@@ -22,6 +24,7 @@
 #include "cyber/planner/motion_planner.hpp"
 #include "cyber/planner/robot_model.hpp"
 #include "cyber/planner/types.hpp"
+#include "path/astar_search.hpp"
 #include "path/cspace_grid.hpp"
 #include "path/cubic_spline_path.hpp"
 
@@ -42,6 +45,9 @@ struct PlannedPath {
   double min_clearance_m = std::numeric_limits<double>::infinity();  // smallest d found on the path
   bool direct = false;   // the straight segment to the goal was clear: no grid search
   bool lead_in = false;  // a straight lead-in along the start velocity was added
+  // The band's grid found no path: searched on a grid of the exact offset built for this request
+  // (its build is part of search_ms).
+  bool exact_offset_grid = false;
   int search_expanded = 0;
   int optimizer_iterations = 0;
   PlanMethod method;  // the strategy that added it and how it was smoothed
@@ -96,9 +102,18 @@ class PathPlanner {
                                                         const CollisionWorld& world) const;
   JointVector leadIn(const JointVector& start, const JointVector& start_velocity, const CollisionWorld& world,
                      std::vector<JointVector>& polyline, PlannedPath& out) const;
-  [[nodiscard]] std::optional<PlanError> searchFirstPath(const JointVector& from, const JointVector& goal,
-                                                         HeldPieces pieces, CandidateInputs& inputs,
-                                                         PlannedPath& out) const;
+  // The first path's search on one grid: none when the straight segment is clear (direct), else
+  // the cells A* found with its cost and connections.
+  struct FirstSearch {
+    bool direct = false;
+    std::vector<int> cells;
+    double cost = 0.0;
+    std::vector<SearchEndpoint> sources, goals;
+    int expanded = 0;
+  };
+  [[nodiscard]] Result<FirstSearch> searchFirstPath(const JointVector& start, const JointVector& from,
+                                                    const JointVector& goal, const CollisionWorld& world,
+                                                    const CSpaceGrid& grid) const;
   [[nodiscard]] Result<std::vector<PlannedPath>> stayingPath(const JointVector& start, double start_distance_m,
                                                              PlannedPath out) const;
   [[nodiscard]] Result<std::vector<PlannedPath>> smoothedCandidates(CandidateInputs& inputs,

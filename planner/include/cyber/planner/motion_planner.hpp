@@ -1,7 +1,9 @@
 #pragma once
 // The planner's front door: a request in, a time-optimal collision-free trajectory out.
 // Chains the path stage (algorithm.md section 2) and TOPP (section 3). Built once per robot:
-// the grids of every scene and game-piece set are made in create(), never per request.
+// the grids of every scene and game-piece set are made in create(); a request builds one only
+// when the grid of its band of scene offsets finds no path, the grid of its exact offset
+// (docs/algorithm.md, "2.1 Grid and potential").
 // plan() is const and keeps no state between calls, so several threads may share one planner.
 
 #include <memory>
@@ -20,7 +22,7 @@ namespace cyber::planner {
 /// How long each stage of one plan took (docs/algorithm.md sections 2 and 3 name the stages).
 struct StageTimesMs {
   double grid = 0.0;    ///< building the grid of this scene and piece set, once at create()
-  double search = 0.0;  ///< this request: grid search (or the direct check)
+  double search = 0.0;  ///< this request: grid search (or the direct check), with the exact offset's grid when built
   double smooth = 0.0;  ///< this request: optimisation, spline, clearance check
   double topp = 0.0;    ///< this request: time-optimal parameterisation and its limit check
   double total = 0.0;   ///< this request, end to end (excludes the one-off grid build)

@@ -248,6 +248,59 @@ TEST(PathPlanner, CagedGoalIsNoPath) {
   // The rest of the scene is open: other moves still work.
   const auto open = cage.plan(outside, JointVector(0.6, 3.0), HeldPieces{});
   EXPECT_TRUE(open.ok()) << open.error().message;
+  // A moving start searches from its lead-in's end; the refusal quotes the start asked for, then
+  // that end (the lead-in's end alone is a start the user never asked for).
+  const auto moving = cage.plan(outside, inside, HeldPieces{}, JointVector(0.0, 1.0));
+  ASSERT_EQ(moving.status(), PlanStatus::kNoPath) << (moving.ok() ? "found a path" : "");
+  EXPECT_EQ(
+      moving.error().message.rfind("the goal (1.0000 m, 0.0000 rad) cannot be reached from (0.2000 m, 1.5700 rad) "
+                                   "(after its lead-in to (",
+                                   0),
+      0U)
+      << moving.error().message;
+}
+
+// A band of offsets searches a grid of the field elements swept across the band, which blocks the
+// nodes near a start a few centimetres from the reef. The move plans at its exact offset all the
+// same (the exact offset's own grid, built for the request), as it does at offset 0 (a move of
+// near_field_element_starts_test.cpp that the band's grid alone refused; docs/algorithm.md,
+// "2.1 Grid and potential").
+TEST(PathPlanner, ABandsGridWithNoPathGivesWayToTheExactOffsetsGrid) {
+  const Scene& reef = model().scenes.front();
+  const JointRange band{0.06, 0.12};
+  const double offset = 0.107967;
+  ASSERT_GE(offset, reef.offset_range_m.min);
+  ASSERT_LE(offset, reef.offset_range_m.max);
+  const PathPlanner shifted = PathPlanner(model(), reef, band).atOffset(offset);
+  const JointVector start(1.42206946, 0.0366818841), goal(1.93, 1.71);  // near l2_branch; NET
+  const CollisionWorld& world = shifted.world(HeldPieces{});
+  ASSERT_GE(world.distance(start).value, model().clearance_m);
+  ASSERT_LT(world.distance(start).value, model().clearance_m + band.max - band.min);
+  // The band's grid is blocked all around the start.
+  const CSpaceGrid& banded = shifted.grid(HeldPieces{});
+  const int corner = banded.lowerCorner(start);
+  for (int di = 0; di <= 1; ++di) {
+    for (int dj = 0; dj <= 1; ++dj) {
+      EXPECT_TRUE(banded.blocked(banded.cell(banded.firstIndex(corner) + di, banded.secondIndex(corner) + dj)));
+    }
+  }
+  const auto planned = shifted.plan(start, goal, HeldPieces{});
+  ASSERT_TRUE(planned.ok()) << planned.error().message;
+  EXPECT_TRUE(planned.value().exact_offset_grid);
+  const DenseCheck check = denseCheck(*planned.value().path, world);
+  EXPECT_GE(check.min_distance, model().clearance_m);
+  EXPECT_TRUE(check.within_limits);
+  // So does a moving start, which searches from its lead-in's end.
+  const auto moving = shifted.plan(start, goal, HeldPieces{}, JointVector(0.2, 0.0));
+  ASSERT_TRUE(moving.ok()) << moving.error().message;
+  EXPECT_TRUE(moving.value().lead_in);
+  EXPECT_TRUE(moving.value().exact_offset_grid);
+  EXPECT_GE(denseCheck(*moving.value().path, world).min_distance, model().clearance_m);
+  // A move the band's grid serves keeps to it.
+  const auto open = shifted.plan(JointVector(0.49, 6.07), JointVector(1.97, 5.17), HeldPieces{});  // L1 -> L4
+  ASSERT_TRUE(open.ok()) << open.error().message;
+  EXPECT_FALSE(open.value().direct);
+  EXPECT_FALSE(open.value().exact_offset_grid);
 }
 
 TEST(PathPlanner, StartVelocitySetsTheStartDirectionWithUnitSpeed) {
