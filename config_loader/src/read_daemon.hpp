@@ -7,7 +7,7 @@
 
 #include "cyber/config/daemon_settings.hpp"
 #include "cyber/config/setting_origin.hpp"
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 #include "table_reader.hpp"
 
 namespace cyber::config::detail {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "cyber/config/setting_origin.hpp"
-#include "cyber/planner/types.hpp"
+#include "cyber/planner.hpp"
 #include "table_reader.hpp"
 
 namespace cyber::config::detail {

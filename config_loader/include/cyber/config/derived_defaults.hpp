@@ -2,7 +2,7 @@
 // The [planner] settings a robot description implies when its file leaves them out: pure
 // functions of the parsed robot (docs/configuration.md, "Defaults derived from the robot").
 
-#include "cyber/planner/robot_model.hpp"
+#include "cyber/planner.hpp"
 
 namespace cyber::config {
 
