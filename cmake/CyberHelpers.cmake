@@ -21,13 +21,13 @@ endfunction()
 
 # Every *_test.cpp in DIR (RECURSE: and in its subfolders) becomes its own GoogleTest executable,
 # so one broken file cannot stop the others from building; tests carry LABEL.
-# CYBER_EMULATOR_TEST_FILTER, when set (the cross build, tests/CMakeLists.txt), is a GoogleTest
-# filter of the tests registered.
+# CYBER_SWEEP_TEST_FILTER, when set (the cross and the sanitizer builds, tests/CMakeLists.txt), is
+# a GoogleTest filter of the tests registered.
 function(cyber_test_dir dir label)
   cmake_parse_arguments(ARG "RECURSE" "" "LINK" ${ARGN})
   set(filter)
-  if(DEFINED CYBER_EMULATOR_TEST_FILTER)
-    set(filter TEST_FILTER ${CYBER_EMULATOR_TEST_FILTER})
+  if(DEFINED CYBER_SWEEP_TEST_FILTER)
+    set(filter TEST_FILTER ${CYBER_SWEEP_TEST_FILTER})
   endif()
   if(ARG_RECURSE)
     file(GLOB_RECURSE srcs CONFIGURE_DEPENDS ${dir}/*_test.cpp)

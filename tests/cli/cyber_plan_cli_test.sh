@@ -111,7 +111,7 @@ assert step <= 0.0001 and max(gaps) <= step + 1e-9 and max(gaps[:-1]) > step - 1
 print('ok   csv step for a turn: %d rows %g ms apart' % (len(t), step * 1e3))
 PY
 check "csv step out of range" 2 --config "$config" --from 0.20,1.57 --to 1.97,5.17 --csv "$tmp/t.csv" --csv-step 0.002
-check "plot" 0 --config "$config" --from 0.20,1.57 --to 1.27,5.79 --pieces coral --plot "$tmp/p.png"
+check "plot" 0 --config "$config" --from STOW --to L3 --pieces coral --plot "$tmp/p.png"  # README's picture
 if [ "$(head -c 8 "$tmp/p.png" | od -An -tx1 | tr -d ' ')" != "89504e470d0a1a0a" ]; then
   echo "FAIL plot: not a PNG"; failures=$((failures + 1))
 fi
@@ -130,6 +130,26 @@ check "unknown piece" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --piec
 check "scene offset out of range" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene-offset 0.5
 check "scene offset in range" 0 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --scene-offset 0.1
 check "another robot" 0 --config "$(dirname "$config")/chargedup-2023-double-jointed.toml" --from 1.5708,3.1416 --to 1.3257,3.929
+# Named poses: --from/--to NAME is a pose of the held set's [poses.SET] table in the config
+# (config/reefscape-2025.toml: coral L3 = [1.27, 5.79], none L3 = [1.22, 5.69]).
+check "named poses" 0 --config "$config" --from STOW --to L3 --pieces coral
+expect_in "named poses resolved" "$tmp/out" "planned STOW (0.200 m, 1.570 rad) -> L3 (1.270 m, 5.790 rad)"
+check "named pose of none" 0 --config "$config" --from STOW --to L3
+expect_in "named pose of none resolved" "$tmp/out" "-> L3 (1.220 m, 5.690 rad)"
+check "name and numbers" 0 --config "$config" --from=0.20,1.57 --to=L3 --pieces coral --json
+expect_in "name and numbers json" "$tmp/out" '"duration_s":'
+check "numbers and name" 0 --config "$config" --from 1.27,5.79 --to STOW --pieces coral
+expect_in "numbers and name resolved" "$tmp/out" "planned (1.270 m, 5.790 rad) -> STOW (0.200 m, 1.570 rad)"
+check "unknown pose name" 2 --config "$config" --from STOW --to L5 --pieces coral
+expect_in "unknown pose name lists the set's" "$tmp/err" \
+  '--to: no pose "L5" for the held set "coral" (its poses: STOW, INTAKE, L1, L2, L3, L4, NET)'
+check "pose name of another held set" 2 --config "$config" --from HOLD_HIGH --to STOW --pieces coral
+expect_in "another set's pose named" "$tmp/err" \
+  '--from: no pose "HOLD_HIGH" for the held set "coral" (its poses: STOW, INTAKE, L1, L2, L3, L4, NET); it is a pose of "algae"'
+check "pose name and number" 2 --config "$config" --from STOW,1 --to L3
+check "wrong number of values" 2 --config "$config" --from 0.2,1.57,0 --to L3
+expect_in "wrong number of values named" "$tmp/err" "--from: expects 2 values, one per joint (elevator, arm), got 3"
+
 check "empty joined value" 2 --config= --from 0.2,1.57 --to 1.97,5.17
 expect_in "empty value named" "$tmp/err" "--config needs a value"
 check "missing config" 2 --config "$tmp/none.toml" --from 0.2,1.57 --to 1.97,5.17

@@ -39,6 +39,9 @@ expect "config preview without named poses" 0 "$plot" --config "$tmp/no-poses.to
 sed 's/^L3 = \[1.22, 5.69\]/L3 = [3.0, 5.69]/' "$src/config/reefscape-2025.toml" >"$tmp/bad-pose.toml"
 expect "config with a pose out of range" 2 "$plot" --config "$tmp/bad-pose.toml" --out "$tmp/x.png"
 grep -q "poses.none.L3" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL bad pose not named: $(cat "$tmp/err")"; }
+sed 's/^\[poses.none\]$/[poses.none]\nINSIDE_REEF = [1.5, 6.05]/' "$src/config/reefscape-2025.toml" >"$tmp/colliding-pose.toml"
+expect "config preview with a pose closer than the clearance" 0 "$plot" --config "$tmp/colliding-pose.toml" --out "$tmp/preview3.png"
+grep -q "warning: pose \[poses.none\] INSIDE_REEF" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL colliding pose not warned: $(cat "$tmp/err")"; }
 expect "world pose out of range" 2 "$plot" --world --at 3.0,1.0 --out "$tmp/x.png"
 expect "world pose malformed" 2 "$plot" --world --at 1.0 --out "$tmp/x.png"
 expect "world without a source" 2 "$plot" --world --out "$tmp/x.png"

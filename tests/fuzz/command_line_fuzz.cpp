@@ -3,6 +3,7 @@
 // Properties: no crash, hang or UB; every rejection carries a message; what cyber-plan,
 // cyber-goal and cyber-plant-sim accept is usable (finite poses, a positive timeout, rates in range).
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -28,7 +29,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!plan) {
     CYBER_FUZZ_CHECK(!plan.error().message.empty());
   } else {
-    CYBER_FUZZ_CHECK(plan->help || (plan->from.allFinite() && plan->to.allFinite() && plan->from_velocity.allFinite()));
+    const auto finite = [](const cyber::tools::PoseArgument& pose) {
+      return std::all_of(pose.values.begin(), pose.values.end(), [](double v) { return std::isfinite(v); });
+    };
+    CYBER_FUZZ_CHECK(plan->help || (finite(plan->from) && finite(plan->to) && plan->from_velocity.allFinite()));
   }
   for (const auto& arg : args) {
     if (const auto pair = cyber::cli::parseNumberPair(arg))

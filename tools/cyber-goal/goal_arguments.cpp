@@ -2,6 +2,9 @@
 
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
+#include "pose_argument.hpp"
+
+#include <algorithm>
 
 namespace cyber::tools {
 
@@ -10,11 +13,13 @@ constexpr size_t kMaxSentPieces = 127;
 }  // namespace
 
 std::string goalUsage() {
-  return "usage: cyber-goal --to J0,J1 [--pieces NAME[,NAME...]] [--scene NAME] [--scene-offset METRES]\n"
-         "                  [--id N] [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
+  return "usage: cyber-goal --to J0,J1|NAME [--config FILE] [--pieces NAME[,NAME...]] [--scene NAME]\n"
+         "                  [--scene-offset METRES] [--id N] [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
          "Publishes one ARM_GOAL and prints each ARM_PLAN_STATUS of its request id until the final one.\n"
          "--to: targets of joint 0 and joint 1 in the config's [[joints]] order, metres (prismatic) or\n"
-         "radians (revolute). --pieces: held game pieces by the config's names (\"none\": none).\n"
+         "radians (revolute), or the name of a pose --config FILE (the robot description, read for no other\n"
+         "purpose) gives the held pieces ([poses.SET] tables).\n"
+         "--pieces: held game pieces by the config's names (\"none\": none).\n"
          "First waits for cyber-plannerd's ARM_DAEMON_STATUS (unless --no-wait-daemon).\n"
          "--lcm-url defaults to " +
          std::string(config::kDefaultLcmUrl) +
@@ -50,12 +55,15 @@ Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<
   });
   parser.flag("--no-wait-daemon", [&] { out.wait_for_daemon = false; });
   parser.option("--to", [&](const std::string& value) -> std::string {
-    const auto target = cli::parseNumberPair(value, cli::NonFinite::kAccept);
-    if (!target) return "expects J0,J1, got '" + value + "'";
-    out.position = *target;
+    const auto target = parsePoseArgument(value, cli::NonFinite::kAccept);
+    if (!target || (target->name.empty() && target->values.size() != out.position.size()))
+      return "expects J0,J1 or a pose NAME, got '" + value + "'";
+    out.pose_name = target->name;
+    if (target->name.empty()) std::copy(target->values.begin(), target->values.end(), out.position.begin());
     have_target = true;
     return "";
   });
+  parser.option("--config", cli::store(out.config_path));
   parser.option("--scene", cli::store(out.scene));
   parser.option("--id", [&](const std::string& value) -> std::string {
     const auto id = cli::parseInteger(value);
@@ -71,8 +79,22 @@ Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<
     return "";
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
-  if (!have_target) return cli::badUsage("--to J0,J1 is required");
+  if (!have_target) return cli::badUsage("--to J0,J1 or --to NAME is required");
+  if (!out.pose_name.empty() && out.config_path.empty())
+    return cli::badUsage("--to " + out.pose_name + " is a pose name: give --config FILE to look it up");
   return out;
+}
+
+Result<std::array<double, 2>, cli::ArgumentStatus> goalPosition(const GoalArguments& args,
+                                                                const config::Config& config) {
+  if (args.pose_name.empty()) return args.position;
+  std::string names;
+  for (const std::string& piece : args.pieces) names.append(names.empty() ? "" : ",").append(piece);
+  const auto held = config.robot.piecesNamed(names);
+  if (!held) return cli::badUsage("--pieces: " + held.error().message);
+  const auto q = resolvePose(PoseArgument{args.pose_name, {}}, config, held.value());
+  if (!q) return cli::badUsage("--to: " + q.error().message);
+  return std::array<double, 2>{q.value()[0], q.value()[1]};
 }
 
 }  // namespace cyber::tools

@@ -2,6 +2,7 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -70,6 +71,19 @@ bool handleUntil(lcm::LCM& lcm, Clock::time_point deadline, Done done) {
   return true;
 }
 
+// The target to send: --to's numbers, or its pose name looked up in --config (which, when given,
+// must load either way).
+cyber::Result<std::array<double, 2>, cyber::cli::ArgumentStatus> target(const cyber::tools::GoalArguments& args) {
+  if (args.config_path.empty()) return args.position;
+  cyber::config::Config config;
+  try {
+    config = cyber::config::loadConfigFile(args.config_path);
+  } catch (const cyber::config::ConfigError& e) {
+    return cyber::cli::badUsage(e.what());
+  }
+  return cyber::tools::goalPosition(args, config);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,6 +91,11 @@ int main(int argc, char** argv) {
   const auto parsed = parseGoalArguments(std::vector<std::string>(argv + 1, argv + argc));
   if (const auto status = cyber::cli::exitBeforeWork(parsed, {"cyber-goal", goalUsage(), true})) return *status;
   const GoalArguments& args = parsed.value();
+  const auto position = target(args);
+  if (!position) {
+    std::cerr << "cyber-goal: " << position.error().message << "\n";
+    return kExitUsage;
+  }
 
   lcm::LCM lcm(args.lcm_url);
   if (!lcm.good()) {
@@ -106,8 +125,8 @@ int main(int argc, char** argv) {
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
           .count();
   goal.request_id = watcher.request_id;
-  goal.position[0] = args.position[0];
-  goal.position[1] = args.position[1];
+  goal.position[0] = position.value()[0];
+  goal.position[1] = position.value()[1];
   goal.pieces = args.pieces;
   goal.num_pieces = static_cast<std::int8_t>(goal.pieces.size());
   goal.scene_name = args.scene;

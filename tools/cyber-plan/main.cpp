@@ -20,10 +20,15 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-// The pose in its joints' units (m or rad).
-std::string poseText(const cyber::planner::RobotModel& robot, const cyber::planner::JointVector& q) {
-  return fmt::format("({:.3f} {}, {:.3f} {})", q[0], cyber::planner::unitName(robot.joints[0].type), q[1],
-                     cyber::planner::unitName(robot.joints[1].type));
+// The pose in its joints' units (m or rad), after its name when it was given by name.
+std::string poseText(const cyber::planner::RobotModel& robot, const cyber::tools::PoseArgument& given,
+                     const cyber::planner::JointVector& q) {
+  std::string text = given.name.empty() ? "(" : given.name + " (";
+  for (size_t j = 0; j < robot.joints.size(); ++j) {
+    text += fmt::format("{}{:.3f} {}", j == 0 ? "" : ", ", q[static_cast<Eigen::Index>(j)],
+                        cyber::planner::unitName(robot.joints[j].type));
+  }
+  return text + ")";
 }
 
 }  // namespace
@@ -49,14 +54,19 @@ int main(int argc, char** argv) {
 
   const auto pieces = robot.piecesNamed(args->pieces);
   if (!pieces) return fail(2, "--pieces: " + pieces.error().message);
+  // A named pose is one of the held set's (docs/configuration.md, "Named poses").
+  const auto from = tools::resolvePose(args->from, config, pieces.value());
+  if (!from) return fail(2, "--from: " + from.error().message);
+  const auto to = tools::resolvePose(args->to, config, pieces.value());
+  if (!to) return fail(2, "--to: " + to.error().message);
 
   // Only the grids this move needs: the start-up is most of a cyber-plan run.
   auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m});
   if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().message);
 
   planner::PlanRequest request;
-  request.start = args->from;
-  request.goal = args->to;
+  request.start = from.value();
+  request.goal = to.value();
   request.start_velocity = args->from_velocity;
   request.pieces = pieces.value();
   request.scene = scene;
@@ -80,7 +90,8 @@ int main(int argc, char** argv) {
       return fail(2, written.error().message);
   }
   if (!args->plot_path.empty()) {
-    const std::string title = "cyber-plan " + poseText(robot, args->from) + " -> " + poseText(robot, args->to) +
+    const std::string title = "cyber-plan " + poseText(robot, args->from, from.value()) + " -> " +
+                              poseText(robot, args->to, to.value()) +
                               (pieces->empty() ? "" : " +" + robot.pieceSetName(pieces.value()));
     const auto drawn = plot::renderTrajectoryPng(tools::plotDataOf(plan.value(), robot, scene, pieces.value(), title),
                                                  args->plot_path);
@@ -91,8 +102,9 @@ int main(int argc, char** argv) {
   } else {
     const auto& p = plan.value();
     std::printf("planned %s -> %s: %.3f s, min clearance %.4f m, plan %.2f ms (search %.2f, smooth %.2f, topp %.2f)\n",
-                poseText(robot, args->from).c_str(), poseText(robot, args->to).c_str(), p.trajectory->duration_s(),
-                p.min_clearance_m, p.times_ms.total, p.times_ms.search, p.times_ms.smooth, p.times_ms.topp);
+                poseText(robot, args->from, from.value()).c_str(), poseText(robot, args->to, to.value()).c_str(),
+                p.trajectory->duration_s(), p.min_clearance_m, p.times_ms.total, p.times_ms.search, p.times_ms.smooth,
+                p.times_ms.topp);
   }
   return 0;
 }

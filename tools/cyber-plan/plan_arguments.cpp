@@ -3,13 +3,17 @@
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
 
+#include <utility>
+
 namespace cyber::tools {
 
 const char* planUsage() {
-  return "usage: cyber-plan [--config FILE] --from Q0,Q1 --to Q0,Q1 [--pieces NAME,...]\n"
+  return "usage: cyber-plan [--config FILE] --from POSE --to POSE [--pieces NAME,...]\n"
          "                  [--from-velocity V0,V1] [--scene NAME] [--scene-offset METRES] [--csv FILE] [--json]\n"
          "                  [--csv-step SECONDS] [--plot FILE.png]\n"
-         "Plans one move of the robot's two joints (Q0, Q1 in chain order: m or rad) and prints a summary.\n"
+         "Plans one move of the robot's joints and prints a summary. A POSE is the joints' values in chain\n"
+         "order (Q0,Q1: m or rad) or the name of a pose the configuration gives the held pieces\n"
+         "([poses.SET] tables: STOW, L3, ...).\n"
          "  --config FILE       robot description (default: the embedded config/reefscape-2025.toml)\n"
          "  --pieces NAME,...   game pieces held during the move, as the configuration names them\n"
          "  --from-velocity     start velocity (joint units per second); default at rest\n"
@@ -26,6 +30,17 @@ const char* planUsage() {
 }
 
 namespace {
+
+// Stores a pose argument into `into`, or says what was expected.
+cli::ValueHandler pose(PoseArgument* into, bool* given) {
+  return [into, given](const std::string& text) -> std::string {
+    auto parsed = parsePoseArgument(text);
+    if (!parsed) return parsed.error().message;
+    *into = std::move(parsed).value();
+    *given = true;
+    return "";
+  };
+}
 
 // Stores "A,B" into `into`, or says what was expected.
 cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
@@ -46,14 +61,8 @@ Result<PlanArguments, cli::ArgumentStatus> parsePlanArguments(const std::vector<
   bool have_to = false;
   cli::ArgumentParser parser;
   parser.option("--config", cli::store(out.config_path));
-  parser.option("--from", [&, pair = jointPair(&out.from, "Q0,Q1")](const std::string& v) {
-    have_from = true;
-    return pair(v);
-  });
-  parser.option("--to", [&, pair = jointPair(&out.to, "Q0,Q1")](const std::string& v) {
-    have_to = true;
-    return pair(v);
-  });
+  parser.option("--from", pose(&out.from, &have_from));
+  parser.option("--to", pose(&out.to, &have_to));
   parser.option("--from-velocity", jointPair(&out.from_velocity, "V0,V1"));
   parser.option("--pieces", cli::store(out.pieces));
   parser.option("--scene", cli::store(out.scene));

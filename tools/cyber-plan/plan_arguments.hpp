@@ -7,6 +7,7 @@
 
 #include "cyber/cli/argument_status.hpp"
 #include "cyber/planner.hpp"
+#include "pose_argument.hpp"
 
 namespace cyber::tools {
 
@@ -27,8 +28,8 @@ inline constexpr double kCsvRideShare = 0.01;
 
 struct PlanArguments {
   std::string config_path;  // empty: the embedded reference robot
-  planner::JointVector from = planner::JointVector::Zero();
-  planner::JointVector to = planner::JointVector::Zero();
+  PoseArgument from;        // numbers or a name of the held set's poses; resolvePose with the config
+  PoseArgument to;
   planner::JointVector from_velocity = planner::JointVector::Zero();
   std::string pieces;  // names as --pieces gives them; resolved against the robot
   std::string scene;   // empty: the default scene

@@ -13,6 +13,7 @@
 #include "cyber/config/load_config.hpp"
 #include "cyber/plot/world_view.hpp"
 #include "plot_arguments.hpp"
+#include "robot_check.hpp"
 #include "trajectory_sources.hpp"
 
 namespace {
@@ -25,6 +26,20 @@ int fail(const std::string& message) {
 // 0 when the picture is written, else fail's.
 int exitOf(const cyber::Result<cyber::Done, cyber::plot::PlotStatus>& written) {
   return written ? 0 : fail(written.error().message);
+}
+
+// A named pose drawn in a scene where it is closer than the clearance is drawn all the same (a
+// pose may be meant for one field element only), with a warning (cyber-robot check's rule).
+void warnCloserThanTheClearance(const cyber::config::Config& config, int scene, const std::string& set_name) {
+  const std::string& scene_name = config.robot.scenes[static_cast<size_t>(scene)].name;
+  for (const cyber::tools::PoseClearance& p : cyber::tools::checkPoseClearances(config)) {
+    if (p.pose_set != set_name || p.scene != scene_name || p.clearance_m >= config.robot.clearance_m) continue;
+    std::fprintf(
+        stderr,
+        "cyber-plot: warning: pose [poses.%s] %s is %.3f m from %s in scene %s, closer than the clearance %.3f m\n",
+        p.pose_set.c_str(), p.pose.c_str(), p.clearance_m, p.closest.c_str(), scene_name.c_str(),
+        config.robot.clearance_m);
+  }
 }
 
 // The robot at the named poses of its held-piece set, or at a few poses spread over the joint
@@ -51,6 +66,7 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
                        q});
     }
   }
+  warnCloserThanTheClearance(config, scene, set_name);
   const std::string which =
       named ? "poses of [poses." + set_name + "]" : "no [poses] for these pieces: poses across the ranges";
   const std::string title =

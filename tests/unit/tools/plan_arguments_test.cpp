@@ -17,8 +17,8 @@ TEST(PlanArguments, BothSpellingsOfAValueMeanTheSame) {
                                                     "--scene=open", "--scene-offset=0.1", "--csv=m.csv",
                                                     "--pieces=coral", "--json", "--csv-step=0.0001"}}) {
     const PlanArguments a = parsedOk(parse, args);
-    EXPECT_EQ(a.from, planner::JointVector(0.2, 1.57));
-    EXPECT_EQ(a.to, planner::JointVector(1.97, 5.17));
+    EXPECT_EQ(a.from.values, (std::vector<double>{0.2, 1.57}));
+    EXPECT_EQ(a.to.values, (std::vector<double>{1.97, 5.17}));
     EXPECT_EQ(a.from_velocity, planner::JointVector(-0.2, 1.0));
     EXPECT_EQ(a.scene, "open");
     EXPECT_EQ(a.csv_path, "m.csv");
@@ -52,6 +52,24 @@ TEST(PlanArguments, BadInputIsNamed) {
     EXPECT_EQ(
         parseError(parse, with({"--from-velocity", bad})),
         std::string("--from-velocity expects V0,V1 as two finite numbers separated by a comma, got '") + bad + "'");
+  }
+}
+
+// Names are looked up once the configuration and the held pieces are known (pose_argument_test).
+TEST(PlanArguments, PosesAreNumbersOrNames) {
+  const PlanArguments named = parsedOk(parse, {"--from", "STOW", "--to=L3", "--pieces", "coral"});
+  EXPECT_EQ(named.from.name, "STOW");
+  EXPECT_EQ(named.to.name, "L3");
+  EXPECT_TRUE(named.from.values.empty());
+  const PlanArguments mixed = parsedOk(parse, {"--from", "0.2,1.57", "--to", "L3"});
+  EXPECT_EQ(mixed.from.values, (std::vector<double>{0.2, 1.57}));
+  EXPECT_TRUE(mixed.from.name.empty());
+  EXPECT_EQ(mixed.to.name, "L3");
+  for (const char* bad : {"STOW,1", "1,nan", "0.2,"}) {
+    EXPECT_EQ(parseError(parse, {"--from", bad, "--to", "L3"}),
+              std::string("--from expects the joints' values in chain order separated by ',' (finite numbers) or a "
+                          "pose name, got '") +
+                  bad + "'");
   }
 }
 

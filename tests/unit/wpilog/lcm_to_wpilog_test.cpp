@@ -7,6 +7,7 @@
 #include <lcm/lcm-cpp.hpp>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -35,10 +36,13 @@ std::string pieceList(const std::vector<std::string>& pieces) {
   return out.empty() ? "none" : out;
 }
 
-constexpr int64_t kSyntheticT0 = 1'700'000'000'000'000;  // Unix µs of the first event
+constexpr int64_t kSyntheticT0 = 1'700'000'000'000'000;  // Unix µs of the earliest event
+// lcm-logger wrote a recording's ARM_GOAL before an ARM_STATE it had received 36 µs earlier; the
+// synthetic log's first event is as late after its second.
+constexpr int64_t kFirstEventLateUs = 36;
 
 struct Session {
-  int64_t t0 = 0;  // Unix µs of the log's first event
+  int64_t t0 = 0;  // Unix µs of the log's earliest event, wherever it is in the file
   std::vector<std::pair<int64_t, cyberplanner::arm_state_t>> states;
   std::vector<std::pair<int64_t, cyberplanner::arm_setpoint_t>> setpoints;
   std::vector<std::pair<int64_t, cyberplanner::arm_goal_t>> goals;
@@ -76,10 +80,9 @@ class LcmToWpilog : public ::testing::Test {
   void read() {
     lcm::LogFile log(path_.string(), "r");
     ASSERT_TRUE(log.good()) << path_;
-    bool first = true;
+    s_.t0 = std::numeric_limits<int64_t>::max();
     for (const lcm::LogEvent* e = log.readNextEvent(); e != nullptr; e = log.readNextEvent()) {
-      if (first) s_.t0 = e->timestamp;
-      first = false;
+      s_.t0 = std::min(s_.t0, e->timestamp);
       take(*e, "ARM_STATE", s_.states);
       take(*e, "ARM_SETPOINT", s_.setpoints);
       take(*e, "ARM_GOAL", s_.goals);
@@ -87,6 +90,13 @@ class LcmToWpilog : public ::testing::Test {
       take(*e, "ARM_TRAJECTORY", s_.trajectories);
       take(*e, "ARM_DAEMON_STATUS", s_.daemon);
     }
+    // The entries are in time order whatever order the logger wrote the messages in.
+    inTimeOrder(s_.states), inTimeOrder(s_.setpoints), inTimeOrder(s_.goals);
+    inTimeOrder(s_.statuses), inTimeOrder(s_.trajectories), inTimeOrder(s_.daemon);
+  }
+  template <typename Message>
+  static void inTimeOrder(std::vector<std::pair<int64_t, Message>>& messages) {
+    std::stable_sort(messages.begin(), messages.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
   template <typename Message>
   static void take(const lcm::LogEvent& e, const char* channel, std::vector<std::pair<int64_t, Message>>& into) {
@@ -116,9 +126,10 @@ class LcmToWpilog : public ::testing::Test {
     auto coin = [&] { return (rng() & 1) != 0; };
     lcm::LogFile log(path_.string(), "w");
     ASSERT_TRUE(log.good());
-    int64_t t = kSyntheticT0;
+    int64_t t = kSyntheticT0 + kFirstEventLateUs;
     for (int k = 0; k < 12; ++k) {
-      if (k > 0) t += 1000 + static_cast<int64_t>(rng() % 20000);
+      const int64_t step_us = k > 0 ? 1000 + static_cast<int64_t>(rng() % 20000) : 0;
+      t = k == 1 ? kSyntheticT0 : t + step_us;
       const int64_t utime = t - 300;  // published 300 µs before it was logged
       switch (k % 6) {
         case 0: {
@@ -276,6 +287,17 @@ TEST_F(LcmToWpilog, CountsEveryEvent) {
     EXPECT_EQ(e.name.rfind("/CyberPlanner/", 0), 0u) << e.name;
     EXPECT_NE(e.metadata.find("lcm_channel"), std::string::npos) << e.name;
   }
+}
+
+// The first event in the file (a state) is 36 µs after the second (a setpoint): the clock starts
+// at the setpoint, and the state is 36 µs into it, not clamped to 0.
+TEST_F(LcmToWpilog, ClockStartsAtTheEarliestEventNotTheFirstInTheFile) {
+  if (!synthetic_) GTEST_SKIP() << "the synthetic log's first two events";
+  ASSERT_FALSE(records("Elevator/MeasuredMeters", "double").empty());
+  ASSERT_FALSE(records("Elevator/SetpointMeters", "double").empty());
+  EXPECT_EQ(records("Elevator/MeasuredMeters", "double").front()->timestamp_us, uint64_t{kFirstEventLateUs});
+  EXPECT_EQ(records("Elevator/SetpointMeters", "double").front()->timestamp_us, 0u);
+  EXPECT_EQ(stats_.earliest_event_unix_us, static_cast<uint64_t>(kSyntheticT0));
 }
 
 TEST_F(LcmToWpilog, MeasuredState) {

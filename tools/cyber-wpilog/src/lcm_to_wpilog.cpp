@@ -327,10 +327,16 @@ Result<Conversion, WpilogStatus> convertLcmLog(const std::string& lcm_path, cons
     const auto* bytes = static_cast<const uint8_t*>(e->data);
     events.push_back(Event{e->channel, e->timestamp, std::vector<uint8_t>(bytes, bytes + e->datalen)});
   }
+  // lcm-logger can write an event before one it received a few µs earlier (a recording started
+  // ARM_GOAL, then ARM_STATE 36 µs older), so the clock starts at the earliest event and the
+  // events are converted in time order: every record at its true offset, each entry in order.
+  std::stable_sort(events.begin(), events.end(),
+                   [](const Event& a, const Event& b) { return a.timestamp_us < b.timestamp_us; });
   ConvertStats s;
   s.events = static_cast<int64_t>(events.size());
-  s.first_event_unix_us = events.empty() ? 0 : static_cast<uint64_t>(events.front().timestamp_us);
-  Writer writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.first_event_unix_us) + " us");
+  s.earliest_event_unix_us = events.empty() ? 0 : static_cast<uint64_t>(events.front().timestamp_us);
+  Writer writer("cyber-wpilog " + lcm_path + "; t = 0 is Unix time " + std::to_string(s.earliest_event_unix_us) +
+                " us");
   Entries entries(writer);
   Converter converter(entries, geometry);
   using Handler = std::function<bool(const Event&, uint64_t)>;
@@ -358,7 +364,7 @@ Result<Conversion, WpilogStatus> convertLcmLog(const std::string& lcm_path, cons
       continue;
     }
     entries.setChannel(event.channel);
-    const uint64_t t = static_cast<uint64_t>(std::max<int64_t>(0, event.timestamp_us - events.front().timestamp_us));
+    const auto t = static_cast<uint64_t>(event.timestamp_us - events.front().timestamp_us);
     if (it->second(event, t)) {
       ++s.converted;
     } else {

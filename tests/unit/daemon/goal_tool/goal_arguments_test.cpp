@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 namespace cyber::tools {
@@ -61,9 +62,9 @@ TEST(GoalArguments, PiecesAndOffsetsPassThroughForTheDaemonToJudge) {
 }
 
 TEST(GoalArguments, BadInputIsNamed) {
-  EXPECT_EQ(error({}), "--to J0,J1 is required");
-  EXPECT_EQ(error({"--to", "1.0"}), "--to expects J0,J1, got '1.0'");
-  EXPECT_EQ(error({"--to", "1.0,x"}), "--to expects J0,J1, got '1.0,x'");
+  EXPECT_EQ(error({}), "--to J0,J1 or --to NAME is required");
+  EXPECT_EQ(error({"--to", "1.0"}), "--to expects J0,J1 or a pose NAME, got '1.0'");
+  EXPECT_EQ(error({"--to", "1.0,x"}), "--to expects J0,J1 or a pose NAME, got '1.0,x'");
   EXPECT_EQ(error({"--to", "1,2", "--pieces", "coral,"}), "--pieces expects NAME[,NAME...], got 'coral,'");
   EXPECT_EQ(error({"--to", "1,2", "--scene-offset", "x"}), "--scene-offset expects metres, got 'x'");
   EXPECT_EQ(error({"--to", "1,2", "--id", "4x"}), "--id expects an integer, got '4x'");
@@ -74,7 +75,44 @@ TEST(GoalArguments, BadInputIsNamed) {
   EXPECT_EQ(error({"--to="}), "--to needs a value");
   EXPECT_EQ(error({"--to", "1,2", "--scene", ""}), "--scene needs a value");
   EXPECT_EQ(error({"--to=1,2", "--no-wait-daemon=yes"}), "--no-wait-daemon takes no value, got '--no-wait-daemon=yes'");
-  EXPECT_EQ(error({"--to", "1,2,3"}), "--to expects J0,J1, got '1,2,3'");
+  EXPECT_EQ(error({"--to", "1,2,3"}), "--to expects J0,J1 or a pose NAME, got '1,2,3'");
+  EXPECT_EQ(error({"--to", "L3,1"}), "--to expects J0,J1 or a pose NAME, got 'L3,1'");
+  EXPECT_EQ(error({"--to", "1,2", "--config="}), "--config needs a value");
+}
+
+// A pose name is looked up in --config (docs/configuration.md, "Named poses"); without one,
+// cyber-goal cannot know it.
+TEST(GoalArguments, APoseNameNeedsAConfig) {
+  EXPECT_EQ(error({"--to", "L3", "--pieces", "coral"}), "--to L3 is a pose name: give --config FILE to look it up");
+  const GoalArguments a = ok({"--to", "L3", "--pieces", "coral", "--config", "robot.toml"});
+  EXPECT_EQ(a.pose_name, "L3");
+  EXPECT_EQ(a.config_path, "robot.toml");
+  EXPECT_EQ(ok({"--to=1,2", "--config=robot.toml"}).pose_name, "") << "numbers need no lookup";
+}
+
+// [poses.coral] L3 = [1.27, 5.79], [poses.none] L3 = [1.22, 5.69] in config/reefscape-2025.toml.
+TEST(GoalArguments, ThePoseNameIsTheHeldSetsPose) {
+  const config::Config config = config::loadEmbeddedDefaultConfig();
+  auto position = [&](const std::vector<std::string>& args) {
+    const auto p = goalPosition(ok(args), config);
+    EXPECT_TRUE(p.ok()) << (p.ok() ? "" : p.error().message);
+    return p.ok() ? p.value() : std::array<double, 2>{NAN, NAN};
+  };
+  EXPECT_EQ(position({"--to", "L3", "--pieces", "coral", "--config", "x"}), (std::array<double, 2>{1.27, 5.79}));
+  EXPECT_EQ(position({"--to", "L3", "--config", "x"}), (std::array<double, 2>{1.22, 5.69}));
+  EXPECT_EQ(position({"--to", "L3", "--pieces", "none", "--config", "x"}), (std::array<double, 2>{1.22, 5.69}));
+  EXPECT_EQ(position({"--to", "0.5,nan", "--pieces", "cone", "--config", "x"})[0], 0.5)
+      << "numbers and pieces still pass through for the daemon to judge";
+  auto refused = [&](const std::vector<std::string>& args) {
+    const auto p = goalPosition(ok(args), config);
+    EXPECT_EQ(p.status(), cli::ArgumentStatus::kBadUsage);
+    return p.ok() ? "" : p.error().message;
+  };
+  EXPECT_EQ(refused({"--to", "HOLD_HIGH", "--pieces", "coral", "--config", "x"}),
+            "--to: no pose \"HOLD_HIGH\" for the held set \"coral\" (its poses: STOW, INTAKE, L1, L2, L3, L4, NET); "
+            "it is a pose of \"algae\"");
+  EXPECT_EQ(refused({"--to", "L3", "--pieces", "cone", "--config", "x"}).rfind("--pieces: ", 0), 0u)
+      << "the held set of a name must be the config's";
 }
 
 TEST(GoalArguments, BothSpellingsOfAValueMeanTheSame) {

@@ -1,8 +1,9 @@
 #pragma once
 // An lcm-logger log of a cyber-planner session as WPILOG entries under /CyberPlanner/ (the names
 // and units are listed in docs/operations.md, "AdvantageScope"). Timestamps are the logger's
-// receive times in µs from the log's first event; trajectory samples are placed on that clock
-// through the offset between the message's receive time and its utime.
+// receive times in µs from the log's earliest event (not its first: lcm-logger's file order is not
+// quite time order); trajectory samples are placed on that clock through the offset between the
+// message's receive time and its utime.
 
 #include <array>
 #include <cstdint>
@@ -30,11 +31,11 @@ struct ConvertStats {
   int64_t converted = 0;    // decoded messages of the six channels
   int64_t undecodable = 0;  // events on those channels that did not decode
   int64_t other = 0;        // events on other channels
-  uint64_t first_event_unix_us = 0;
+  uint64_t earliest_event_unix_us = 0;
 };
 
 // A converted LCM log: the new WPILOG (its extra header names the source and the Unix time of the
-// first event) and what went into it.
+// earliest event) and what went into it.
 struct Conversion {
   Writer writer;
   ConvertStats stats;
