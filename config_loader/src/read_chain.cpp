@@ -17,12 +17,10 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 // A joint named by a link or a piece: its name in [[joints]].
 int jointOf(TableReader& table, const planner::RobotModel& robot) {
-  const std::string name = table.string("joint");
+  const std::string names = "\"" + robot.joints[0].name + "\" or \"" + robot.joints[1].name + "\"";
+  const std::string name = table.string("joint", "a joint's name as a string, " + names);
   const int joint = robot.jointIndex(name);
-  if (joint < 0) {
-    table.fail("joint", "unknown joint \"" + name + "\" (expected \"" + robot.joints[0].name + "\" or \"" +
-                            robot.joints[1].name + "\")");
-  }
+  if (joint < 0) table.fail("joint", "unknown joint \"" + name + "\" (expected " + names + ")");
   return joint;
 }
 
@@ -141,7 +139,7 @@ void readScenes(TableReader& root, TableReader obstacle_table, planner::RobotMod
     if (robot.sceneIndex(out.name) >= 0) scene.fail("name", "duplicate scene name \"" + out.name + "\"");
     auto named = [&](const char* key, std::vector<planner::NamedPolygon>& into) {
       if (!scene.has(key)) return;
-      for (const std::string& name : scene.strings(key)) {
+      for (const std::string& name : scene.strings(key, "an obstacle's name as a string, a key of [obstacles]")) {
         const auto it = obstacles.find(name);
         if (it == obstacles.end()) scene.fail(key, "unknown obstacle \"" + name + "\"");
         into.push_back({name, it->second});

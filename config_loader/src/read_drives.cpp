@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace cyber::config::detail {
@@ -38,7 +39,7 @@ planner::DriveKind driveKind(TableReader& drive) {
 // The motors behind a joint, its Coulomb friction and its limits: what both kinds share.
 void readMotors(TableReader& drive, const std::map<std::string, planner::MotorParams>& motors,
                 planner::DriveParams& d) {
-  const std::string motor = drive.string("motor");
+  const std::string motor = drive.string("motor", "a motor's name as a string, a key of [motors]");
   const auto it = motors.find(motor);
   if (it == motors.end()) drive.fail("motor", "unknown motor \"" + motor + "\" (define it under [motors])");
   d.motor = it->second;
@@ -70,15 +71,19 @@ planner::DriveParams readFeedforward(TableReader& drive, const std::map<std::str
 
 }  // namespace
 
-planner::LinkInertia readInertia(TableReader& table, const planner::Point2& default_cg_m) {
+planner::LinkInertia readInertia(TableReader& table, std::optional<planner::Point2> piece_cg_m) {
   planner::LinkInertia body;
   body.mass_kg = table.number("mass_kg", kNonNegative);
-  body.cg_m = default_cg_m;
-  if (table.has("cg_m")) {
+  if (piece_cg_m && !table.has("cg_m")) {
+    body.cg_m = *piece_cg_m;
+  } else {
     // A number is the distance along the link's x axis; [x, y] a point of the link frame.
     body.cg_m = table.isArray("cg_m") ? table.vector2("cg_m") : planner::Point2(table.number("cg_m"), 0.0);
   }
-  body.moi_kgm2 = table.has("moi_kgm2") ? table.number("moi_kgm2", kNonNegative) : 0.0;
+  // A piece is small beside its distance from the axis: a point mass unless the file says more.
+  // A link's own inertia is not, so a drive must give it (0 would understate its torque).
+  const bool piece = piece_cg_m.has_value();
+  body.moi_kgm2 = piece && !table.has("moi_kgm2") ? 0.0 : table.number("moi_kgm2", kNonNegative);
   return body;
 }
 
@@ -98,7 +103,7 @@ void readDrives(TableReader motor_table, TableReader drives, planner::RobotModel
       robot.drives[static_cast<size_t>(j)] = readFeedforward(drive, motors);
     } else {
       readMotors(drive, motors, robot.drives[static_cast<size_t>(j)]);
-      robot.bodies[static_cast<size_t>(j)] = readInertia(drive, planner::Point2::Zero());
+      robot.bodies[static_cast<size_t>(j)] = readInertia(drive, std::nullopt);
     }
     drive.finish();
   }

@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
+#include <string_view>
 
 namespace cyber::config::detail {
 namespace {
@@ -33,6 +36,66 @@ Eigen::Vector2d pointFrom(const toml::node& node, const std::string& path, Bound
   return {numberFrom((*a)[0], path + "[0]", bounds), numberFrom((*a)[1], path + "[1]", bounds)};
 }
 
+std::string lowerCase(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// A key in lower case without its unit suffix ("kS_volts" -> "ks"): a key written without its
+// unit, or in another case, is the same key.
+std::string stem(const std::string& key) {
+  static constexpr std::array<std::string_view, 11> kUnits{"_m",  "_rad", "_deg",  "_volts", "_amps", "_s",
+                                                           "_hz", "_kg",  "_kgm2", "_nm",    "_rpm"};
+  const std::string lower = lowerCase(key);
+  for (std::string_view unit : kUnits) {
+    if (lower.size() > unit.size() && lower.ends_with(unit)) return lower.substr(0, lower.size() - unit.size());
+  }
+  return lower;
+}
+
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// How far an unknown key is from a known one: 0 when they differ only in case or unit suffix.
+size_t keyDistance(const std::string& unknown, const std::string& known) {
+  return std::min(editDistance(lowerCase(unknown), lowerCase(known)), editDistance(stem(unknown), stem(known)));
+}
+
+// The known key an unknown one most likely meant: the same up to case and unit suffix, or with
+// `typos` at most two edits away (one for keys of up to four letters).
+std::string likelyKey(const std::string& unknown, const std::set<std::string>& known, bool typos) {
+  const size_t most = !typos ? 0 : unknown.size() <= 4 ? 1 : 2;
+  std::string best;
+  size_t best_distance = most + 1;
+  for (const std::string& key : known) {
+    const size_t distance = key == unknown ? most + 1 : keyDistance(unknown, key);
+    if (distance < best_distance) {
+      best = key;
+      best_distance = distance;
+    }
+  }
+  return best;
+}
+
+std::string unknownKeyProblem(const std::string& key, const std::string& likely) {
+  std::string problem = "unknown key '";
+  problem.append(key).append("'");
+  if (!likely.empty()) problem.append(" (did you mean '").append(likely).append("'?)");
+  return problem;
+}
+
 }  // namespace
 
 TableReader::TableReader(const toml::table& table, std::string path) : table_(table), path_(std::move(path)) {}
@@ -43,7 +106,17 @@ void TableReader::fail(const std::string& key, const std::string& problem) const
 
 const toml::node& TableReader::require(const std::string& key) {
   const toml::node* node = table_.get(key);
-  if (node == nullptr) fail(key, "missing key");
+  asked_.insert(key);
+  if (node == nullptr) {
+    // A key written without its unit (origin for origin_m) is named, not reported as missing.
+    for (const auto& [k, v] : table_) {
+      const std::string written(k.str());
+      if (!used_.contains(written) && likelyKey(written, {key}, false) == key) {
+        fail(written, unknownKeyProblem(written, key));
+      }
+    }
+    fail(key, "missing key");
+  }
   used_.insert(key);
   return *node;
 }
@@ -74,17 +147,17 @@ bool TableReader::boolean(const std::string& key) {
   return *node.value<bool>();
 }
 
-std::string TableReader::string(const std::string& key) {
+std::string TableReader::string(const std::string& key, const std::string& what) {
   const toml::node& node = require(key);
-  if (!node.is_string()) fail(key, "expected a string");
+  if (!node.is_string()) fail(key, "expected " + what);
   return *node.value<std::string>();
 }
 
-std::vector<std::string> TableReader::strings(const std::string& key) {
+std::vector<std::string> TableReader::strings(const std::string& key, const std::string& what) {
   const toml::array& a = array(key);
   std::vector<std::string> out;
   for (size_t i = 0; i < a.size(); ++i) {
-    if (!a[i].is_string()) fail(key, "element " + std::to_string(i) + " must be a string");
+    if (!a[i].is_string()) fail(key, "element " + std::to_string(i) + " must be " + what);
     out.push_back(*a[i].value<std::string>());
   }
   return out;
@@ -112,6 +185,11 @@ std::vector<planner::ConvexPolygon> TableReader::polygons(const std::string& key
 planner::ConvexPolygon TableReader::polygon(const std::string& key) { return polygonFrom(require(key), pathOf(key)); }
 
 TableReader TableReader::table(const std::string& key) { return tableAt(require(key), pathOf(key)); }
+
+TableReader TableReader::optionalTable(const std::string& key) {
+  static const toml::table kEmpty;
+  return has(key) ? table(key) : TableReader(kEmpty, pathOf(key));
+}
 
 std::vector<std::string> TableReader::keys() {
   std::vector<std::string> out;
@@ -144,7 +222,7 @@ std::vector<std::string> TableReader::keysInFileOrder() {
 void TableReader::finish() const {
   for (const auto& [k, v] : table_) {
     const std::string key(k.str());
-    if (!used_.contains(key)) fail(key, "unknown key");
+    if (!used_.contains(key)) fail(key, unknownKeyProblem(key, likelyKey(key, asked_, true)));
   }
 }
 

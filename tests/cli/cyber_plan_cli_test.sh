@@ -165,5 +165,10 @@ check "goal in collision" 3 --config "$config" --from 0.2,1.57 --to 0.0,0.0
 expect_in "collision reason" "$tmp/err" "collision"
 check "unwritable csv" 2 --config "$config" --from 0.2,1.57 --to 1.97,5.17 --csv /nonexistent/dir/t.csv
 
+# The minimal robot (tests/fixtures/minimal-robot.toml: no [planner], no [daemon]) loads with its
+# derived settings and plans past its shelf (docs/configuration.md, "Defaults derived from the robot").
+minimal="$(dirname "$config")/../tests/fixtures/minimal-robot.toml"
+check "minimal robot" 0 --config "$minimal" --from 0.0,1.57 --to 1.0,0.0 --json
+expect_in "minimal robot plans" "$tmp/out" '"status":"ok"'
 echo "$passes passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -40,11 +40,16 @@ def load_config():
 
 
 CONFIG = load_config()
-DEVICES = CONFIG["daemon"]["devices"]
-PERIOD_S = 1.0 / CONFIG["daemon"]["stream_rate_hz"]
-HEARTBEAT_TIMEOUT_S = CONFIG["daemon"]["heartbeat_timeout_s"]
+# The [daemon] keys the reference robot leaves out take their defaults (docs/configuration.md,
+# "Daemon"): device numbers 1..N in joint order, N + 1 for the status frame.
+DAEMON = {"stream_rate_hz": 200.0, "heartbeat_timeout_s": 0.1, "state_timeout_s": 0.25, "status_rate_hz": 10.0,
+          "devices": {**{j["name"]: i + 1 for i, j in enumerate(CONFIG["joints"])}, "status": len(CONFIG["joints"]) + 1},
+          **CONFIG.get("daemon", {})}
+DEVICES = DAEMON["devices"]
+PERIOD_S = 1.0 / DAEMON["stream_rate_hz"]
+HEARTBEAT_TIMEOUT_S = DAEMON["heartbeat_timeout_s"]
 Q_COLUMNS = tuple(c["q"] for c in hil.plant_columns(CONFIG))  # plant.csv: joint 0 and joint 1 positions
-STATE_TIMEOUT_S = CONFIG["daemon"]["state_timeout_s"]
+STATE_TIMEOUT_S = DAEMON["state_timeout_s"]
 VOLTAGE_LIMIT = (CONFIG["drives"]["elevator"]["voltage_limit_volts"], CONFIG["drives"]["arm"]["voltage_limit_volts"])
 JOINTS = ("elevator", "arm")
 POSITION_TOLERANCE = (0.005, 0.01)  # final error: 5 mm, 0.01 rad
@@ -58,6 +63,16 @@ HIL_MOTION_VELOCITY_LIMITS = (("elevator", "0.3"), ("arm", "0.75"))
 
 
 HIL_MAX_PLANNING_BUDGET_S = 3.0
+
+
+def set_daemon_key(text, key, value, src):
+    """The config text with [daemon] KEY = VALUE: its line replaced, or a new first line of [daemon]."""
+    line = re.compile(rf"^{key} = .*$", re.M)
+    if line.search(text):
+        return line.sub(f"{key} = {value}", text, count=1)
+    if "\n[daemon]\n" not in text:
+        raise SystemExit(f"hil-config: no [daemon] table in {src}")
+    return text.replace("\n[daemon]\n", f"\n[daemon]\n{key} = {value}\n", 1)
 
 
 def hil_config(src, dst, relaxed_gates):
@@ -79,18 +94,12 @@ def hil_config(src, dst, relaxed_gates):
             raise SystemExit(f"hil-config: no {header.strip()} without velocity_limit in {src}")
         text = text.replace(header, f"{header}velocity_limit = {limit}\n")
     if relaxed_gates:
-        for key, value in (("heartbeat_timeout_s", "0.1"), ("state_timeout_s", "0.25")):
-            line = f"{key} = {value}\n"
-            if line not in text:
-                raise SystemExit(f"hil-config: '{line.strip()}' not in {src}")
-            text = text.replace(line, f"{key} = 0.5\n")
+        for key in ("heartbeat_timeout_s", "state_timeout_s"):
+            text = set_daemon_key(text, key, "0.5", src)
     # The guest plans 10-60 times slower than the host (more when the host is busy), so goal 3's
     # plan into goal 2 needs a longer budget than the reference robot's 1 s cap; goal 2's capped
     # motion (3-4.5 s) leaves room for it.
-    budget_line = "planning_budget_s = 0.03\n"
-    if budget_line not in text:
-        raise SystemExit(f"hil-config: '{budget_line.strip()}' not in {src}")
-    text = text.replace(budget_line, f"{budget_line}max_planning_budget_s = {HIL_MAX_PLANNING_BUDGET_S}\n")
+    text = set_daemon_key(text, "max_planning_budget_s", str(HIL_MAX_PLANNING_BUDGET_S), src)
     with open(dst, "w") as f:
         f.write(text)
 
@@ -301,7 +310,7 @@ def check_protocol(c, run, allow_sequence_jumps=False, injected=None):
     c.check(statuses and all(f.data[0] <= 4 and f.data[6] == 0 for f in statuses),
             f"{len(statuses)} status frames with a valid mode byte and reserved byte 0")
     status_periods = [b.t - a.t for a, b in zip(statuses, statuses[1:])]
-    c.note(f"status frames: {describe(status_periods, 1.0 / CONFIG['daemon']['status_rate_hz'])}")
+    c.note(f"status frames: {describe(status_periods, 1.0 / DAEMON['status_rate_hz'])}")
     for j, name in enumerate(JOINTS):
         seq = [s[4] for s in run.setpoints[j]]
         steps = [(b - a) % 256 for a, b in zip(seq, seq[1:])]

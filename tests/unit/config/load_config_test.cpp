@@ -117,19 +117,16 @@ TEST(LoadConfig, RobotControllerIsOptionalAndSystemcoreByDefault) {
 
 TEST(LoadConfig, MaxPlanningBudgetIsOptionalWithADefaultOfOneSecond) {
   EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.max_planning_budget_s, 1.0);
-  const std::string with =
-      mutated("planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 3.0\n");
+  const std::string with = mutated("[daemon]\n", "[daemon]\nmax_planning_budget_s = 3.0\n");
   EXPECT_EQ(parseConfig(with, "robot.toml").daemon.max_planning_budget_s, 3.0);
 }
 
 // Optional (added with ARM_CANCEL, issue 25), so configurations written before it still load.
 TEST(LoadConfig, TheCancelChannelIsOptionalAndCanBeRenamed) {
   EXPECT_EQ(loadEmbeddedDefaultConfig().daemon.channels.cancel, "ARM_CANCEL");
-  const std::string renamed = mutated("goal = \"ARM_GOAL\"\n", "goal = \"ARM_GOAL\"\ncancel = \"LEFT_ARM_CANCEL\"\n");
+  const std::string renamed = defaultText() + "[daemon.channels]\ncancel = \"LEFT_ARM_CANCEL\"\n";
   EXPECT_EQ(parseConfig(renamed, "robot.toml").daemon.channels.cancel, "LEFT_ARM_CANCEL");
-  EXPECT_THROW(
-      (void)parseConfig(mutated("goal = \"ARM_GOAL\"\n", "goal = \"ARM_GOAL\"\ncancel = \"\"\n"), "robot.toml"),
-      ConfigError);
+  EXPECT_THROW((void)parseConfig(defaultText() + "[daemon.channels]\ncancel = \"\"\n", "robot.toml"), ConfigError);
 }
 
 // A description in the format before joint chains fails naming the keys that replace its own.
@@ -168,6 +165,9 @@ struct BadCase {
 
 void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
 
+// The reference file's last line, after which the device cases add a [daemon.devices] table.
+constexpr const char* kLastLine = "log_level = \"info\"\n";
+
 class BadConfig : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(BadConfig, FailsNamingKeyAndProblem) {
@@ -187,7 +187,7 @@ const BadCase kBadCases[] = {
     {"UnknownTopKey", "clearance_m = 0.03", "clearance_m = 0.03\nclearence = 1", "clearence", "unknown key"},
     {"UnknownNestedKey", "kS_volts = 0.15", "kS_volts = 0.15\nks = 0.1", "drives.elevator.ks", "unknown key"},
     {"MissingKey", "clearance_m = 0.03\n", "", "clearance_m", "missing key"},
-    {"MissingNestedKey", "axis_deg = 80.0\n", "", "joints[0].axis_deg", "missing key"},
+    {"MissingNestedKey", ", axis_deg = 80.0", "", "joints[0].axis_deg", "missing key"},
     {"WrongType", "clearance_m = 0.03", "clearance_m = \"thin\"", "clearance_m", "expected a number"},
     {"WrongTypeInteger", "count = 2", "count = 2.5", "drives.elevator.count", "expected an integer"},
     {"NotANumber", "kV = 3.93", "kV = nan", "drives.elevator.kV", "finite"},
@@ -195,16 +195,16 @@ const BadCase kBadCases[] = {
     {"NegativeClearance", "clearance_m = 0.03", "clearance_m = -0.01", "clearance_m", "out of range"},
     {"InvertedRange", "max = 2.0", "max = -1.0", "joints[0].max", "out of range"},
     {"UnknownJointType", "type = \"prismatic\"", "type = \"telescopic\"", "joints[0].type", "expected \"prismatic\""},
-    {"OneJoint", "[[joints]]\nname = \"arm\"", "[joints_removed]\nname = \"arm\"", "joints", "exactly two"},
-    {"SameJointNames", "name = \"arm\"\ntype", "name = \"elevator\"\ntype", "joints[1].name", "different names"},
-    {"UnknownJointOfLink", "[links.arm]\njoint = \"arm\"", "[links.arm]\njoint = \"wrist\"", "links.arm.joint",
+    {"OneJoint", "  { name = \"arm\"", "#  { name = \"arm\"", "joints", "exactly two"},
+    {"SameJointNames", "name = \"arm\", type", "name = \"elevator\", type", "joints[1].name", "different names"},
+    {"UnknownJointOfLink", "arm = { joint = \"arm\"", "arm = { joint = \"wrist\"", "links.arm.joint",
      "unknown joint \"wrist\""},
-    {"UnknownJointOfPiece", "[pieces.coral]\njoint = \"arm\"", "[pieces.coral]\njoint = \"claw\"", "pieces.coral.joint",
+    {"UnknownJointOfPiece", "coral = { joint = \"arm\"", "coral = { joint = \"claw\"", "pieces.coral.joint",
      "unknown joint"},
-    {"JointNameWithNul", "name = \"arm\"\ntype", "name = \"a\\u0000rm\"\ntype", "joints[1].name", "control characters"},
+    {"JointNameWithNul", "name = \"arm\", type", "name = \"a\\u0000rm\", type", "joints[1].name", "control characters"},
     {"SceneNameWithNewline", "name = \"reef\"", "name = \"re\\nef\"", "scenes[0].name", "control characters"},
-    {"PieceNameWithTab", "[pieces.coral]", "[pieces.\"co\\tral\"]", "pieces.co\tral", "control characters"},
-    {"PieceNameWithPlus", "[pieces.coral]", "[pieces.\"co+ral\"]", "pieces.co+ral", "'+'"},
+    {"PieceNameWithTab", "coral = {", "\"co\\tral\" = {", "pieces.co\tral", "control characters"},
+    {"PieceNameWithPlus", "coral = {", "\"co+ral\" = {", "pieces.co+ral", "'+'"},
     {"MissingDrive", "[drives.arm]", "[drives.wrist]", "drives.arm", "every joint needs a drive"},
     {"UnknownDriveKind", "kind = \"feedforward\"\nmotor = \"kraken_x60_foc\"\ncount = 1",
      "kind = \"magic\"\nmotor = \"kraken_x60_foc\"\ncount = 1", "drives.arm.kind", "expected \"feedforward\""},
@@ -213,21 +213,24 @@ const BadCase kBadCases[] = {
     {"UnknownFixedObstacle", "fixed = [\"drivetrain_keepout\", \"floor\"]\noffset",
      "fixed = [\"drivetrain_keepout\", \"flor\"]\noffset", "scenes[0].fixed", "unknown obstacle \"flor\""},
     {"ZeroGearing", "gearing = 200.0", "gearing = 0.0", "drives.elevator.gearing", "out of range"},
-    {"StreamRate", "stream_rate_hz = 200.0", "stream_rate_hz = 0.0", "daemon.stream_rate_hz", "out of range"},
+    {"StreamRate", "[daemon]\n", "[daemon]\nstream_rate_hz = 0.0\n", "daemon.stream_rate_hz", "out of range"},
     {"FullRateEchoType", "setpoint_echo_full_rate = false", "setpoint_echo_full_rate = 1",
      "daemon.setpoint_echo_full_rate", "expected true or false"},
-    {"MaxBudgetBelowBudget", "planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 0.01\n",
-     "daemon.max_planning_budget_s", "out of range"},
-    {"MaxBudgetTooLarge", "planning_budget_s = 0.03\n", "planning_budget_s = 0.03\nmax_planning_budget_s = 11.0\n",
-     "daemon.max_planning_budget_s", "out of range"},
-    {"DeviceNumber", "elevator = 1\n", "elevator = 64\n", "daemon.devices.elevator", "out of range"},
+    {"MaxBudgetBelowBudget", "[daemon]\n", "[daemon]\nmax_planning_budget_s = 0.01\n", "daemon.max_planning_budget_s",
+     "out of range"},
+    {"MaxBudgetTooLarge", "[daemon]\n", "[daemon]\nmax_planning_budget_s = 11.0\n", "daemon.max_planning_budget_s",
+     "out of range"},
+    {"DeviceNumber", kLastLine,
+     "log_level = \"info\"\n[daemon.devices]\n"
+     "elevator = 64\narm = 2\nstatus = 3\n",
+     "daemon.devices.elevator", "out of range"},
     {"NonConvex", "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.248, 0.514], [0.0, 0.454]]",
      "l1_trough = [[0.0, 0.0], [0.248, 0.0], [0.1, 0.1], [0.248, 0.514], [0.0, 0.454]]", "obstacles.l1_trough",
      "not convex"},
     {"TwoVertices", "l4_post = [[0.03, 1.637], [0.072, 1.637], [0.072, 1.81], [0.03, 1.81]]",
      "l4_post = [[0.03, 1.637], [0.072, 1.637]]", "obstacles.l4_post", "at least 3 vertices"},
     {"BadVertex", "[0.25, 0.1], [0.25, -0.1]", "[0.25, 0.1, 0.3], [0.25, -0.1]", "links.arm.polygons[0][1]", "pair"},
-    {"EmptyLink", "polygons = [\n  [[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]],\n]", "polygons = []",
+    {"EmptyLink", "polygons = [[[-0.2, 0.05], [0.25, 0.1], [0.25, -0.1], [-0.2, -0.05]]]", "polygons = []",
      "links.arm.polygons", "at least one polygon"},
     {"UnknownObstacleInScene", "obstacles = [\"l1_trough\",", "obstacles = [\"l1_trouf\",", "scenes[0].obstacles",
      "unknown obstacle \"l1_trouf\""},
@@ -237,16 +240,25 @@ const BadCase kBadCases[] = {
     {"BadLogLevel", "log_level = \"info\"", "log_level = \"loud\"", "daemon.log_level", "expected one of"},
     {"BadRobotController", "robot_controller = \"roborio\"", "robot_controller = \"rio\"", "daemon.robot_controller",
      "expected \"roborio\" or \"systemcore\""},
-    {"SameDevices", "arm = 2\n", "arm = 1\n", "daemon.devices", "must differ"},
+    {"SameDevices", kLastLine,
+     "log_level = \"info\"\n[daemon.devices]\n"
+     "elevator = 1\narm = 1\nstatus = 3\n",
+     "daemon.devices", "must differ"},
     // [daemon.devices] is keyed by the config's joint names (and status), nothing else.
-    {"DeviceOfNoJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nelevator = 1\nwrist = 4\n",
+    {"DeviceOfNoJoint", kLastLine,
+     "log_level = \"info\"\n[daemon.devices]\n"
+     "elevator = 1\narm = 2\nstatus = 3\nwrist = 4\n",
      "daemon.devices.wrist",
      "not a joint of this robot; [daemon.devices] takes one key per joint, `elevator`, `arm`, "
      "and `status`"},
-    {"DeviceOfARenamedJoint", "[daemon.devices]\nelevator = 1\n", "[daemon.devices]\nlift = 1\n", "daemon.devices.lift",
-     "not a joint of this robot"},
-    {"DeviceOfAJointMissing", "arm = 2\nstatus = 3", "status = 3", "daemon.devices.arm",
-     "missing: [daemon.devices] takes one key per joint, `elevator`, `arm`, and `status`"},
+    {"DeviceOfARenamedJoint", kLastLine,
+     "log_level = \"info\"\n[daemon.devices]\n"
+     "lift = 1\narm = 2\nstatus = 3\n",
+     "daemon.devices.lift", "not a joint of this robot"},
+    {"DeviceOfAJointMissing", kLastLine,
+     "log_level = \"info\"\n[daemon.devices]\n"
+     "elevator = 1\nstatus = 3\n",
+     "daemon.devices.arm", "missing: [daemon.devices] takes one key per joint, `elevator`, `arm`, and `status`"},
     {"ParseError", "clearance_m = 0.03", "clearance_m = = 0.03", "robot.toml:", "robot.toml"},
 };
 

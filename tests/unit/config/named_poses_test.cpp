@@ -33,8 +33,8 @@ TEST(NamedPoses, ReferenceRobotNamesThePublicPoses) {
 
 std::string withPoses(const std::string& poses) {
   std::string text(embeddedDefaultConfig());
-  const size_t at = text.find("[poses.none]");
-  const size_t end = text.find("[daemon]");
+  const size_t at = text.find("\n[poses.none]\n") + 1;
+  const size_t end = text.find("\n[daemon]\n") + 1;
   text.replace(at, end - at, poses + "\n");
   return text;
 }

@@ -11,7 +11,8 @@ namespace cyber::config {
 // programs default to it rather than to LCM's own default (port 7667).
 inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:5810?ttl=0";
 
-// [daemon.devices]: one key per joint, named by the joint's [[joints]] name, and `status`.
+// [daemon.devices]: one key per joint, named by the joint's [[joints]] name, and `status`. Without
+// the table, 1..N in joint order and N + 1 for the status frame: these values.
 struct DeviceNumbers {
   std::array<int, 2> joints{1, 2};  // setpoint frames of joint 0 and joint 1 (config order)
   int status = 3;                   // the daemon's own status frame

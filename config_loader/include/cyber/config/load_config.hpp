@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cyber/config/daemon_settings.hpp"
+#include "cyber/config/setting_origin.hpp"
 #include "cyber/planner.hpp"
 
 namespace cyber::config {
@@ -28,6 +29,9 @@ struct Config {
   planner::RobotModel robot;
   DaemonSettings daemon;
   std::vector<PoseSet> poses;  // the sets the file has, by name
+  // Every [planner] and [daemon] setting with its value and whether the file gave it or left it to
+  // a default, derived or constant (docs/configuration.md, "Defaults"), in the order read.
+  std::vector<SettingOrigin> settings;
 };
 
 // Thrown for any invalid configuration; what() reads "<source>: <key>: <problem>".

@@ -31,12 +31,16 @@ struct AlSettings {
 /// Every tuned number of the planner, in one place (docs/algorithm.md section 6, "Settings"): the
 /// rest is derived from the robot description. Each field says why it has its value; those
 /// measured on the public moves say so. RobotModel::planner holds one PlannerSettings; the TOML's
-/// [planner] table sets the grid, search, smoothing and TOPP parts (docs/configuration.md).
+/// [planner] table sets the grid, search, smoothing and TOPP parts, each key optional with these
+/// values as its default (the three shipped robots' values), except the metric, the grid step and
+/// the potential's range: a file that leaves those out gets them derived from its robot
+/// (docs/configuration.md, "Defaults derived from the robot"); here they are the reference robot's.
 namespace cyber::planner {
 
 /// The configuration-space grid each held set is searched on (docs/algorithm.md section 2.1).
 struct GridSettings {
-  JointVector step = JointVector(0.02, 0.02);  ///< cell size of each joint, joint units
+  /// Cell size of each joint, joint units (the loader's default: one clearance of motion per step).
+  JointVector step = JointVector(0.02, 0.02);
   /// Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
   /// a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
   double joint_limit_margin = 0.005;
@@ -45,7 +49,9 @@ struct GridSettings {
 /// The A* search over the grid and its potential field (docs/algorithm.md section 2.2).
 struct SearchSettings {
   double potential_weight = 2.0;  ///< weight of the potential in the A* step cost
-  double potential_range = 0.15;  ///< weighted C-space distance over which the potential decays
+  /// Weighted C-space distance over which the potential decays (the loader's default: five
+  /// clearances of motion).
+  double potential_range = 0.15;
   /// Width of a band of scene offsets that shares one set of grids, in clearances: the grids of a
   /// band search the field elements swept across it, so a path may keep up to this much more than
   /// the clearance near them; narrower bands cost start-up time and memory (a set of grids per
@@ -275,7 +281,9 @@ struct EscapeSettings {
 
 /// Every tuned number of the planner, each part with its reasons; RobotModel::planner holds one.
 struct PlannerSettings {
-  JointVector metric = JointVector(1.0, 0.1);  ///< diagonal of Sigma: |v|^2 = v' Sigma v
+  /// Diagonal of Sigma: |v|^2 = v' Sigma v (the loader's default: each joint weighted by the distance
+  /// it moves the robot, the largest 1).
+  JointVector metric = JointVector(1.0, 0.1);
   GridSettings grid;
   SearchSettings search;
   SmoothingSettings smoothing;
