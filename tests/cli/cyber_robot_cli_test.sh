@@ -24,12 +24,14 @@ for config in reefscape-2025 chargedup-2023-double-jointed pivot-telescope; do
   says "$config reports its poses" "Named poses:"
   says "$config reports its moves" "ordered pairs plan"
   says "$config reports its drives" "Drives with the heaviest held set"
-  says "$config reports its settings" "Planner settings in use"
+  says "$config reports its settings" "Planner settings"
   says "$config has no error" "0 errors"
   [ "$(head -c 4 "$tmp/$config.png" | od -An -c | tr -d ' ')" = "211PNG" ] && passes=$((passes + 1)) ||
     { failures=$((failures + 1)); echo "FAIL $config.png is not a PNG"; }
 done
 says "a picture per pose set" "pivot-telescope-ball.png"
+expect "the minimal robot passes" 0 "$robot" check "$src/tests/fixtures/minimal-robot.toml"
+says "the minimal robot's derived grid step" "planner.grid.step = [0.04, 0.08] (derived)"
 sed 's/^\[poses.none\]$/[poses.none]\nINTO_STEP = [0.0, 0.9]/' "$src/config/pivot-telescope.toml" >"$tmp/collides.toml"
 expect "a pose colliding in the default scene" 1 "$robot" check "$tmp/collides.toml"
 says "the colliding pose is named" "error: pose [poses.none] INTO_STEP"

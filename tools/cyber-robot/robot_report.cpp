@@ -72,13 +72,16 @@ std::string drivesText(const RobotCheck& check) {
   return out;
 }
 
-std::string settingsText(const planner::RobotModel& robot) {
-  const planner::PlannerSettings& s = robot.planner;
-  return fmt::format(
-      "Planner settings in use (docs/configuration.md):\n"
-      "        grid step [{:g}, {:g}], metric [{:g}, {:g}], potential range {:g}, drives {}\n",
-      s.grid.step[0], s.grid.step[1], s.metric[0], s.metric[1], s.search.potential_range,
-      robot.drive_kind == planner::DriveKind::kRigidBody ? "rigid body" : "feedforward");
+// The planner settings a team would tune, each with where it came from; the daemon's and the
+// solver's constants stay in docs/configuration.md.
+std::string settingsText(const config::Config& config) {
+  std::string out = "Planner settings (docs/configuration.md, \"Defaults\"):\n";
+  for (const config::SettingOrigin& setting : config.settings) {
+    if (setting.key.rfind("planner.", 0) != 0 || setting.source == config::SettingSource::kDefault) continue;
+    out += fmt::format("        {} = {} ({})\n", setting.key, setting.value, config::sourceName(setting.source));
+  }
+  return out + fmt::format("        drives: {}\n",
+                           config.robot.drive_kind == planner::DriveKind::kRigidBody ? "rigid body" : "feedforward");
 }
 
 // One line per error, naming what to change.
@@ -107,7 +110,7 @@ std::string robotReportText(const config::Config& config, const RobotCheck& chec
   const planner::RobotModel& robot = config.robot;
   std::string out = fmt::format("Robot {}: {}; {} pieces, {} scenes (default {})\n\n", robot.name, jointsText(robot),
                                 robot.pieces.size(), robot.scenes.size(), robot.scenes.front().name);
-  out += posesText(robot, check) + "\n" + reachText(check) + "\n" + drivesText(check) + "\n" + settingsText(robot);
+  out += posesText(robot, check) + "\n" + reachText(check) + "\n" + drivesText(check) + "\n" + settingsText(config);
   out += fmt::format("\n{} errors, {} warnings\n", check.count(Severity::kError), check.count(Severity::kWarning));
   out += errorsText(robot, check);
   return out;
