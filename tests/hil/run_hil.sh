@@ -26,12 +26,10 @@ log=$build/hil/$1.log
 # One VM run of a daemon case, boot included: its scripts take 15-70 s in the emulated guest; the
 # limit allows for a guest several times slower than that (docs/testing.md).
 daemon_timeout_s=300
-# The daemon's start-up with the reference robot (its grids; 1 s natively) on top, as tools/vcan-vm
-# scales it to the guest's measured speed (docs/testing.md, "Guest speed and start-up"). Generous:
-# it only lengthens the limits, and the calibration loop slows down about half as much as the
-# start-up does. The hang test waits for its watchdog, so its allowance is tighter.
-daemon_start_s=10
-hang_start_s=4
+# The daemon's start-up with the reference robot (its grids: 0.97 s natively) on top, scaled by
+# tools/vcan-vm to the guest's measured speed (docs/testing.md, "Guest speed and start-up"): in the
+# guest it has taken 1.0-1.55 times the calibration's slowdown, so 3 s leaves it twice that.
+daemon_start_s=3
 
 fail() { echo "run_hil: FAIL ($1): ${*:2}" >&2; exit 1; }
 
@@ -81,7 +79,7 @@ args_for() {
         --out "$out" --run "tests/hil/$1.sh")
       ;;
     daemon_hang)
-      args=(--auto --timeout 150 --script-timeout 10 --start-allowance "$hang_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+      args=(--auto --timeout 150 --script-timeout 10 --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
         --out "$out" --run tests/hil/daemon_hang.sh)
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
