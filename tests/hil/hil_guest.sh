@@ -123,7 +123,7 @@ await_ready() {
   [ "$ready_s" -gt 0 ] || ready_s=60
   wait_for_line "$work/daemon.log" "holding [^ ]+ -?[0-9]" "$ready_s"
   read -r now_s _ </proc/uptime
-  say "daemon ready (holding) $((${now_s%.*} - daemon_started_s)) s after its start (deadline $ready_s s; guest ${VCAN_SLOWDOWN:-?}x slower than the host)"
+  say "daemon ready (holding) $((${now_s%.*} - daemon_started_s)) s after its start (deadline $ready_s s; guest ${VCAN_SLOWDOWN:-?}x slower than natively)"
 }
 
 # The whole set-up of a daemon run: bus capture, LCM log, the simulator (with arguments "$@") and
