@@ -30,6 +30,8 @@ daemon_timeout_s=300
 # tools/vcan-vm to the guest's measured speed (docs/testing.md, "Guest speed and start-up"): in the
 # guest it has taken 1.0-1.55 times the calibration's slowdown, so 3 s leaves it twice that.
 daemon_start_s=3
+# The hang test's script limit beyond that allowance: the daemon is up, the script then hangs.
+hang_script_s=10
 
 fail() { echo "run_hil: FAIL ($1): ${*:2}" >&2; exit 1; }
 
@@ -79,7 +81,7 @@ args_for() {
         --out "$out" --run "tests/hil/$1.sh")
       ;;
     daemon_hang)
-      args=(--auto --timeout 150 --script-timeout 10 --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+      args=(--auto --timeout 150 --script-timeout "$hang_script_s" --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
         --out "$out" --run tests/hil/daemon_hang.sh)
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
@@ -200,6 +202,14 @@ case $1 in
     grep -q "cyber-plannerd: robot" "$out/daemon.log" || fail daemon_hang "the daemon's log did not reach the host"
     grep -Eq "^task [0-9]+/[0-9]+ cyber-plannerd state" "$out/timeout-tasks.txt" ||
       fail daemon_hang "timeout-tasks.txt does not list the daemon's threads"
+    # The daemon was ready before the hang, and the script's limit grew by the start-up allowance
+    # (docs/testing.md, "Guest speed and start-up").
+    grep -q "daemon_hang: daemon ready (holding)" "$out/script.log" || fail daemon_hang "the daemon's readiness is not in script.log"
+    allowance=$(sed -n 's/^vcan-vm: guest speed: .*start-up allowance \([0-9]*\) s$/\1/p' "$log")
+    [[ -n $allowance ]] || fail daemon_hang "no 'guest speed' line with the start-up allowance"
+    ((allowance >= 30)) || fail daemon_hang "start-up allowance $allowance s, under its 30 s floor"
+    grep -q "script timed out after $((hang_script_s + allowance)) s" "$log" ||
+      fail daemon_hang "the script's limit is not $hang_script_s s plus the $allowance s allowance"
     ;;
 esac
 echo "run_hil: $1 passed"
