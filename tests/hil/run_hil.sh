@@ -28,7 +28,7 @@ log=$build/hil/$1.log
 daemon_timeout_s=300
 # The daemon's start-up with the reference robot (its grids: 0.97 s natively) on top, scaled by
 # tools/vcan-vm to the guest's measured speed (docs/testing.md, "Guest speed and start-up"): in the
-# guest, beside the simulator, it has taken up to 3.1 times that; 8 s leaves it more than twice.
+# guest, beside the simulator, it has taken up to 3.6 times that; 8 s leaves it more than twice.
 # Unused, it costs nothing: the watchdog gives the rest back once the daemon is ready.
 daemon_start_s=8
 # The hang test's script limit once the daemon is ready (the watchdog gives back the rest of the
