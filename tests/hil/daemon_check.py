@@ -723,9 +723,10 @@ def note_retries(c, run):
     daemon took them in late."""
     for request_id in run.scenario.get("retry", []):
         final = run.final_status(int(request_id))
-        when = final["utime"] * 1e-6 if final else None
+        # Only cyber-goal's output has it when lcm-logger missed the message: no time then.
+        when = final["utime"] * 1e-6 if final and "utime" in final else None
         if when is None:
-            c.note(f"request {request_id} was sent again (no final status recorded)")
+            c.note(f"request {request_id} was sent again (no final status recorded with its time)")
             continue
         stall = guest_stall_s(run, when - 0.6, when)
         gap = hil.longest_gap([f.t for f in run.heartbeats], when - 0.6, when)

@@ -107,18 +107,36 @@ start_plant() {
 
 start_daemon() {
   step "starting cyber-plannerd"
+  read -r daemon_started_s _ </proc/uptime
+  daemon_started_s=${daemon_started_s%.*}
   cyber-plannerd --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" >"$work/daemon.log" 2>&1 &
   daemon=$!
 }
 
+# Waits until the daemon takes goals: its first hold, once it has a state and the robot's enabled
+# heartbeat (a goal sent before it is refused; its READY=1 comes earlier). Its start-up runs many
+# times slower in the emulated guest and slower still on a busy host, so the deadline is
+# tools/vcan-vm's start-up allowance, scaled to the guest's measured speed (docs/testing.md,
+# "Guest speed and start-up"); 60 s without one.
+await_ready() {
+  ready_s=${VCAN_START_S:-0}
+  [ "$ready_s" -gt 0 ] || ready_s=60
+  wait_for_line "$work/daemon.log" "holding [^ ]+ -?[0-9]" "$ready_s"
+  # The start-up is over: tools/vcan-vm's watchdog gives back the rest of the allowance.
+  [ -z "${VCAN_STARTED_FILE:-}" ] || : >"$VCAN_STARTED_FILE"
+  read -r now_s _ </proc/uptime
+  say "daemon ready (holding) $((${now_s%.*} - daemon_started_s)) s after its start (deadline $ready_s s; guest ${VCAN_SLOWDOWN:-?}x slower than natively)"
+}
+
 # The whole set-up of a daemon run: bus capture, LCM log, the simulator (with arguments "$@") and
-# the daemon; finish and stop_all stop them.
+# the daemon, ready for goals; finish and stop_all stop them.
 start_system() {
   start_bus_capture
   start_lcm_log
   start_plant "$@"
   start_daemon
   pids="$daemon $plant $logger $dump"
+  await_ready
 }
 
 # Injects fault KIND now.

@@ -26,6 +26,14 @@ log=$build/hil/$1.log
 # One VM run of a daemon case, boot included: its scripts take 15-70 s in the emulated guest; the
 # limit allows for a guest several times slower than that (docs/testing.md).
 daemon_timeout_s=300
+# The daemon's start-up with the reference robot (its grids: 0.97 s natively) on top, scaled by
+# tools/vcan-vm to the guest's measured speed (docs/testing.md, "Guest speed and start-up"): in the
+# guest, beside the simulator, it has taken up to 3.6 times that; 8 s leaves it more than twice.
+# Unused, it costs nothing: the watchdog gives the rest back once the daemon is ready.
+daemon_start_s=8
+# The hang test's script limit once the daemon is ready (the watchdog gives back the rest of the
+# allowance then): the script hangs right after.
+hang_script_s=10
 
 fail() { echo "run_hil: FAIL ($1): ${*:2}" >&2; exit 1; }
 
@@ -67,15 +75,15 @@ args_for() {
         --out "$out" --run tests/hil/plant_sim.sh)
       ;;
     daemon_motion)
-      args=(--auto --timeout "$daemon_timeout_s" "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml"
+      args=(--auto --timeout "$daemon_timeout_s" --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-relaxed.toml:robot.toml"
         --out "$out" --run tests/hil/daemon_motion.sh)
       ;;
     daemon_faults | daemon_link_down)
-      args=(--auto --timeout "$daemon_timeout_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+      args=(--auto --timeout "$daemon_timeout_s" --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
         --out "$out" --run "tests/hil/$1.sh")
       ;;
     daemon_hang)
-      args=(--auto --timeout 150 --script-timeout 40 "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
+      args=(--auto --timeout 150 --script-timeout "$hang_script_s" --start-allowance "$daemon_start_s" "${daemon_bins[@]}" --file "$build/hil/robot-slow.toml:robot.toml"
         --out "$out" --run tests/hil/daemon_hang.sh)
       ;;
     *) echo "run_hil: unknown case '$1'" >&2; exit 2 ;;
@@ -196,6 +204,14 @@ case $1 in
     grep -q "cyber-plannerd: robot" "$out/daemon.log" || fail daemon_hang "the daemon's log did not reach the host"
     grep -Eq "^task [0-9]+/[0-9]+ cyber-plannerd state" "$out/timeout-tasks.txt" ||
       fail daemon_hang "timeout-tasks.txt does not list the daemon's threads"
+    # The daemon was ready before the hang, under the start-up allowance, and the watchdog then
+    # allowed the script its own limit (docs/testing.md, "Guest speed and start-up").
+    grep -q "daemon_hang: daemon ready (holding)" "$out/script.log" || fail daemon_hang "the daemon's readiness is not in script.log"
+    allowance=$(sed -n 's/^vcan-vm: guest speed: .*start-up allowance \([0-9]*\) s$/\1/p' "$log")
+    [[ -n $allowance ]] || fail daemon_hang "no 'guest speed' line with the start-up allowance"
+    ((allowance >= 30)) || fail daemon_hang "start-up allowance $allowance s, under its 30 s floor"
+    grep -q "script still running $hang_script_s s after its start-up" "$log" ||
+      fail daemon_hang "the watchdog did not stop the script $hang_script_s s after the daemon was ready"
     ;;
 esac
 echo "run_hil: $1 passed"
