@@ -5,7 +5,10 @@
 
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,6 +26,16 @@ namespace {
 int fail(int code, const std::string& message) {
   std::cerr << "cyber-plannerd: " << message << "\n";
   return code;
+}
+
+// The grid cache's folder: systemd's CacheDirectory= (the unit's CacheDirectory=cyber-planner sets
+// $CACHE_DIRECTORY, the first of a ':'-separated list); none when started without it.
+std::optional<std::filesystem::path> gridCacheDir() {
+  const char* dirs = std::getenv("CACHE_DIRECTORY");
+  if (dirs == nullptr) return std::nullopt;
+  const std::string first = std::string(dirs).substr(0, std::string(dirs).find(':'));
+  if (first.empty()) return std::nullopt;
+  return std::filesystem::path(first);
 }
 
 }  // namespace
@@ -60,7 +73,7 @@ int main(int argc, char** argv) {
     return fail(2, "log_level '" + options.settings.log_level + "' is not a spdlog level");
   }
 
-  auto planning = daemon::makeMotionPlannerService(config.robot);
+  auto planning = daemon::makeMotionPlannerService(config.robot, gridCacheDir());
   if (!planning) return fail(1, "planner set-up failed: " + planning.error().message);
   try {
     daemon::io::Daemon daemon(config.robot, options, *planning.value(), &signals);
