@@ -135,7 +135,8 @@ GridCacheFile gridCacheFile(const std::filesystem::path& dir, const RobotModel& 
 }
 
 GridCacheResult<std::vector<CSpaceGrid>> readGridCache(const GridCacheFile& file, const RobotModel& model) {
-  Fd in{::open(file.path.c_str(), O_RDONLY | O_CLOEXEC)};
+  // O_NONBLOCK: a pipe in the file's place must not stop the start-up (regular files ignore it).
+  Fd in{::open(file.path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK)};
   if (in.fd < 0) return errno == ENOENT ? GridCacheStatus::kMissing : GridCacheStatus::kUnreadable;
   struct stat status {};
   if (::fstat(in.fd, &status) != 0 || !S_ISREG(status.st_mode)) return GridCacheStatus::kUnreadable;

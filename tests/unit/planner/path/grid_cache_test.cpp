@@ -6,6 +6,7 @@
 
 #include "path/grid_cache.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstring>
@@ -168,10 +169,13 @@ TEST_F(GridCache, NodesNoBuiltGridHasAreCorruptEvenWithTheirChecksum) {
   EXPECT_FALSE(CSpaceGrid::fromPackedNodes(grid.firstAxis(), grid.secondAxis(), fewer, model(), 0).has_value());
 }
 
-TEST_F(GridCache, AFolderInPlaceOfTheFileIsUnreadable) {
+TEST_F(GridCache, AFolderOrAPipeInPlaceOfTheFileIsUnreadable) {
   fs::create_directories(file_.path);
   EXPECT_EQ(readStatus(), GridCacheStatus::kUnreadable);
   EXPECT_EQ(writeGridCache(file_, drawnGrids()).status(), GridCacheStatus::kUnwritable);
+  fs::remove(file_.path);
+  ASSERT_EQ(::mkfifo(file_.path.c_str(), 0600), 0);
+  EXPECT_EQ(readStatus(), GridCacheStatus::kUnreadable) << "and without waiting for a writer";
 }
 
 // Root may write anywhere, so the folder that cannot be made is one under a regular file.
