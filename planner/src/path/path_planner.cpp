@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <future>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -96,9 +97,14 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const Join
       grids->build_ms[index] = msSince(t0);
     }
   };
-  std::future<void> helper = std::async(std::launch::async, build_sets);
+  std::future<void> helper;
+  try {
+    helper = std::async(std::launch::async, build_sets);
+  } catch (const std::system_error&) {
+    // No thread to be had (a process limit): this one builds every set.
+  }
   build_sets();
-  helper.get();
+  if (helper.valid()) helper.get();
   grids_ = std::move(grids);
 }
 
