@@ -4,6 +4,9 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,6 +32,18 @@ std::string poseText(const cyber::planner::RobotModel& robot, const cyber::tools
                         cyber::planner::unitName(robot.joints[j].type));
   }
   return text + ")";
+}
+
+// The grid cache's folder (docs/design.md, "The grid cache"): $XDG_CACHE_HOME/cyber-planner, or
+// ~/.cache/cyber-planner (the XDG default); none without a home. A folder that cannot be written
+// only costs the time: the planner builds its grids as without one.
+std::optional<std::filesystem::path> gridCacheDir() {
+  const char* xdg = std::getenv("XDG_CACHE_HOME");
+  // The XDG specification ignores a relative path.
+  if (xdg != nullptr && xdg[0] == '/') return std::filesystem::path(xdg) / "cyber-planner";
+  const char* home = std::getenv("HOME");
+  if (home == nullptr || home[0] != '/') return std::nullopt;
+  return std::filesystem::path(home) / ".cache" / "cyber-planner";
 }
 
 }  // namespace
@@ -61,7 +76,7 @@ int main(int argc, char** argv) {
   if (!to) return fail(2, "--to: " + to.error().message);
 
   // Only the grids this move needs: the start-up is most of a cyber-plan run.
-  auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m});
+  auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m}, gridCacheDir());
   if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().message);
 
   planner::PlanRequest request;

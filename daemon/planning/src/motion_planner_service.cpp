@@ -65,8 +65,9 @@ class MotionPlannerService final : public PlanningService {
 
 }  // namespace
 
-planner::Result<std::unique_ptr<PlanningService>> makeMotionPlannerService(const planner::RobotModel& robot) {
-  auto planner = planner::MotionPlanner::create(robot);
+planner::Result<std::unique_ptr<PlanningService>> makeMotionPlannerService(
+    const planner::RobotModel& robot, const std::optional<std::filesystem::path>& cache_dir) {
+  auto planner = planner::MotionPlanner::create(robot, planner::GridSelection{}, cache_dir);
   if (!planner) return planner.error();
   return std::unique_ptr<PlanningService>(std::make_unique<MotionPlannerService>(std::move(planner).value()));
 }

@@ -16,6 +16,7 @@
 #include "motion/scene_planners.hpp"
 #include "motion/timed_plan.hpp"
 #include "path/clearance_escape.hpp"
+#include "path/grid_cache.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -102,7 +103,8 @@ Result<const PathPlanner*> pathsFor(const RobotModel& robot, const std::vector<s
 
 }  // namespace
 
-Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection) {
+Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection,
+                                            const std::optional<std::filesystem::path>& cache_dir) {
   if (model.scenes.empty()) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no scene");
   bool has_polygon = false;
   for (const LinkGeometry& link : model.links) has_polygon = has_polygon || !link.polygons.empty();
@@ -121,7 +123,10 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridS
     if (selection.scene >= 0 && selection.scene != static_cast<int>(index)) continue;
     const bool moves = !scene.obstacles.empty();
     const std::optional<double>& only = selection.scene_offset_m;
-    if (!only || *only == 0.0 || !moves) bands.emplace_back(model, scene);
+    const auto scene_index = static_cast<int>(index);
+    if (!only || *only == 0.0 || !moves) {
+      bands.push_back(cachedPathPlanner(model, scene_index, 0, JointRange{}, cache_dir).planner);
+    }
     const JointRange& range = scene.offset_range_m;
     const double span = range.max - range.min;
     if (span <= 0.0 || !moves) continue;
@@ -130,7 +135,7 @@ Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridS
       const JointRange band{range.min + span * k / count,
                             k + 1 == count ? range.max : range.min + span * (k + 1) / count};
       if (only && (*only == 0.0 || !band.contains(*only))) continue;
-      bands.emplace_back(model, scene, band);
+      bands.push_back(cachedPathPlanner(model, scene_index, k + 1, band, cache_dir).planner);
       if (only) break;
     }
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "math/roundoff.hpp"
@@ -163,6 +164,42 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
     }
   }
   grid.labelRegions();  // the checks above may have split regions
+  return grid;
+}
+
+std::vector<std::uint8_t> CSpaceGrid::packedNodes() const {
+  std::vector<std::uint8_t> out(steps_);
+  for (size_t c = 0; c < out.size(); ++c) {
+    if (blocked_[c] != 0) out[c] |= kPackedBlocked;
+  }
+  return out;
+}
+
+std::optional<CSpaceGrid> CSpaceGrid::fromPackedNodes(GridAxis first, GridAxis second,
+                                                      std::span<const std::uint8_t> nodes, const RobotModel& model,
+                                                      int checked_steps) {
+  if (nodes.size() != static_cast<size_t>(first.count) * static_cast<size_t>(second.count)) return std::nullopt;
+  std::vector<std::uint8_t> blocked(nodes.size());
+  for (size_t c = 0; c < nodes.size(); ++c) blocked[c] = (nodes[c] & kPackedBlocked) != 0 ? 1 : 0;
+  // What the constructor derives from the blocked nodes, but the regions, which depend on the
+  // steps: every step between free nodes, of which build() took the checked ones out.
+  CSpaceGrid grid;
+  grid.first_ = first;
+  grid.second_ = second;
+  grid.blocked_ = std::move(blocked);
+  grid.metric_ = model.planner.metric;
+  grid.potential_weight_ = model.planner.search.potential_weight;
+  grid.allowAllStepsBetweenFreeNodes();
+  grid.computePotential(model.planner.search.potential_range);
+  grid.findHoles();
+  for (size_t c = 0; c < nodes.size(); ++c) {
+    const auto steps = static_cast<std::uint8_t>(nodes[c] & ~kPackedBlocked);
+    if ((steps & ~grid.steps_[c]) != 0) return std::nullopt;
+    grid.steps_[c] = steps;
+  }
+  grid.clearance_m_ = model.clearance_m;
+  grid.checked_steps_ = checked_steps;
+  grid.labelRegions();
   return grid;
 }
 

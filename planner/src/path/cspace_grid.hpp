@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include "cyber/planner/collision_world.hpp"
@@ -49,6 +51,16 @@ class CSpaceGrid {
   // CollisionWorld::lipschitzBound, and every point of the step is within half of it of an end),
   // otherwise decided by a continuous segment check. Only nodes near obstacles need that check.
   static CSpaceGrid build(const CollisionWorld& world, const RobotModel& model);
+
+  // What a grid cache stores of a built grid (path/grid_cache.hpp): a byte per node, the node's
+  // forward steps (stepFree's bits) and kPackedBlocked when it is blocked; the rest is derived.
+  static constexpr std::uint8_t kPackedBlocked = 0x80;
+  [[nodiscard]] std::vector<std::uint8_t> packedNodes() const;
+  // The grid whose packedNodes() these are, for a model with these axes and settings, made as
+  // build() makes it from its nodes and steps. nullopt for bytes no built grid has: a wrong count,
+  // unknown bits, or a step that leaves the grid or touches a blocked node.
+  static std::optional<CSpaceGrid> fromPackedNodes(GridAxis first, GridAxis second, std::span<const std::uint8_t> nodes,
+                                                   const RobotModel& model, int checked_steps);
 
   [[nodiscard]] int cellCount() const { return first_.count * second_.count; }
   [[nodiscard]] int cell(int i_first, int i_second) const { return i_first * second_.count + i_second; }

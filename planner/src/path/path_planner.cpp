@@ -1,10 +1,13 @@
 #include "path/path_planner.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <future>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <utility>
 
 #include <fmt/format.h>
@@ -76,24 +79,49 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const Join
     : model_(model), scene_(scene), band_(band) {
   const int sets = model_.pieceSetCount();
   auto grids = std::make_shared<Grids>();
-  worlds_.reserve(static_cast<size_t>(sets));
-  grids->grids.reserve(static_cast<size_t>(sets));
+  grids->grids.resize(static_cast<size_t>(sets));
   grids->build_ms.assign(static_cast<size_t>(sets), 0.0);
   const double centre = 0.5 * (band.min + band.max);
-  for (int set = 0; set < sets; ++set) {
-    const Clock::time_point t0 = Clock::now();
-    const HeldPieces pieces = HeldPieces::fromIndex(set);
-    // A band wider than one offset searches the world swept over it; its checks use one offset.
-    if (band.max > band.min) {
-      grids->grids.push_back(CSpaceGrid::build(CollisionWorld(model_, scene_, pieces, band), model_));
-      worlds_.emplace_back(model_, scene_, pieces, centre);
-    } else {
-      worlds_.emplace_back(model_, scene_, pieces, centre);
-      grids->grids.push_back(CSpaceGrid::build(worlds_.back(), model_));
+  worlds_.reserve(static_cast<size_t>(sets));
+  for (int set = 0; set < sets; ++set) worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), centre);
+  // The sets' grids are independent (const worlds, no shared state): two threads take the next
+  // set until none is left, which halves the first start on a two-core controller
+  // (docs/performance.md, "Start-up").
+  std::atomic<int> next{0};
+  const auto build_sets = [&] {
+    for (int set = next++; set < sets; set = next++) {
+      const Clock::time_point t0 = Clock::now();
+      const auto index = static_cast<size_t>(set);
+      // A band wider than one offset searches the world swept over it; its checks use one offset.
+      grids->grids[index] =
+          band.max > band.min
+              ? CSpaceGrid::build(CollisionWorld(model_, scene_, HeldPieces::fromIndex(set), band), model_)
+              : CSpaceGrid::build(worlds_[index], model_);
+      grids->build_ms[index] = msSince(t0);
     }
-    grids->build_ms[static_cast<size_t>(set)] = msSince(t0);
+  };
+  std::future<void> helper;
+  try {
+    helper = std::async(std::launch::async, build_sets);
+  } catch (const std::system_error&) {
+    // No thread to be had (a process limit): this one builds every set.
   }
+  build_sets();
+  if (helper.valid()) helper.get();
   grids_ = std::move(grids);
+}
+
+PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band,
+                         std::vector<CSpaceGrid> grids)
+    : model_(model), scene_(scene), band_(band) {
+  auto shared = std::make_shared<Grids>();
+  shared->build_ms.assign(grids.size(), 0.0);
+  shared->grids = std::move(grids);
+  const double centre = 0.5 * (band.min + band.max);
+  for (int set = 0; set < model_.pieceSetCount(); ++set) {
+    worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), centre);
+  }
+  grids_ = std::move(shared);
 }
 
 PathPlanner PathPlanner::atOffset(double scene_offset_m) const {

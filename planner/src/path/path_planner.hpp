@@ -58,6 +58,9 @@ class PathPlanner {
  public:
   // `band`: the scene offsets the grids serve; {0, 0} (the scene as drawn) by default.
   PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band = {});
+  // The same with grids built before (the grid cache's, path/grid_cache.hpp), one per held set by
+  // HeldPieces::index(); their build times are 0 (StageTimesMs::grid: none was built).
+  PathPlanner(const RobotModel& model, const Scene& scene, const JointRange& band, std::vector<CSpaceGrid> grids);
   // The same grids with the worlds at scene_offset_m (inside the band). Copies the model and
   // makes the worlds: a few microseconds, no grid is built.
   [[nodiscard]] PathPlanner atOffset(double scene_offset_m) const;

@@ -6,6 +6,7 @@
 // (docs/algorithm.md, "2.1 Grid and potential").
 // plan() is const and keeps no state between calls, so several threads may share one planner.
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -105,8 +106,11 @@ class PathPlanner;  ///< the path stage of one scene (internal)
 class MotionPlanner {
  public:
   /// Builds the path planners (and grids) of every scene. Fails with kInvalidInput when the model
-  /// has no scene or no arm geometry.
-  static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = GridSelection{});
+  /// has no scene or no arm geometry. `cache_dir`, when set, is the grid cache's folder
+  /// (docs/design.md, "The grid cache"): grids are read from it when their files check, else
+  /// built and stored there; a folder that cannot be written only costs the time.
+  static Result<MotionPlanner> create(const RobotModel& model, const GridSelection& selection = GridSelection{},
+                                      const std::optional<std::filesystem::path>& cache_dir = std::nullopt);
 
   /// The fastest collision-free motion from the request's start (at rest or moving) to its goal,
   /// ending at rest; or why there is none (PlanStatus).
