@@ -10,7 +10,7 @@ namespace cyber::daemon::io {
 
 namespace {
 
-// ARM_TRAJECTORY stays below 60 kB encoded (docs/lcm.md, "arm_trajectory_t (ARM_TRAJECTORY, out)"):
+// ARM_TRAJECTORY stays below 60 kB encoded (docs/lcm.md, its "Size cap"):
 // the fingerprint and the fields before the arrays take 53 bytes; a sample is t_s and three rows
 // (position, velocity, volts) per joint, 8 bytes each.
 constexpr int kTrajectoryBudgetBytes = 60'000;
