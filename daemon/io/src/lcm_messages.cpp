@@ -116,7 +116,8 @@ cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const 
     const JointSetpoints s = trajectory.at(t);
     const auto i = static_cast<size_t>(k);
     message.t_s[i] = t;
-    for (int j = 0; j < num_joints; ++j) {
+    // Rows the setpoints do not have (a model of fewer joints than num_joints) stay 0.
+    for (int j = 0; j < std::min(num_joints, static_cast<int>(s.position.size())); ++j) {
       const auto row = static_cast<size_t>(j);
       message.position[row][i] = s.position[j];
       message.velocity[row][i] = s.velocity[j];
