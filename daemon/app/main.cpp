@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
   }
   daemon::io::DaemonOptions options;
   options.settings = config.daemon;
+  options.poses = config.poses;
   if (command.lcm_url) options.settings.lcm_url = *command.lcm_url;
   if (command.can_interface) {
     if (*command.can_interface == "none") {

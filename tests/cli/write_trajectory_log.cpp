@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   m.dt_s = 0.01;
   m.num_samples = 101;
   // position, velocity and volts are [joint][sample].
+  m.num_joints = 2;  // the reference robot's elevator and arm
   for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);
   for (int k = 0; k < m.num_samples; ++k) {
     const double t = k * m.dt_s;

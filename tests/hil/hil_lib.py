@@ -10,6 +10,7 @@ import csv
 import os
 import re
 import bisect
+import math
 import struct
 
 SOURCE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -208,10 +209,12 @@ class LcmType:
                     (value,) = struct.unpack_from(">" + LCM_PRIMITIVES[type_name], data, at)
                     values.append(bool(value) if type_name == "boolean" else value)
                     at += struct.calcsize(">" + LCM_PRIMITIVES[type_name])
-            # A [2][num_samples] member comes back as two rows, as lcm-gen's nested vectors.
-            for size in reversed(dims[1:]):
-                n = int(size) if size.isdigit() else out[size]
-                values = [values[i:i + n] for i in range(0, len(values), n)] if n else [[] for _ in values]
+            # A [num_joints][num_samples] member comes back as num_joints rows (each of
+            # num_samples, maybe none), as lcm-gen's nested vectors.
+            sizes = [int(size) if size.isdigit() else out[size] for size in dims]
+            for k in range(len(sizes) - 1, 0, -1):
+                n, rows = sizes[k], math.prod(sizes[:k])
+                values = [values[i * n:(i + 1) * n] for i in range(rows)]
             out[name] = values if dims else values[0]
         if at != len(data):
             raise ValueError(f"{self.name}: {len(data) - at} bytes after the last member")

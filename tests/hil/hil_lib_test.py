@@ -7,8 +7,9 @@ usage: hil_lib_test.py GENERATED_CPP_DIR WRITE_TRAJECTORY_LOG"""
 import os
 import re
 import sys
-import tempfile
+import struct
 import subprocess
+import tempfile
 import unittest
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -82,6 +83,7 @@ class LcmMessages(unittest.TestCase):
             hil.decode_trajectory(events[0])
         t = hil.decode_trajectory(events[1])
         self.assertEqual((t["request_id"], t["num_samples"], len(t["volts"]), len(t["volts"][1])), (42, 101, 2, 101))
+        self.assertEqual(t["num_joints"], 2)
         self.assertAlmostEqual(t["t_s"][100], 1.0)
         self.assertAlmostEqual(t["position"][0][100], 1.2)
         self.assertAlmostEqual(t["position"][1][100], 3.57)
@@ -89,6 +91,16 @@ class LcmMessages(unittest.TestCase):
             hil.decode_arm_state(events[1])
         with self.assertRaisesRegex(ValueError, "bytes after"):
             hil.decode_trajectory(events[1] + b"\0")
+
+
+    def test_rows_follow_num_joints_even_without_samples(self):
+        # arm_trajectory_t of 3 joints and 0 samples: 3 empty rows, as lcm-gen's nested vectors.
+        fingerprint = hil.lcm_fingerprint(hil.lcm_members("arm_trajectory_t"))
+        data = struct.pack(">Qqqqddbi", fingerprint, 1, 2, 3, 0.0, 0.01, 3, 0)
+        t = hil.decode_trajectory(data)
+        self.assertEqual((t["num_joints"], t["position"], t["volts"]), (3, [[], [], []], [[], [], []]))
+        data = struct.pack(">Qqqqddbi", fingerprint, 1, 2, 3, 0.0, 0.01, 1, 2) + struct.pack(">8d", 0, 0.01, 1, 2, 2, 3, 0.5, 0.5)
+        self.assertEqual(hil.decode_trajectory(data)["velocity"], [[2.0, 3.0]])
 
 
 class Gaps(unittest.TestCase):

@@ -168,9 +168,20 @@ case "$case_name" in
     expect_goal 3 "rejected: invalid input: num_pieces = 5 is outside 0..4" --to 0.58,2.97 --pieces a,b,c,d,e --id 29
     expect_goal 3 "rejected: invalid input: scene_offset_m = 0.5 m is outside scene reef's offset range" \
       --to 0.58,2.97 --scene reef --scene-offset 0.5 --id 30
+    # The message's joint count must be the robot's (docs/lcm.md, "Joints by index").
+    expect_goal 3 "rejected: invalid input: num_joints = 3 but this robot has 2 joints (elevator, arm)" \
+      --to 0.5,1.0,0.0 --id 32
+    # A pose name the held set does not declare, resolved by the daemon's own configuration
+    # (docs/lcm.md, "Named goals"): the reason lists the set's poses.
+    expect_goal 3 'rejected: invalid input: no pose "HOLD_HIGH" for the held set "coral" (its poses: STOW, INTAKE, L1, L2, L3, L4, NET)' \
+      --to HOLD_HIGH --pieces coral --id 33
     # Still serving, and a goal at an offset is planned there.
     expect_goal 0 "request 26 done" --to 0.58,2.97 --id 26
     expect_goal 0 "request 31 done" --to 0.20,1.57 --scene reef --scene-offset 0.2 --id 31
+    # A named goal, sent as its name without --config: [poses.coral] L3 of the daemon's config.
+    expect_goal 0 "request 34 done" --to L3 --pieces coral --id 34
+    [ "$(status_value num_joints)" = 2 ] || fail "ARM_DAEMON_STATUS num_joints: $(status_value num_joints)"
+    [ "$(status_value joint_names)" = "elevator,arm" ] || fail "joint_names: $(status_value joint_names)"
     ;;
 
   flood)

@@ -1,7 +1,7 @@
 // cyber-test-peer: the other side of cyber-plannerd for the integration tests (python3 here has
 // no lcm module). One subcommand per job:
-//   state   --at E,A [--rate HZ] [--seconds S]   publish ARM_STATE, following the ARM_SETPOINT echo
-//   flood   --to E,A --to E,A --count N [--rate HZ] [--first-id N]   publish exactly N goals, paced
+//   state   --at Q0,Q1,... [--rate HZ] [--seconds S]   publish ARM_STATE, following the ARM_SETPOINT echo
+//   flood   --to Q0,Q1,... --to ... --count N [--rate HZ] [--first-id N]   publish exactly N goals, paced
 //   garbage [--count N]                           undecodable bytes on ARM_GOAL and ARM_STATE
 //   watch   --first-id N --count K [--timeout S] [--rcvbuf-bytes B]   wait until each id has one final
 //           status; print tallies, what was seen of each id without one, and the kernel's drops on
@@ -43,7 +43,7 @@ volatile std::sig_atomic_t g_stop = 0;
 struct Args {
   std::string command;
   std::string lcm_url = cyber::config::kDefaultLcmUrl;  // the daemon's default (docs/lcm.md)
-  std::vector<std::pair<double, double>> targets;       // --to / --at
+  std::vector<std::vector<double>> targets;             // --to / --at: one value per joint, chain order
   double rate_hz = 100.0;
   double seconds = 1e9;
   long long first_id = 1;
@@ -76,9 +76,16 @@ bool parse(int argc, char** argv, Args& args) {
     return std::string();
   });
   const cyber::cli::ValueHandler target = [&](const std::string& value) -> std::string {
-    const auto pair = cyber::cli::parseNumberPair(value);
-    if (!pair) return "expects E,A, got '" + value + "'";
-    args.targets.emplace_back((*pair)[0], (*pair)[1]);
+    std::vector<double> values;
+    for (size_t from = 0;;) {
+      const size_t comma = value.find(',', from);
+      const auto number = cyber::cli::parseNumber(std::string_view(value).substr(from, comma - from));
+      if (!number) return "expects Q0,Q1,..., got '" + value + "'";
+      values.push_back(*number);
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+    args.targets.push_back(std::move(values));
     return "";
   };
   parser.option("--to", target);
@@ -122,23 +129,22 @@ void paced(lcm::LCM& lcm, double rate_hz, double seconds, Step step, long long m
 }
 
 struct Follower {
-  double q0 = 0.0;  // joint 0, joint 1 as last commanded
-  double q1 = 0.0;
+  std::vector<double> q;  // each joint as last commanded
   void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
-    q0 = m->position[0];
-    q1 = m->position[1];
+    if (m->position.size() == q.size()) q = m->position;  // the daemon's joint count is --at's
   }
 };
 
 int runState(lcm::LCM& lcm, const Args& args) {
   if (args.targets.size() != 1) return 2;
-  Follower follower{args.targets[0].first, args.targets[0].second};
+  Follower follower{args.targets[0]};
   lcm.subscribe("ARM_SETPOINT", &Follower::onSetpoint, &follower);
   paced(lcm, args.rate_hz, args.seconds, [&](long long) {
     cyberplanner::arm_state_t state{};
     state.utime = nowMicros();
-    state.position[0] = follower.q0;
-    state.position[1] = follower.q1;
+    state.num_joints = static_cast<std::int8_t>(follower.q.size());
+    state.position = follower.q;
+    state.velocity.assign(follower.q.size(), 0.0);
     lcm.publish("ARM_STATE", &state);
   });
   return 0;
@@ -154,8 +160,8 @@ int runFlood(lcm::LCM& lcm, const Args& args) {
         goal.utime = nowMicros();
         goal.request_id = args.first_id + k;
         const auto& target = args.targets[static_cast<size_t>(k) % args.targets.size()];
-        goal.position[0] = target.first;
-        goal.position[1] = target.second;
+        goal.num_joints = static_cast<std::int8_t>(target.size());
+        goal.position = target;
         lcm.publish("ARM_GOAL", &goal);
         ++sent;
       },
@@ -299,7 +305,10 @@ int runStatus(lcm::LCM& lcm, const Args& args) {
   while (!catcher.got && Clock::now() < end) lcm.handleTimeout(50);
   if (!catcher.got) return 1;
   const auto& s = catcher.status;
-  std::printf("utime=%lld\n", static_cast<long long>(s.utime));
+  std::printf("utime=%lld\nnum_joints=%d\n", static_cast<long long>(s.utime), s.num_joints);
+  std::string names;
+  for (const std::string& name : s.joint_names) names.append(names.empty() ? "" : ",").append(name);
+  std::printf("joint_names=%s\n", names.c_str());
   std::printf(
       "mode=%d\nrobot_enabled=%d\nmotion_allowed=%d\nactive_request_id=%lld\nstate_age_ms=%.1f\n"
       "goals_received=%lld\nplans_succeeded=%lld\nplans_failed=%lld\nframes_sent=%lld\ncan_errors=%lld\n"

@@ -132,6 +132,7 @@ struct Peer {
   long long foreign_finals = 0;  // finals for ids this run never sent
 
   void onSetpoint(const lcm::ReceiveBuffer*, const std::string&, const cyberplanner::arm_setpoint_t* m) {
+    if (m->num_joints != 2) return;  // the reference robot's elevator and arm (docs/lcm.md, "Joints by index")
     q0 = m->position[0];
     q1 = m->position[1];
   }
@@ -157,8 +158,9 @@ struct Peer {
 bool publishState(lcm::LCM& lcm, const Peer& peer) {
   cyberplanner::arm_state_t state{};
   state.utime = wallMicros();
-  state.position[0] = peer.q0;
-  state.position[1] = peer.q1;
+  state.num_joints = 2;
+  state.position = {peer.q0, peer.q1};
+  state.velocity = {0.0, 0.0};
   return lcm.publish("ARM_STATE", &state) == 0;
 }
 
@@ -189,8 +191,8 @@ class GoalSender {
     const auto& poses = cyber::test::publicPoses("none");
     const auto& pose = poses[std::uniform_int_distribution<size_t>(0, poses.size() - 1)(random_)];
     cyberplanner::arm_goal_t goal{};
-    goal.position[0] = pose.q[0];
-    goal.position[1] = pose.q[1];
+    goal.num_joints = 2;
+    goal.position = {pose.q[0], pose.q[1]};
     switch (kind) {
       case GoalKind::kPose: publish(goal); return uniform(1.0, 4.0);
       case GoalKind::kMidMotion: publish(goal); return uniform(0.1, 0.6);  // the next one lands mid-motion

@@ -42,8 +42,8 @@ cyberplanner::arm_goal_t goal(std::int64_t utime) {
   cyberplanner::arm_goal_t m{};
   m.utime = utime;
   m.request_id = kRequestId;
-  m.position[0] = kElevatorM;
-  m.position[1] = 1.25;
+  m.num_joints = 2;
+  m.position = {kElevatorM, 1.25};
   m.num_pieces = 1;
   m.pieces = {"coral"};
   m.scene_name = "reef";
@@ -54,8 +54,9 @@ cyberplanner::arm_goal_t goal(std::int64_t utime) {
 cyberplanner::arm_state_t state(std::int64_t utime) {
   cyberplanner::arm_state_t m{};
   m.utime = utime;
-  m.position[0] = kElevatorM;
-  m.position[1] = 0.5;
+  m.num_joints = 2;
+  m.position = {kElevatorM, 0.5};
+  m.velocity = {0.0, 0.0};
   return m;
 }
 
@@ -78,6 +79,7 @@ cyberplanner::arm_trajectory_t trajectory(std::int64_t utime) {
   m.duration_s = 0.8;
   m.dt_s = 0.1;
   m.num_samples = 9;
+  m.num_joints = 2;
   for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);  // [joint][sample]
   for (int k = 0; k < m.num_samples; ++k) {
     const double t = k * m.dt_s;
@@ -97,8 +99,11 @@ cyberplanner::arm_setpoint_t setpoint(std::int64_t utime) {
   m.utime = utime;
   m.mode = cyberplanner::arm_setpoint_t::MODE_MOVING;
   m.request_id = kRequestId;
-  m.position[0] = kElevatorM;
-  m.position[1] = 0.75;
+  m.num_joints = 2;
+  m.position = {kElevatorM, 0.75};
+  m.velocity = {0.0, 0.0};
+  m.volts = {0.0, 0.0};
+  m.sequence = {0, 0};
   return m;
 }
 
@@ -108,10 +113,9 @@ cyberplanner::arm_daemon_status_t daemonStatus(std::int64_t utime) {
   m.mode = cyberplanner::arm_daemon_status_t::MODE_MOVING;
   m.active_request_id = kRequestId;
   m.goals_received = 1;
-  m.joint_names[0] = "elevator";
-  m.joint_names[1] = "arm";
-  m.joint_units[0] = "m";
-  m.joint_units[1] = "rad";
+  m.num_joints = 2;
+  m.joint_names = {"elevator", "arm"};
+  m.joint_units = {"m", "rad"};
   return m;
 }
 
@@ -120,14 +124,14 @@ bool isOurs(const cyberplanner::arm_goal_t& m) {
   return m.request_id == kRequestId && m.scene_name == "reef" && m.pieces == std::vector<std::string>{"coral"} &&
          m.scene_offset_m == 0.125;
 }
-bool isOurs(const cyberplanner::arm_state_t& m) { return m.position[0] == kElevatorM; }
+bool isOurs(const cyberplanner::arm_state_t& m) { return m.num_joints == 2 && m.position[0] == kElevatorM; }
 bool isOurs(const cyberplanner::arm_plan_status_t& m) { return m.request_id == kRequestId; }
 bool isOurs(const cyberplanner::arm_trajectory_t& m) {
-  return m.request_id == kRequestId && m.num_samples == 9 && m.position[0].back() == kElevatorM;
+  return m.request_id == kRequestId && m.num_samples == 9 && m.num_joints == 2 && m.position[0].back() == kElevatorM;
 }
 bool isOurs(const cyberplanner::arm_setpoint_t& m) { return m.request_id == kRequestId; }
 bool isOurs(const cyberplanner::arm_daemon_status_t& m) {
-  return m.active_request_id == kRequestId && m.joint_names[1] == "arm" && m.joint_units[0] == "m";
+  return m.active_request_id == kRequestId && m.num_joints == 2 && m.joint_names[1] == "arm" && m.joint_units[0] == "m";
 }
 
 struct Counts {

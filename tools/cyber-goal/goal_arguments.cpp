@@ -9,16 +9,19 @@
 namespace cyber::tools {
 
 namespace {
+// arm_goal_t counts pieces and joints in an int8_t; the daemon judges the counts itself.
 constexpr size_t kMaxSentPieces = 127;
+constexpr size_t kMaxSentJoints = 127;
 }  // namespace
 
 std::string goalUsage() {
-  return "usage: cyber-goal --to J0,J1|NAME [--config FILE] [--pieces NAME[,NAME...]] [--scene NAME]\n"
+  return "usage: cyber-goal --to J0,J1,...|NAME [--config FILE] [--pieces NAME[,NAME...]] [--scene NAME]\n"
          "                  [--scene-offset METRES] [--id N] [--lcm-url URL] [--timeout SECONDS] [--no-wait-daemon]\n"
          "Publishes one ARM_GOAL and prints each ARM_PLAN_STATUS of its request id until the final one.\n"
-         "--to: targets of joint 0 and joint 1 in the config's [[joints]] order, metres (prismatic) or\n"
-         "radians (revolute), or the name of a pose --config FILE (the robot description, read for no other\n"
-         "purpose) gives the held pieces ([poses.SET] tables).\n"
+         "--to: targets of the joints in the config's [[joints]] order, metres (prismatic) or radians\n"
+         "(revolute), or the name of a pose the daemon's configuration gives the held pieces ([poses.SET]\n"
+         "tables), sent as the name; --config FILE (the robot description, read for no other purpose)\n"
+         "checks the name before sending it.\n"
          "--pieces: held game pieces by the config's names (\"none\": none).\n"
          "First waits for cyber-plannerd's ARM_DAEMON_STATUS (unless --no-wait-daemon).\n"
          "--lcm-url defaults to " +
@@ -56,10 +59,10 @@ Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<
   parser.flag("--no-wait-daemon", [&] { out.wait_for_daemon = false; });
   parser.option("--to", [&](const std::string& value) -> std::string {
     const auto target = parsePoseArgument(value, cli::NonFinite::kAccept);
-    if (!target || (target->name.empty() && target->values.size() != out.position.size()))
-      return "expects J0,J1 or a pose NAME, got '" + value + "'";
+    if (!target || target->values.size() > kMaxSentJoints)
+      return "expects J0,J1,... or a pose NAME, got '" + value + "'";
     out.pose_name = target->name;
-    if (target->name.empty()) std::copy(target->values.begin(), target->values.end(), out.position.begin());
+    out.position = target->values;
     have_target = true;
     return "";
   });
@@ -79,14 +82,11 @@ Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<
     return "";
   });
   if (auto decided = parser.parseInto(args, out)) return *decided;
-  if (!have_target) return cli::badUsage("--to J0,J1 or --to NAME is required");
-  if (!out.pose_name.empty() && out.config_path.empty())
-    return cli::badUsage("--to " + out.pose_name + " is a pose name: give --config FILE to look it up");
+  if (!have_target) return cli::badUsage("--to J0,J1,... or --to NAME is required");
   return out;
 }
 
-Result<std::array<double, 2>, cli::ArgumentStatus> goalPosition(const GoalArguments& args,
-                                                                const config::Config& config) {
+Result<std::vector<double>, cli::ArgumentStatus> goalPosition(const GoalArguments& args, const config::Config& config) {
   if (args.pose_name.empty()) return args.position;
   std::string names;
   for (const std::string& piece : args.pieces) names.append(names.empty() ? "" : ",").append(piece);
@@ -94,7 +94,8 @@ Result<std::array<double, 2>, cli::ArgumentStatus> goalPosition(const GoalArgume
   if (!held) return cli::badUsage("--pieces: " + held.error().message);
   const auto q = resolvePose(PoseArgument{args.pose_name, {}}, config, held.value());
   if (!q) return cli::badUsage("--to: " + q.error().message);
-  return std::array<double, 2>{q.value()[0], q.value()[1]};
+  const planner::JointVector& pose = q.value();
+  return std::vector<double>(pose.data(), pose.data() + pose.size());
 }
 
 }  // namespace cyber::tools

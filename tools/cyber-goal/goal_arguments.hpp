@@ -1,7 +1,6 @@
 #pragma once
 // Command line of cyber-goal: send one goal to cyber-plannerd and wait for its final status.
 
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,10 +12,10 @@
 namespace cyber::tools {
 
 struct GoalArguments {
-  std::array<double, 2> position{0.0, 0.0};  // joint 0, joint 1 (config order), m or rad
-  std::string pose_name;                     // --to NAME: a pose of --config's, for the held pieces
-  std::string config_path;                   // empty: none; needed only to look up pose_name
-  std::vector<std::string> pieces;           // held pieces by the config's names
+  std::vector<double> position;     // one per joint (config order), m or rad; empty for a name
+  std::string pose_name;            // --to NAME: sent for the daemon to resolve for the held pieces
+  std::string config_path;          // empty: none; only to check pose_name before sending it
+  std::vector<std::string> pieces;  // held pieces by the config's names
   std::string scene;
   double scene_offset_m = 0.0;
   std::int64_t request_id = -1;                  // -1: derive one from the clock
@@ -26,15 +25,16 @@ struct GoalArguments {
   bool help = false;
 };
 
-// NaN and infinite targets and offsets, unknown, repeated or too many piece names are accepted on
-// purpose: cyber-goal reads a config only to look up a pose name, and the daemon's answer is the
-// one to see. A pose name without --config is a bad command line.
+// NaN and infinite targets and offsets, any count of values, unknown, repeated or too many piece
+// names and unknown pose names are accepted on purpose: the daemon judges a goal with its own
+// configuration, and its answer is the one to see.
 Result<GoalArguments, cli::ArgumentStatus> parseGoalArguments(const std::vector<std::string>& args);
 
-// The target to send: --to's numbers, or its pose name looked up in `config` for the held pieces
-// (which must then be the config's: the name is one of their set's poses).
-Result<std::array<double, 2>, cli::ArgumentStatus> goalPosition(const GoalArguments& args,
-                                                                const config::Config& config);
+// The target as `config` sees it: --to's numbers, or its pose name looked up for the held pieces
+// (which must then be the config's: the name is one of their set's poses). cyber-goal sends the
+// name itself, so that the daemon resolves it with its configuration; this only catches a typo
+// before sending.
+Result<std::vector<double>, cli::ArgumentStatus> goalPosition(const GoalArguments& args, const config::Config& config);
 
 std::string goalUsage();
 

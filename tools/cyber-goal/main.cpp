@@ -71,9 +71,9 @@ bool handleUntil(lcm::LCM& lcm, Clock::time_point deadline, Done done) {
   return true;
 }
 
-// The target to send: --to's numbers, or its pose name looked up in --config (which, when given,
-// must load either way).
-cyber::Result<std::array<double, 2>, cyber::cli::ArgumentStatus> target(const cyber::tools::GoalArguments& args) {
+// --to as --config sees it (which, when given, must load either way): a pose name the config does
+// not give the held set is refused here, before anything is sent.
+cyber::Result<std::vector<double>, cyber::cli::ArgumentStatus> target(const cyber::tools::GoalArguments& args) {
   if (args.config_path.empty()) return args.position;
   cyber::config::Config config;
   try {
@@ -125,8 +125,11 @@ int main(int argc, char** argv) {
       std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::system_clock::now().time_since_epoch())
           .count();
   goal.request_id = watcher.request_id;
-  goal.position[0] = position.value()[0];
-  goal.position[1] = position.value()[1];
+  // A name goes as the name: the daemon resolves it with its own configuration (docs/lcm.md,
+  // "Named goals"), and then needs no joint values.
+  goal.pose_name = args.pose_name;
+  if (args.pose_name.empty()) goal.position = args.position;
+  goal.num_joints = static_cast<std::int8_t>(goal.position.size());
   goal.pieces = args.pieces;
   goal.num_pieces = static_cast<std::int8_t>(goal.pieces.size());
   goal.scene_name = args.scene;

@@ -26,28 +26,13 @@ bool declares(const config::PoseSet& set, std::string_view name) {
 }
 
 // The sets other than `held`'s that declare `name`, as "; it is a pose of \"algae\"", or "".
-std::string elsewhere(const config::Config& config, planner::HeldPieces held, std::string_view name) {
+std::string elsewhere(const std::vector<config::PoseSet>& poses, planner::HeldPieces held, std::string_view name) {
   std::string sets;
-  for (const config::PoseSet& set : config.poses) {
+  for (const config::PoseSet& set : poses) {
     if (set.pieces != held && declares(set, name))
       sets.append(sets.empty() ? "\"" : ", \"").append(set.name).append("\"");
   }
   return sets.empty() ? "" : "; it is a pose of " + sets;
-}
-
-Result<planner::JointVector, cli::ArgumentStatus> namedPose(const config::Config& config, planner::HeldPieces held,
-                                                            const std::string& name) {
-  const auto set = std::find_if(config.poses.begin(), config.poses.end(),
-                                [&](const config::PoseSet& s) { return s.pieces == held; });
-  if (set == config.poses.end()) {
-    return cli::badUsage(fmt::format("no pose \"{}\": the configuration names no poses for the held set \"{}\"{}", name,
-                                     config.robot.pieceSetName(held), elsewhere(config, held, name)));
-  }
-  for (const config::NamedPose& pose : set->poses) {
-    if (pose.name == name) return pose.q;
-  }
-  return cli::badUsage(fmt::format("no pose \"{}\" for the held set \"{}\" (its poses: {}){}", name, set->name,
-                                   poseNames(*set), elsewhere(config, held, name)));
 }
 
 }  // namespace
@@ -71,9 +56,24 @@ Result<PoseArgument, cli::ArgumentStatus> parsePoseArgument(std::string_view tex
   }
 }
 
+Result<planner::JointVector, cli::ArgumentStatus> namedPose(const std::vector<config::PoseSet>& poses,
+                                                            const planner::RobotModel& robot, planner::HeldPieces held,
+                                                            const std::string& name) {
+  const auto set = std::find_if(poses.begin(), poses.end(), [&](const config::PoseSet& s) { return s.pieces == held; });
+  if (set == poses.end()) {
+    return cli::badUsage(fmt::format("no pose \"{}\": the configuration names no poses for the held set \"{}\"{}", name,
+                                     robot.pieceSetName(held), elsewhere(poses, held, name)));
+  }
+  for (const config::NamedPose& pose : set->poses) {
+    if (pose.name == name) return pose.q;
+  }
+  return cli::badUsage(fmt::format("no pose \"{}\" for the held set \"{}\" (its poses: {}){}", name, set->name,
+                                   poseNames(*set), elsewhere(poses, held, name)));
+}
+
 Result<planner::JointVector, cli::ArgumentStatus> resolvePose(const PoseArgument& pose, const config::Config& config,
                                                               planner::HeldPieces held) {
-  if (!pose.name.empty()) return namedPose(config, held, pose.name);
+  if (!pose.name.empty()) return namedPose(config.poses, config.robot, held, pose.name);
   const planner::RobotModel& robot = config.robot;
   if (pose.values.size() != robot.joints.size()) {
     return cli::badUsage(fmt::format("expects {} values, one per joint ({}), got {}", robot.joints.size(),

@@ -27,6 +27,14 @@ Result<PoseArgument, cli::ArgumentStatus> parsePoseArgument(std::string_view tex
 // The pose in joint units: the values when there are as many as the robot has joints, or the
 // pose `name` of the set of `held` pieces. A name the set does not declare is an error that lists
 // the names it does (and the sets that declare the name, if any).
+// The pose `name` of the set of `held` pieces among `poses` (a configuration's [poses.SET] tables
+// of `robot`), or an error that lists the names the set declares and the other sets that declare
+// `name`. The one lookup of named poses: cyber-plan and cyber-goal (through resolvePose) and the
+// daemon for ARM_GOAL's pose_name.
+Result<planner::JointVector, cli::ArgumentStatus> namedPose(const std::vector<config::PoseSet>& poses,
+                                                            const planner::RobotModel& robot, planner::HeldPieces held,
+                                                            const std::string& name);
+
 Result<planner::JointVector, cli::ArgumentStatus> resolvePose(const PoseArgument& pose, const config::Config& config,
                                                               planner::HeldPieces held);
 

@@ -280,9 +280,11 @@ void Runner::onStateTimer() {
     cyberplanner::arm_state_t msg{};
     msg.utime = realtimeMicros();
     published_utime = msg.utime;
+    // One value per joint of the description the simulator models (docs/lcm.md, "Joints by index").
+    msg.num_joints = static_cast<std::int8_t>(kJointCount);
     for (int j = 0; j < kJointCount; ++j) {
-      msg.position[j] = sim_.state(j).position;
-      msg.velocity[j] = sim_.state(j).velocity;
+      msg.position.push_back(sim_.state(j).position);
+      msg.velocity.push_back(sim_.state(j).velocity);
     }
     msg.pieces = setup_.options.pieces;
     msg.num_pieces = static_cast<std::int8_t>(msg.pieces.size());

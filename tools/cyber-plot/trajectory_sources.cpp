@@ -103,12 +103,21 @@ Result<plot::TrajectoryPlotData, SourceStatus> readTrajectoryFromLog(const std::
                            (undecodable > 0 ? " (" + std::to_string(undecodable) + " undecodable)" : ""));
   }
   const cyberplanner::arm_trajectory_t& m = *chosen;
+  // Rows by the config's [[joints]] order (docs/lcm.md, "Joints by index"): a trajectory of
+  // another joint count is of another robot.
+  if (static_cast<size_t>(m.num_joints) != robot.joints.size()) {
+    return sourceError(SourceStatus::kNoTrajectory, path,
+                       std::string("the trajectory has ")
+                           .append(std::to_string(m.num_joints))
+                           .append(" joints, the robot description ")
+                           .append(std::to_string(robot.joints.size())));
+  }
   plot::TrajectoryPlotData data;
   for (int k = 0; k < m.num_samples; ++k) {
     const size_t i = static_cast<size_t>(k);
     data.time_s.push_back(m.t_s[i]);
     // position, velocity and volts are [joint][sample] (safeDecode checked the sizes).
-    for (int j = 0; j < 2; ++j) {
+    for (int j = 0; j < m.num_joints; ++j) {
       const auto row = static_cast<size_t>(j);
       const double v = m.velocity[row][i];
       const double volts = m.volts[row][i];

@@ -78,7 +78,7 @@ void GoalCoordinator::reject(std::int64_t request_id, std::string reason) {
 
 void GoalCoordinator::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict gate) {
   ++counters_.goals_received;
-  auto valid = validateGoal(goal, robot_);
+  auto valid = validateGoal(goal, robot_, settings_.poses);
   if (!valid) {
     reject(goal.request_id, std::string(planner::toString(valid.error().status)) + ": " + valid.error().message);
     return;

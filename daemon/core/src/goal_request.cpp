@@ -39,8 +39,38 @@ std::string joinedNames(const std::vector<std::string>& names) {
   return out.empty() ? "none" : out;
 }
 
+// The sent values as the robot's joint vector: exactly one per joint of the configuration.
+planner::Result<planner::JointVector> sentPosition(const std::vector<double>& values,
+                                                   const planner::RobotModel& robot) {
+  if (values.size() != robot.joints.size()) {
+    std::vector<std::string> names;
+    for (const planner::ChainJoint& joint : robot.joints) names.push_back(joint.name);
+    return planner::Result<planner::JointVector>::failure(
+        PlanStatus::kInvalidInput, fmt::format("num_joints = {} but this robot has {} joints ({})", values.size(),
+                                               robot.joints.size(), joinedNames(names)));
+  }
+  planner::JointVector q = planner::JointVector::Zero();
+  for (size_t j = 0; j < values.size(); ++j) q[static_cast<Eigen::Index>(j)] = values[j];
+  return q;
+}
+
+// The target: the named pose of the held set, or the sent values.
+planner::Result<planner::JointVector> targetOf(const GoalRequest& goal, const planner::RobotModel& robot,
+                                               planner::HeldPieces held, const PoseLookup& poses) {
+  if (goal.pose_name.empty()) return sentPosition(goal.position, robot);
+  if (!isName(goal.pose_name)) {
+    return planner::Result<planner::JointVector>::failure(PlanStatus::kInvalidInput,
+                                                          notAName("pose_name", goal.pose_name));
+  }
+  if (!poses) {
+    return planner::Result<planner::JointVector>::failure(
+        PlanStatus::kInvalidInput, fmt::format("no pose \"{}\": this daemon has no named poses", goal.pose_name));
+  }
+  return poses(held, goal.pose_name);
+}
+
 std::optional<planner::PlanError> checkPosition(const planner::JointVector& q, const planner::RobotModel& robot) {
-  for (int j = 0; j < planner::kJointCount; ++j) {
+  for (int j = 0; j < static_cast<int>(robot.joints.size()); ++j) {
     const planner::ChainJoint& joint = robot.joints[static_cast<size_t>(j)];
     const char* unit = planner::unitName(joint.type);
     const double value = q[j];
@@ -83,16 +113,20 @@ std::optional<std::string> readPieces(const GoalRequest& goal, const planner::Ro
 
 }  // namespace
 
-planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot) {
+planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot,
+                                        const PoseLookup& poses) {
   if (!isName(goal.scene_name))
     return Failure::failure(PlanStatus::kInvalidInput, notAName("scene_name", goal.scene_name));
-  if (auto problem = checkPosition(goal.position, robot)) return Failure::failure(problem->status, problem->message);
   ValidGoal valid;
   valid.request_id = goal.request_id;
-  valid.q = goal.position;
+  // The pieces first: a pose name means a pose of the held set.
   if (auto problem = readPieces(goal, robot, valid.pieces)) {
     return Failure::failure(PlanStatus::kInvalidInput, *problem);
   }
+  auto target = targetOf(goal, robot, valid.pieces, poses);
+  if (!target) return Failure::failure(target.error().status, target.error().message);
+  valid.q = target.value();
+  if (auto problem = checkPosition(valid.q, robot)) return Failure::failure(problem->status, problem->message);
   if (!goal.scene_name.empty()) {
     valid.scene = robot.sceneIndex(goal.scene_name);
     if (valid.scene < 0) {

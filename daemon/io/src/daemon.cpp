@@ -12,6 +12,7 @@
 #include "cyber/daemon/io/can_socket_ports.hpp"
 #include "cyber/daemon/io/logging.hpp"
 #include "cyber/daemon/io/monotonic_clock.hpp"
+#include "cyber/daemon/io/named_poses.hpp"
 #include "cyber/notify/notifier.hpp"
 
 namespace cyber::daemon::io {
@@ -55,8 +56,9 @@ FrameWriterSettings writerSettingsOf(const DaemonOptions& options) {
   return out;
 }
 
-GoalHandler::Settings goalSettingsOf(const DaemonOptions& options) {
+GoalHandler::Settings goalSettingsOf(const DaemonOptions& options, const planner::RobotModel& robot) {
   GoalHandler::Settings out;
+  out.coordinator.poses = namedPoseLookup(options.poses, robot);
   out.coordinator.planning_budget_s = options.settings.planning_budget_s;
   out.coordinator.max_budget_s = options.settings.max_planning_budget_s;
   out.coordinator.stream_period_s = 1.0 / options.settings.stream_rate_hz;
@@ -127,7 +129,7 @@ Daemon::Daemon(const planner::RobotModel& robot, const DaemonOptions& options, c
           [this](const CancelRequest& cancel) { goals_.onCancel(cancel, monotonicNow()); }),
       bridge_(*lcm_, options.settings.channels, lcm_input_.callbacks()),
       state_receiver_(*state_lcm_, options.settings.channels.state, lcm_input_),
-      goals_(robot_, goalSettingsOf(options), bridge_, worker_, channels_, loop_),
+      goals_(robot_, goalSettingsOf(options, robot_), bridge_, worker_, channels_, loop_),
       can_input_(can_ ? std::make_unique<CanInput>(*can_, loop_) : nullptr),
       status_(StatusPublisher::Sources{channels_, goals_, lcm_input_, can_input_.get(), bridge_, robot_}, gate_) {
   streamer_thread_.setRobotFrameSource(robot_source_.get(), heartbeatLayoutOf(options.settings.robot_controller));

@@ -15,15 +15,14 @@ GoalHandler::GoalHandler(const planner::RobotModel& robot, const Settings& setti
       worker_(worker),
       channels_(channels),
       loop_(loop),
-      trajectories_(bridge, settings.trajectory_step_s),
+      trajectories_(bridge, settings.trajectory_step_s, static_cast<int>(robot.joints.size())),
       coordinator_(robot, settings.coordinator, *this) {}
 
 void GoalHandler::onGoal(const GoalRequest& goal, MonoNs now, GateVerdict gate) {
   goal_received_ns_[goal.request_id] = now;
-  spdlog::debug("goal {}: {} {} {}, {} {} {}, pieces [{}], scene '{}' at {} m", goal.request_id, robot_.joints[0].name,
-                goal.position[0], planner::unitName(robot_.joints[0].type), robot_.joints[1].name, goal.position[1],
-                planner::unitName(robot_.joints[1].type), fmt::join(goal.pieces, ", "), goal.scene_name,
-                goal.scene_offset_m);
+  spdlog::debug("goal {}: {}, pieces [{}], scene '{}' at {} m", goal.request_id,
+                goal.pose_name.empty() ? fmt::format("[{}]", fmt::join(goal.position, ", ")) : goal.pose_name,
+                fmt::join(goal.pieces, ", "), goal.scene_name, goal.scene_offset_m);
   coordinator_.onGoal(goal, now, gate);
 }
 

@@ -1,5 +1,7 @@
 #include "cyber/daemon/io/lcm_input.hpp"
 
+#include <fmt/ranges.h>
+
 #include "cyber/daemon/io/lcm_messages.hpp"
 #include "cyber/daemon/io/monotonic_clock.hpp"
 
@@ -32,16 +34,17 @@ void LcmInput::onState(const cyberplanner::arm_state_t& message) {
   const auto state = stateFromMessage(message, robot_);
   if (!state) {
     ++bad_states_;
-    state_warning_.warn(now, "ignoring ARM_STATE with non-finite or out-of-range values ({} {} {}, {} {} {})",
-                        robot_.joints[0].name, message.position[0], planner::unitName(robot_.joints[0].type),
-                        robot_.joints[1].name, message.position[1], planner::unitName(robot_.joints[1].type));
+    state_warning_.warn(now,
+                        "ignoring ARM_STATE with {} joints (this robot has {}) or non-finite or out-of-range "
+                        "positions [{}]",
+                        int{message.num_joints}, robot_.joints.size(), fmt::join(message.position, ", "));
     return;
   }
   state_.state_ns = now;
-  state_.measured_q[0] = state->q[0];
-  state_.measured_q[1] = state->q[1];
-  state_.measured_qdot[0] = state->qdot[0];
-  state_.measured_qdot[1] = state->qdot[1];
+  for (int j = 0; j < state->q.size(); ++j) {
+    state_.measured_q[j] = state->q[j];
+    state_.measured_qdot[j] = state->qdot[j];
+  }
   channels_.state.store(state_);
 }
 

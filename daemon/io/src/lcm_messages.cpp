@@ -8,6 +8,18 @@
 
 namespace cyber::daemon::io {
 
+namespace {
+
+// ARM_TRAJECTORY stays below 60 kB encoded (docs/lcm.md, its "Size cap"):
+// the fingerprint and the fields before the arrays take 53 bytes; a sample is t_s and three rows
+// (position, velocity, volts) per joint, 8 bytes each.
+constexpr int kTrajectoryBudgetBytes = 60'000;
+constexpr int kTrajectoryHeaderBytes = 8 + 5 * 8 + 1 + 4;
+constexpr int kTrajectoryRowsPerJoint = 3;
+constexpr int kDoubleBytes = 8;
+
+}  // namespace
+
 std::int64_t wallMicros() {
   timespec ts{};
   clock_gettime(CLOCK_REALTIME, &ts);
@@ -17,7 +29,8 @@ std::int64_t wallMicros() {
 GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message) {
   GoalRequest goal;
   goal.request_id = message.request_id;
-  goal.position = JointVector(message.position[0], message.position[1]);
+  goal.pose_name = message.pose_name;
+  goal.position = message.position;  // as many as num_joints: validateGoal checks the count
   goal.num_pieces = message.num_pieces;
   goal.pieces = message.pieces;
   goal.scene_name = message.scene_name;
@@ -38,9 +51,14 @@ std::optional<CancelRequest> cancelFromMessage(const cyberplanner::arm_cancel_t&
 
 std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
                                               const planner::RobotModel& robot, double margin) {
+  const size_t joints = robot.joints.size();
+  if (message.num_joints < 0 || static_cast<size_t>(message.num_joints) != joints) return std::nullopt;
+  if (message.position.size() != joints || message.velocity.size() != joints) return std::nullopt;
   MeasuredState state;
-  state.q = JointVector(message.position[0], message.position[1]);
-  state.qdot = JointVector(message.velocity[0], message.velocity[1]);
+  for (size_t j = 0; j < joints; ++j) {
+    state.q[static_cast<Eigen::Index>(j)] = message.position[j];
+    state.qdot[static_cast<Eigen::Index>(j)] = message.velocity[j];
+  }
   if (!state.q.allFinite() || !state.qdot.allFinite()) return std::nullopt;
   if (!robot.withinLimits(state.q, margin)) return std::nullopt;
   return state;
@@ -63,9 +81,16 @@ cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::i
   return message;
 }
 
+int maxTrajectorySamples(int num_joints) {
+  const int per_sample = kDoubleBytes * (1 + kTrajectoryRowsPerJoint * std::max(0, num_joints));
+  return std::min<int>(cyberplanner::arm_trajectory_t::MAX_SAMPLES,
+                       (kTrajectoryBudgetBytes - kTrajectoryHeaderBytes) / per_sample);
+}
+
 cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
-                                                 std::int64_t start_utime, double step_s, std::int64_t utime) {
-  constexpr int kMax = cyberplanner::arm_trajectory_t::MAX_SAMPLES;
+                                                 int num_joints, std::int64_t start_utime, double step_s,
+                                                 std::int64_t utime) {
+  const int kMax = maxTrajectorySamples(num_joints);
   cyberplanner::arm_trajectory_t message{};
   message.utime = utime;
   message.request_id = request_id;
@@ -80,17 +105,19 @@ cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const 
   const bool end_off_step = (on_step - 1) * dt < duration - 1e-6;  // else the last step sample moves to the end
   const int count = std::min(kMax, on_step + (end_off_step ? 1 : 0));
   message.num_samples = count;
-  // position, velocity and volts are [joint][sample]: two rows of `count` each.
+  message.num_joints = static_cast<std::int8_t>(num_joints);
+  // position, velocity and volts are [joint][sample]: num_joints rows of `count` each.
   message.t_s.resize(static_cast<size_t>(count));
   for (auto* table : {&message.position, &message.velocity, &message.volts}) {
-    table->assign(planner::kJointCount, std::vector<double>(static_cast<size_t>(count)));
+    table->assign(static_cast<size_t>(num_joints), std::vector<double>(static_cast<size_t>(count)));
   }
   for (int k = 0; k < count; ++k) {
     const double t = k + 1 == count ? duration : std::min(duration, k * dt);
     const JointSetpoints s = trajectory.at(t);
     const auto i = static_cast<size_t>(k);
     message.t_s[i] = t;
-    for (int j = 0; j < planner::kJointCount; ++j) {
+    // Rows the setpoints do not have (a model of fewer joints than num_joints) stay 0.
+    for (int j = 0; j < std::min(num_joints, static_cast<int>(s.position.size())); ++j) {
       const auto row = static_cast<size_t>(j);
       message.position[row][i] = s.position[j];
       message.velocity[row][i] = s.velocity[j];
@@ -100,13 +127,17 @@ cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const 
   return message;
 }
 
-cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, std::int64_t utime) {
+cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, int num_joints, std::int64_t utime) {
   cyberplanner::arm_setpoint_t message{};
   message.utime = utime;
   message.mode = static_cast<std::int8_t>(snapshot.mode);
   message.request_id = snapshot.request_id;
   message.trajectory_t_s = snapshot.mode == StreamMode::kMoving ? snapshot.segment_time_s : 0.0;
-  for (size_t j = 0; j < snapshot.joints.size(); ++j) {
+  message.num_joints = static_cast<std::int8_t>(num_joints);
+  for (auto* row : {&message.position, &message.velocity, &message.volts})
+    row->assign(static_cast<size_t>(num_joints), 0.0);
+  message.sequence.assign(static_cast<size_t>(num_joints), 0);
+  for (size_t j = 0; j < std::min(snapshot.joints.size(), static_cast<size_t>(num_joints)); ++j) {
     const can::Setpoint& wire = snapshot.joints[j];
     message.position[j] = wire.position;
     message.velocity[j] = wire.velocity;

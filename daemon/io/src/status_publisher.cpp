@@ -91,10 +91,10 @@ void StatusPublisher::publishDaemonStatus(const StreamSnapshot& snapshot, MonoNs
   cyberplanner::arm_daemon_status_t m{};
   m.utime = wallMicros();
   m.mode = static_cast<std::int8_t>(snapshot.mode);
-  for (int j = 0; j < planner::kJointCount; ++j) {
-    const planner::ChainJoint& joint = s_.robot.joints[static_cast<size_t>(j)];
-    m.joint_names[j] = joint.name;
-    m.joint_units[j] = planner::unitName(joint.type);
+  m.num_joints = static_cast<std::int8_t>(s_.robot.joints.size());
+  for (const planner::ChainJoint& joint : s_.robot.joints) {
+    m.joint_names.push_back(joint.name);
+    m.joint_units.push_back(planner::unitName(joint.type));
   }
   m.robot_enabled = robotEnabled(snapshot, now);
   m.motion_allowed = snapshot.ticks > 0 && snapshot.gate_reason == GateReason::kOpen;
@@ -123,8 +123,8 @@ void StatusPublisher::publishSetpointEcho() {
   const StreamSnapshot snapshot = s_.channels.snapshot.load();
   if (snapshot.ticks == last_echo_tick_ || !snapshot.setpoints_written) return;
   last_echo_tick_ = snapshot.ticks;
-  s_.bridge.publish(s_.bridge.channels().setpoint,
-                    setpointMessage(snapshot, wallMicrosAt(snapshot.time_ns, readClockPair())));
+  s_.bridge.publish(s_.bridge.channels().setpoint, setpointMessage(snapshot, static_cast<int>(s_.robot.joints.size()),
+                                                                   wallMicrosAt(snapshot.time_ns, readClockPair())));
 }
 
 }  // namespace cyber::daemon::io

@@ -25,8 +25,8 @@ void TrajectoryPublisher::flush(MonoNs now) {
   const Waiting waiting = std::move(*waiting_);
   waiting_.reset();
   bridge_.publish(bridge_.channels().trajectory,
-                  trajectoryMessage(waiting.request_id, *waiting.trajectory, wallMicrosAt(waiting.start_ns, clocks),
-                                    step_s_, clocks.wall_us));
+                  trajectoryMessage(waiting.request_id, *waiting.trajectory, num_joints_,
+                                    wallMicrosAt(waiting.start_ns, clocks), step_s_, clocks.wall_us));
 }
 
 }  // namespace cyber::daemon::io

@@ -84,9 +84,9 @@ class Rig {
   void goal(std::int64_t id, const cyber::planner::JointVector& q, const cyber::planner::HeldPieces& pieces) {
     cyberplanner::arm_goal_t goal{};
     goal.request_id = id;
-    goal.position[0] = q[0];
-    goal.position[1] = q[1];
     const auto& robot = cyber::test::referenceModel();
+    goal.num_joints = static_cast<std::int8_t>(robot.joints.size());
+    for (int j = 0; j < goal.num_joints; ++j) goal.position.push_back(q[j]);
     for (size_t i = 0; i < robot.pieces.size(); ++i) {
       if (pieces.holds(static_cast<int>(i))) goal.pieces.push_back(robot.pieces[i].name);
     }
@@ -146,10 +146,12 @@ class Rig {
       if (!paused_) {
         const auto snapshot = DaemonProbe::channels(*daemon_).snapshot.load();
         cyberplanner::arm_state_t state{};
-        for (int j = 0; j < 2; ++j) {
-          state.position[j] = forced_ || snapshot.ticks == 0 ? forced_q_[static_cast<size_t>(j)].load()
-                                                             : snapshot.joints[static_cast<size_t>(j)].position;
+        state.num_joints = static_cast<std::int8_t>(cyber::test::referenceModel().joints.size());
+        for (int j = 0; j < state.num_joints; ++j) {
+          state.position.push_back(forced_ || snapshot.ticks == 0 ? forced_q_[static_cast<size_t>(j)].load()
+                                                                  : snapshot.joints[static_cast<size_t>(j)].position);
         }
+        state.velocity.assign(state.position.size(), 0.0);
         onLoop([&] { DaemonProbe::lcmFor(*daemon_, "ARM_STATE").publish("ARM_STATE", &state); });
       }
       std::this_thread::sleep_for(10ms);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "reference_model.hpp"
 
 namespace cyber::daemon {
@@ -17,7 +19,7 @@ using planner::PlanStatus;
 GoalRequest goalAt(double q0, double q1, std::string scene = {}) {
   GoalRequest goal;
   goal.request_id = 7;
-  goal.position = planner::JointVector(q0, q1);
+  goal.position = {q0, q1};
   goal.scene_name = std::move(scene);
   return goal;
 }
@@ -47,6 +49,59 @@ TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
   EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral"));
   EXPECT_EQ(valid.value().scene, 0);
   EXPECT_EQ(valid.value().scene_offset_m, 0.0);
+}
+
+// The message's num_joints must be the robot's: a goal of another robot's joints is not guessed at.
+TEST(ValidateGoal, RejectsAJointCountOtherThanTheRobotsNamingTheJoints) {
+  for (const std::vector<double>& values :
+       {std::vector<double>{}, std::vector<double>{1.0}, std::vector<double>{1.0, 1.5, 0.0}}) {
+    GoalRequest goal = goalAt(1.0, 1.5);
+    goal.position = values;
+    const std::string reason = refused(goal);
+    EXPECT_EQ(reason, fmt::format("num_joints = {} but this robot has 2 joints (elevator, arm)", values.size()));
+  }
+}
+
+// A stand-in for the daemon's configuration (daemon/io/named_poses.hpp): "L3" of the held set
+// "none" only, and the names it knows in its refusal.
+planner::Result<planner::JointVector> fakePoses(planner::HeldPieces held, const std::string& name) {
+  if (held == planner::HeldPieces{} && name == "L3") return planner::JointVector(1.22, 5.69);
+  if (name == "HIGH") return planner::JointVector(2.5, 1.0);  // past the elevator's 2 m
+  return planner::Result<planner::JointVector>::failure(PlanStatus::kInvalidInput,
+                                                        fmt::format("no pose \"{}\" (its poses: L3)", name));
+}
+
+TEST(ValidateGoal, ANamedGoalTakesThePoseOfItsHeldSetAndIgnoresThePosition) {
+  const auto& robot = cyber::test::referenceModel();
+  GoalRequest goal = goalAt(0.0, 0.0);
+  goal.position.clear();  // num_joints = 0: a named goal needs no values
+  goal.pose_name = "L3";
+  auto valid = validateGoal(goal, robot, fakePoses);
+  ASSERT_TRUE(valid) << valid.error().message;
+  EXPECT_EQ(valid.value().q, planner::JointVector(1.22, 5.69));
+  goal.position = {9.0, 9.0, 9.0};
+  auto ignored = validateGoal(goal, robot, fakePoses);
+  ASSERT_TRUE(ignored) << ignored.error().message;
+  EXPECT_EQ(ignored.value().q, planner::JointVector(1.22, 5.69));
+}
+
+TEST(ValidateGoal, RejectsAnUnknownNameWithTheLookupsReasonAndChecksANamedPoseLikeValues) {
+  const auto& robot = cyber::test::referenceModel();
+  GoalRequest goal = holding({"coral"});
+  goal.pose_name = "L3";  // fakePoses has it only for "none"
+  auto other_set = validateGoal(goal, robot, fakePoses);
+  ASSERT_FALSE(other_set);
+  EXPECT_EQ(other_set.error().message, "no pose \"L3\" (its poses: L3)");
+  goal = goalAt(0.0, 0.0);
+  goal.pose_name = "HIGH";
+  auto high = validateGoal(goal, robot, fakePoses);
+  ASSERT_FALSE(high);
+  EXPECT_EQ(high.error().status, PlanStatus::kGoalOutOfRange);
+  goal.pose_name = "L3";
+  EXPECT_NE(refused(goal).find("no pose \"L3\": this daemon has no named poses"), std::string::npos)
+      << "without a lookup no name resolves";
+  goal.pose_name = std::string("L\0", 2);
+  EXPECT_EQ(validateGoal(goal, robot, fakePoses).error().message.find('\0'), std::string::npos);
 }
 
 TEST(ValidateGoal, PiecesComeByTheConfigsNamesInAnyOrder) {

@@ -52,8 +52,10 @@ arm_goal_t randomGoal(Values& v) {
   arm_goal_t m{};
   m.utime = v.integer();
   m.request_id = v.integer();
-  m.position[0] = v.real();
-  m.position[1] = v.real();
+  // Named goals and goals of 0 .. MAX_JOINTS values (a named one may send none).
+  m.pose_name = v.flag() ? "" : "L3";
+  m.num_joints = v.small(arm_goal_t::MAX_JOINTS);
+  for (int j = 0; j < m.num_joints; ++j) m.position.push_back(v.real());
   m.num_pieces = v.small(arm_goal_t::MAX_PIECES);
   for (int i = 0; i < m.num_pieces; ++i) m.pieces.push_back(v.flag() ? "coral" : "piece-" + std::to_string(i));
   m.scene_name = v.flag() ? "" : "reef-left";
@@ -68,8 +70,9 @@ TEST(LcmTypes, GoalRoundTrip) {
     const auto out = decodeOk<arm_goal_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.request_id, in.request_id);
-    ASSERT_EQ(out.position[0], in.position[0]);
-    ASSERT_EQ(out.position[1], in.position[1]);
+    ASSERT_EQ(out.pose_name, in.pose_name);
+    ASSERT_EQ(out.num_joints, in.num_joints);
+    ASSERT_EQ(out.position, in.position);
     ASSERT_EQ(out.num_pieces, in.num_pieces);
     ASSERT_EQ(out.pieces, in.pieces);
     ASSERT_EQ(out.scene_offset_m, in.scene_offset_m);
@@ -82,18 +85,18 @@ TEST(LcmTypes, StateRoundTrip) {
   for (int i = 0; i < 200; ++i) {
     arm_state_t in{};
     in.utime = v.integer();
-    for (int j = 0; j < 2; ++j) {
-      in.position[j] = v.real();
-      in.velocity[j] = v.real();
+    in.num_joints = static_cast<std::int8_t>(1 + v.small(arm_state_t::MAX_JOINTS - 1));
+    for (int j = 0; j < in.num_joints; ++j) {
+      in.position.push_back(v.real());
+      in.velocity.push_back(v.real());
     }
     in.num_pieces = v.small(arm_state_t::MAX_PIECES);
     for (int k = 0; k < in.num_pieces; ++k) in.pieces.push_back("piece-" + std::to_string(k));
     const auto out = decodeOk<arm_state_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
-    for (int j = 0; j < 2; ++j) {
-      ASSERT_EQ(out.position[j], in.position[j]);
-      ASSERT_EQ(out.velocity[j], in.velocity[j]);
-    }
+    ASSERT_EQ(out.num_joints, in.num_joints);
+    ASSERT_EQ(out.position, in.position);
+    ASSERT_EQ(out.velocity, in.velocity);
     ASSERT_EQ(out.pieces, in.pieces);
   }
 }
@@ -126,8 +129,9 @@ TEST(LcmTypes, PlanStatusRoundTrip) {
   }
 }
 
-arm_trajectory_t randomTrajectory(Values& v, int samples) {
+arm_trajectory_t randomTrajectory(Values& v, int samples, int joints = 2) {
   arm_trajectory_t m{};
+  m.num_joints = static_cast<std::int8_t>(joints);
   m.utime = v.integer();
   m.request_id = v.integer();
   m.start_utime = v.integer();
@@ -137,9 +141,9 @@ arm_trajectory_t randomTrajectory(Values& v, int samples) {
   const auto n = static_cast<std::size_t>(samples);
   m.t_s.resize(n);
   for (double& x : m.t_s) x = v.real();
-  // [joint][sample]: lcm-gen encodes two rows of num_samples each.
+  // [joint][sample]: lcm-gen encodes num_joints rows of num_samples each.
   for (auto* table : {&m.position, &m.velocity, &m.volts}) {
-    table->assign(2, std::vector<double>(n));
+    table->assign(static_cast<std::size_t>(joints), std::vector<double>(n));
     for (auto& row : *table) {
       for (double& x : row) x = v.real();
     }
@@ -150,7 +154,7 @@ arm_trajectory_t randomTrajectory(Values& v, int samples) {
 TEST(LcmTypes, TrajectoryRoundTrip) {
   Values v(4);
   for (int samples : {0, 1, 2, 17, 999, static_cast<int>(arm_trajectory_t::MAX_SAMPLES)}) {
-    const arm_trajectory_t in = randomTrajectory(v, samples);
+    const arm_trajectory_t in = randomTrajectory(v, samples, 1 + samples % arm_trajectory_t::MAX_JOINTS);
     const auto out = decodeOk<arm_trajectory_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.request_id, in.request_id);
@@ -158,6 +162,7 @@ TEST(LcmTypes, TrajectoryRoundTrip) {
     ASSERT_EQ(out.duration_s, in.duration_s);
     ASSERT_EQ(out.dt_s, in.dt_s);
     ASSERT_EQ(out.num_samples, in.num_samples);
+    ASSERT_EQ(out.num_joints, in.num_joints);
     ASSERT_EQ(out.t_s, in.t_s);
     ASSERT_EQ(out.position, in.position);
     ASSERT_EQ(out.velocity, in.velocity);
@@ -168,7 +173,7 @@ TEST(LcmTypes, TrajectoryRoundTrip) {
 TEST(LcmTypes, FullTrajectoryStaysUnder60kB) {
   Values v(5);
   const arm_trajectory_t full = randomTrajectory(v, arm_trajectory_t::MAX_SAMPLES);
-  EXPECT_EQ(full.getEncodedSize(), 56052);  // docs/lcm.md quotes this number
+  EXPECT_EQ(full.getEncodedSize(), 56053);  // docs/lcm.md quotes this number
   EXPECT_LT(full.getEncodedSize(), 60000);
   EXPECT_EQ(static_cast<int>(encode(full).size()), full.getEncodedSize());
 }
@@ -181,23 +186,23 @@ TEST(LcmTypes, SetpointRoundTrip) {
     in.mode = v.small(arm_setpoint_t::MODE_ROBOT_DISABLED);
     in.request_id = v.integer();
     in.trajectory_t_s = v.real();
-    for (int j = 0; j < 2; ++j) {
-      in.position[j] = v.real();
-      in.velocity[j] = v.real();
-      in.volts[j] = v.real();
-      in.sequence[j] = static_cast<std::uint8_t>(v.integer());
+    in.num_joints = static_cast<std::int8_t>(1 + v.small(arm_setpoint_t::MAX_JOINTS - 1));
+    for (int j = 0; j < in.num_joints; ++j) {
+      in.position.push_back(v.real());
+      in.velocity.push_back(v.real());
+      in.volts.push_back(v.real());
+      in.sequence.push_back(static_cast<std::uint8_t>(v.integer()));
     }
     const auto out = decodeOk<arm_setpoint_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.mode, in.mode);
     ASSERT_EQ(out.request_id, in.request_id);
     ASSERT_EQ(out.trajectory_t_s, in.trajectory_t_s);
-    for (int j = 0; j < 2; ++j) {
-      ASSERT_EQ(out.position[j], in.position[j]);
-      ASSERT_EQ(out.velocity[j], in.velocity[j]);
-      ASSERT_EQ(out.volts[j], in.volts[j]);
-      ASSERT_EQ(out.sequence[j], in.sequence[j]);
-    }
+    ASSERT_EQ(out.num_joints, in.num_joints);
+    ASSERT_EQ(out.position, in.position);
+    ASSERT_EQ(out.velocity, in.velocity);
+    ASSERT_EQ(out.volts, in.volts);
+    ASSERT_EQ(out.sequence, in.sequence);
   }
 }
 
@@ -207,10 +212,9 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     arm_daemon_status_t in{};
     in.utime = v.integer();
     in.mode = v.small(arm_daemon_status_t::MODE_ROBOT_DISABLED);
-    in.joint_names[0] = v.flag() ? "elevator" : "shoulder";
-    in.joint_names[1] = "arm";
-    in.joint_units[0] = v.flag() ? "m" : "rad";
-    in.joint_units[1] = "rad";
+    in.num_joints = 2;
+    in.joint_names = {v.flag() ? "elevator" : "shoulder", "arm"};
+    in.joint_units = {v.flag() ? "m" : "rad", "rad"};
     in.robot_enabled = v.flag();
     in.motion_allowed = v.flag();
     in.active_request_id = v.integer();
@@ -233,10 +237,9 @@ TEST(LcmTypes, DaemonStatusRoundTrip) {
     const auto out = decodeOk<arm_daemon_status_t>(encode(in));
     ASSERT_EQ(out.utime, in.utime);
     ASSERT_EQ(out.mode, in.mode);
-    ASSERT_EQ(out.joint_names[0], in.joint_names[0]);
-    ASSERT_EQ(out.joint_names[1], in.joint_names[1]);
-    ASSERT_EQ(out.joint_units[0], in.joint_units[0]);
-    ASSERT_EQ(out.joint_units[1], in.joint_units[1]);
+    ASSERT_EQ(out.num_joints, in.num_joints);
+    ASSERT_EQ(out.joint_names, in.joint_names);
+    ASSERT_EQ(out.joint_units, in.joint_units);
     ASSERT_EQ(out.robot_enabled, in.robot_enabled);
     ASSERT_EQ(out.motion_allowed, in.motion_allowed);
     ASSERT_EQ(out.active_request_id, in.active_request_id);
@@ -335,42 +338,77 @@ std::int32_t getInt32(const std::vector<std::uint8_t>& bytes, std::size_t offset
   return static_cast<std::int32_t>(bits);
 }
 
-// Where the length and count fields sit in message version 2 (after the 8-byte fingerprint):
-// safeDecode walks to them; these tests corrupt them there.
-constexpr std::size_t kGoalPieceCountAt = 8 + 4 * 8;                   // utime, request_id, position[2]
-constexpr std::size_t kGoalSceneNameLengthAt = kGoalPieceCountAt + 1;  // with no pieces
-constexpr std::size_t kStatePieceCountAt = 8 + 5 * 8;                  // utime, position[2], velocity[2]
+// Where the length and count fields sit in message version 3 (after the 8-byte fingerprint), for
+// 2 joints and an empty pose_name: safeDecode walks to them; these tests corrupt them there.
+constexpr std::size_t kGoalPoseNameLengthAt = 8 + 2 * 8;                    // utime, request_id
+constexpr std::size_t kGoalJointCountAt = kGoalPoseNameLengthAt + 4 + 1;    // pose_name "" (length 1)
+constexpr std::size_t kGoalPieceCountAt = kGoalJointCountAt + 1 + 2 * 8;    // position[2]
+constexpr std::size_t kGoalSceneNameLengthAt = kGoalPieceCountAt + 1;       // with no pieces
+constexpr std::size_t kStateJointCountAt = 8 + 8;                           // utime
+constexpr std::size_t kStatePieceCountAt = kStateJointCountAt + 1 + 4 * 8;  // position[2], velocity[2]
+constexpr std::size_t kSetpointJointCountAt = 8 + 8 + 1 + 2 * 8;            // utime, mode, request_id, trajectory_t_s
 constexpr std::size_t kPlanStatusReasonLengthAt = 8 + 2 * 8 + 1;
-constexpr std::size_t kDaemonStatusNameLengthAt = 8 + 8 + 1;  // utime, mode, then joint_names[0]
-constexpr std::size_t kTrajectoryCountAt = 8 + 5 * 8;
+constexpr std::size_t kDaemonStatusJointCountAt = 8 + 8 + 1;                      // utime, mode
+constexpr std::size_t kDaemonStatusNameLengthAt = kDaemonStatusJointCountAt + 1;  // joint_names[0]
+constexpr std::size_t kTrajectoryJointCountAt = 8 + 5 * 8;
+constexpr std::size_t kTrajectoryCountAt = kTrajectoryJointCountAt + 1;
+
+// The messages the layout and corruption tests start from: 2 joints, no pose name.
+arm_goal_t twoJointGoal(Values& v) {
+  arm_goal_t goal = randomGoal(v);
+  goal.pose_name = "";
+  goal.num_joints = 2;
+  goal.position = {v.real(), v.real()};
+  goal.num_pieces = 0;
+  goal.pieces.clear();
+  return goal;
+}
+arm_state_t twoJointState() {
+  arm_state_t state{};
+  state.num_joints = 2;
+  state.position = {0.5, 1.0};
+  state.velocity = {0.0, 0.0};
+  state.num_pieces = 1;
+  state.pieces = {"coral"};
+  return state;
+}
+arm_daemon_status_t twoJointStatus() {
+  arm_daemon_status_t daemon{};
+  daemon.num_joints = 2;
+  daemon.joint_names = {"elevator", "arm"};
+  daemon.joint_units = {"m", "rad"};
+  return daemon;
+}
 
 TEST(LcmTypes, TheLengthFieldsAreWhereTheTestsCorruptThem) {
   Values v(13);
-  arm_goal_t goal = randomGoal(v);
-  goal.num_pieces = 0;
-  goal.pieces.clear();
+  arm_goal_t goal = twoJointGoal(v);
   goal.scene_name = "reef-left";
+  EXPECT_EQ(getInt32(encode(goal), kGoalPoseNameLengthAt), 1);
+  EXPECT_EQ(encode(goal)[kGoalJointCountAt], 2);
   EXPECT_EQ(encode(goal)[kGoalPieceCountAt], 0);
   EXPECT_EQ(getInt32(encode(goal), kGoalSceneNameLengthAt), 10);  // with the NUL
-  arm_state_t state{};
-  state.num_pieces = 1;
-  state.pieces = {"coral"};
+  const arm_state_t state = twoJointState();
+  EXPECT_EQ(encode(state)[kStateJointCountAt], 2);
   EXPECT_EQ(encode(state)[kStatePieceCountAt], 1);
   EXPECT_EQ(getInt32(encode(state), kStatePieceCountAt + 1), 6);
   arm_plan_status_t status{};
   status.reason = "no path";
   EXPECT_EQ(getInt32(encode(status), kPlanStatusReasonLengthAt), 8);
-  arm_daemon_status_t daemon{};
-  daemon.joint_names[0] = "elevator";
-  EXPECT_EQ(getInt32(encode(daemon), kDaemonStatusNameLengthAt), 9);
+  EXPECT_EQ(encode(twoJointStatus())[kDaemonStatusJointCountAt], 2);
+  EXPECT_EQ(getInt32(encode(twoJointStatus()), kDaemonStatusNameLengthAt), 9);
+  arm_setpoint_t setpoint{};
+  setpoint.num_joints = 3;
+  setpoint.position = setpoint.velocity = setpoint.volts = {0, 0, 0};
+  setpoint.sequence = {0, 0, 0};
+  EXPECT_EQ(encode(setpoint)[kSetpointJointCountAt], 3);
+  EXPECT_EQ(encode(randomTrajectory(v, 37, 3))[kTrajectoryJointCountAt], 3);
   EXPECT_EQ(getInt32(encode(randomTrajectory(v, 37)), kTrajectoryCountAt), 37);
 }
 
 TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
   Values v(11);
-  arm_goal_t goal = randomGoal(v);
-  goal.num_pieces = 0;
-  goal.pieces.clear();
+  arm_goal_t goal = twoJointGoal(v);
   goal.scene_name = "reef";
   auto goal_bytes = encode(goal);
   for (std::int32_t bad : {0, -1, -100, INT32_MIN, 14, 1000, INT32_MAX}) {
@@ -378,16 +416,39 @@ TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
     arm_goal_t out{};
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, goal_bytes.data(), static_cast<int>(goal_bytes.size())), 0) << bad;
   }
-  // A piece count the bytes do not hold, or a negative one (lcm-gen would size the array by it).
-  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{1}, std::uint8_t{127}}) {
+  // A piece or joint count the bytes do not hold, or a negative one (lcm-gen would size the array
+  // by it).
+  for (const std::size_t at : {kGoalPieceCountAt, kGoalJointCountAt}) {
+    for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{4}, std::uint8_t{127}}) {
+      auto bytes = encode(goal);
+      bytes[at] = bad;
+      arm_goal_t out{};
+      EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
+    }
+  }
+  for (std::int32_t bad : {0, -1, INT32_MIN, 100, INT32_MAX}) {
     auto bytes = encode(goal);
-    bytes[kGoalPieceCountAt] = bad;
+    putInt32(bytes, kGoalPoseNameLengthAt, bad);
     arm_goal_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << bad;
+  }
+  const arm_state_t state = twoJointState();
+  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{5}, std::uint8_t{127}}) {
+    auto bytes = encode(state);
+    bytes[kStateJointCountAt] = bad;
+    arm_state_t out{};
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
   }
-  arm_state_t state{};
-  state.num_pieces = 1;
-  state.pieces = {"coral"};
+  arm_setpoint_t setpoint{};
+  setpoint.num_joints = 2;
+  setpoint.position = setpoint.velocity = setpoint.volts = {0, 0};
+  setpoint.sequence = {0, 0};
+  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{3}, std::uint8_t{127}}) {
+    auto bytes = encode(setpoint);
+    bytes[kSetpointJointCountAt] = bad;
+    arm_setpoint_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
+  }
   for (std::int32_t bad : {0, -1, INT32_MIN, 7, INT32_MAX}) {
     auto bytes = encode(state);
     putInt32(bytes, kStatePieceCountAt + 1, bad);
@@ -410,8 +471,13 @@ TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, status_bytes.data(), static_cast<int>(status_bytes.size())), 0) << bad;
   }
 
-  arm_daemon_status_t daemon{};
-  auto daemon_bytes = encode(daemon);
+  auto daemon_bytes = encode(twoJointStatus());
+  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{3}, std::uint8_t{127}}) {
+    auto bytes = daemon_bytes;
+    bytes[kDaemonStatusJointCountAt] = bad;
+    arm_daemon_status_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
+  }
   for (std::int32_t bad : {0, -1, INT32_MIN, INT32_MAX}) {
     putInt32(daemon_bytes, kDaemonStatusNameLengthAt, bad);
     arm_daemon_status_t out{};
@@ -425,6 +491,12 @@ TEST(LcmTypes, CorruptLengthFieldsAfterAValidFingerprintFailCleanly) {
     EXPECT_LT(cyber::lcmtypes::safeDecode(out, trajectory_bytes.data(), static_cast<int>(trajectory_bytes.size())), 0)
         << bad;
   }
+  for (std::uint8_t bad : {std::uint8_t{0xff}, std::uint8_t{0x80}, std::uint8_t{3}, std::uint8_t{127}}) {
+    auto bytes = encode(randomTrajectory(v, 3));
+    bytes[kTrajectoryJointCountAt] = bad;
+    arm_trajectory_t out{};
+    EXPECT_LT(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())), 0) << int{bad};
+  }
 }
 
 TEST(LcmTypes, SafeDecodeAcceptsEveryValidMessage) {
@@ -435,16 +507,14 @@ TEST(LcmTypes, SafeDecodeAcceptsEveryValidMessage) {
     ASSERT_EQ(cyber::lcmtypes::safeDecode(goal, goal_bytes.data(), static_cast<int>(goal_bytes.size())),
               static_cast<int>(goal_bytes.size()));
   }
-  arm_state_t held{};
+  arm_state_t held = twoJointState();
   held.num_pieces = 4;
   held.pieces = {"a", "b", "c", "d"};
   const auto state_bytes = encode(held);
   arm_state_t state{};
   EXPECT_EQ(cyber::lcmtypes::safeDecode(state, state_bytes.data(), static_cast<int>(state_bytes.size())),
             static_cast<int>(state_bytes.size()));
-  arm_daemon_status_t named{};
-  named.joint_names[0] = "elevator";
-  named.joint_units[1] = "rad";
+  const arm_daemon_status_t named = twoJointStatus();
   const auto named_bytes = encode(named);
   arm_daemon_status_t daemon{};
   EXPECT_EQ(cyber::lcmtypes::safeDecode(daemon, named_bytes.data(), static_cast<int>(named_bytes.size())),
@@ -459,6 +529,24 @@ TEST(LcmTypes, SafeDecodeAcceptsEveryValidMessage) {
   EXPECT_EQ(cyber::lcmtypes::safeDecode(full, full_bytes.data(), static_cast<int>(full_bytes.size())),
             static_cast<int>(full_bytes.size()));
   EXPECT_EQ(full.num_samples, arm_trajectory_t::MAX_SAMPLES);
+  for (int joints = 0; joints <= arm_trajectory_t::MAX_JOINTS; ++joints) {
+    const auto bytes = encode(randomTrajectory(v, 5, joints));
+    arm_trajectory_t out{};
+    EXPECT_EQ(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())),
+              static_cast<int>(bytes.size()))
+        << joints;
+  }
+  for (int joints = 0; joints <= arm_setpoint_t::MAX_JOINTS; ++joints) {
+    arm_setpoint_t setpoint{};
+    setpoint.num_joints = static_cast<std::int8_t>(joints);
+    setpoint.position = setpoint.velocity = setpoint.volts = std::vector<double>(static_cast<std::size_t>(joints));
+    setpoint.sequence = std::vector<std::uint8_t>(static_cast<std::size_t>(joints));
+    const auto bytes = encode(setpoint);
+    arm_setpoint_t out{};
+    EXPECT_EQ(cyber::lcmtypes::safeDecode(out, bytes.data(), static_cast<int>(bytes.size())),
+              static_cast<int>(bytes.size()))
+        << joints;
+  }
 }
 
 class GoalCatcher {
@@ -488,8 +576,8 @@ TEST(LcmTypes, MemqPublishSubscribe) {
   ASSERT_EQ(catcher.goals.size(), 1u);
   EXPECT_EQ(catcher.channels[0], "ARM_GOAL");
   EXPECT_EQ(catcher.goals[0].request_id, sent.request_id);
-  EXPECT_EQ(catcher.goals[0].position[0], sent.position[0]);
-  EXPECT_EQ(catcher.goals[0].position[1], sent.position[1]);
+  EXPECT_EQ(catcher.goals[0].position, sent.position);
+  EXPECT_EQ(catcher.goals[0].pose_name, sent.pose_name);
   EXPECT_EQ(catcher.goals[0].pieces, sent.pieces);
   EXPECT_EQ(catcher.goals[0].scene_name, sent.scene_name);
 }

@@ -135,6 +135,8 @@ class LcmToWpilog : public ::testing::Test {
         case 0: {
           cyberplanner::arm_state_t m{};
           m.utime = utime;
+          m.num_joints = 2;
+          m.position.resize(2), m.velocity.resize(2);
           m.position[0] = u(rng), m.position[1] = u(rng), m.velocity[0] = u(rng), m.velocity[1] = u(rng);
           if (coin()) m.pieces.push_back("coral");
           if (coin()) m.pieces.push_back("algae");
@@ -148,6 +150,8 @@ class LcmToWpilog : public ::testing::Test {
           m.mode = static_cast<int8_t>(rng() % 5);
           m.request_id = static_cast<int64_t>(rng() % 100) - 1;
           m.trajectory_t_s = u(rng);
+          m.num_joints = 2;
+          m.position.resize(2), m.velocity.resize(2), m.volts.resize(2), m.sequence.resize(2);
           for (int j = 0; j < 2; ++j) {
             m.position[j] = u(rng), m.velocity[j] = u(rng), m.volts[j] = u(rng);
             m.sequence[j] = static_cast<uint8_t>(rng());
@@ -159,6 +163,8 @@ class LcmToWpilog : public ::testing::Test {
           cyberplanner::arm_goal_t m{};
           m.utime = utime;
           m.request_id = k;
+          m.num_joints = 2;
+          m.position.resize(2);
           m.position[0] = u(rng), m.position[1] = u(rng);
           if (coin()) m.pieces.push_back("algae");
           m.num_pieces = static_cast<int8_t>(m.pieces.size());
@@ -185,6 +191,7 @@ class LcmToWpilog : public ::testing::Test {
           m.start_utime = utime + 5000;
           m.dt_s = 0.01;
           m.num_samples = 5 + static_cast<int>(rng() % 20);
+          m.num_joints = 2;
           for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);
           for (int i = 0; i < m.num_samples; ++i) {
             m.t_s.push_back(i * m.dt_s);
@@ -202,6 +209,9 @@ class LcmToWpilog : public ::testing::Test {
           m.mode = static_cast<int8_t>(rng() % 5);
           m.robot_enabled = coin(), m.motion_allowed = coin();
           m.active_request_id = k;
+          m.num_joints = 2;
+          m.joint_names = {"elevator", "arm"};
+          m.joint_units = {"m", "rad"};
           m.state_age_ms = u(rng), m.heartbeat_age_ms = u(rng);
           for (auto* c : {&m.goals_received, &m.plans_succeeded, &m.plans_failed, &m.frames_sent, &m.can_errors,
                           &m.decode_errors, &m.stream_overruns, &m.publish_failures}) {
@@ -494,6 +504,48 @@ TEST(LcmToWpilogErrors, MissingAndForeignLogsAreErrors) {
   ASSERT_EQ(foreign.status(), WpilogStatus::kNoMessages);
   EXPECT_NE(foreign.error().message.find("1 undecodable"), std::string::npos) << foreign.error().message;
   std::filesystem::remove(path);
+}
+
+// A named goal carries its name and no values; a message of another joint count than the config's
+// is another robot's and is not read as this one's (docs/lcm.md, "Joints by index").
+TEST(LcmToWpilogJoints, NamedGoalsGiveTheirNameAndOtherJointCountsAreSkipped) {
+  const auto path = std::filesystem::temp_directory_path() / ("named_" + std::to_string(getpid()) + ".lcmlog");
+  {
+    lcm::LogFile log(path.string(), "w");
+    int64_t eventnum = 0;
+    auto put = [&](const std::string& channel, const auto& m) {
+      std::vector<char> bytes(static_cast<size_t>(m.getEncodedSize()));
+      m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+      lcm::LogEvent e{};
+      e.eventnum = eventnum++;
+      e.timestamp = kSyntheticT0 + eventnum * 1000;
+      e.channel = channel;
+      e.datalen = static_cast<int32_t>(bytes.size());
+      e.data = bytes.data();
+      ASSERT_EQ(log.writeEvent(&e), 0);
+    };
+    cyberplanner::arm_goal_t goal{};
+    goal.request_id = 3;
+    goal.pose_name = "L3";
+    put("ARM_GOAL", goal);
+    cyberplanner::arm_state_t three{};
+    three.num_joints = 3;
+    three.position = {0.1, 0.2, 0.3};
+    three.velocity = {0.0, 0.0, 0.0};
+    put("ARM_STATE", three);
+  }
+  const config::Config config = config::loadEmbeddedDefaultConfig();
+  auto conversion = convertLcmLog(path.string(), config.daemon.channels, mechanismGeometry(config.robot));
+  std::filesystem::remove(path);
+  ASSERT_TRUE(conversion.ok()) << conversion.error().message;
+  auto log = parse(conversion.value().writer.bytes());
+  ASSERT_TRUE(log.ok()) << log.error().message;
+  const auto name = log.value().find("/CyberPlanner/Goal/PoseName");
+  ASSERT_TRUE(name);
+  EXPECT_EQ(log.value().entries[*name].type, "string");
+  EXPECT_TRUE(log.value().find("/CyberPlanner/Goal/RequestId"));
+  EXPECT_FALSE(log.value().find("/CyberPlanner/Goal/ElevatorMeters")) << "a named goal has no values";
+  EXPECT_FALSE(log.value().find("/CyberPlanner/Elevator/MeasuredMeters")) << "a 3-joint state is not this robot's";
 }
 
 }  // namespace

@@ -94,7 +94,10 @@ class Converter {
   Converter(Entries& entries, const MechanismGeometry& geometry)
       : e_(entries), g_(geometry), j_{jointNames(geometry.chain[0]), jointNames(geometry.chain[1])} {}
 
+  // A state or setpoint of another joint count than the config's is of another robot: skipped, as
+  // the daemon ignores such a state (docs/lcm.md, "Joints by index").
   void state(uint64_t t, const cyberplanner::arm_state_t& m) {
+    if (!ours(m.num_joints)) return;
     for (size_t j = 0; j < j_.size(); ++j) {
       e_.putDouble(key(j_[j], "Measured" + j_[j].position), t, m.position[j]);
       e_.putDouble(key(j_[j], "Measured" + j_[j].velocity), t, m.velocity[j]);
@@ -104,6 +107,7 @@ class Converter {
   }
 
   void setpoint(uint64_t t, const cyberplanner::arm_setpoint_t& m) {
+    if (!ours(m.num_joints)) return;
     for (size_t j = 0; j < j_.size(); ++j) joint(j_[j], t, m.position[j], m.velocity[j], m.volts[j], m.sequence[j]);
     e_.putString("Setpoint/Mode", t, lcmtypes::modeName(m.mode));
     e_.putInt64("Setpoint/RequestId", t, m.request_id);
@@ -113,7 +117,11 @@ class Converter {
 
   void goal(uint64_t t, const cyberplanner::arm_goal_t& m) {
     e_.putInt64("Goal/RequestId", t, m.request_id);
-    for (size_t j = 0; j < j_.size(); ++j) e_.putDouble("Goal/" + j_[j].joint + j_[j].position, t, m.position[j]);
+    // A named goal sends no values (docs/lcm.md, "Named goals"): its name is the target.
+    if (!m.pose_name.empty()) e_.putString("Goal/PoseName", t, m.pose_name);
+    if (ours(m.num_joints)) {
+      for (size_t j = 0; j < j_.size(); ++j) e_.putDouble("Goal/" + j_[j].joint + j_[j].position, t, m.position[j]);
+    }
     e_.putString("Goal/Pieces", t, pieceList(m.pieces));
     e_.putString("Goal/SceneName", t, m.scene_name);
     e_.putDouble("Goal/SceneOffsetMeters", t, m.scene_offset_m);
@@ -134,6 +142,7 @@ class Converter {
   // The whole trajectory as arrays at its arrival, and its samples as the planned series of
   // each joint at the times they are commanded.
   void trajectory(uint64_t t, const cyberplanner::arm_trajectory_t& m) {
+    if (!ours(m.num_joints)) return;
     const int64_t start_us = static_cast<int64_t>(t) + (m.start_utime - m.utime);
     e_.putInt64("Trajectory/RequestId", t, m.request_id);
     e_.putDouble("Trajectory/DurationSeconds", t, m.duration_s);
@@ -197,6 +206,8 @@ class Converter {
   }
 
  private:
+  [[nodiscard]] bool ours(int num_joints) const { return num_joints == static_cast<int>(j_.size()); }
+
   void joint(const JointNames& j, uint64_t t, double q, double v, double volts, uint8_t sequence) {
     e_.putDouble(key(j, "Setpoint" + j.position), t, q);
     e_.putDouble(key(j, "Velocity" + j.velocity), t, v);

@@ -7,7 +7,7 @@
 // count of 2^31-1 allocates gigabytes before the read fails. safeDecode() checks those fields
 // first and returns the ordinary "< 0" failure instead.
 //
-// Every type with a string or an array is walked field by field (message version 2, docs/lcm.md).
+// Every type with a string or an array is walked field by field (message version 3, docs/lcm.md).
 
 #include <cstdint>
 #include <exception>
@@ -15,6 +15,7 @@
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
 #include "cyberplanner/arm_plan_status_t.hpp"
+#include "cyberplanner/arm_setpoint_t.hpp"
 #include "cyberplanner/arm_state_t.hpp"
 #include "cyberplanner/arm_trajectory_t.hpp"
 
@@ -52,6 +53,9 @@ class Reader {
     std::int32_t length = 0;
     return int32(length) && length >= 1 && skip(length);
   }
+  // `rows` arrays of `count` doubles each, whose count is an int8_t field: 0 .. 127 (lcm-gen
+  // resizes to the count before reading, so a negative one would throw).
+  bool doubles(std::int8_t count, int rows) { return count >= 0 && skip(std::int64_t{count} * rows * 8); }
   // A variable array of strings whose count is an int8_t field: 0 .. 127 (lcm-gen resizes to the
   // count before reading, so a negative one would throw).
   bool strings(std::int8_t count) {
@@ -71,19 +75,31 @@ class Reader {
 // The field layouts below follow lcmtypes/*.lcm; tests/unit/lcmtypes decodes freshly encoded
 // messages through them, so a change to a .lcm file that moves a field fails a test.
 
-// arm_goal_t: utime, request_id (2 x 8), position[2] (2 x 8), num_pieces (1), pieces[num_pieces],
-// scene_name, scene_offset_m (8).
+// arm_goal_t: utime, request_id (2 x 8), pose_name, num_joints (1), position[num_joints],
+// num_pieces (1), pieces[num_pieces], scene_name, scene_offset_m (8).
 inline bool lengthsFit(const cyberplanner::arm_goal_t&, const void* buf, int len) {
   Reader r(buf, len);
+  std::int8_t joints = 0;
   std::int8_t pieces = 0;
-  return r.skip(4 * 8) && r.int8(pieces) && r.strings(pieces) && r.string() && r.skip(8);
+  return r.skip(2 * 8) && r.string() && r.int8(joints) && r.doubles(joints, 1) && r.int8(pieces) && r.strings(pieces) &&
+         r.string() && r.skip(8);
 }
 
-// arm_state_t: utime (8), position[2], velocity[2] (4 x 8), num_pieces (1), pieces[num_pieces].
+// arm_state_t: utime (8), num_joints (1), position, velocity [num_joints], num_pieces (1),
+// pieces[num_pieces].
 inline bool lengthsFit(const cyberplanner::arm_state_t&, const void* buf, int len) {
   Reader r(buf, len);
+  std::int8_t joints = 0;
   std::int8_t pieces = 0;
-  return r.skip(5 * 8) && r.int8(pieces) && r.strings(pieces);
+  return r.skip(8) && r.int8(joints) && r.doubles(joints, 2) && r.int8(pieces) && r.strings(pieces);
+}
+
+// arm_setpoint_t: utime (8), mode (1), request_id, trajectory_t_s (2 x 8), num_joints (1),
+// position, velocity, volts [num_joints], sequence[num_joints] (bytes).
+inline bool lengthsFit(const cyberplanner::arm_setpoint_t&, const void* buf, int len) {
+  Reader r(buf, len);
+  std::int8_t joints = 0;
+  return r.skip(8 + 1 + 2 * 8) && r.int8(joints) && r.doubles(joints, 3) && r.skip(joints);
 }
 
 // arm_plan_status_t: utime, request_id (2 x 8), status (1), reason.
@@ -92,21 +108,25 @@ inline bool lengthsFit(const cyberplanner::arm_plan_status_t&, const void* buf, 
   return r.skip(2 * 8 + 1) && r.string();
 }
 
-// arm_daemon_status_t: utime (8), mode (1), joint_names[2], joint_units[2].
+// arm_daemon_status_t: utime (8), mode (1), num_joints (1), joint_names[num_joints],
+// joint_units[num_joints].
 inline bool lengthsFit(const cyberplanner::arm_daemon_status_t&, const void* buf, int len) {
   Reader r(buf, len);
-  return r.skip(8 + 1) && r.strings(4);
+  std::int8_t joints = 0;
+  return r.skip(8 + 1) && r.int8(joints) && r.strings(joints) && r.strings(joints);
 }
 
-// arm_trajectory_t: utime, request_id, start_utime (3 x 8), duration_s, dt_s (2 x 8), num_samples
-// (4), then t_s and position, velocity, volts [2][num_samples]: 7 doubles per sample.
-inline constexpr int kTrajectoryArrays = 7;
+// arm_trajectory_t: utime, request_id, start_utime (3 x 8), duration_s, dt_s (2 x 8), num_joints
+// (1), num_samples (4), then t_s[num_samples] and position, velocity, volts
+// [num_joints][num_samples]: 1 + 3 x num_joints doubles per sample.
+inline constexpr int kTrajectoryRowsPerJoint = 3;
 inline bool lengthsFit(const cyberplanner::arm_trajectory_t&, const void* buf, int len) {
   Reader r(buf, len);
+  std::int8_t joints = 0;
   std::int32_t count = 0;
-  if (!r.skip(5 * 8) || !r.int32(count)) return false;
-  if (count < 0 || count > cyberplanner::arm_trajectory_t::MAX_SAMPLES) return false;
-  return r.skip(std::int64_t{count} * kTrajectoryArrays * 8);
+  if (!r.skip(5 * 8) || !r.int8(joints) || !r.int32(count)) return false;
+  if (joints < 0 || count < 0 || count > cyberplanner::arm_trajectory_t::MAX_SAMPLES) return false;
+  return r.skip(std::int64_t{count} * (1 + kTrajectoryRowsPerJoint * joints) * 8);
 }
 
 // Types without strings or arrays need no pre-check.

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "cyber/config/load_config.hpp"
 #include "cyberplanner/arm_cancel_t.hpp"
 #include "cyberplanner/arm_daemon_status_t.hpp"
 #include "cyberplanner/arm_goal_t.hpp"
@@ -114,6 +115,7 @@ class DaemonMemq : public ::testing::Test {
     DaemonOptions options;
     options.settings.lcm_url = "memq://";
     options.simulate_can = true;
+    options.poses = config::loadEmbeddedDefaultConfig().poses;
     options.settings.setpoint_echo_full_rate = full_rate_echo;
     if (full_rate_echo) options.settings.setpoint_echo_rate_hz = 0.1;
     daemon = std::make_unique<Daemon>(cyber::test::referenceModel(), options, planning, nullptr);
@@ -128,8 +130,9 @@ class DaemonMemq : public ::testing::Test {
     state_feeder = std::thread([this] {
       while (!stop_feeding) {
         cyberplanner::arm_state_t state{};
-        state.position[0] = 0.1;
-        state.position[1] = 1.2;
+        state.num_joints = 2;
+        state.position = {0.1, 1.2};
+        state.velocity = {0.0, 0.0};
         publish("ARM_STATE", state);
         std::this_thread::sleep_for(20ms);
       }
@@ -170,8 +173,8 @@ class DaemonMemq : public ::testing::Test {
   void goal(std::int64_t id, double q0, double q1, std::vector<std::string> pieces = {}) {
     cyberplanner::arm_goal_t message{};
     message.request_id = id;
-    message.position[0] = q0;
-    message.position[1] = q1;
+    message.num_joints = 2;
+    message.position = {q0, q1};
     message.num_pieces = static_cast<std::int8_t>(pieces.size());
     message.pieces = std::move(pieces);
     publish("ARM_GOAL", message);
@@ -289,16 +292,30 @@ TEST_F(DaemonMemq, GarbageIsCountedAndTheDaemonKeepsWorking) {
   bytes[length_at + 1] = bytes[length_at + 2] = bytes[length_at + 3] = 0xff;
   publishRaw("ARM_GOAL", bytes);
   cyberplanner::arm_state_t nan_state{};
-  nan_state.position[0] = std::nan("");
+  nan_state.num_joints = 2;
+  nan_state.position = {std::nan(""), 1.0};
+  nan_state.velocity = {0.0, 0.0};
   publish("ARM_STATE", nan_state);
+  // A state of three joints: not this robot's.
+  cyberplanner::arm_state_t three{};
+  three.num_joints = 3;
+  three.position = {0.1, 1.2, 0.0};
+  three.velocity = {0.0, 0.0, 0.0};
+  publish("ARM_STATE", three);
   // A goal whose num_pieces is negative: lcm-gen would throw sizing the array; undecodable.
   cyberplanner::arm_goal_t no_pieces{};
   std::vector<std::uint8_t> negative(static_cast<size_t>(no_pieces.getEncodedSize()));
   no_pieces.encode(negative.data(), 0, static_cast<int>(negative.size()));
-  negative[8 + 4 * 8] = 0xff;  // fingerprint, utime, request_id, position[2], then num_pieces
+  // fingerprint, utime, request_id, pose_name "" (length 1, NUL), num_joints 0, then num_pieces
+  negative[8 + 2 * 8 + 5 + 1] = 0xff;
   publishRaw("ARM_GOAL", negative);
+  // And one whose num_joints is negative.
+  std::vector<std::uint8_t> no_joints = negative;
+  no_joints[8 + 2 * 8 + 5 + 1] = 0;
+  no_joints[8 + 2 * 8 + 5] = 0xff;
+  publishRaw("ARM_GOAL", no_joints);
   ASSERT_TRUE(listener.waitFor(
-      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 6; }));
+      [&] { return !listener.daemon_statuses.empty() && listener.daemon_statuses.back().decode_errors >= 8; }));
   goal(7, 1.0, 1.0);
   ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(7); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
@@ -329,10 +346,51 @@ TEST_F(DaemonMemq, StatusNamesTheJointsAndTheirUnits) {
   ASSERT_TRUE(listener.waitFor([&] { return !listener.daemon_statuses.empty(); }));
   std::lock_guard<std::mutex> lock(listener.mutex);
   const auto& status = listener.daemon_statuses.back();
-  EXPECT_EQ(status.joint_names[0], "elevator");
-  EXPECT_EQ(status.joint_names[1], "arm");
-  EXPECT_EQ(status.joint_units[0], "m");
-  EXPECT_EQ(status.joint_units[1], "rad");
+  EXPECT_EQ(status.num_joints, 2);
+  EXPECT_EQ(status.joint_names, (std::vector<std::string>{"elevator", "arm"}));
+  EXPECT_EQ(status.joint_units, (std::vector<std::string>{"m", "rad"}));
+}
+
+// ARM_GOAL's pose_name is resolved with the daemon's configuration: [poses.none] STOW =
+// [0.20, 1.57] of config/reefscape-2025.toml (docs/lcm.md, "Named goals").
+TEST_F(DaemonMemq, ANamedGoalMovesToThePoseOfItsHeldSet) {
+  waitForHolding();
+  cyberplanner::arm_goal_t message{};
+  message.request_id = 11;
+  message.pose_name = "STOW";  // num_joints 0: no values needed
+  publish("ARM_GOAL", message);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(11); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  EXPECT_EQ(listener.statuses.back().status, cyberplanner::arm_plan_status_t::STATUS_DONE)
+      << listener.statuses.back().reason;
+  ASSERT_FALSE(listener.trajectories.empty());
+  EXPECT_EQ(listener.trajectories.back().num_joints, 2);
+  EXPECT_NEAR(listener.trajectories.back().position[0].back(), 0.20, 1e-9);
+  EXPECT_NEAR(listener.trajectories.back().position[1].back(), 1.57, 1e-9);
+}
+
+TEST_F(DaemonMemq, AnUnknownNameOrAnotherJointCountIsRejectedWithTheReason) {
+  waitForHolding();
+  cyberplanner::arm_goal_t unknown{};
+  unknown.request_id = 12;
+  unknown.pose_name = "HOLD_HIGH";
+  unknown.num_pieces = 1;
+  unknown.pieces = {"coral"};
+  publish("ARM_GOAL", unknown);
+  cyberplanner::arm_goal_t three{};
+  three.request_id = 13;
+  three.num_joints = 3;
+  three.position = {0.5, 1.0, 0.0};
+  publish("ARM_GOAL", three);
+  ASSERT_TRUE(listener.waitFor([&] { return listener.finalFor(12) && listener.finalFor(13); }));
+  std::lock_guard<std::mutex> lock(listener.mutex);
+  using S = cyberplanner::arm_plan_status_t;
+  EXPECT_EQ(listener.statusesOf(12), std::vector<std::int8_t>{S::STATUS_REJECTED});
+  EXPECT_EQ(listener.statusesOf(13), std::vector<std::int8_t>{S::STATUS_REJECTED});
+  EXPECT_EQ(listener.statuses[0].reason,
+            "invalid input: no pose \"HOLD_HIGH\" for the held set \"coral\" (its poses: STOW, INTAKE, L1, L2, L3, "
+            "L4, NET); it is a pose of \"algae\"");
+  EXPECT_EQ(listener.statuses[1].reason, "invalid input: num_joints = 3 but this robot has 2 joints (elevator, arm)");
 }
 
 // ARM_STATE is taken and stamped on the state receiver's thread, not on the event loop: a state
@@ -350,8 +408,9 @@ TEST_F(DaemonMemq, AStateIsTakenWhileTheEventLoopIsBusy) {
   });
   loop_blocked.wait();
   cyberplanner::arm_state_t state{};
-  state.position[0] = 0.3;
-  state.position[1] = 1.3;
+  state.num_joints = 2;
+  state.position = {0.3, 1.3};
+  state.velocity = {0.0, 0.0};
   // From this thread: the loop is blocked, and memq:// publishing is thread-safe (LCM locks it).
   DaemonProbe::lcmFor(*daemon, "ARM_STATE").publish("ARM_STATE", &state);
   bool taken = false;
@@ -483,8 +542,8 @@ TEST_F(DaemonMemq, StopHoldsCancelsOpenGoalsAndReturnsZero) {
   waitForHolding();
   cyberplanner::arm_goal_t message{};
   message.request_id = 5;
-  message.position[0] = 1.8;
-  message.position[1] = 3.0;
+  message.num_joints = 2;
+  message.position = {1.8, 3.0};
   publish("ARM_GOAL", message);
   ASSERT_TRUE(listener.waitFor([&] {
     for (const auto& s : listener.statuses) {

@@ -28,15 +28,16 @@ Message roundTrip(const Message& message) {
 TEST(LcmMessages, GoalFieldsSurviveTheWireAndAreCopied) {
   cyberplanner::arm_goal_t message{};
   message.request_id = -5;
-  message.position[0] = 1.25;
-  message.position[1] = 2.5;
+  message.num_joints = 2;
+  message.position = {1.25, 2.5};
   message.num_pieces = 2;
   message.pieces = {"algae", "coral"};
   message.scene_name = "reef";
   message.scene_offset_m = 0.125;
   const GoalRequest goal = goalFromMessage(roundTrip(message));
   EXPECT_EQ(goal.request_id, -5);
-  EXPECT_EQ(goal.position, JointVector(1.25, 2.5));
+  EXPECT_EQ(goal.position, (std::vector<double>{1.25, 2.5}));
+  EXPECT_EQ(goal.pose_name, "");
   EXPECT_EQ(goal.num_pieces, 2);
   EXPECT_EQ(goal.pieces, (std::vector<std::string>{"algae", "coral"}));
   EXPECT_EQ(goal.scene_name, "reef");
@@ -48,10 +49,21 @@ TEST(LcmMessages, GoalFieldsSurviveTheWireAndAreCopied) {
   EXPECT_EQ(valid.value().scene_offset_m, 0.125);
 }
 
+// A named goal may send no joint values (docs/lcm.md, "Named goals").
+TEST(LcmMessages, ANamedGoalArrivesWithItsNameAndNoValues) {
+  cyberplanner::arm_goal_t message{};
+  message.request_id = 3;
+  message.pose_name = "L3";
+  const GoalRequest goal = goalFromMessage(roundTrip(message));
+  EXPECT_EQ(goal.pose_name, "L3");
+  EXPECT_TRUE(goal.position.empty());
+}
+
 TEST(LcmMessages, StateAndSetpointAndStatusRoundTrip) {
   cyberplanner::arm_state_t state{};
-  state.position[0] = 0.5;
-  state.velocity[1] = -0.25;
+  state.num_joints = 2;
+  state.position = {0.5, 0.0};
+  state.velocity = {0.0, -0.25};
   state.num_pieces = 1;
   state.pieces = {"coral"};
   const auto state_back = roundTrip(state);
@@ -61,16 +73,16 @@ TEST(LcmMessages, StateAndSetpointAndStatusRoundTrip) {
 
   StreamSnapshot snapshot;
   snapshot.joints = {can::Setpoint{0.5, 0.25, 1.5, 3}, can::Setpoint{1.0, -0.5, -0.75, 4}};
-  const auto setpoint = roundTrip(setpointMessage(snapshot, 1));
+  const auto setpoint = roundTrip(setpointMessage(snapshot, 2, 1));
+  EXPECT_EQ(setpoint.num_joints, 2);
   EXPECT_EQ(setpoint.position[1], 1.0);
   EXPECT_EQ(setpoint.volts[0], 1.5);
   EXPECT_EQ(setpoint.sequence[1], 4);
 
   cyberplanner::arm_daemon_status_t status{};
-  status.joint_names[0] = "elevator";
-  status.joint_names[1] = "arm";
-  status.joint_units[0] = "m";
-  status.joint_units[1] = "rad";
+  status.num_joints = 2;
+  status.joint_names = {"elevator", "arm"};
+  status.joint_units = {"m", "rad"};
   const auto status_back = roundTrip(status);
   EXPECT_EQ(status_back.joint_names[1], "arm");
   EXPECT_EQ(status_back.joint_units[0], "m");
@@ -94,10 +106,9 @@ TEST(LcmMessages, CancelsTakeTheRequestAndAKnownAction) {
 TEST(LcmMessages, StatesMustBeFiniteAndNearTheJointRanges) {
   const auto& robot = cyber::test::referenceModel();
   cyberplanner::arm_state_t message{};
-  message.position[0] = 0.5;
-  message.position[1] = 1.0;
-  message.velocity[0] = 0.1;
-  message.velocity[1] = -0.2;
+  message.num_joints = 2;
+  message.position = {0.5, 1.0};
+  message.velocity = {0.1, -0.2};
   auto state = stateFromMessage(message, robot);
   ASSERT_TRUE(state);
   EXPECT_EQ(state->q, JointVector(0.5, 1.0));
@@ -112,6 +123,25 @@ TEST(LcmMessages, StatesMustBeFiniteAndNearTheJointRanges) {
   message.velocity[1] = 0.0;
   message.position[1] = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(stateFromMessage(message, robot));
+}
+
+// A state of another robot's joints is not read as this one's, nor past its arrays.
+TEST(LcmMessages, StatesMustHaveTheRobotsJointCount) {
+  const auto& robot = cyber::test::referenceModel();
+  cyberplanner::arm_state_t message{};
+  message.num_joints = 3;
+  message.position = {0.5, 1.0, 0.0};
+  message.velocity = {0.0, 0.0, 0.0};
+  EXPECT_FALSE(stateFromMessage(roundTrip(message), robot));
+  message.num_joints = 1;
+  message.position = {0.5};
+  message.velocity = {0.0};
+  EXPECT_FALSE(stateFromMessage(roundTrip(message), robot));
+  message.num_joints = 2;  // a count the arrays do not have, as a hand-built message might
+  EXPECT_FALSE(stateFromMessage(message, robot));
+  message.position = {0.5, 1.0};
+  message.velocity = {0.0, 0.0};
+  EXPECT_TRUE(stateFromMessage(message, robot));
 }
 
 TEST(LcmMessages, StatusCarriesStatusReasonTimesAndDuration) {
@@ -142,10 +172,11 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
   const auto& robot = cyber::test::referenceModel();
   auto trajectory =
       daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), 1.234, robot);
-  const auto message = trajectoryMessage(4, *trajectory, 1000, 0.01, 2000);
+  const auto message = trajectoryMessage(4, *trajectory, 2, 1000, 0.01, 2000);
   EXPECT_EQ(message.request_id, 4);
   EXPECT_EQ(message.start_utime, 1000);
   EXPECT_DOUBLE_EQ(message.dt_s, 0.01);
+  EXPECT_EQ(message.num_joints, 2);
   EXPECT_EQ(message.num_samples, 125);  // 0 .. 1.23 s, then the end at 1.234 s
   ASSERT_EQ(message.t_s.size(), 125u);
   ASSERT_EQ(message.volts.size(), 2u);
@@ -173,7 +204,7 @@ TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
   for (double duration : {9.98, 9.99, 10.0, 33.3, 120.0}) {
     auto trajectory =
         daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), duration, robot);
-    const auto message = trajectoryMessage(1, *trajectory, 0, 0.01, 0);
+    const auto message = trajectoryMessage(1, *trajectory, 2, 0, 0.01, 0);
     EXPECT_LE(message.num_samples, cyberplanner::arm_trajectory_t::MAX_SAMPLES) << duration;
     EXPECT_GE(message.dt_s, 0.01);
     // The last sample is the end of the motion, and the others are on the step.
@@ -182,8 +213,29 @@ TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
     EXPECT_LE(message.t_s.back() - message.t_s[message.t_s.size() - 2], message.dt_s + 1e-9) << duration;
     EXPECT_LT(message.getEncodedSize(), 60000);
   }
+  EXPECT_EQ(maxTrajectorySamples(2), cyberplanner::arm_trajectory_t::MAX_SAMPLES);
   auto still = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(0.1, 1.0), 0.0, robot);
-  EXPECT_EQ(trajectoryMessage(1, *still, 0, 0.01, 0).num_samples, 1);
+  EXPECT_EQ(trajectoryMessage(1, *still, 2, 0, 0.01, 0).num_samples, 1);
+}
+
+// More joints, fewer samples: a full message of MAX_JOINTS joints stays under 60 kB too, and one
+// more sample would not.
+TEST(LcmMessages, TrajectorySamplesShrinkWithTheJointCountToStayUnder60kB) {
+  for (int joints = 1; joints <= cyberplanner::arm_trajectory_t::MAX_JOINTS; ++joints) {
+    const int samples = maxTrajectorySamples(joints);
+    cyberplanner::arm_trajectory_t message{};
+    message.num_joints = static_cast<std::int8_t>(joints);
+    message.num_samples = samples;
+    message.t_s.assign(static_cast<size_t>(samples), 0.0);
+    for (auto* table : {&message.position, &message.velocity, &message.volts}) {
+      table->assign(static_cast<size_t>(joints), std::vector<double>(static_cast<size_t>(samples)));
+    }
+    EXPECT_LT(message.getEncodedSize(), 60000) << joints;
+    if (samples < cyberplanner::arm_trajectory_t::MAX_SAMPLES) {
+      EXPECT_GE(message.getEncodedSize() + 8 * (1 + 3 * joints), 60000) << joints;
+    }
+  }
+  EXPECT_EQ(maxTrajectorySamples(4), 576);
 }
 
 TEST(LcmMessages, SetpointEchoesTheWireValues) {
@@ -192,7 +244,7 @@ TEST(LcmMessages, SetpointEchoesTheWireValues) {
   snapshot.request_id = 12;
   snapshot.segment_time_s = 0.25;
   snapshot.joints = {can::Setpoint{0.12345, 0.5, 1.2, 7}, can::Setpoint{2.0, -1.0, 0.3, 9}};
-  const auto message = setpointMessage(snapshot, 55);
+  const auto message = setpointMessage(snapshot, 2, 55);
   EXPECT_EQ(message.mode, cyberplanner::arm_setpoint_t::MODE_MOVING);
   EXPECT_EQ(message.request_id, 12);
   EXPECT_EQ(message.trajectory_t_s, 0.25);
@@ -200,8 +252,10 @@ TEST(LcmMessages, SetpointEchoesTheWireValues) {
   EXPECT_EQ(message.velocity[1], -1.0);
   EXPECT_EQ(message.sequence[0], 7);
   EXPECT_EQ(message.sequence[1], 9);
+  EXPECT_EQ(message.num_joints, 2);
+  ASSERT_EQ(message.volts.size(), 2u);
   snapshot.mode = StreamMode::kHolding;
-  EXPECT_EQ(setpointMessage(snapshot, 0).trajectory_t_s, 0.0);
+  EXPECT_EQ(setpointMessage(snapshot, 2, 0).trajectory_t_s, 0.0);
 }
 
 }  // namespace

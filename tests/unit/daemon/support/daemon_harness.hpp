@@ -133,7 +133,7 @@ class Harness {
                              std::vector<std::string> pieces = {}, double scene_offset_m = 0.0) {
     GoalRequest request;
     request.request_id = id;
-    request.position = q;
+    request.position = {q[0], q[1]};
     request.num_pieces = static_cast<int>(pieces.size());
     request.pieces = std::move(pieces);
     request.scene_name = std::move(scene);

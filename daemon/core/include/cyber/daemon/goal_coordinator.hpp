@@ -61,6 +61,7 @@ struct CoordinatorSettings {
   double stream_period_s = 0.005;
   double max_budget_s = 1.0;
   int max_late_attempts = 3;  // then finish the running motion and plan from rest
+  PoseLookup poses;           // resolves ARM_GOAL's pose_name (the configuration's named poses)
 };
 
 struct CoordinatorCounters {

@@ -3,6 +3,7 @@
 // problem is a PlanError whose reason names the field, and joints by the config's names.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,12 @@ inline constexpr int kMaxGoalPieces = planner::HeldPieces::kMaxPieces;
 
 struct GoalRequest {
   std::int64_t request_id = 0;
-  // Targets of joint 0 and joint 1 (config [[joints]] order), each in its joint's unit (m or rad).
-  planner::JointVector position = planner::JointVector::Zero();
+  // "" = `position` is the target; else a pose of the config's [poses.SET] for the held pieces,
+  // and `position` is ignored (docs/lcm.md, "Named goals").
+  std::string pose_name;
+  // The target of each joint as sent (config [[joints]] order), each in its joint's unit (m or
+  // rad); refused unless there are as many as the robot has joints.
+  std::vector<double> position;
   // The message's count of pieces as sent; the array below is what arrived. The two differ only
   // when a sender builds a message by hand, which is refused rather than guessed at.
   int num_pieces = 0;
@@ -33,8 +38,15 @@ struct ValidGoal {
   double scene_offset_m = 0.0;
 };
 
-// kInvalidInput for non-finite values, bad piece lists, unknown scenes and scene offsets outside
-// the scene's range; kGoalOutOfRange outside the joint limits.
-planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot);
+// The pose a goal's pose_name names for its held pieces, or an error whose message lists the
+// poses that set has. The daemon builds it from its configuration (daemon/io/named_poses.hpp);
+// an empty one refuses every name.
+using PoseLookup = std::function<planner::Result<planner::JointVector>(planner::HeldPieces, const std::string&)>;
+
+// kInvalidInput for a joint count other than the robot's, non-finite values, bad piece lists,
+// unknown pose names, unknown scenes and scene offsets outside the scene's range;
+// kGoalOutOfRange outside the joint limits (a named pose is checked like sent values).
+planner::Result<ValidGoal> validateGoal(const GoalRequest& goal, const planner::RobotModel& robot,
+                                        const PoseLookup& poses = {});
 
 }  // namespace cyber::daemon

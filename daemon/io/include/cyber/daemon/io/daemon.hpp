@@ -11,9 +11,11 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "cyber/can/can_socket.hpp"
 #include "cyber/config/daemon_settings.hpp"
+#include "cyber/config/load_config.hpp"
 #include "cyber/daemon/frame_writer.hpp"
 #include "cyber/daemon/io/can_input.hpp"
 #include "cyber/daemon/io/event_loop.hpp"
@@ -39,7 +41,8 @@ class StartupError : public std::runtime_error {
 
 struct DaemonOptions {
   config::DaemonSettings settings;
-  bool simulate_can = false;  // --can none: no socket, frames discarded, robot-enabled gate open
+  bool simulate_can = false;           // --can none: no socket, frames discarded, robot-enabled gate open
+  std::vector<config::PoseSet> poses;  // the configuration's named poses, for ARM_GOAL's pose_name
 };
 
 class Daemon final {

@@ -31,18 +31,25 @@ struct MeasuredState {
   JointVector q = JointVector::Zero();
   JointVector qdot = JointVector::Zero();
 };
-// Accepted when finite and within the joint ranges widened by `margin` (m or rad): a sensor a
-// little past a limit is still the mechanism's position; nonsense is not held.
+// Accepted when num_joints is the robot's joint count and the values are finite and within the joint ranges widened by
+// `margin` (m or rad): a sensor a little past a limit is still the mechanism's position; nonsense is not held.
 std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& message,
                                               const planner::RobotModel& robot, double margin = 0.5);
 
 cyberplanner::arm_plan_status_t statusMessage(const StatusUpdate& update, std::int64_t utime);
 
-// Samples at step_s, widened to duration / (MAX_SAMPLES - 2) for long trajectories so at most
-// MAX_SAMPLES samples cover the whole trajectory, the last one at its end (docs/lcm.md).
-cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
-                                                 std::int64_t start_utime, double step_s, std::int64_t utime);
+// The most samples an ARM_TRAJECTORY of `num_joints` joints may carry: MAX_SAMPLES (1000), fewer
+// than that when more joints would take the message past 60 kB (576 for 4 joints).
+int maxTrajectorySamples(int num_joints);
 
-cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, std::int64_t utime);
+// Samples at step_s, widened to duration / (maxTrajectorySamples - 2) for long trajectories so the
+// samples cover the whole trajectory, the last one at its end (docs/lcm.md). `num_joints` is the
+// robot's joint count.
+cyberplanner::arm_trajectory_t trajectoryMessage(std::int64_t request_id, const SetpointSource& trajectory,
+                                                 int num_joints, std::int64_t start_utime, double step_s,
+                                                 std::int64_t utime);
+
+// The snapshot's setpoints of the robot's `num_joints` joints.
+cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, int num_joints, std::int64_t utime);
 
 }  // namespace cyber::daemon::io

@@ -14,8 +14,10 @@ namespace cyber::daemon::io {
 
 class TrajectoryPublisher {
  public:
-  // Samples `step_s` apart (docs/lcm.md). `bridge` must outlive this.
-  TrajectoryPublisher(LcmBridge& bridge, double step_s) : bridge_(bridge), step_s_(step_s) {}
+  // Samples of the robot's `num_joints` joints `step_s` apart (docs/lcm.md). `bridge` must
+  // outlive this.
+  TrajectoryPublisher(LcmBridge& bridge, double step_s, int num_joints)
+      : bridge_(bridge), step_s_(step_s), num_joints_(num_joints) {}
 
   // The trajectory the streamer adopted at start_ns: published now or, too soon after the last
   // one, by a later flush() unless a newer one replaces it.
@@ -32,6 +34,7 @@ class TrajectoryPublisher {
 
   LcmBridge& bridge_;
   double step_s_;
+  int num_joints_;
   std::optional<Waiting> waiting_;
   MonoNs last_published_ns_ = kNever;
 };

@@ -12,12 +12,28 @@ import java.util.List;
 final class Checks {
   /** Pieces a goal or a state can name (arm_goal_t.MAX_PIECES, the same as arm_state_t's). */
   static final int MAX_PIECES = arm_goal_t.MAX_PIECES;
+  /** Joints a goal can carry (arm_goal_t.MAX_JOINTS; the daemon takes its robot's count only). */
+  static final int MAX_JOINTS = arm_goal_t.MAX_JOINTS;
 
   private Checks() {}
 
   static double finite(String what, double value) {
     if (!Double.isFinite(value)) throw new IllegalArgumentException(what + " is " + value + ", not a finite number");
     return value;
+  }
+
+  /** An unmodifiable copy of positions: at most MAX_JOINTS values, each finite. */
+  static List<Double> positions(List<Double> positions) {
+    if (positions == null) throw new IllegalArgumentException("positions is null");
+    if (positions.size() > MAX_JOINTS) {
+      throw new IllegalArgumentException(positions.size() + " positions " + positions + ": at most " + MAX_JOINTS);
+    }
+    for (int i = 0; i < positions.size(); ++i) {
+      Double value = positions.get(i);
+      if (value == null) throw new IllegalArgumentException("joint " + i + " position is null");
+      finite("joint " + i + " position", value);
+    }
+    return List.copyOf(positions);
   }
 
   /**

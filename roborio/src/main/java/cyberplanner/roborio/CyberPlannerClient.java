@@ -113,6 +113,9 @@ public final class CyberPlannerClient implements AutoCloseable {
     if (measured == null) throw new IllegalArgumentException("measured state is null");
     arm_state_t state = new arm_state_t();
     state.utime = System.currentTimeMillis() * 1000;
+    state.num_joints = (byte) Joint.COUNT;
+    state.position = new double[Joint.COUNT];
+    state.velocity = new double[Joint.COUNT];
     for (Joint joint : Joint.values()) {
       state.position[joint.index()] = measured.position(joint);
       state.velocity[joint.index()] = measured.velocity(joint);
@@ -144,7 +147,11 @@ public final class CyberPlannerClient implements AutoCloseable {
     arm_goal_t goal = new arm_goal_t();
     goal.utime = System.currentTimeMillis() * 1000;
     goal.request_id = move.requestId();
-    for (Joint joint : Joint.values()) goal.position[joint.index()] = pose.position(joint);
+    // A named pose goes as its name, without positions: the daemon resolves it (docs/lcm.md).
+    goal.pose_name = pose.poseName();
+    goal.num_joints = (byte) pose.positions().size();
+    goal.position = new double[goal.num_joints];
+    for (int i = 0; i < goal.num_joints; ++i) goal.position[i] = pose.positions().get(i);
     goal.num_pieces = (byte) pose.pieces().size();
     goal.pieces = pose.pieces().toArray(new String[0]);
     goal.scene_name = pose.sceneName();
@@ -207,7 +214,7 @@ public final class CyberPlannerClient implements AutoCloseable {
     arm_daemon_status_t status = daemonStatus;
     if (status == null) return "";
     StringBuilder out = new StringBuilder();
-    for (int i = 0; i < Joint.COUNT; ++i) {
+    for (int i = 0; i < status.num_joints; ++i) {
       if (i > 0) out.append(", ");
       out.append(status.joint_names[i]).append(' ').append(status.joint_units[i]);
     }

@@ -42,6 +42,7 @@ public final class LcmSetpointSource implements SetpointSource {
       DaemonMode mode = DaemonMode.fromWire(r.message.mode);
       if (mode == null) continue;
       arm_setpoint_t m = r.message;
+      if (m.num_joints != Joint.COUNT) continue;  // another robot's joints: not ours to follow
       guard.onStatus(mode, r.micros);
       for (Joint joint : Joint.values()) {
         int i = joint.index();

@@ -35,6 +35,7 @@ class ClientMemqTest {
   static arm_daemon_status_t daemonStatus(byte mode) {
     arm_daemon_status_t m = new arm_daemon_status_t();
     m.mode = mode;
+    m.num_joints = 2;
     m.joint_names = new String[] {"elevator", "arm"};
     m.joint_units = new String[] {"m", "rad"};
     return m;
@@ -74,6 +75,8 @@ class ClientMemqTest {
     assertEquals(100, first.requestId());
     assertEquals(101, second.requestId());
     arm_goal_t plain = goals.get(0);
+    assertEquals(2, plain.num_joints);  // from the Pose's length
+    assertEquals("", plain.pose_name);
     assertArrayEquals(new double[] {1.22, 5.69}, plain.position);
     assertEquals(1, plain.num_pieces);
     assertArrayEquals(new String[] {"coral"}, plain.pieces);
@@ -177,6 +180,42 @@ class ClientMemqTest {
     client.close();
   }
 
+  /**
+   * A named pose goes as its name with no positions, for the daemon to resolve with its config
+   * (docs/lcm.md, "Named goals"); a pose of N values sends N.
+   */
+  @Test
+  void aNamedPoseSendsItsNameAndAnyPoseItsOwnJointCount() throws Exception {
+    LCM lcm = new LCM("memq://");
+    List<arm_goal_t> goals = collect(lcm, "ARM_GOAL", arm_goal_t::new);
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    client.moveTo(Pose.named("L3").holding("coral"));
+    client.moveTo(Pose.of(0.1, 0.2, 0.3));
+    until(() -> goals.size() == 2);
+    arm_goal_t named = goals.get(0);
+    assertEquals("L3", named.pose_name);
+    assertEquals(0, named.num_joints);
+    assertEquals(0, named.position.length);
+    assertArrayEquals(new String[] {"coral"}, named.pieces);
+    arm_goal_t three = goals.get(1);
+    assertEquals("", three.pose_name);
+    assertEquals(3, three.num_joints);
+    assertArrayEquals(new double[] {0.1, 0.2, 0.3}, three.position);
+    Pose pose = Pose.named("STOW").inScene("reef");
+    assertTrue(pose.isNamed());
+    assertEquals(List.of(), pose.positions());
+    assertThrows(IllegalStateException.class, () -> pose.position(Joint.JOINT_0));
+    assertEquals(Pose.of(1.22, 5.69), new Pose(List.of(1.22, 5.69), "", List.of(), "", 0.0));
+    assertEquals(5.69, Pose.of(1.22, 5.69).joint1Position());
+    assertThrows(IllegalArgumentException.class, () -> Pose.named(""));
+    assertThrows(IllegalArgumentException.class, () -> Pose.named(null));
+    assertThrows(IllegalArgumentException.class, () -> Pose.named("L\n3"));
+    assertThrows(IllegalArgumentException.class, () -> Pose.of(1, 2, 3, 4, 5));
+    assertThrows(IllegalArgumentException.class, () -> Pose.of());
+    assertThrows(IllegalArgumentException.class, () -> new Pose(List.of(1.0), "L3", List.of(), "", 0.0));
+    client.close();
+  }
+
   @Test
   void theRobotLanUrlUsesTheTeamUsePort5810() {
     assertEquals("udpm://239.255.76.67:5810?ttl=1", CyberPlannerClient.ROBOT_LAN_URL);
@@ -191,6 +230,7 @@ class ClientMemqTest {
     client.publishState(ArmState.of(0.3, 0.0, 1.6, 0.0));
     until(() -> states.size() == 2);
     arm_state_t s = states.get(0);
+    assertEquals(2, s.num_joints);
     assertArrayEquals(new double[] {0.2, 1.57}, s.position);
     assertArrayEquals(new double[] {0.01, -0.02}, s.velocity);
     assertEquals(1, s.num_pieces);

@@ -19,7 +19,10 @@ class LcmSetpointSourceTest {
   static arm_setpoint_t setpoint(int sequence) {
     arm_setpoint_t m = new arm_setpoint_t();
     m.mode = arm_setpoint_t.MODE_MOVING;
+    m.num_joints = 2;  // the arrays' length (docs/lcm.md, "Joints by index")
     m.position = new double[] {0.5, 1.0};
+    m.velocity = new double[2];
+    m.volts = new double[2];
     m.sequence = new byte[] {(byte) sequence, (byte) sequence};
     return m;
   }

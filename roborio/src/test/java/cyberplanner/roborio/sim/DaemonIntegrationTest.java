@@ -92,7 +92,8 @@ class DaemonIntegrationTest {
         // A stale ARM_STATE cancels the move or makes the daemon hold INTAKE again (the state says so):
         // nothing to restore.
         watch.checkUnlessStarved("client: INTAKE -> L3", attempt -> {
-          MoveHandle move = client.moveTo(Pose.of(1.22, 5.69));  // INTAKE -> L3
+          // By name: the daemon resolves [poses.none] L3 = [1.22, 5.69] with its config (docs/lcm.md).
+          MoveHandle move = client.moveTo(Pose.named("L3"));  // INTAKE -> L3
           MoveState end = move.await(30);
           System.out.println("client: " + move + ", trajectory " + move.durationS() + " s");
           long moving = setpoints.stream()
