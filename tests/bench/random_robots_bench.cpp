@@ -2,7 +2,7 @@
 // judges: each robot's 20 seeded moves (the same draw, a quarter moving starts), planned
 // `kRepetitions` times; median / p90 / p99 / max of MotionPlanner::plan's total and of the
 // thread's CPU time per robot, and over every robot's plans (BM_RandomRobotMoves/all), with
-// MotionPlanner::create (`create_ms`). docs/performance.md, "Random robots".
+// MotionPlanner::create (`create_ms`). docs/performance.md, "Seeded random moves".
 
 #include <benchmark/benchmark.h>
 

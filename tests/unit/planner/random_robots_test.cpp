@@ -45,7 +45,7 @@ int robotCount() {
   return n != nullptr ? std::max(1, std::atoi(n)) : kRobots;
 }
 
-// Robots on which the planner fails a check today (docs/performance.md, "Random robots"), in an
+// Robots on which the planner fails a check today (docs/performance.md, "Seeded random moves"), in an
 // instantiation of their own, so that a run can leave them out (ctest -E KnownPlannerFailures,
 // --gtest_filter=-KnownPlannerFailures/*) and still fail on any other robot. A planner change
 // that mends one moves it back to Seeded.
