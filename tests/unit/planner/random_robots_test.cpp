@@ -49,7 +49,7 @@ int robotCount() {
 // instantiation of their own, so that a run can leave them out (ctest -E KnownPlannerFailures,
 // --gtest_filter=-KnownPlannerFailures/*) and still fail on any other robot. A planner change
 // that mends one moves it back to Seeded.
-constexpr unsigned kKnownPlannerFailures[] = {2, 4, 9, 17, 18, 24, 27};
+constexpr unsigned kKnownPlannerFailures[] = {2, 4, 9, 18, 24, 27};
 
 std::vector<unsigned> seeds(bool known_failures) {
   std::vector<unsigned> out;
@@ -69,7 +69,9 @@ int failureCount() {
   return failed;
 }
 
-constexpr double kFloodFillSteps[] = {0.01, 0.0025};
+// Robot 17's two refusals pass through free space within 1.3 mm of the clearance: only the
+// 0.001 step (5 s a world) proves them.
+constexpr double kFloodFillSteps[] = {0.01, 0.0025, 0.001};
 
 struct Tally {
   int planned = 0, refused = 0, moving = 0;
