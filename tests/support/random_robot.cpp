@@ -65,7 +65,9 @@ SceneDraw drawScene(Draws& d, double body_height_m) {
 // reference's 0.02 m; a revolute joint's metric is (rho / 2)^2, the speed of the middle of what it
 // turns squared (the reference's arm, rho 0.63 m, has its 0.1), and its step keeps a grid cell's
 // motion of any point within 20 mm, never coarser than 0.02 rad.
-// Issue 35: switch to the derived defaults of planner_settings.hpp when they land.
+// Issue 35: the loader now derives these when a file leaves them out (config::derivePlannerDefaults;
+// docs/configuration.md, "Defaults derived from the robot"). To switch, write no metric, grid step
+// or potential range in robotToml and drop this function.
 planner::PlannerSettings derivedSettings(const planner::RobotModel& model) {
   planner::PlannerSettings settings = referenceModel().planner;
   const CollisionWorld world(model, model.scenes.front(), model.allPieces());
