@@ -81,12 +81,14 @@ int main(int argc, char** argv) {
   const auto planner_start = std::chrono::steady_clock::now();
   auto planning = daemon::makeMotionPlannerService(config.robot, cache_dir);
   if (!planning) return fail(1, "planner set-up failed: " + planning.error().message);
-  // What a restart waits for (docs/performance.md, "Start-up"), and whether it could keep its grids.
-  spdlog::info("planner ready in {:.0f} ms, grid cache {}",
-               std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planner_start).count(),
-               cache_dir ? cache_dir->string() : std::string("off (no $CACHE_DIRECTORY)"));
+  const double planner_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - planner_start).count();
   try {
     daemon::io::Daemon daemon(config.robot, options, *planning.value(), &signals);
+    // What a restart waits for (docs/performance.md, "Start-up"), and whether it could keep its
+    // grids; once CAN and LCM are open, so that a start-up error stays the one line it prints.
+    spdlog::info("planner ready in {:.0f} ms, grid cache {}", planner_ms,
+                 cache_dir ? cache_dir->string() : std::string("off (no $CACHE_DIRECTORY)"));
     return daemon.run();
   } catch (const daemon::io::StartupError& error) {
     daemon::io::flushLogging();

@@ -40,8 +40,13 @@ grep -q '^setpoint_echo_full_rate = true' "$tmp/sim.toml" || { echo "FAIL: no se
 # The daemon stops motion when ARM_STATE is older than this: the Java side voids (and repeats once)
 # a move during which its loop was starved that long, or the daemon logged such a stop
 # (roborio/src/test/java/cyberplanner/roborio/sim/StarvationWatch.java).
+# A config that leaves it to its default gets it written here, so the daemon and the test agree.
 state_timeout_s=$(sed -n 's/^state_timeout_s = \([0-9.]*\).*/\1/p' "$tmp/sim.toml")
-[ -n "$state_timeout_s" ] || { echo "FAIL: no state_timeout_s key in $config"; exit 1; }
+if [ -z "$state_timeout_s" ]; then
+  state_timeout_s=0.25
+  sed -i "s/^\[daemon\]\$/[daemon]\nstate_timeout_s = $state_timeout_s/" "$tmp/sim.toml"
+  grep -q "^state_timeout_s = $state_timeout_s" "$tmp/sim.toml" || { echo "FAIL: no [daemon] table in $config"; exit 1; }
+fi
 ip netns exec "$ns" "$daemon" --config "$tmp/sim.toml" --can none >"$tmp/daemon.log" 2>&1 &
 daemon_pid=$!
 

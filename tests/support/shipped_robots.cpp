@@ -16,6 +16,12 @@ namespace cyber::test {
 
 using planner::JointVector;
 
+std::string shippedRobotParamName(const ::testing::TestParamInfo<const char*>& info) {
+  std::string name = info.param;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
+
 std::string sourceFile(const std::string& relative) { return std::string(CYBER_SOURCE_DIR) + "/" + relative; }
 
 const ShippedRobot& shippedRobot(const std::string& name) {

@@ -2,6 +2,8 @@
 // The three shipped robots (config/*.toml in the source tree) for tests: loaded, with their full
 // planners, once per test binary; and what every plan of theirs must be.
 
+#include <gtest/gtest.h>
+
 #include <string>
 #include <vector>
 
@@ -18,6 +20,10 @@ struct ShippedRobot {
 // The configs tools/demo and the packages ship, by file name without ".toml".
 inline constexpr const char* kShippedRobotNames[] = {"reefscape-2025", "chargedup-2023-double-jointed",
                                                      "pivot-telescope"};
+
+// A shipped robot's name as a GoogleTest parameter name ('-' is not allowed there): for
+// INSTANTIATE_TEST_SUITE_P over kShippedRobotNames.
+std::string shippedRobotParamName(const ::testing::TestParamInfo<const char*>& info);
 
 // A file of the source tree by its path from the tree's root (config/, tests/ data).
 std::string sourceFile(const std::string& relative);

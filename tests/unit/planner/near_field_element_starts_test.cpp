@@ -117,11 +117,7 @@ TEST_P(NearFieldElementStarts, PlanAtTheirExactOffsetOrAreProvablyRefused) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedRobots, NearFieldElementStarts, ::testing::ValuesIn(test::kShippedRobotNames),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         test::shippedRobotParamName);
 
 }  // namespace
 }  // namespace cyber::planner

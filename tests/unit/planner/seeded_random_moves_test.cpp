@@ -77,11 +77,7 @@ TEST_P(SeededRandomMoves, EveryPlanIsSoundAndEveryRefusalHasProvablyNoPath) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedRobots, SeededRandomMoves, ::testing::ValuesIn(test::kShippedRobotNames),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                           std::string name = info.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         test::shippedRobotParamName);
 
 }  // namespace
 }  // namespace cyber::planner

@@ -60,6 +60,13 @@ class DaemonIntegrationTest {
    */
   static final double INTERRUPT_AT_S = 0.15;
 
+  /** The robot side of the simulated mechanism, always enabled, talking to the daemon through client. */
+  static ArmController armOn(CyberPlannerClient client, SimulatedMechanism mechanism, SetpointGuard guard) {
+    return new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client), mechanism.joint0,
+        mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
+        new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE, JointGravity.NONE));
+  }
+
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
     for (int i = 0; i < 1200 && !client.isDaemonAlive(0.5); ++i) Thread.sleep(50);  // grids at start-up
     assertTrue(client.isDaemonAlive(0.5), "no ARM_DAEMON_STATUS within 60 s");
@@ -144,9 +151,7 @@ class DaemonIntegrationTest {
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
       awaitDaemon(client);
       SetpointGuard guard = new SetpointGuard(0.05, 0.25);
-      ArmController subsystem = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
-          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
-          new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE, JointGravity.NONE));
+      ArmController subsystem = armOn(client, mechanism, guard);
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
       watch.checkUnlessStarved("sim: start", attempt -> {
@@ -196,10 +201,7 @@ class DaemonIntegrationTest {
     SimulatedMechanism mechanism = new SimulatedMechanism(1.97, 5.17);  // where order 2 left it (L4)
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 7000)) {
       awaitDaemon(client);
-      ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
-          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
-          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE,
-              JointGravity.NONE));
+      ArmController arm = armOn(client, mechanism, new SetpointGuard(0.05, 0.25));
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
       loop.runFor(1.0);
@@ -281,10 +283,7 @@ class DaemonIntegrationTest {
     try (LcmRecorder recorder = new LcmRecorder(URL);
         CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 8000)) {
       awaitDaemon(client);
-      ArmController arm = new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client),
-          mechanism.joint0, mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000),
-          new SetpointGuard(0.05, 0.25), new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE,
-              JointGravity.NONE));
+      ArmController arm = armOn(client, mechanism, new SetpointGuard(0.05, 0.25));
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
       loop.runFor(0.5);  // the daemon takes the state (or still holds where order 3 left it: start goes there)
