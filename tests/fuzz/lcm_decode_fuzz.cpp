@@ -48,7 +48,9 @@ template <class Message>
 bool stringsRoundTrip(const Message&) {
   return true;
 }
-bool stringsRoundTrip(const cyberplanner::arm_goal_t& m) { return !hasNul(m.scene_name) && !anyHasNul(m.pieces); }
+bool stringsRoundTrip(const cyberplanner::arm_goal_t& m) {
+  return !hasNul(m.pose_name) && !hasNul(m.scene_name) && !anyHasNul(m.pieces);
+}
 bool stringsRoundTrip(const cyberplanner::arm_state_t& m) { return !anyHasNul(m.pieces); }
 bool stringsRoundTrip(const cyberplanner::arm_plan_status_t& m) { return !hasNul(m.reason); }
 bool stringsRoundTrip(const cyberplanner::arm_daemon_status_t& m) {
