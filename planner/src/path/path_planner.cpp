@@ -82,8 +82,7 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const Join
   grids->grids.resize(static_cast<size_t>(sets));
   grids->build_ms.assign(static_cast<size_t>(sets), 0.0);
   const double centre = 0.5 * (band.min + band.max);
-  worlds_.reserve(static_cast<size_t>(sets));
-  for (int set = 0; set < sets; ++set) worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), centre);
+  worlds_ = worldsAt(centre);
   // The sets' grids are independent (const worlds, no shared state): two threads take the next
   // set until none is left, which halves the first start on a two-core controller
   // (docs/performance.md, "Start-up").
@@ -117,20 +116,23 @@ PathPlanner::PathPlanner(const RobotModel& model, const Scene& scene, const Join
   auto shared = std::make_shared<Grids>();
   shared->build_ms.assign(grids.size(), 0.0);
   shared->grids = std::move(grids);
-  const double centre = 0.5 * (band.min + band.max);
-  for (int set = 0; set < model_.pieceSetCount(); ++set) {
-    worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), centre);
-  }
+  worlds_ = worldsAt(0.5 * (band.min + band.max));
   grids_ = std::move(shared);
 }
 
 PathPlanner PathPlanner::atOffset(double scene_offset_m) const {
   PathPlanner out(*this);
-  out.worlds_.clear();
-  for (int set = 0; set < model_.pieceSetCount(); ++set) {
-    out.worlds_.emplace_back(model_, scene_, HeldPieces::fromIndex(set), scene_offset_m);
-  }
+  out.worlds_ = worldsAt(scene_offset_m);
   return out;
+}
+
+std::vector<CollisionWorld> PathPlanner::worldsAt(double scene_offset_m) const {
+  std::vector<CollisionWorld> worlds;
+  worlds.reserve(static_cast<size_t>(model_.pieceSetCount()));
+  for (int set = 0; set < model_.pieceSetCount(); ++set) {
+    worlds.emplace_back(model_, scene_, HeldPieces::fromIndex(set), scene_offset_m);
+  }
+  return worlds;
 }
 
 Result<std::vector<PlannedPath>> PathPlanner::candidates(const JointVector& start, const JointVector& goal,

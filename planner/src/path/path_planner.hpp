@@ -130,6 +130,9 @@ class PathPlanner {
   RobotModel model_;
   Scene scene_;
   JointRange band_;
+  // Every held set's world with the scene's field elements at one offset, by HeldPieces::index().
+  [[nodiscard]] std::vector<CollisionWorld> worldsAt(double scene_offset_m) const;
+
   std::vector<CollisionWorld> worlds_;  // by HeldPieces::index(), at one offset
   std::shared_ptr<const Grids> grids_;
 };
