@@ -66,7 +66,8 @@ public final class ArmController {
     this.joints = parts.chain();
     this.jointNames = joints.names().toArray(new String[0]);
     if (!guard.joints().equals(joints)) {
-      throw new IllegalArgumentException("the guard's joints (" + guard.joints() + ") are not the arm's (" + joints + ")");
+      throw new IllegalArgumentException(
+          "the guard's joints (" + guard.joints() + ") are not the arm's (" + joints + ")");
     }
     parts.source().checkJoints(joints);
     this.guard = guard;

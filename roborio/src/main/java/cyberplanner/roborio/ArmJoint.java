@@ -12,7 +12,9 @@ public record ArmJoint(String name, JointOutput output, JointGravity gravity) {
     if (name == null || name.isEmpty()) throw new IllegalArgumentException("a joint's name is null or empty");
     Checks.ascii("joint name", name);
     if (output == null) throw new IllegalArgumentException("joint \"" + name + "\" has no output");
-    if (gravity == null) throw new IllegalArgumentException("joint \"" + name + "\" has no gravity model (JointGravity.NONE for none)");
+    if (gravity == null) {
+      throw new IllegalArgumentException("joint \"" + name + "\" has no gravity model (JointGravity.NONE for none)");
+    }
   }
 
   /** The joint of this name driven by output, held against gravity (JointGravity.NONE for none). */

@@ -59,11 +59,15 @@ public final class CanFrameRouter {
     for (Map.Entry<String, Integer> entry : devices.entrySet()) {
       String key = entry.getKey();
       Integer number = entry.getValue();
-      if (key == null || number == null) throw new IllegalArgumentException("a device key or number is null: " + devices);
+      if (key == null || number == null) {
+        throw new IllegalArgumentException("a device key or number is null: " + devices);
+      }
       if (number < 0 || number > MAX_CONFIG_DEVICE) {
         throw new IllegalArgumentException("device " + key + " = " + number + " is outside 0.." + MAX_CONFIG_DEVICE);
       }
-      if (!numbers.add(number)) throw new IllegalArgumentException("device number " + number + " is used twice in " + devices);
+      if (!numbers.add(number)) {
+        throw new IllegalArgumentException("device number " + number + " is used twice in " + devices);
+      }
       table.put(key, number);
     }
     if (!table.containsKey(STATUS_KEY)) throw new IllegalArgumentException("no \"status\" device in " + devices);
@@ -75,7 +79,10 @@ public final class CanFrameRouter {
     return new CanFrameRouter(null);
   }
 
-  /** Throws IllegalArgumentException, naming the joints, unless every joint has a device and every key is a joint's or "status". */
+  /**
+   * Throws IllegalArgumentException, naming the joints, unless every joint has a device and every
+   * key is a joint's or "status".
+   */
   public void checkJoints(JointChain joints) {
     resolve(joints);
   }
@@ -113,8 +120,8 @@ public final class CanFrameRouter {
         else table[number] = i;
       }
       if (!missing.isEmpty()) {
-        throw new IllegalArgumentException("the devices " + devices + " have no key for joint" + (missing.size() == 1 ? " " : "s ")
-            + String.join(", ", missing) + " (the joints: " + joints + ")");
+        throw new IllegalArgumentException("the devices " + devices + " have no key for joint"
+            + (missing.size() == 1 ? " " : "s ") + String.join(", ", missing) + " (the joints: " + joints + ")");
       }
       for (String key : devices.keySet()) {
         if (!key.equals(STATUS_KEY) && !joints.names().contains(key)) {

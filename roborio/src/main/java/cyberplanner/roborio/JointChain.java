@@ -42,7 +42,9 @@ public final class JointChain {
     for (String name : names) {
       if ("".equals(name)) throw new IllegalArgumentException("joint " + copy.size() + " has an empty name");
       Checks.ascii("joint " + copy.size() + " name", name);
-      if (copy.contains(name)) throw new IllegalArgumentException("joint name \"" + name + "\" is given twice in " + names);
+      if (copy.contains(name)) {
+        throw new IllegalArgumentException("joint name \"" + name + "\" is given twice in " + names);
+      }
       copy.add(name);
     }
     return new JointChain(List.copyOf(copy));
@@ -102,7 +104,9 @@ public final class JointChain {
     List<Double> positions = new ArrayList<>(names.size());
     for (String name : names) {
       Double position = positionsByName.get(name);
-      if (position == null) throw new IllegalArgumentException("no position for joint \"" + name + "\" in " + positionsByName);
+      if (position == null) {
+        throw new IllegalArgumentException("no position for joint \"" + name + "\" in " + positionsByName);
+      }
       positions.add(position);
     }
     return Pose.of(positions.stream().mapToDouble(Double::doubleValue).toArray());

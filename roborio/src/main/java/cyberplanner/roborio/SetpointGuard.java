@@ -122,7 +122,9 @@ public final class SetpointGuard {
     if (!mode.streams()) return Verdict.DAEMON_NOT_STREAMING;
     if (!daemonJoints.isEmpty() && !daemonJoints.equals(joints.names())) return Verdict.JOINTS_MISMATCH;
     for (JointTrack track : tracks) {
-      if (track.latest == null || nowMicros - track.receivedMicros > maxSetpointAgeMicros) return Verdict.SETPOINT_STALE;
+      if (track.latest == null || nowMicros - track.receivedMicros > maxSetpointAgeMicros) {
+        return Verdict.SETPOINT_STALE;
+      }
     }
     return Verdict.USE;
   }
