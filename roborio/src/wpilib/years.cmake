@@ -90,3 +90,4 @@ by_year(TEST_SET_CLOCKS [[
     RobotController.standInTimeMicros = micros;]])
 by_year(TEST_FRAME_TIMESTAMP "CAN.standInTimeMs - ageMicros / 1000" "nowMicros - ageMicros")
 by_year(TEST_BUS "" CANBus.CAN_S2)
+by_year(TEST_BUS_FIRST "" "CANBus.CAN_S2, ")  # CanStreamSetpointSource.withDevices(TEST_BUS_FIRST devices)

@@ -1,6 +1,9 @@
 package cyberplanner.roborio;
 
 import cyberplanner.roborio.can.Setpoint;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
 import java.util.function.BooleanSupplier;
 import java.util.function.LongSupplier;
 import java.util.function.Supplier;
@@ -14,18 +17,36 @@ import java.util.function.Supplier;
  */
 public final class ArmController {
   /**
-   * The parts: where the setpoints come from and go (joint0 and joint1: the motors of the config's
-   * first and second [[joints]]), the measured state, the clocks.
+   * The parts: where the setpoints come from and go (joints: one per joint of the daemon's config,
+   * in its [[joints]] order, each with the name the config gives it, its motor and its gravity
+   * model), the measured state (as many joints), the clocks.
    */
-  public record Parts(CyberPlannerClient client, SetpointSource source, JointOutput joint0, JointOutput joint1,
+  public record Parts(CyberPlannerClient client, SetpointSource source, List<ArmJoint> joints,
       Supplier<ArmState> measured, BooleanSupplier enabled, LongSupplier clockMicros) {
-    /** The motor of a joint. */
-    public JointOutput output(Joint joint) {
-      return joint == Joint.JOINT_0 ? joint0 : joint1;
+    public Parts {
+      if (client == null || source == null || measured == null || enabled == null || clockMicros == null) {
+        throw new IllegalArgumentException("a part is null");
+      }
+      if (joints == null) throw new IllegalArgumentException("joints is null");
+      joints = List.copyOf(joints);
+      chainOf(joints);  // 1 to MAX_JOINTS, distinct names
+    }
+
+    /** The joints' names by index. */
+    public JointChain chain() {
+      return chainOf(joints);
+    }
+
+    private static JointChain chainOf(List<ArmJoint> joints) {
+      List<String> names = new ArrayList<>(joints.size());
+      for (ArmJoint joint : joints) names.add(joint.name());
+      return JointChain.of(names);
     }
   }
 
   private final Parts parts;
+  private final JointChain joints;
+  private final String[] jointNames;
   private final SetpointGuard guard;
   private final Fallback fallback;
   private SetpointGuard.Verdict verdict = SetpointGuard.Verdict.DAEMON_LOST;
@@ -35,31 +56,48 @@ public final class ArmController {
   private MoveState seenMoveState;
   private long moveStateChanges;
 
+  /**
+   * The guard must guard the parts' joints, and the source must read setpoints for them
+   * (SetpointSource.checkJoints): IllegalArgumentException, naming both, otherwise.
+   */
   public ArmController(Parts parts, SetpointGuard guard, Fallback fallback) {
+    if (parts == null || guard == null || fallback == null) throw new IllegalArgumentException("a part is null");
     this.parts = parts;
+    this.joints = parts.chain();
+    this.jointNames = joints.names().toArray(new String[0]);
+    if (!guard.joints().equals(joints)) {
+      throw new IllegalArgumentException(
+          "the guard's joints (" + guard.joints() + ") are not the arm's (" + joints + ")");
+    }
+    parts.source().checkJoints(joints);
     this.guard = guard;
     this.fallback = fallback;
   }
 
-  /** The defaults: 50 ms setpoint age, 250 ms status age, hold where it is against gravity. */
-  public ArmController(Parts parts, JointGravity joint0Gravity, JointGravity joint1Gravity) {
-    this(parts, new SetpointGuard(0.05, 0.25),
-        new HoldFallback(parts.joint0(), parts.joint1(), joint0Gravity, joint1Gravity));
+  /** The defaults: 50 ms setpoint age, 250 ms status age, each joint held where it is against its gravity. */
+  public ArmController(Parts parts) {
+    this(parts, new SetpointGuard(parts.chain()), new HoldFallback(parts.joints()));
   }
 
   /** One robot loop. */
   public void periodic() {
     sendPendingHold();
     ArmState state = parts.measured().get();
+    if (state == null || state.count() != joints.count()) {
+      // The supplier's shape is the robot program's wiring, not a reading: it is wrong every loop.
+      throw new IllegalArgumentException("the measured state " + (state == null ? "is null" : "has " + state.count()
+          + " joints") + ", the arm " + joints.count() + ": " + joints);
+    }
     parts.client().publishState(state);
     long now = parts.clockMicros().getAsLong();
     parts.source().poll(guard, now);
+    guard.onDaemonJoints(parts.client().daemonJointNames());
     verdict = guard.verdict(now);
     if (!parts.enabled().getAsBoolean() || manualOverride) {
       fallback.reset();
     } else if (verdict == SetpointGuard.Verdict.USE) {
       fallback.reset();
-      for (Joint joint : Joint.values()) apply(parts.output(joint), guard.latest(joint));
+      for (int i = 0; i < joints.count(); ++i) apply(parts.joints().get(i).output(), guard.latest(i));
     } else {
       fallback.run(verdict, state);
     }
@@ -76,9 +114,11 @@ public final class ArmController {
   /**
    * Sends a goal (ending a manual override: the daemon streams again for it). It replaces the
    * running move, which the daemon answers CANCELLED, and is planned from that move's motion; a
-   * hold left by cancelUnlessReplaced is then not sent.
+   * hold left by cancelUnlessReplaced is then not sent. A pose that is not named and has not one
+   * position per joint throws IllegalArgumentException, saying both counts, and sends nothing.
    */
   public MoveHandle moveTo(Pose pose) {
+    joints.check(pose);
     manualOverride = false;
     move = parts.client().moveTo(pose);
     if (move.isFinished()) sendPendingHold();  // not sent (no link): it replaces nothing
@@ -137,6 +177,11 @@ public final class ArmController {
     return guard;
   }
 
+  /** The arm's joints, by index and by name (the names the robot program gave its ArmJoints). */
+  public JointChain joints() {
+    return joints;
+  }
+
   public CyberPlannerClient client() {
     return parts.client();
   }
@@ -162,10 +207,16 @@ public final class ArmController {
     inputs.moveDurationS = move == null ? 0 : move.durationS();
     inputs.moveStateChanges = moveStateChanges;
     inputs.daemonJoints = client.daemonJoints();
-    inputs.joint0LostFrames = guard.lostFrames(Joint.JOINT_0);
-    inputs.joint1LostFrames = guard.lostFrames(Joint.JOINT_1);
-    inputs.joint0RepeatedFrames = guard.repeatedFrames(Joint.JOINT_0);
-    inputs.joint1RepeatedFrames = guard.repeatedFrames(Joint.JOINT_1);
+    int count = joints.count();
+    if (!Arrays.equals(inputs.jointNames, jointNames)) {
+      inputs.jointNames = jointNames.clone();
+      inputs.lostFrames = new long[count];
+      inputs.repeatedFrames = new long[count];
+    }
+    for (int i = 0; i < count; ++i) {
+      inputs.lostFrames[i] = guard.lostFrames(i);
+      inputs.repeatedFrames[i] = guard.repeatedFrames(i);
+    }
     inputs.undecodableMessages = client.undecodableMessages();
   }
 }

@@ -3,7 +3,8 @@ package cyberplanner.roborio;
 /**
  * Everything the robot loop needs to see of cyber-planner, as plain values it polls once a loop
  * (ArmController.updateInputs): the shape of an AdvantageKit inputs class (public fields of
- * primitives and strings, logged and replayed as they are; annotate a subclass with @AutoLog) and
+ * primitives, strings and their arrays, one entry per joint; logged and replayed as they are;
+ * annotate a subclass with @AutoLog) and
  * a NetworkTables-free telemetry object. Written by the main loop only.
  */
 public class ArmInputs {
@@ -17,9 +18,11 @@ public class ArmInputs {
   public String daemonMode = "";
   /**
    * The daemon's joints by index with their units, as its config names them ("shoulder rad, elbow rad";
-   * "" before any status): check that joint 0 and joint 1 are wired to the motors they name.
+   * "" before any status). The guard compares the names with jointNames (verdict JOINTS_MISMATCH).
    */
   public String daemonJoints = "";
+  /** The arm's joints by index, as the robot program named them (its ArmJoints). */
+  public String[] jointNames = new String[0];
   /** The guard's verdict of the latest loop (SetpointGuard.Verdict name). */
   public String verdict = "";
   /** A team command drives the joints (manual override). */
@@ -31,11 +34,9 @@ public class ArmInputs {
   public double moveDurationS;
   /** Times the latest move's state changed, as the loop saw it (a change counter to trigger on). */
   public long moveStateChanges;
-  /** Setpoint frames missing from each joint's sequence, and repeats, since start-up. */
-  public long joint0LostFrames;
-  public long joint1LostFrames;
-  public long joint0RepeatedFrames;
-  public long joint1RepeatedFrames;
+  /** Setpoint frames missing from each joint's sequence, and repeats, since start-up: by joint index. */
+  public long[] lostFrames = new long[0];
+  public long[] repeatedFrames = new long[0];
   /** LCM messages on our channels that did not decode. */
   public long undecodableMessages;
 }

@@ -8,6 +8,8 @@ import cyberplanner.arm_setpoint_t;
 import cyberplanner.arm_state_t;
 import cyberplanner.roborio.can.DaemonMode;
 import java.io.IOException;
+import java.util.Arrays;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
@@ -41,6 +43,7 @@ public final class CyberPlannerClient implements AutoCloseable {
   private final AtomicLong nextRequestId;
   private final Map<Long, MoveHandle> moves = new ConcurrentHashMap<>();
   private volatile arm_daemon_status_t daemonStatus;
+  private volatile List<String> daemonJointNames = List.of();
   private volatile long daemonStatusNanos;
   private volatile Consumer<arm_setpoint_t> setpointListener;
   private final AtomicLong undecodable = new AtomicLong();
@@ -96,7 +99,9 @@ public final class CyberPlannerClient implements AutoCloseable {
   }
 
   private void onDaemonStatus(LCMDataInputStream in) throws IOException {
-    daemonStatus = new arm_daemon_status_t(in);
+    arm_daemon_status_t status = new arm_daemon_status_t(in);
+    daemonJointNames = List.copyOf(Arrays.asList(status.joint_names));
+    daemonStatus = status;
     daemonStatusNanos = System.nanoTime();
   }
 
@@ -113,12 +118,13 @@ public final class CyberPlannerClient implements AutoCloseable {
     if (measured == null) throw new IllegalArgumentException("measured state is null");
     arm_state_t state = new arm_state_t();
     state.utime = System.currentTimeMillis() * 1000;
-    state.num_joints = (byte) Joint.COUNT;
-    state.position = new double[Joint.COUNT];
-    state.velocity = new double[Joint.COUNT];
-    for (Joint joint : Joint.values()) {
-      state.position[joint.index()] = measured.position(joint);
-      state.velocity[joint.index()] = measured.velocity(joint);
+    int count = measured.count();
+    state.num_joints = (byte) count;
+    state.position = new double[count];
+    state.velocity = new double[count];
+    for (int i = 0; i < count; ++i) {
+      state.position[i] = measured.position(i);
+      state.velocity[i] = measured.velocity(i);
     }
     state.num_pieces = (byte) measured.pieces().size();
     state.pieces = measured.pieces().toArray(new String[0]);
@@ -208,7 +214,7 @@ public final class CyberPlannerClient implements AutoCloseable {
   /**
    * The daemon's joints by index with their units, from its latest status, e.g. "pivot rad,
    * telescope m" for a config whose [[joints]] are a pivot then a telescope; "" before any status.
-   * A robot program can check it against the motors it wired as joint 0 and joint 1.
+   * ArmController checks the names against its ArmJoints' (daemonJointNames()).
    */
   public String daemonJoints() {
     arm_daemon_status_t status = daemonStatus;
@@ -219,6 +225,14 @@ public final class CyberPlannerClient implements AutoCloseable {
       out.append(status.joint_names[i]).append(' ').append(status.joint_units[i]);
     }
     return out.toString();
+  }
+
+  /**
+   * The daemon's joints by index, as its config's [[joints]] names them (ARM_DAEMON_STATUS
+   * joint_names), e.g. [pivot, telescope]; empty before any status. Unmodifiable.
+   */
+  public List<String> daemonJointNames() {
+    return daemonJointNames;
   }
 
   /** The latest ARM_DAEMON_STATUS, or null (counters, ages and timings; docs/lcm.md). */

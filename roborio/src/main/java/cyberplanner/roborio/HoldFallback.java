@@ -1,7 +1,9 @@
 package cyberplanner.roborio;
 
+import java.util.List;
+
 /**
- * The default fallback: hold both joints where they are measured at the moment the setpoints stop
+ * The default fallback: hold every joint where it is measured at the moment the setpoints stop
  * being usable, against gravity. The hold is captured afresh on every change to unusable
  * (ArmController calls reset() whenever it does not run the fallback: setpoints used, robot
  * disabled, manual override), so a robot enabled after sagging holds where it stands, not where it
@@ -10,22 +12,28 @@ package cyberplanner.roborio;
  * keeps its last request, so doing nothing would follow the last, stale setpoint.
  */
 public final class HoldFallback implements Fallback {
-  private final JointOutput[] outputs;
-  private final JointGravity[] gravity;
+  private final List<ArmJoint> joints;
   private ArmState held;
 
-  /** Joint 0's and joint 1's motor and gravity model, as in ArmController.Parts. */
-  public HoldFallback(JointOutput joint0, JointOutput joint1, JointGravity joint0Gravity, JointGravity joint1Gravity) {
-    this.outputs = new JointOutput[] {joint0, joint1};
-    this.gravity = new JointGravity[] {joint0Gravity, joint1Gravity};
+  /** Each joint's motor and gravity model, in chain order, as ArmController.Parts has them. */
+  public HoldFallback(List<ArmJoint> joints) {
+    if (joints == null || joints.isEmpty()) throw new IllegalArgumentException("a hold needs the arm's joints");
+    this.joints = List.copyOf(joints);
   }
 
   @Override
   public void run(SetpointGuard.Verdict why, ArmState measured) {
-    if (held == null) held = measured;
-    for (Joint joint : Joint.values()) {
-      double position = held.position(joint);
-      outputs[joint.index()].apply(position, 0.0, gravity[joint.index()].volts(position));
+    if (held == null) {
+      if (measured.count() != joints.size()) {
+        throw new IllegalArgumentException("the measured state has " + measured.count() + " joints, the hold "
+            + joints.size());
+      }
+      held = measured;
+    }
+    for (int i = 0; i < joints.size(); ++i) {
+      double position = held.position(i);
+      ArmJoint joint = joints.get(i);
+      joint.output().apply(position, 0.0, joint.gravity().volts(position));
     }
   }
 

@@ -12,8 +12,9 @@ import java.util.function.LongSupplier;
  * docs/configuration.md); the message's mode stands in for the status frame. Every message is
  * queued with its time of receipt (the daemon's utime is another clock), so the guard sees every
  * sequence number whatever the poll rate, and a setpoint's age counts from its arrival, not from
- * the poll. Joints by index (position[i], velocity[i], volts[i], sequence[i]). Device numbers are
- * not on LCM: the setpoints carry device -1.
+ * the poll. Joints by index (position[i], velocity[i], volts[i], sequence[i]), as many as the
+ * guard's; a message of another num_joints is not this arm's and is ignored. Device numbers are not
+ * on LCM: the setpoints carry device -1.
  */
 public final class LcmSetpointSource implements SetpointSource {
   private static final int MAX_QUEUED = 1000;
@@ -42,11 +43,12 @@ public final class LcmSetpointSource implements SetpointSource {
       DaemonMode mode = DaemonMode.fromWire(r.message.mode);
       if (mode == null) continue;
       arm_setpoint_t m = r.message;
-      if (m.num_joints != Joint.COUNT) continue;  // another robot's joints: not ours to follow
+      // Another robot's joint count: not ours to follow (ignored; the guard goes stale). LCM's
+      // decoder sizes every array by num_joints.
+      if (m.num_joints != guard.joints().count()) continue;
       guard.onStatus(mode, r.micros);
-      for (Joint joint : Joint.values()) {
-        int i = joint.index();
-        guard.onSetpoint(joint, new Setpoint(-1, m.position[i], m.velocity[i], m.volts[i], m.sequence[i] & 0xFF),
+      for (int i = 0; i < m.num_joints; ++i) {
+        guard.onSetpoint(i, new Setpoint(-1, m.position[i], m.velocity[i], m.volts[i], m.sequence[i] & 0xFF),
             r.micros);
       }
     }

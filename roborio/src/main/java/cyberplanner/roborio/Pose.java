@@ -15,14 +15,16 @@ import java.util.List;
  *
  * <pre>{@code
  * Pose score = Pose.of(0.9, 2.1).holding("cube").inScene("grid").atSceneOffset(0.1);
+ * Pose reach = Pose.of(0.4, 1.2, -0.6);  // a chain of three joints
  * Pose high = Pose.named("L3").holding("coral");
  * }</pre>
  *
  * Invalid values (not finite, a null or non-ASCII name, more than MAX_PIECES pieces or MAX_JOINTS
- * positions) throw
- * IllegalArgumentException where the Pose is built, not as a REJECTED answer later. Whether a
- * piece, scene or pose name exists, how many joints the robot has and whether the offset is within
- * the scene's range only the daemon knows.
+ * positions) throw IllegalArgumentException where the Pose is built, not as a REJECTED answer
+ * later; a pose of another length than the arm's joint count throws where it is sent
+ * (ArmController.moveTo, CyberArmSubsystem.moveToCommand; JointChain.check). Whether a piece,
+ * scene or pose name exists and whether the offset is within the scene's range only the daemon
+ * knows.
  */
 public record Pose(List<Double> positions, String poseName, List<String> pieces, String sceneName,
     double sceneOffsetM) {
@@ -43,19 +45,10 @@ public record Pose(List<Double> positions, String poseName, List<String> pieces,
     Checks.finite("scene offset", sceneOffsetM);
   }
 
-  /** Joint 0 and joint 1 at these positions (m or rad), with these pieces, in this scene. */
-  public Pose(double joint0Position, double joint1Position, List<String> pieces, String sceneName,
-      double sceneOffsetM) {
-    this(Checks.positions(List.of(Checks.finite("joint 0 position", joint0Position),
-        Checks.finite("joint 1 position", joint1Position))), "", pieces, sceneName, sceneOffsetM);
-  }
-
-  /** Joint 0 and joint 1 at these positions (m or rad), no piece, the default scene where it is. */
-  public static Pose of(double joint0Position, double joint1Position) {
-    return new Pose(joint0Position, joint1Position, List.of(), "", 0.0);
-  }
-
-  /** Each joint at these positions (m or rad, chain order: as many as the robot has joints). */
+  /**
+   * Each joint at these positions (m or rad), in the config's [[joints]] order: as many as the
+   * robot has joints (ArmController.moveTo refuses another count, saying both).
+   */
   public static Pose of(double... positions) {
     if (positions == null) throw new IllegalArgumentException("positions is null");
     List<Double> values = new ArrayList<>(positions.length);
@@ -76,16 +69,6 @@ public record Pose(List<Double> positions, String poseName, List<String> pieces,
   /** True for a pose sent by name (positions is then empty). */
   public boolean isNamed() {
     return !poseName.isEmpty();
-  }
-
-  /** The target of joint 0, m or rad (a named pose has none: IllegalStateException). */
-  public double joint0Position() {
-    return position(Joint.JOINT_0);
-  }
-
-  /** The target of joint 1, m or rad (a named pose has none: IllegalStateException). */
-  public double joint1Position() {
-    return position(Joint.JOINT_1);
   }
 
   /** The same goal while holding these pieces (replacing any named before; none: nothing held). */
@@ -112,12 +95,12 @@ public record Pose(List<Double> positions, String poseName, List<String> pieces,
     return new Pose(positions, poseName, pieces, sceneName, sceneOffsetM);
   }
 
-  /** The target of a joint, m or rad (a named pose has none: IllegalStateException). */
-  public double position(Joint joint) {
+  /** The target of joint index, m or rad (a named pose has none: IllegalStateException). */
+  public double position(int index) {
     if (isNamed()) throw new IllegalStateException("pose \"" + poseName + "\" is resolved by the daemon");
-    if (joint.index() >= positions.size()) {
-      throw new IllegalStateException("the pose has " + positions.size() + " positions, no joint " + joint.index());
+    if (index < 0 || index >= positions.size()) {
+      throw new IllegalArgumentException("the pose has " + positions.size() + " positions, no joint " + index);
     }
-    return positions.get(joint.index());
+    return positions.get(index);
   }
 }

@@ -145,9 +145,11 @@ class ClientMemqTest {
     assertFalse(client.isDaemonAlive(10));
     assertEquals(Double.POSITIVE_INFINITY, client.daemonStatusAgeS());
     assertEquals("", client.daemonJoints());
+    assertEquals(List.of(), client.daemonJointNames());
     lcm.publish("ARM_DAEMON_STATUS", daemonStatus(arm_daemon_status_t.MODE_MOVING));
     until(() -> client.daemonMode() == DaemonMode.MOVING);
     assertEquals("elevator m, arm rad", client.daemonJoints());
+    assertEquals(List.of("elevator", "arm"), client.daemonJointNames());
     assertTrue(client.isDaemonAlive(1.0));
     Thread.sleep(60);
     assertTrue(client.daemonStatusAgeS() >= 0.05);
@@ -204,9 +206,9 @@ class ClientMemqTest {
     Pose pose = Pose.named("STOW").inScene("reef");
     assertTrue(pose.isNamed());
     assertEquals(List.of(), pose.positions());
-    assertThrows(IllegalStateException.class, () -> pose.position(Joint.JOINT_0));
+    assertThrows(IllegalStateException.class, () -> pose.position(0));
     assertEquals(Pose.of(1.22, 5.69), new Pose(List.of(1.22, 5.69), "", List.of(), "", 0.0));
-    assertEquals(5.69, Pose.of(1.22, 5.69).joint1Position());
+    assertEquals(5.69, Pose.of(1.22, 5.69).position(1));
     assertThrows(IllegalArgumentException.class, () -> Pose.named(""));
     assertThrows(IllegalArgumentException.class, () -> Pose.named(null));
     assertThrows(IllegalArgumentException.class, () -> Pose.named("L\n3"));
@@ -237,6 +239,15 @@ class ClientMemqTest {
     assertArrayEquals(new String[] {"coral"}, s.pieces);
     assertTrue(Math.abs(s.utime - System.currentTimeMillis() * 1000) < 5_000_000);
     assertEquals(0, states.get(1).num_pieces);
+    // Any chain: num_joints is the state's own count.
+    client.publishState(ArmState.of(0.7, 0.1));
+    client.publishState(ArmState.of(0.1, 1, 0.2, 2, 0.3, 3));
+    until(() -> states.size() == 4);
+    assertEquals(1, states.get(2).num_joints);
+    assertArrayEquals(new double[] {0.7}, states.get(2).position);
+    assertEquals(3, states.get(3).num_joints);
+    assertArrayEquals(new double[] {0.1, 0.2, 0.3}, states.get(3).position);
+    assertArrayEquals(new double[] {1, 2, 3}, states.get(3).velocity);
     assertThrows(IllegalArgumentException.class, () -> client.publishState(null));
     client.close();
   }

@@ -8,6 +8,8 @@ import cyberplanner.roborio.can.Setpoint;
 import java.util.List;
 import lcm.lcm.LCM;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 /**
  * ARM_SETPOINT as the setpoint source (simulation, a daemon on the controller): every message
@@ -32,7 +34,7 @@ class LcmSetpointSourceTest {
     LCM lcm = new LCM("memq://");
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
     LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
-    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    SetpointGuard guard = new SetpointGuard(JointChain.of("elevator", "arm"));
     arm_setpoint_t m = setpoint(0);
     m.position = new double[] {0.25, -1.5};
     m.velocity = new double[] {0.125, 2.5};
@@ -41,10 +43,10 @@ class LcmSetpointSourceTest {
     lcm.publish("ARM_SETPOINT", m);
     ClientMemqTest.until(() -> {
       source.poll(guard, nowMicros);
-      return guard.latest(Joint.JOINT_1) != null;
+      return guard.latest(1) != null;
     });
-    assertEquals(new Setpoint(-1, 0.25, 0.125, 0.37, 7), guard.latest(Joint.JOINT_0));
-    assertEquals(new Setpoint(-1, -1.5, 2.5, -0.75, 200), guard.latest(Joint.JOINT_1));
+    assertEquals(new Setpoint(-1, 0.25, 0.125, 0.37, 7), guard.latest(0));
+    assertEquals(new Setpoint(-1, -1.5, 2.5, -0.75, 200), guard.latest(1));
     assertEquals(Verdict.USE, guard.verdict(nowMicros));
     client.close();
   }
@@ -54,7 +56,7 @@ class LcmSetpointSourceTest {
     LCM lcm = new LCM("memq://");
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
     LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
-    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    SetpointGuard guard = new SetpointGuard(JointChain.of("elevator", "arm"));
     int sequence = 0;
     for (int loop = 0; loop < 50; ++loop) {
       for (int i = 0; i < 4; ++i, ++sequence) {
@@ -64,12 +66,12 @@ class LcmSetpointSourceTest {
       int last = (sequence - 1) & 0xFF;
       ClientMemqTest.until(() -> {  // one poll per loop once the loop's messages are in
         source.poll(guard, nowMicros);
-        return guard.latest(Joint.JOINT_0) != null && guard.latest(Joint.JOINT_0).sequence() == last;
+        return guard.latest(0) != null && guard.latest(0).sequence() == last;
       });
       nowMicros += 20_000;
     }
-    assertEquals(1, guard.lostFrames(Joint.JOINT_0));
-    assertEquals(1, guard.lostFrames(Joint.JOINT_1));
+    assertEquals(1, guard.lostFrames(0));
+    assertEquals(1, guard.lostFrames(1));
     client.close();
   }
 
@@ -78,13 +80,44 @@ class LcmSetpointSourceTest {
     LCM lcm = new LCM("memq://");
     CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
     LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
-    SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+    SetpointGuard guard = new SetpointGuard(JointChain.of("elevator", "arm"));
     List<arm_setpoint_t> delivered = ClientMemqTest.collect(lcm, "ARM_SETPOINT", arm_setpoint_t::new);
     lcm.publish("ARM_SETPOINT", setpoint(0));
     ClientMemqTest.until(() -> delivered.size() == 1);  // LCM handed it to the client (first) and to us
     nowMicros += 60_000;  // the loop's first poll after it arrived comes 60 ms later
     source.poll(guard, nowMicros);
     assertEquals(Verdict.SETPOINT_STALE, guard.verdict(nowMicros));
+    client.close();
+  }
+
+  @ParameterizedTest
+  @ValueSource(ints = {1, 2, 3})
+  void aChainOfNJointsTakesMessagesOfNJointsOnly(int n) throws Exception {
+    LCM lcm = new LCM("memq://");
+    CyberPlannerClient client = new CyberPlannerClient(lcm, Channels.DEFAULT, 1);
+    LcmSetpointSource source = new LcmSetpointSource(client, () -> nowMicros);
+    SetpointGuard guard = new SetpointGuard(JointChain.of(List.of("a", "b", "c").subList(0, n)));
+    for (int count : new int[] {n + 1, n}) {  // another robot's first: ignored
+      arm_setpoint_t m = setpoint(0);
+      m.num_joints = (byte) count;
+      m.position = new double[count];
+      m.velocity = new double[count];
+      m.volts = new double[count];
+      m.sequence = new byte[count];
+      for (int i = 0; i < count; ++i) {
+        m.position[i] = 10 * count + i;  // says the message's joint count and the joint
+        m.velocity[i] = -i;
+        m.volts[i] = 0.5 * i;
+        m.sequence[i] = (byte) (3 + i);
+      }
+      lcm.publish("ARM_SETPOINT", m);
+    }
+    ClientMemqTest.until(() -> {
+      source.poll(guard, nowMicros);
+      return guard.latest(n - 1) != null;
+    });
+    for (int i = 0; i < n; ++i) assertEquals(new Setpoint(-1, 10 * n + i, -i, 0.5 * i, 3 + i), guard.latest(i));
+    assertEquals(Verdict.USE, guard.verdict(nowMicros));
     client.close();
   }
 }

@@ -7,12 +7,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import cyberplanner.arm_plan_status_t;
 import cyberplanner.arm_setpoint_t;
 import cyberplanner.roborio.ArmController;
+import cyberplanner.roborio.ArmJoint;
 import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.Channels;
 import cyberplanner.roborio.CyberPlannerClient;
 import cyberplanner.roborio.HoldFallback;
+import cyberplanner.roborio.JointChain;
 import cyberplanner.roborio.JointGravity;
-import cyberplanner.roborio.Joint;
 import cyberplanner.roborio.LcmSetpointSource;
 import cyberplanner.roborio.MoveHandle;
 import cyberplanner.roborio.MoveState;
@@ -40,6 +41,7 @@ class DaemonIntegrationTest {
   static final String URL = System.getProperty("cyber.lcm.url", "udpm://239.255.76.67:5810?ttl=0");
   static final double LOOP_S = 0.005;  // the robot loop of the simulation, 200 Hz
   // The reference robot's joint 0 is an elevator (m), joint 1 an arm (rad).
+  static final JointChain REFERENCE_JOINTS = JointChain.of("elevator", "arm");
   static final double JOINT0_TOLERANCE_M = 0.002;
   static final double JOINT1_TOLERANCE_RAD = 0.005;
   // On the hold setpoints, in a row: SimulatedMechanism's critically damped joints (30 rad/s) leave
@@ -60,11 +62,19 @@ class DaemonIntegrationTest {
    */
   static final double INTERRUPT_AT_S = 0.15;
 
-  /** The robot side of the simulated mechanism, always enabled, talking to the daemon through client. */
+  /**
+   * The robot side of the simulated mechanism, always enabled, talking to the daemon through client:
+   * its joints named as the reference config names them (the guard checks them against the daemon's).
+   */
   static ArmController armOn(CyberPlannerClient client, SimulatedMechanism mechanism, SetpointGuard guard) {
-    return new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client), mechanism.joint0,
-        mechanism.joint1, mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard,
-        new HoldFallback(mechanism.joint0, mechanism.joint1, JointGravity.NONE, JointGravity.NONE));
+    List<ArmJoint> joints = List.of(ArmJoint.of("elevator", mechanism.joints.get(0), JointGravity.NONE),
+        ArmJoint.of("arm", mechanism.joints.get(1), JointGravity.NONE));
+    return new ArmController(new ArmController.Parts(client, new LcmSetpointSource(client), joints,
+        mechanism::state, () -> true, () -> System.nanoTime() / 1000), guard, new HoldFallback(joints));
+  }
+
+  static SetpointGuard guard() {
+    return new SetpointGuard(REFERENCE_JOINTS, 0.05, 0.25);
   }
 
   static void awaitDaemon(CyberPlannerClient client) throws InterruptedException {
@@ -150,7 +160,7 @@ class DaemonIntegrationTest {
     SimulatedMechanism mechanism = new SimulatedMechanism(1.22, 5.69);
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 6000)) {
       awaitDaemon(client);
-      SetpointGuard guard = new SetpointGuard(0.05, 0.25);
+      SetpointGuard guard = guard();
       ArmController subsystem = armOn(client, mechanism, guard);
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(subsystem, mechanism, watch);
@@ -173,8 +183,8 @@ class DaemonIntegrationTest {
           long fallbackBefore = loop.fallbackLoops;
           boolean settled = loop.settle(SETTLE_S, SETTLE_WITHIN_S);
           ArmState at = mechanism.state();
-          double joint0Error = Math.abs(at.position(Joint.JOINT_0) - goal.position(Joint.JOINT_0));
-          double joint1Error = Math.abs(at.position(Joint.JOINT_1) - goal.position(Joint.JOINT_1));
+          double joint0Error = Math.abs(at.position(0) - goal.position(0));
+          double joint1Error = Math.abs(at.position(1) - goal.position(1));
           System.out.printf("sim: %s done in %.3f s planned, error %.2e m %.2e rad, verdict %s, loops outside USE %d%n",
               goal, command.durationS(), joint0Error, joint1Error, subsystem.verdict(),
               loop.fallbackLoops - fallbackBefore);
@@ -189,8 +199,8 @@ class DaemonIntegrationTest {
         }, () -> restart(loop, mechanism, from, watch));
       }
       System.out.printf("sim: %d moves, lost setpoints joint 0 %d joint 1 %d, loops outside USE %d of %d, "
-          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames(Joint.JOINT_0),
-          guard.lostFrames(Joint.JOINT_1), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
+          + "void attempts %d, largest ARM_STATE gap %.3f s%n", sequence.size(), guard.lostFrames("elevator"),
+          guard.lostFrames("arm"), loop.fallbackLoops, loop.loops, watch.voided(), watch.largestGapS());
     }
   }
 
@@ -201,7 +211,7 @@ class DaemonIntegrationTest {
     SimulatedMechanism mechanism = new SimulatedMechanism(1.97, 5.17);  // where order 2 left it (L4)
     try (CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 7000)) {
       awaitDaemon(client);
-      ArmController arm = armOn(client, mechanism, new SetpointGuard(0.05, 0.25));
+      ArmController arm = armOn(client, mechanism, guard());
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
       loop.runFor(1.0);
@@ -283,7 +293,7 @@ class DaemonIntegrationTest {
     try (LcmRecorder recorder = new LcmRecorder(URL);
         CyberPlannerClient client = new CyberPlannerClient(new LCM(URL), Channels.DEFAULT, 8000)) {
       awaitDaemon(client);
-      ArmController arm = armOn(client, mechanism, new SetpointGuard(0.05, 0.25));
+      ArmController arm = armOn(client, mechanism, guard());
       StarvationWatch watch = StarvationWatch.fromDaemon();
       RobotLoop loop = new RobotLoop(arm, mechanism, watch);
       loop.runFor(0.5);  // the daemon takes the state (or still holds where order 3 left it: start goes there)
@@ -327,7 +337,7 @@ class DaemonIntegrationTest {
     long stops = watch.daemonStaleStops();
     Thread.sleep(Math.round(watch.stateTimeoutS() * 1e3));
     for (int i = 0; i < 100 && watch.daemonStaleStops() == stops; ++i) Thread.sleep(50);
-    mechanism.placeAt(from.position(Joint.JOINT_0), from.position(Joint.JOINT_1));
+    mechanism.placeAt(from);
     loop.resume();
     loop.runFor(1.0);
   }

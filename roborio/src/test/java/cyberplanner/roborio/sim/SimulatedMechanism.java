@@ -2,10 +2,11 @@ package cyberplanner.roborio.sim;
 
 import cyberplanner.roborio.ArmState;
 import cyberplanner.roborio.JointOutput;
+import java.util.ArrayList;
 import java.util.List;
 
 /**
- * A desktop stand-in for a two-joint mechanism (joint 0 and joint 1 by index): each joint is a
+ * A desktop stand-in for a mechanism of any joint count (joints by index): each joint is a
  * critically damped follower of the setpoint the robot code applies (position and velocity, the
  * way a tuned motor controller's position loop with velocity feedforward tracks it). Not a physics model: the point is that the
  * setpoints, applied as a robot applies them, bring the mechanism to each goal.
@@ -45,20 +46,20 @@ public final class SimulatedMechanism {
     }
   }
 
-  public final SimJoint joint0;
-  public final SimJoint joint1;
+  /** The joints by index (unmodifiable). */
+  public final List<SimJoint> joints;
   private volatile List<String> pieces = List.of();
 
-  /** At rest at these positions (m or rad). */
-  public SimulatedMechanism(double joint0Position, double joint1Position) {
-    joint0 = new SimJoint(joint0Position);
-    joint1 = new SimJoint(joint1Position);
+  /** At rest at these positions (m or rad), one joint per position. */
+  public SimulatedMechanism(double... positions) {
+    List<SimJoint> made = new ArrayList<>();
+    for (double position : positions) made.add(new SimJoint(position));
+    joints = List.copyOf(made);
   }
 
-  /** At rest at these positions, holding there (a test putting the robot back). */
-  public void placeAt(double joint0Position, double joint1Position) {
-    joint0.placeAt(joint0Position);
-    joint1.placeAt(joint1Position);
+  /** At rest where the state says, holding there (a test putting the robot back). */
+  public void placeAt(ArmState at) {
+    for (int i = 0; i < joints.size(); ++i) joints.get(i).placeAt(at.position(i));
   }
 
   /** The game pieces held from now on, by name. */
@@ -69,17 +70,24 @@ public final class SimulatedMechanism {
   /** Advances the model by dtS. */
   public void step(double dtS) {
     for (double t = 0; t < dtS - 1e-12; t += SUBSTEP_S) {
-      joint0.step(SUBSTEP_S);
-      joint1.step(SUBSTEP_S);
+      for (SimJoint joint : joints) joint.step(SUBSTEP_S);
     }
   }
 
-  /** Both joints' speeds together (m/s and rad/s), as measured. */
+  /** All joints' speeds together (m/s and rad/s, root of the sum of squares), as measured. */
   public double speed() {
-    return Math.hypot(joint0.velocity, joint1.velocity);
+    double sum = 0;
+    for (SimJoint joint : joints) sum += joint.velocity * joint.velocity;
+    return Math.sqrt(sum);
   }
 
   public ArmState state() {
-    return new ArmState(joint0.position, joint0.velocity, joint1.position, joint1.velocity, pieces);
+    double[] positions = new double[joints.size()];
+    double[] velocities = new double[joints.size()];
+    for (int i = 0; i < joints.size(); ++i) {
+      positions[i] = joints.get(i).position;
+      velocities[i] = joints.get(i).velocity;
+    }
+    return ArmState.of(positions, velocities).holding(pieces);
   }
 }

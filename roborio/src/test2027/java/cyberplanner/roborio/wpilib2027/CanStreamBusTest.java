@@ -3,6 +3,7 @@ package cyberplanner.roborio.wpilib2027;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.wpilib.hardware.bus.CANBus;
 import org.wpilib.hardware.hal.can.CANJNI;
@@ -15,8 +16,10 @@ class CanStreamBusTest {
   @Test
   void theStreamIsOpenedOnTheGivenBus() {
     CANJNI.standInReset();
-    CanStreamSetpointSource source = CanStreamSetpointSource.withReferenceDevices(CANBus.CAN_S2);
-    assertEquals(List.of(CANBus.CAN_S2.value), CANJNI.standInBuses);
+    CanStreamSetpointSource source = CanStreamSetpointSource.withDefaultDevices(CANBus.CAN_S2);
+    CanStreamSetpointSource named = CanStreamSetpointSource.withDevices(CANBus.CAN_S4, Map.of("pivot", 5, "status", 6));
+    assertEquals(List.of(CANBus.CAN_S2.value, CANBus.CAN_S4.value), CANJNI.standInBuses);
     source.close();
+    named.close();
   }
 }
