@@ -1,5 +1,7 @@
 #include "read_chain.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 
 #include <cmath>
@@ -17,7 +19,11 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 // A joint named by a link or a piece: its name in [[joints]].
 int jointOf(TableReader& table, const planner::RobotModel& robot) {
-  const std::string names = "\"" + robot.joints[0].name + "\" or \"" + robot.joints[1].name + "\"";
+  std::string names;
+  for (int j = 0; j < robot.jointCount(); ++j) {
+    names += (j == 0 ? "\"" : (j + 1 == robot.jointCount() ? "\" or \"" : "\", \"")) + robot.joints[j].name;
+  }
+  names += "\"";
   const std::string name = table.string("joint", "a joint's name as a string, " + names);
   const int joint = robot.jointIndex(name);
   if (joint < 0) table.fail("joint", "unknown joint \"" + name + "\" (expected " + names + ")");
@@ -56,15 +62,19 @@ void rejectOldFormat(const TableReader& root) {
 
 void readJoints(TableReader& root, planner::RobotModel& robot) {
   const toml::array& joints = root.array("joints");
-  if (joints.size() != static_cast<size_t>(planner::kJointCount)) {
-    root.fail("joints", "expected exactly two joints, in chain order");
+  if (joints.empty() || joints.size() > static_cast<size_t>(planner::kMaxJoints)) {
+    root.fail("joints",
+              fmt::format("expected one to {} joints, in chain order (got {})", planner::kMaxJoints, joints.size()));
   }
+  robot.joints = planner::JointChain(static_cast<int>(joints.size()));
   for (size_t i = 0; i < joints.size(); ++i) {
     TableReader joint = tableAt(joints[i], "joints[" + std::to_string(i) + "]");
     planner::ChainJoint& out = robot.joints[i];
     out.name = joint.string("name");
     checkName(joint, "name", out.name);
-    if (i == 1 && out.name == robot.joints[0].name) joint.fail("name", "the two joints need different names");
+    for (size_t k = 0; k < i; ++k) {
+      if (out.name == robot.joints[k].name) joint.fail("name", "each joint needs its own name");
+    }
     out.type = jointType(joint);
     out.range.min = joint.number("min");
     out.range.max = joint.number("max", Bounds{out.range.min, 1e300, true});
@@ -168,7 +178,7 @@ std::vector<PoseSet> readPoses(TableReader t, const planner::RobotModel& robot) 
     if (!held) t.fail(name, held.error().message + "; a set is \"none\" or piece names joined by '+'");
     PoseSet out{name, held.value(), {}};
     for (const std::string& pose : set.keysInFileOrder()) {
-      const Eigen::Vector2d q = set.vector2(pose);
+      const planner::JointVector q = set.jointVector(pose, robot.jointCount());
       if (!robot.withinLimits(q)) set.fail(pose, "outside the joint ranges");
       out.poses.push_back(NamedPose{pose, q});
     }

@@ -22,6 +22,7 @@ std::string deviceKeys(const planner::RobotModel& robot) {
 void readDevices(TableReader dev, const planner::RobotModel& robot, DeviceNumbers& devices,
                  std::vector<SettingOrigin>& log) {
   SettingReader r(dev, log);
+  devices.joints.assign(static_cast<size_t>(robot.jointCount()), 0);
   if (dev.keys().empty()) {
     for (size_t j = 0; j < devices.joints.size(); ++j) {
       devices.joints[j] = static_cast<int>(j) + 1;
@@ -47,10 +48,13 @@ void readDevices(TableReader dev, const planner::RobotModel& robot, DeviceNumber
   if (!dev.has("status")) dev.fail("status", "missing: [daemon.devices] takes one key per joint, " + expected);
   devices.status = static_cast<int>(dev.integer("status", 0, 62));
   r.log("status", std::to_string(devices.status), SettingSource::kGiven);
-  if (devices.joints[0] == devices.joints[1] || devices.status == devices.joints[0] ||
-      devices.status == devices.joints[1]) {
-    dev.fail("status", fmt::format("the device numbers of {}, {} and status must differ", robot.joints[0].name,
-                                   robot.joints[1].name));
+  std::vector<int> numbers = devices.joints;
+  numbers.push_back(devices.status);
+  std::sort(numbers.begin(), numbers.end());
+  if (std::adjacent_find(numbers.begin(), numbers.end()) != numbers.end()) {
+    std::string names;
+    for (const auto& joint : robot.joints) names.append(joint.name).append(", ");
+    dev.fail("status", fmt::format("the device numbers of {}and status must differ", names));
   }
   dev.finish();
 }

@@ -92,18 +92,20 @@ void readDrives(TableReader motor_table, TableReader drives, planner::RobotModel
   for (const std::string& name : motor_table.keys()) motors.emplace(name, readMotor(motor_table.table(name)));
   if (motors.empty()) motor_table.fail("", "define at least one motor");
   motor_table.finish();
-  for (int j = 0; j < planner::kJointCount; ++j) {
-    const std::string& joint = robot.joints[static_cast<size_t>(j)].name;
+  robot.drives = planner::PerJoint<planner::DriveParams>(robot.jointCount());
+  robot.bodies = planner::PerJoint<planner::LinkInertia>(robot.jointCount());
+  for (int j = 0; j < robot.jointCount(); ++j) {
+    const std::string& joint = robot.joints[j].name;
     if (!drives.has(joint)) drives.fail(joint, "missing: every joint needs a drive, keyed by its name");
     TableReader drive = drives.table(joint);
     const planner::DriveKind kind = driveKind(drive);
     if (j == 0) robot.drive_kind = kind;
-    if (kind != robot.drive_kind) drive.fail("kind", "both joints' drives must be of the same kind");
+    if (kind != robot.drive_kind) drive.fail("kind", "every joint's drive must be of the same kind");
     if (kind == planner::DriveKind::kFeedforward) {
-      robot.drives[static_cast<size_t>(j)] = readFeedforward(drive, motors);
+      robot.drives[j] = readFeedforward(drive, motors);
     } else {
-      readMotors(drive, motors, robot.drives[static_cast<size_t>(j)]);
-      robot.bodies[static_cast<size_t>(j)] = readInertia(drive, std::nullopt);
+      readMotors(drive, motors, robot.drives[j]);
+      robot.bodies[j] = readInertia(drive, std::nullopt);
     }
     drive.finish();
   }

@@ -55,10 +55,10 @@ void readPlanner(TableReader p, planner::RobotModel& robot, std::vector<SettingO
   s.grid.step = derived.grid_step;
   s.search.potential_range = derived.potential_range;
   SettingReader r(p, log);
-  r.vector2("metric", s.metric, kPositive, kDerived);
+  r.jointVector("metric", s.metric, kPositive, kDerived);
   {
     TableReader g = p.optionalTable("grid");
-    SettingReader(g, log).vector2("step", s.grid.step, Bounds{1e-4, 0.5}, kDerived);
+    SettingReader(g, log).jointVector("step", s.grid.step, Bounds{1e-4, 0.5}, kDerived);
     g.finish();
   }
   {

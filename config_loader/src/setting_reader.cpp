@@ -32,11 +32,13 @@ void SettingReader::string(const std::string& key, std::string& field) {
   log(key, fmt::format("\"{}\"", field), source);
 }
 
-void SettingReader::vector2(const std::string& key, planner::JointVector& field, Bounds bounds,
-                            SettingSource fallback) {
+void SettingReader::jointVector(const std::string& key, planner::JointVector& field, Bounds bounds,
+                                SettingSource fallback) {
   const SettingSource source = sourceOf(key, fallback);
-  if (source == SettingSource::kGiven) field = table_.vector2(key, bounds);
-  log(key, fmt::format("[{}, {}]", field[0], field[1]), source);
+  if (source == SettingSource::kGiven) field = table_.jointVector(key, static_cast<int>(field.size()), bounds);
+  std::string text = "[";
+  for (int j = 0; j < field.size(); ++j) text += fmt::format("{}{}", j == 0 ? "" : ", ", field[j]);
+  log(key, text + "]", source);
 }
 
 }  // namespace cyber::config::detail

@@ -21,8 +21,8 @@ class SettingReader {
   void integer(const std::string& key, int& field, long long min, long long max);
   void boolean(const std::string& key, bool& field);
   void string(const std::string& key, std::string& field);
-  void vector2(const std::string& key, planner::JointVector& field, Bounds bounds,
-               SettingSource fallback = SettingSource::kDefault);
+  void jointVector(const std::string& key, planner::JointVector& field, Bounds bounds,
+                   SettingSource fallback = SettingSource::kDefault);
   // Logs a value the caller read or derived itself.
   void log(const std::string& key, std::string value, SettingSource source);
 

@@ -167,6 +167,19 @@ Eigen::Vector2d TableReader::vector2(const std::string& key, Bounds bounds) {
   return pointFrom(require(key), pathOf(key), bounds);
 }
 
+planner::JointVector TableReader::jointVector(const std::string& key, int joints, Bounds bounds) {
+  const std::string path = pathOf(key);
+  const toml::array* a = require(key).as_array();
+  if (a == nullptr || a->size() != static_cast<size_t>(joints)) {
+    failAt(path, joints == 1 ? "expected [q] : one number, for the robot's one joint"
+                             : fmt::format("expected {} numbers, one per joint in chain order", joints));
+  }
+  planner::JointVector out(joints);
+  for (int j = 0; j < joints; ++j)
+    out[j] = numberFrom((*a)[static_cast<size_t>(j)], path + "[" + std::to_string(j) + "]", bounds);
+  return out;
+}
+
 const toml::array& TableReader::array(const std::string& key) {
   const toml::array* a = require(key).as_array();
   if (a == nullptr) fail(key, "expected an array");

@@ -35,6 +35,8 @@ class TableReader {
   [[nodiscard]] std::vector<std::string> strings(const std::string& key, const std::string& what = "a string");
   // A 2-vector [x, y] of finite numbers.
   [[nodiscard]] Eigen::Vector2d vector2(const std::string& key, Bounds bounds = kAny);
+  // One number per joint: an array of `joints` numbers.
+  [[nodiscard]] planner::JointVector jointVector(const std::string& key, int joints, Bounds bounds = kAny);
   // A list of convex polygons [[[x, y], ...], ...] (at least one).
   [[nodiscard]] std::vector<planner::ConvexPolygon> polygons(const std::string& key);
   // One convex polygon [[x, y], ...].

@@ -73,13 +73,13 @@ BENCHMARK(BM_ToppPublicMoves)->Unit(benchmark::kMillisecond)->Iterations(3);
 // Analytic paths: straight C-space lines of public-move size, an arc, an S-curve.
 std::vector<std::shared_ptr<const GeometricPath>> analyticPaths() {
   return {
-      std::make_shared<testing::LinePath>(JointVector(0.2, 1.57), JointVector(1.97, 5.17)),   // STOW -> L4
-      std::make_shared<testing::LinePath>(JointVector(1.97, 5.17), JointVector(0.16, 0.10)),  // L4 -> PROCESSOR
-      std::make_shared<testing::LinePath>(JointVector(0.5, 0.1), JointVector(0.5, 6.0)),      // arm only
-      std::make_shared<testing::ArcPath>(JointVector(1.0, 3.0), 0.8, 0.0, 3.0),
-      std::make_shared<testing::WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0,
-                                            2.0),
-      std::make_shared<testing::LinePath>(JointVector(0.5, 1.0), JointVector(0.6, 1.2)),  // short
+      std::make_shared<testing::LinePath>(JointVector{{0.2, 1.57}}, JointVector{{1.97, 5.17}}),   // STOW -> L4
+      std::make_shared<testing::LinePath>(JointVector{{1.97, 5.17}}, JointVector{{0.16, 0.10}}),  // L4 -> PROCESSOR
+      std::make_shared<testing::LinePath>(JointVector{{0.5, 0.1}}, JointVector{{0.5, 6.0}}),      // arm only
+      std::make_shared<testing::ArcPath>(JointVector{{1.0, 3.0}}, 0.8, 0.0, 3.0),
+      std::make_shared<testing::WigglePath>(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}}, JointVector{{0.05, 0.8}},
+                                            3.0, 2.0),
+      std::make_shared<testing::LinePath>(JointVector{{0.5, 1.0}}, JointVector{{0.6, 1.2}}),  // short
   };
 }
 

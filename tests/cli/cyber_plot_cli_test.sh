@@ -50,6 +50,26 @@ expect "animation of a pose" 2 "$plot" --world --at 1,1 --animation "$tmp/a.png"
 expect "animation without --world" 2 "$plot" --csv "$tmp/move.csv" --animation "$tmp/a.png" --out "$tmp/x.png"
 expect "bad frame count" 2 "$plot" --world --csv "$tmp/move.csv" --frames 1 --out "$tmp/x.png"
 expect "unknown scene" 2 "$plot" --world --at 1,1 --scene nowhere --out "$tmp/x.png"
+# Chains of three joints and of one: a planned move's picture (slices at the wrist's start and goal
+# values; the pivot's range over time), its filmstrip, a pose, the preview; a pose or a trajectory
+# of another joint count is refused.
+three="$src/config/reefscape-2025-elevator-pivot-wrist.toml" one="$src/config/intake-pivot.toml"
+"$plan" --config "$three" --from STOW --to L3 --csv "$tmp/three.csv" >/dev/null || { echo "FAIL cyber-plan, three joints"; exit 1; }
+"$plan" --config "$one" --from STOW --to DEPLOYED --csv "$tmp/one.csv" >/dev/null || { echo "FAIL cyber-plan, one joint"; exit 1; }
+for n in three one; do
+  config=$([ $n = three ] && echo "$three" || echo "$one")
+  expect "$n joints: csv to png" 0 "$plot" --config "$config" --csv "$tmp/$n.csv" --out "$tmp/$n.png"
+  expect "$n joints: filmstrip and animation" 0 "$plot" --world --config "$config" --csv "$tmp/$n.csv" --out "$tmp/$n-film.png" --animation "$tmp/$n-anim.png"
+  expect "$n joints: preview" 0 "$plot" --config "$config" --out "$tmp/$n-preview.png"
+  is_png "$tmp/$n.png" && is_png "$tmp/$n-film.png" && is_png "$tmp/$n-anim.png" && is_png "$tmp/$n-preview.png" ||
+    { failures=$((failures + 1)); echo "FAIL a picture of $n joints is not a PNG"; }
+done
+expect "three joints: a pose" 0 "$plot" --world --config "$three" --at 0.6744,1.0353,-1.6461 --out "$tmp/three-at.png"
+expect "one joint: a pose" 0 "$plot" --world --config "$one" --at 0.95 --out "$tmp/one-at.png"
+expect "three joints: a pose of two values" 2 "$plot" --world --config "$three" --at 0.6,1.0 --out "$tmp/x.png"
+grep -q "has 2 values, reefscape-2025-elevator-pivot-wrist has 3 joints" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL the joint count not named: $(cat "$tmp/err")"; }
+expect "three joints: a trajectory of two" 2 "$plot" --config "$three" --lcm-log "$tmp/traj.lcmlog" --out "$tmp/x.png"
+grep -q "the trajectory has 2 joints, the robot description 3" "$tmp/err" || { failures=$((failures + 1)); echo "FAIL the joint counts not named: $(cat "$tmp/err")"; }
 printf 't,x\n1,2\n' >"$tmp/bad.csv"
 expect "csv without the columns" 2 "$plot" --csv "$tmp/bad.csv" --out "$tmp/x.png"
 expect "missing file" 2 "$plot" --csv "$tmp/none.csv" --out "$tmp/x.png"

@@ -11,7 +11,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static cyber::fuzz::FuzzFile file;
   // The reference robot's joint names, as its corpus's headers spell the columns.
   static const cyber::planner::JointChain joints = [] {
-    cyber::planner::JointChain chain;
+    cyber::planner::JointChain chain(2);
     chain[0].name = "elevator";
     chain[1].name = "arm";
     return chain;

@@ -14,7 +14,7 @@ FreeSpaceComponents::FreeSpaceComponents(const planner::RobotModel& model, const
   nj_ = static_cast<int>(std::ceil((range1_.max - range1_.min) / step)) + 1;
   step0_ = (range0_.max - range0_.min) / (ni_ - 1);
   step1_ = (range1_.max - range1_.min) / (nj_ - 1);
-  const double slack = world.lipschitzBound(JointVector(0.5 * step0_, 0.5 * step1_));
+  const double slack = world.lipschitzBound(JointVector{{0.5 * step0_, 0.5 * step1_}});
   constexpr int kUnlabelled = -1;
   label_.assign(static_cast<size_t>(ni_) * static_cast<size_t>(nj_), kBlocked);
   for (int i = 0; i < ni_; ++i) {
@@ -51,7 +51,7 @@ int FreeSpaceComponents::of(const JointVector& q) const {
 }
 
 JointVector FreeSpaceComponents::node(int i, int j) const {
-  return JointVector(range0_.min + i * step0_, range1_.min + j * step1_);
+  return JointVector{{range0_.min + i * step0_, range1_.min + j * step1_}};
 }
 
 }  // namespace cyber::test

@@ -51,15 +51,15 @@ std::optional<PlanRequest> RandomMoveDraw::next(int move) {
 
 std::optional<JointVector> RandomMoveDraw::clearPose(const CollisionWorld& world) {
   for (int tries = 0; tries < kPoseTries; ++tries) {
-    JointVector q;
+    JointVector q(model_.jointCount());
     if (uniformInt(1) == 0) {
-      for (int j = 0; j < planner::kJointCount; ++j) q[j] = uniform(model_.range(j).min, model_.range(j).max);
+      for (int j = 0; j < model_.jointCount(); ++j) q[j] = uniform(model_.range(j).min, model_.range(j).max);
     } else {
       // A named pose of any set, nudged by up to 3 % of each joint's range.
       const auto& sets = robot_.config.poses;
       const config::PoseSet& set = sets[static_cast<size_t>(uniformInt(static_cast<int>(sets.size()) - 1))];
       q = set.poses[static_cast<size_t>(uniformInt(static_cast<int>(set.poses.size()) - 1))].q;
-      for (int j = 0; j < planner::kJointCount; ++j) {
+      for (int j = 0; j < model_.jointCount(); ++j) {
         const JointRange r = model_.range(j);
         q[j] = std::clamp(q[j] + 0.03 * (r.max - r.min) * uniform(-1.0, 1.0), r.min, r.max);
       }

@@ -71,7 +71,9 @@ SceneDraw drawScene(Draws& d, double body_height_m) {
 planner::PlannerSettings derivedSettings(const planner::RobotModel& model) {
   planner::PlannerSettings settings = referenceModel().planner;
   const CollisionWorld world(model, model.scenes.front(), model.allPieces());
-  for (int j = 0; j < planner::kJointCount; ++j) {
+  settings.metric.resize(model.jointCount());
+  settings.grid.step.resize(model.jointCount());
+  for (int j = 0; j < model.jointCount(); ++j) {
     const double rho_m = world.pointSpeedBound()[j];
     const bool prismatic = model.joints[static_cast<size_t>(j)].type == planner::JointType::kPrismatic;
     settings.metric[j] = prismatic ? 1.0 : std::round(0.25 * rho_m * rho_m * 1e4) / 1e4;
@@ -81,8 +83,8 @@ planner::PlannerSettings derivedSettings(const planner::RobotModel& model) {
 }
 
 JointVector uniformPose(Draws& d, const planner::RobotModel& model) {
-  JointVector q;
-  for (int j = 0; j < planner::kJointCount; ++j) q[j] = d.uniform(model.range(j).min, model.range(j).max);
+  JointVector q(model.jointCount());
+  for (int j = 0; j < model.jointCount(); ++j) q[j] = d.uniform(model.range(j).min, model.range(j).max);
   return q;
 }
 
@@ -104,7 +106,7 @@ std::string drawPoses(Draws& d, const planner::RobotModel& model) {
     int found = 0;
     for (int tries = 0; tries < kTriesPerPose * kPosesPerSet && found < kPosesPerSet; ++tries) {
       JointVector q = uniformPose(d, model);
-      for (int j = 0; j < planner::kJointCount; ++j) q[j] = std::round(q[j] * 1000.0) / 1000.0;
+      for (int j = 0; j < model.jointCount(); ++j) q[j] = std::round(q[j] * 1000.0) / 1000.0;
       if (!model.withinLimits(q) || world.distance(q).value < model.clearance_m + kPoseMarginM) continue;
       poses.append(fmt::format("P{} = [{}, {}]\n", found++, q[0], q[1]));
     }
@@ -151,8 +153,8 @@ RobotDraw drawRobot(Draws& d, unsigned seed, int joint_count) {
 }  // namespace
 
 RandomRobot randomRobot(unsigned seed, int joint_count) {
-  if (joint_count != planner::kJointCount) {
-    throw std::invalid_argument(fmt::format("the planner plans {} joints, not {}", planner::kJointCount, joint_count));
+  if (joint_count != 2) {
+    throw std::invalid_argument(fmt::format("the planner plans {} joints, not {}", 2, joint_count));
   }
   Draws d(seed);
   for (int draw = 0; draw < kMaxRedraws; ++draw) {

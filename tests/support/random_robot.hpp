@@ -25,7 +25,7 @@ struct RandomRobot {
 // robots with too little free space for moves (a pose set that fits nowhere, under a quarter of
 // the poses clear) are drawn again from the same stream. The planner plans kJointCount joints
 // today; the generator's chain takes 1-3 once it plans N.
-RandomRobot randomRobot(unsigned seed, int joint_count = planner::kJointCount);
+RandomRobot randomRobot(unsigned seed, int joint_count = 2);
 
 // Writes the robot's description and then `trailer` (comments: the failing moves) to `path`, a
 // reproducer; false when it cannot.

@@ -44,16 +44,16 @@ PlanRequest SeededMoveDraw::next(int move) {
 
 JointVector SeededMoveDraw::clearPose(const CollisionWorld& world) {
   for (;;) {
-    JointVector q;
+    JointVector q(model_.jointCount());
     if (uniformInt(1) == 0) {
-      for (int j = 0; j < 2; ++j)
+      for (int j = 0; j < model_.jointCount(); ++j)
         q[j] = std::uniform_real_distribution<double>(model_.range(j).min, model_.range(j).max)(random_);
     } else {
       // A named pose of any set, nudged by up to 3 % of each joint's range.
       const config::PoseSet& set =
           robot_.config.poses[static_cast<size_t>(uniformInt(static_cast<int>(robot_.config.poses.size()) - 1))];
       q = set.poses[static_cast<size_t>(uniformInt(static_cast<int>(set.poses.size()) - 1))].q;
-      for (int j = 0; j < 2; ++j) {
+      for (int j = 0; j < model_.jointCount(); ++j) {
         const JointRange r = model_.range(j);
         q[j] = std::clamp(q[j] + 0.03 * (r.max - r.min) * std::uniform_real_distribution<double>(-1.0, 1.0)(random_),
                           r.min, r.max);

@@ -27,9 +27,8 @@ int fail(int code, const std::string& message) {
 std::string poseText(const cyber::planner::RobotModel& robot, const cyber::tools::PoseArgument& given,
                      const cyber::planner::JointVector& q) {
   std::string text = given.name.empty() ? "(" : given.name + " (";
-  for (size_t j = 0; j < robot.joints.size(); ++j) {
-    text += fmt::format("{}{:.3f} {}", j == 0 ? "" : ", ", q[static_cast<Eigen::Index>(j)],
-                        cyber::planner::unitName(robot.joints[j].type));
+  for (int j = 0; j < robot.jointCount(); ++j) {
+    text += fmt::format("{}{:.3f} {}", j == 0 ? "" : ", ", q[j], cyber::planner::unitName(robot.joints[j].type));
   }
   return text + ")";
 }
@@ -78,6 +77,11 @@ int main(int argc, char** argv) {
   // Only the grids this move needs: the start-up is most of a cyber-plan run.
   auto planner = planner::MotionPlanner::create(robot, {scene, args->scene_offset_m}, gridCacheDir());
   if (!planner) return fail(planner::exitCodeOf(planner.status()), planner.error().message);
+
+  if (args->from_velocity.size() != 0 && args->from_velocity.size() != robot.jointCount()) {
+    return fail(2, fmt::format("--from-velocity: expects {} values, one per joint, got {}", robot.jointCount(),
+                               args->from_velocity.size()));
+  }
 
   planner::PlanRequest request;
   request.start = from.value();

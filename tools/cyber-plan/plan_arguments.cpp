@@ -42,13 +42,17 @@ cli::ValueHandler pose(PoseArgument* into, bool* given) {
   };
 }
 
-// Stores "A,B" into `into`, or says what was expected.
-cli::ValueHandler jointPair(planner::JointVector* into, const char* what) {
+// Stores "A,B,..." (one finite number per joint; main checks the count against the robot) into
+// `into`, or says what was expected.
+cli::ValueHandler jointValues(planner::JointVector* into, const char* what) {
   return [into, what](const std::string& text) -> std::string {
-    const auto pair = cli::parseNumberPair(text);
-    if (!pair)
-      return std::string("expects ") + what + " as two finite numbers separated by a comma, got '" + text + "'";
-    *into = planner::JointVector((*pair)[0], (*pair)[1]);
+    const auto parsed = parsePoseArgument(text, cli::NonFinite::kReject);
+    if (!parsed || !parsed.value().name.empty() || parsed.value().values.size() > planner::kMaxJoints) {
+      return std::string("expects ") + what + " as one finite number per joint separated by ',', got '" + text + "'";
+    }
+    const std::vector<double>& values = parsed.value().values;
+    *into = planner::JointVector(static_cast<Eigen::Index>(values.size()));
+    for (size_t j = 0; j < values.size(); ++j) (*into)[static_cast<Eigen::Index>(j)] = values[j];
     return "";
   };
 }
@@ -63,7 +67,7 @@ Result<PlanArguments, cli::ArgumentStatus> parsePlanArguments(const std::vector<
   parser.option("--config", cli::store(out.config_path));
   parser.option("--from", pose(&out.from, &have_from));
   parser.option("--to", pose(&out.to, &have_to));
-  parser.option("--from-velocity", jointPair(&out.from_velocity, "V0,V1"));
+  parser.option("--from-velocity", jointValues(&out.from_velocity, "V0,V1,..."));
   parser.option("--pieces", cli::store(out.pieces));
   parser.option("--scene", cli::store(out.scene));
   parser.option("--scene-offset", [&](const std::string& value) -> std::string {

@@ -30,7 +30,7 @@ struct PlanArguments {
   std::string config_path;  // empty: the embedded reference robot
   PoseArgument from;        // numbers or a name of the held set's poses; resolvePose with the config
   PoseArgument to;
-  planner::JointVector from_velocity = planner::JointVector::Zero();
+  planner::JointVector from_velocity;
   std::string pieces;  // names as --pieces gives them; resolved against the robot
   std::string scene;   // empty: the default scene
   double scene_offset_m = 0.0;

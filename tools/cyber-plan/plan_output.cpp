@@ -89,7 +89,7 @@ Result<Done, PlanOutputStatus> writeTrajectoryCsv(const planner::Trajectory& tra
   std::fputs("\n", file.get());
   forEachSample(trajectory, step_s, [&](const planner::TrajectorySample& s) {
     std::fprintf(file.get(), "%.6f", s.t);
-    for (int j = 0; j < planner::kJointCount; ++j) {
+    for (int j = 0; j < s.q.size(); ++j) {
       std::fprintf(file.get(), ",%.9g,%.9g,%.9g,%.9g,%.9g", s.q[j], s.qdot[j], s.qddot[j], s.volts[j], s.amps[j]);
     }
     std::fputs("\n", file.get());
@@ -114,20 +114,19 @@ plot::TrajectoryPlotData plotDataOf(const planner::Plan& plan, const planner::Ro
                                     planner::HeldPieces pieces, const std::string& title) {
   plot::TrajectoryPlotData d;
   d.title = title;
-  d.cspace = plot::sampleCSpace(robot, scene, pieces);
+  d.joints.resize(static_cast<size_t>(robot.jointCount()));
   forEachSample(*plan.trajectory, kCsvStepS, [&](const planner::TrajectorySample& s) {
     d.time_s.push_back(s.t);
-    for (int j = 0; j < 2; ++j) {
-      d.joints[j].position.push_back(s.q[j]);
-      d.joints[j].velocity.push_back(s.qdot[j]);
-      d.joints[j].volts.push_back(s.volts[j]);
-      d.joints[j].amps.push_back(s.amps[j]);
+    for (size_t j = 0; j < d.joints.size(); ++j) {
+      const auto i = static_cast<Eigen::Index>(j);
+      plot::JointSeries& series = d.joints[j];
+      series.position.push_back(s.q[i]);
+      series.velocity.push_back(s.qdot[i]);
+      series.volts.push_back(s.volts[i]);
+      series.amps.push_back(s.amps[i]);
     }
   });
-  for (int j = 0; j < 2; ++j) {
-    d.voltage_limit_volts[j] = robot.drive(j).voltage_limit_volts;
-    d.current_limit_amps[j] = robot.drive(j).current_limit_amps;
-  }
+  plot::addRobotView(d, robot, scene, pieces);
   return d;
 }
 

@@ -75,11 +75,11 @@ Result<planner::JointVector, cli::ArgumentStatus> resolvePose(const PoseArgument
                                                               planner::HeldPieces held) {
   if (!pose.name.empty()) return namedPose(config.poses, config.robot, held, pose.name);
   const planner::RobotModel& robot = config.robot;
-  if (pose.values.size() != robot.joints.size()) {
-    return cli::badUsage(fmt::format("expects {} values, one per joint ({}), got {}", robot.joints.size(),
+  if (pose.values.size() != static_cast<size_t>(robot.jointCount())) {
+    return cli::badUsage(fmt::format("expects {} values, one per joint ({}), got {}", robot.jointCount(),
                                      jointList(robot), pose.values.size()));
   }
-  planner::JointVector q = planner::JointVector::Zero();
+  planner::JointVector q(robot.jointCount());
   for (size_t j = 0; j < pose.values.size(); ++j) q[static_cast<Eigen::Index>(j)] = pose.values[j];
   return q;
 }

@@ -1,6 +1,6 @@
-// cyber-plant-sim: the elevator and arm motor controllers and their mechanism, simulated on a CAN
-// interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help` lists the
-// options; sim_runner.cpp is the event loop, cyber/plant/mechanism_plant.hpp the model.
+// cyber-plant-sim: the motor controller of each of a robot's joints and their mechanism, simulated
+// on a CAN interface for tests (docs/testing.md, "Plant simulator"). `cyber-plant-sim --help`
+// lists the options; sim_runner.cpp is the event loop, cyber/plant/mechanism_plant.hpp the model.
 
 #include <sys/stat.h>
 #include <fcntl.h>
@@ -33,35 +33,71 @@ using cyber::plant::SimOptions;
 bool validDevice(int device) { return device >= 0 && device <= cyber::can::kMaxDeviceNumber; }
 
 // Where the joints rest before their first setpoint unless --initial says: the config's first
-// named pose (a robot's stowed pose by convention), else the middle of both ranges.
+// named pose (a robot's stowed pose by convention), else the middle of every range.
 cyber::planner::JointVector defaultInitialPose(const cyber::config::Config& config) {
   for (const cyber::config::PoseSet& set : config.poses) {
     if (!set.poses.empty()) return set.poses.front().q;
   }
   const auto& robot = config.robot;
-  return {0.5 * (robot.range(0).min + robot.range(0).max), 0.5 * (robot.range(1).min + robot.range(1).max)};
+  cyber::planner::JointVector middle(robot.jointCount());
+  for (int j = 0; j < robot.jointCount(); ++j) middle[j] = 0.5 * (robot.range(j).min + robot.range(j).max);
+  return middle;
 }
 
-// Refuses an --initial outside the ranges, an unknown piece and a bad [daemon.devices]: the exit
-// status to leave with, or none when the options hold.
+// "Q0,Q1,..." as --initial takes it, for messages.
+std::string jointList(const cyber::planner::JointVector& q) {
+  std::string out;
+  for (Eigen::Index j = 0; j < q.size(); ++j) out += (j == 0 ? "" : ",") + std::to_string(q[j]);
+  return out;
+}
+
+// The config's joints for messages: "2 joints (elevator, arm)".
+std::string jointNames(const cyber::planner::RobotModel& robot) {
+  std::string names;
+  for (const cyber::planner::ChainJoint& joint : robot.joints) names += (names.empty() ? "" : ", ") + joint.name;
+  const int n = robot.jointCount();
+  return std::to_string(n) + (n == 1 ? " joint (" : " joints (") + names + ")";
+}
+
+// Refuses an --initial without one value per joint or outside the ranges, gains for a joint the
+// config does not have, an unknown piece and a bad [daemon.devices]: the exit status to leave
+// with, or none when the options hold.
 std::optional<int> refusedOptions(const cyber::config::Config& config, const SimOptions& options,
                                   const cyber::planner::JointVector& initial_q,
                                   const cyber::cli::ProgramUsage& program) {
   const auto& robot = config.robot;
-  if (!robot.withinLimits(initial_q)) {
+  const int joints = robot.jointCount();
+  if (initial_q.size() != joints) {
     return cyber::cli::reportBadUsage(
-        program, cyber::cli::badUsage("--initial " + std::to_string(initial_q[0]) + "," + std::to_string(initial_q[1]) +
-                                      " is outside the joint ranges of " + robot.name));
+        program, cyber::cli::badUsage("--initial " + jointList(initial_q) + ": " + robot.name + " has " +
+                                      jointNames(robot) + ", one value each"));
+  }
+  if (!robot.withinLimits(initial_q)) {
+    return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--initial " + jointList(initial_q) +
+                                                                    " is outside the joint ranges of " + robot.name));
+  }
+  for (int j = joints; j < cyber::plant::kMaxJoints; ++j) {
+    if (options.joint_gains[static_cast<size_t>(j)]) {
+      return cyber::cli::reportBadUsage(
+          program,
+          cyber::cli::badUsage("--joint" + std::to_string(j) + "-gains: " + robot.name + " has " + jointNames(robot)));
+    }
   }
   for (const std::string& piece : options.pieces) {
     if (const auto named = robot.piecesNamed(piece); !named) {
       return cyber::cli::reportBadUsage(program, cyber::cli::badUsage("--pieces: " + named.error().message));
     }
   }
-  const auto& devices = config.daemon.devices;
-  if (!validDevice(devices.joints[0]) || !validDevice(devices.joints[1]) || devices.joints[0] == devices.joints[1]) {
-    std::cerr << "cyber-plant-sim: [daemon.devices] " << robot.joints[0].name << " and " << robot.joints[1].name
-              << " must be distinct numbers 0..63\n";
+  // The loader checks these too; the simulator relies on them for its frame filter and lookup.
+  const std::vector<int>& devices = config.daemon.devices.joints;
+  bool devices_ok = devices.size() == static_cast<size_t>(joints);
+  for (size_t j = 0; j < devices.size() && devices_ok; ++j) {
+    devices_ok = validDevice(devices[j]);
+    for (size_t k = 0; k < j && devices_ok; ++k) devices_ok = devices[k] != devices[j];
+  }
+  if (!devices_ok) {
+    std::cerr << "cyber-plant-sim: [daemon.devices] of " << robot.name << "'s " << jointNames(robot)
+              << " must be distinct numbers 0..63, one per joint\n";
     return 2;
   }
   return std::nullopt;
@@ -75,10 +111,10 @@ cyber::plant::RunnerSetup runnerSetup(const cyber::config::Config& config, const
   cyber::plant::RunnerSetup setup;
   setup.options = options;
   setup.options.initial_q = initial_q;
-  for (size_t j = 0; j < setup.joint_devices.size(); ++j) {
-    setup.joint_devices[j] = static_cast<std::uint8_t>(config.daemon.devices.joints[j]);
-    setup.joint_names[j] = robot.joints[j].name;
-    setup.joint_units[j] = cyber::planner::unitName(robot.joints[j].type);
+  for (int j = 0; j < robot.jointCount(); ++j) {
+    setup.joint_devices.push_back(static_cast<std::uint8_t>(config.daemon.devices.joints[static_cast<size_t>(j)]));
+    setup.joint_names.push_back(robot.joints[j].name);
+    setup.joint_units.push_back(cyber::planner::unitName(robot.joints[j].type));
   }
   setup.state_channel = config.daemon.channels.state;
   setup.can_interface = options.can_interface.value_or(config.daemon.can_interface);
@@ -89,23 +125,22 @@ cyber::plant::RunnerSetup runnerSetup(const cyber::config::Config& config, const
   const cyber::planner::HeldPieces held = named_set ? named_set.value() : cyber::planner::HeldPieces{};
   sim = cyber::plant::SimulationSettings(cyber::plant::MechanismPlant::fromRobot(robot, held),
                                          options.controller_bandwidth_radps);
-  for (int joint = 0; joint < cyber::plant::kJointCount; ++joint) {
-    if (options.joint_gains[joint]) sim.gains[joint] = *options.joint_gains[joint];
+  for (int joint = 0; joint < robot.jointCount(); ++joint) {
+    if (const auto& gains = options.joint_gains[static_cast<size_t>(joint)]) sim.gains[joint] = *gains;
   }
   sim.setpoint_timeout_s = options.setpoint_timeout_s;
   return setup;
 }
 
-// Only the two setpoint ids reach the simulator; the kernel drops everything else.
+// Only the joints' setpoint ids reach the simulator; the kernel drops everything else.
 cyber::can::SocketOptions setpointSocketOptions(const cyber::plant::RunnerSetup& setup) {
   cyber::can::SocketOptions socket_options;
-  socket_options.filters = std::vector<cyber::can::IdFilter>{
-      cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[0]),
-          true),
-      cyber::can::IdFilter::exact(
-          cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, setup.joint_devices[1]),
-          true)};
+  std::vector<cyber::can::IdFilter> filters;
+  for (const std::uint8_t device : setup.joint_devices) {
+    filters.push_back(cyber::can::IdFilter::exact(
+        cyber::can::teamFrameId(cyber::can::kSetpointApiClass, cyber::can::kSetpointApiIndex, device), true));
+  }
+  socket_options.filters = std::move(filters);
   return socket_options;
 }
 

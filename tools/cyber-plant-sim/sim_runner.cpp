@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <system_error>
 
@@ -19,6 +20,7 @@
 #include "cyber/can/setpoint_codec.hpp"
 #include "cyber/plant/control_lines.hpp"
 #include "cyber/plant/freeze_clock.hpp"
+#include "cyber/plant/joint_streams.hpp"
 #include "cyber/plant/state_log.hpp"
 #include "cyber/posix/fd.hpp"
 #include "cyberplanner/arm_state_t.hpp"
@@ -57,7 +59,9 @@ class Runner {
         control_fd_(control_fd),
         sim_(setup.simulation, *setup.options.initial_q),
         schedule_(withDuration(setup.options)),
-        clock_(1.0 / setup.options.state_rate_hz, kFreezeTolerance_s) {
+        clock_(1.0 / setup.options.state_rate_hz, kFreezeTolerance_s),
+        joint_count_(setup.simulation.plant.jointCount()),
+        streams_(setup.joint_devices) {
     switches_.heartbeat = setup.options.heartbeat;
   }
 
@@ -110,11 +114,9 @@ class Runner {
   posix::TimerFd heartbeat_timer_;
   posix::TimerFd state_timer_;
   posix::TimerFd fault_timer_;
-  std::array<std::optional<std::uint8_t>, kJointCount> last_sequence_{};
-  std::array<bool, kJointCount> joint_moving_{};  // the joint's latest setpoint has a velocity
-  bool moving_ = false;
+  int joint_count_;  // N, from the plant
+  JointStreams streams_;
   double last_moving_frame_s_ = -1.0;  // real time of the latest setpoint with a velocity
-  int motions_ = 0;                    // motions started so far
   bool link_trouble_ = false;          // a read or write failed since the last success: report once
 };
 
@@ -156,9 +158,9 @@ int Runner::run() {
   heartbeat_timer_.startPeriodic(toNs(start_mono_s_), toNs(kHeartbeatPeriod_s));
   state_timer_.startPeriodic(toNs(start_mono_s_), toNs(1.0 / setup_.options.state_rate_hz));
   armFaultTimer();
-  say("running on %s: joint 0 device %u, joint 1 device %u, ARM_STATE on %s at %g Hz, heartbeat %s",
-      setup_.can_interface.c_str(), setup_.joint_devices[0], setup_.joint_devices[1], setup_.state_channel.c_str(),
-      setup_.options.state_rate_hz, switches_.heartbeat ? "on" : "off");
+  say("running on %s: %s, ARM_STATE on %s at %g Hz, heartbeat %s", setup_.can_interface.c_str(),
+      devicesText(setup_.joint_devices).c_str(), setup_.state_channel.c_str(), setup_.options.state_rate_hz,
+      switches_.heartbeat ? "on" : "off");
 
   while (!switches_.exit) {
     std::uint64_t tags[8];
@@ -222,29 +224,25 @@ void Runner::onFrame(const can::Frame& frame, double real_s) {
     return;
   }
   const std::uint8_t device = decoded.value().device;
-  const int joint = device == setup_.joint_devices[0] ? 0 : device == setup_.joint_devices[1] ? 1 : -1;
-  if (joint < 0) {
+  const std::optional<int> joint = streams_.jointOf(device);
+  if (!joint) {
     ++counters_.other_frames;
     return;
   }
   const can::Setpoint& sp = decoded.value().setpoint;
-  auto& last = last_sequence_[joint];
-  if (last && static_cast<std::uint8_t>(*last + 1) != sp.sequence) ++counters_.sequence_gaps;
-  last = sp.sequence;
-  if (counters_.setpoints[joint]++ == 0) say("first setpoint for device %u", device);
+  // One velocity count (1e-3 unit/s) or more is motion; the streams are at rest again once the
+  // latest frames of every joint carry zero velocity.
+  const bool moving = std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit;
+  const JointStreams::Update update = streams_.onSetpoint(*joint, sp.sequence, moving);
+  if (update.first) say("first setpoint for device %u", device);
   // t_s is simulation time; the fault schedule runs on real time.
-  sim_.receiveSetpoint(joint, JointCommand{sp.position, sp.velocity, sp.feedforward_volts}, t_s);
-  // One velocity count (1e-3 unit/s) or more is motion; the stream is at rest again once the
-  // latest frames of both joints carry zero velocity.
-  joint_moving_[joint] = std::abs(sp.velocity) >= 0.5 / can::kVelocityCountsPerUnit;
-  if (joint_moving_[joint]) last_moving_frame_s_ = real_s;
-  if (joint_moving_[joint] && !moving_) {
-    moving_ = true;
-    schedule_.motionStarted(++motions_, real_s);
-    sayAt(real_s, "motion %d started (device %u)", motions_, device);
+  sim_.receiveSetpoint(*joint, JointCommand{sp.position, sp.velocity, sp.feedforward_volts}, t_s);
+  if (moving) last_moving_frame_s_ = real_s;
+  if (update.motion_started) {
+    schedule_.motionStarted(streams_.motions(), real_s);
+    sayAt(real_s, "motion %d started (device %u)", streams_.motions(), device);
     armFaultTimer();
-  } else if (moving_ && !joint_moving_[0] && !joint_moving_[1]) {
-    moving_ = false;
+  } else if (update.came_to_rest) {
     say("at rest");
   }
 }
@@ -281,8 +279,8 @@ void Runner::onStateTimer() {
     msg.utime = realtimeMicros();
     published_utime = msg.utime;
     // One value per joint of the description the simulator models (docs/lcm.md, "Joints by index").
-    msg.num_joints = static_cast<std::int8_t>(kJointCount);
-    for (int j = 0; j < kJointCount; ++j) {
+    msg.num_joints = static_cast<std::int8_t>(joint_count_);
+    for (int j = 0; j < joint_count_; ++j) {
       msg.position.push_back(sim_.state(j).position);
       msg.velocity.push_back(sim_.state(j).velocity);
     }
@@ -351,10 +349,12 @@ void Runner::writeLogRow(double t_s, bool published, std::int64_t utime_us) {
   // A published row carries the message's utime, so the log tells exactly when each ARM_STATE
   // went out, even where a recorder missed it.
   row.utime = utime_us != 0 ? utime_us : realtimeMicros();
-  for (int joint = 0; joint < kJointCount; ++joint) {
-    row.state[joint] = sim_.state(joint);
-    row.command[joint] = sim_.effectiveCommand(joint, sim_.time_s());
-    row.applied_volts[joint] = sim_.appliedVolts(joint);
+  row.joint_count = joint_count_;
+  for (int joint = 0; joint < joint_count_; ++joint) {
+    const auto j = static_cast<std::size_t>(joint);
+    row.state[j] = sim_.state(joint);
+    row.command[j] = sim_.effectiveCommand(joint, sim_.time_s());
+    row.applied_volts[j] = sim_.appliedVolts(joint);
   }
   row.heartbeat = switches_.heartbeat;
   row.robot_enabled = switches_.heartbeat && switches_.heartbeat_enabled;
@@ -365,17 +365,15 @@ void Runner::writeLogRow(double t_s, bool published, std::int64_t utime_us) {
 }
 
 void Runner::printSummary() const {
-  const auto q = sim_.positions();
-  const auto& names = setup_.joint_names;
-  const auto& units = setup_.joint_units;
-  say("stopped: %s %.6f %s, %s %.6f %s; setpoints %s %ld %s %ld, sequence gaps %ld, "
+  const std::string positions = positionsText(setup_.joint_names, setup_.joint_units, sim_.positions());
+  const std::string setpoints = setpointCountsText(setup_.joint_names, streams_);
+  say("stopped: %s; setpoints %s, sequence gaps %ld, "
       "malformed %ld, other %ld, bus errors %ld, read failures %ld; sent heartbeats %ld, disables %ld, "
       "write failures %ld; ARM_STATE published %ld, failed %ld; motions %d; frozen %d times, %.3f s",
-      names[0].c_str(), q[0], units[0].c_str(), names[1].c_str(), q[1], units[1].c_str(), names[0].c_str(),
-      counters_.setpoints[0], names[1].c_str(), counters_.setpoints[1], counters_.sequence_gaps, counters_.malformed,
-      counters_.other_frames, counters_.bus_errors, counters_.read_failures, counters_.heartbeats_sent,
-      counters_.disables_sent, counters_.write_failures, counters_.states_published, counters_.publish_failures,
-      motions_, clock_.freezes(), clock_.frozenSeconds());
+      positions.c_str(), setpoints.c_str(), streams_.sequenceGaps(), counters_.malformed, counters_.other_frames,
+      counters_.bus_errors, counters_.read_failures, counters_.heartbeats_sent, counters_.disables_sent,
+      counters_.write_failures, counters_.states_published, counters_.publish_failures, streams_.motions(),
+      clock_.freezes(), clock_.frozenSeconds());
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // socket, three timerfds and a signalfd; it sleeps between events.
 
 #include <array>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -17,19 +18,19 @@
 
 namespace cyber::plant {
 
+// One entry per joint of the simulated plant (simulation.plant.jointCount()), chain order.
 struct RunnerSetup {
   SimOptions options;
   SimulationSettings simulation;
-  std::array<std::uint8_t, 2> joint_devices{1, 2};             // setpoint frames of joint 0 and joint 1
-  std::array<std::string, 2> joint_names{"joint0", "joint1"};  // the config's, for the closing line
-  std::array<std::string, 2> joint_units{"m", "rad"};
+  planner::PerJoint<std::uint8_t> joint_devices;  // the device number of each joint's setpoint frames
+  planner::PerJoint<std::string> joint_names;     // the config's, for the log lines
+  planner::PerJoint<std::string> joint_units;     // m or rad
   std::string state_channel = "ARM_STATE";
   std::string can_interface;
 };
 
+// The setpoint frames per joint and their sequence gaps are counted by JointStreams.
 struct RunCounters {
-  long setpoints[kJointCount] = {0, 0};
-  long sequence_gaps = 0;  // setpoint sequence bytes that did not follow the previous one
   long malformed = 0;      // our setpoint ids with a payload the codec rejects
   long other_frames = 0;   // anything else that passed the receive filter
   long bus_errors = 0;     // controller error frames

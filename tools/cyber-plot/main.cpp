@@ -42,6 +42,16 @@ void warnCloserThanTheClearance(const cyber::config::Config& config, int scene, 
   }
 }
 
+// "0.20 m, 1.57 rad": a pose by its values and units, chain order, `decimals` after the point.
+std::string poseText(const cyber::planner::RobotModel& robot, const cyber::planner::JointVector& q, int decimals = 2) {
+  std::string out;
+  for (int j = 0; j < robot.jointCount(); ++j) {
+    out +=
+        fmt::format("{}{:.{}f} {}", j == 0 ? "" : ", ", q[j], decimals, cyber::planner::unitName(robot.joints[j].type));
+  }
+  return out;
+}
+
 // The robot at the named poses of its held-piece set, or at a few poses spread over the joint
 // ranges when the description names none.
 int previewConfig(const cyber::config::Config& config, int scene, cyber::planner::HeldPieces pieces,
@@ -58,12 +68,11 @@ int previewConfig(const cyber::config::Config& config, int scene, cyber::planner
   }
   const bool named = !poses.empty();
   if (!named) {
-    const planner::JointRange e = robot.range(0), a = robot.range(1);
     for (double f : {0.1, 0.5, 0.9}) {
-      const planner::JointVector q(e.min + f * (e.max - e.min), a.min + f * (a.max - a.min));
-      poses.push_back({fmt::format("{:.2f} {}, {:.2f} {}", q[0], planner::unitName(robot.joints[0].type), q[1],
-                                   planner::unitName(robot.joints[1].type)),
-                       q});
+      planner::JointVector q(robot.jointCount());
+      for (int j = 0; j < robot.jointCount(); ++j)
+        q[j] = robot.range(j).min + f * (robot.range(j).max - robot.range(j).min);
+      poses.push_back({poseText(robot, q), q});
     }
   }
   warnCloserThanTheClearance(config, scene, set_name);
@@ -103,10 +112,12 @@ int main(int argc, char** argv) {
   if (args.preview()) return previewConfig(config, scene, pieces, args.config_path, out);
   if (args.at) {
     const planner::JointVector q = *args.at;
+    if (q.size() != robot.jointCount()) {
+      return fail(fmt::format("--at {} has {} values, {} has {} joints (one position per joint, chain order)",
+                              args.at_text, q.size(), robot.name, robot.jointCount()));
+    }
     if (!robot.withinLimits(q)) return fail("--at " + args.at_text + " is outside the joint ranges");
-    const std::string title =
-        fmt::format("{} at {:.3f} {}, {:.3f} {}{}{}", robot.name, q[0], planner::unitName(robot.joints[0].type), q[1],
-                    planner::unitName(robot.joints[1].type), pieces_label, scene_label);
+    const std::string title = robot.name + " at " + poseText(robot, q, 3) + pieces_label + scene_label;
     return exitOf(plot::renderWorldPng(robot, scene, pieces, q, title, out));
   }
 
@@ -122,10 +133,6 @@ int main(int argc, char** argv) {
     if (!strip || args.animation_path.empty()) return exitOf(strip);
     return exitOf(plot::renderAnimationApng(robot, scene, pieces, move, 25, data.title, args.animation_path));
   }
-  data.cspace = plot::sampleCSpace(robot, scene, pieces);
-  for (int j = 0; j < 2; ++j) {
-    data.voltage_limit_volts[j] = robot.drive(j).voltage_limit_volts;
-    data.current_limit_amps[j] = robot.drive(j).current_limit_amps;
-  }
+  plot::addRobotView(data, robot, scene, pieces);
   return exitOf(plot::renderTrajectoryPng(data, out));
 }

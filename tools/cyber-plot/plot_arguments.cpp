@@ -1,14 +1,38 @@
 #include "plot_arguments.hpp"
 
+#include <optional>
+#include <string_view>
+
 #include "cyber/cli/argument_parser.hpp"
 #include "cyber/cli/number_text.hpp"
 
 namespace cyber::tools {
+namespace {
+
+// "Q0,Q1,...": 1 to kMaxJoints finite numbers, one comma between each two (main checks the count
+// against the robot).
+std::optional<planner::JointVector> jointPositions(const std::string& text) {
+  std::vector<double> values;
+  size_t start = 0;
+  while (true) {
+    const size_t comma = text.find(',', start);
+    const auto value = cli::parseNumber(std::string_view(text).substr(start, comma - start));
+    if (!value || values.size() == static_cast<size_t>(planner::kMaxJoints)) return std::nullopt;
+    values.push_back(*value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  planner::JointVector q(static_cast<Eigen::Index>(values.size()));
+  for (size_t j = 0; j < values.size(); ++j) q[static_cast<Eigen::Index>(j)] = values[j];
+  return q;
+}
+
+}  // namespace
 
 const char* plotUsage() {
   return "usage: cyber-plot [--config FILE] (--csv FILE | --lcm-log FILE [--channel NAME] [--request-id N])\n"
          "                  [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
-         "       cyber-plot --world [--config FILE] (--at Q0,Q1 | --csv FILE | --lcm-log FILE ...)\n"
+         "       cyber-plot --world [--config FILE] (--at Q0,... | --csv FILE | --lcm-log FILE ...)\n"
          "                  [--frames N] [--animation FILE.png] [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
          "       cyber-plot --config FILE [--pieces NAME,...] [--scene NAME] --out FILE.png\n"
          "Draws the C-space (obstacle region of the held pieces) with the path, and position, velocity,\n"
@@ -18,8 +42,9 @@ const char* plotUsage() {
          "  --config FILE     robot description (default: the embedded config/reefscape-2025.toml); alone,\n"
          "                    previews it: the robot at its named poses ([poses.*] of the held pieces) over\n"
          "                    the obstacles, and the C-space map with those poses\n"
-         "  --world           the side view of the scene with the robot: at --at, or for a trajectory a\n"
-         "                    filmstrip of --frames poses (default 6) plus the pose of smallest clearance\n"
+         "  --world           the side view of the scene with the robot: at --at (one position per joint,\n"
+         "                    chain order), or for a trajectory a filmstrip of --frames poses (default 6)\n"
+         "                    plus the pose of smallest clearance\n"
          "  --animation FILE  with --world and a trajectory: also an animated PNG (APNG, 25 frames/s)\n";
 }
 
@@ -46,9 +71,11 @@ Result<PlotArguments, cli::ArgumentStatus> parsePlotArguments(const std::vector<
     return out.request_id ? "" : "expects an integer, got '" + value + "'";
   });
   parser.option("--at", [&](const std::string& value) -> std::string {
-    const auto q = cli::parseNumberPair(value);
-    if (!q) return "expects Q0,Q1 (the two joints' positions), got '" + value + "'";
-    out.at = planner::JointVector((*q)[0], (*q)[1]);
+    const auto q = jointPositions(value);
+    if (!q)
+      return "expects Q0,... (one position per joint, at most " + std::to_string(planner::kMaxJoints) + "), got '" +
+             value + "'";
+    out.at = *q;
     out.at_text = value;
     return "";
   });

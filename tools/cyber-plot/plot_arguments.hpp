@@ -20,7 +20,7 @@ struct PlotArguments {
   std::string scene;
   std::string out_path;
   std::string animation_path;
-  std::optional<planner::JointVector> at;  // --at, finite
+  std::optional<planner::JointVector> at;  // --at: 1 to kMaxJoints finite values (main checks the count)
   std::string at_text;                     // --at as given, for messages
   bool world = false;
   int frames = 6;

@@ -30,6 +30,7 @@ Error<SourceStatus> sourceError(SourceStatus status, const std::string& path, co
 }  // namespace
 
 Result<plot::TrajectoryPlotData, SourceStatus> readPlanCsv(const std::string& path, const planner::JointChain& joints) {
+  if (joints.empty()) return sourceError(SourceStatus::kMalformed, path, "the robot has no joints to read");
   std::ifstream in(path);
   if (!in) return sourceError(SourceStatus::kCannotOpen, path, "cannot open");
   std::string line;
@@ -49,6 +50,8 @@ Result<plot::TrajectoryPlotData, SourceStatus> readPlanCsv(const std::string& pa
     }
   }
   plot::TrajectoryPlotData data;
+  data.joints.resize(static_cast<size_t>(joints.size()));
+  std::vector<double> values(needed.size());
   int row = 1;
   while (std::getline(in, line)) {
     ++row;
@@ -61,15 +64,14 @@ Result<plot::TrajectoryPlotData, SourceStatus> readPlanCsv(const std::string& pa
       *out = std::strtod(cells[i].c_str(), &end);
       return end != cells[i].c_str() && *end == '\0' && std::isfinite(*out);
     };
-    double values[1 + 4 * planner::kJointCount];
     for (size_t i = 0; i < needed.size(); ++i) {
       if (!value(needed[i], &values[i])) {
         return sourceError(SourceStatus::kMalformed, path + ":" + std::to_string(row), "not a row of finite numbers");
       }
     }
     data.time_s.push_back(values[0]);
-    for (int j = 0; j < planner::kJointCount; ++j) {
-      const double* joint = values + 1 + 4 * j;
+    for (size_t j = 0; j < data.joints.size(); ++j) {
+      const double* joint = values.data() + 1 + 4 * j;
       data.joints[j].position.push_back(joint[0]);
       data.joints[j].velocity.push_back(joint[1]);
       data.joints[j].volts.push_back(joint[2]);
@@ -105,14 +107,15 @@ Result<plot::TrajectoryPlotData, SourceStatus> readTrajectoryFromLog(const std::
   const cyberplanner::arm_trajectory_t& m = *chosen;
   // Rows by the config's [[joints]] order (docs/lcm.md, "Joints by index"): a trajectory of
   // another joint count is of another robot.
-  if (static_cast<size_t>(m.num_joints) != robot.joints.size()) {
+  if (m.num_joints != robot.jointCount()) {
     return sourceError(SourceStatus::kNoTrajectory, path,
                        std::string("the trajectory has ")
                            .append(std::to_string(m.num_joints))
                            .append(" joints, the robot description ")
-                           .append(std::to_string(robot.joints.size())));
+                           .append(std::to_string(robot.jointCount())));
   }
   plot::TrajectoryPlotData data;
+  data.joints.resize(static_cast<size_t>(m.num_joints));
   for (int k = 0; k < m.num_samples; ++k) {
     const size_t i = static_cast<size_t>(k);
     data.time_s.push_back(m.t_s[i]);
@@ -121,10 +124,11 @@ Result<plot::TrajectoryPlotData, SourceStatus> readTrajectoryFromLog(const std::
       const auto row = static_cast<size_t>(j);
       const double v = m.velocity[row][i];
       const double volts = m.volts[row][i];
-      data.joints[j].position.push_back(m.position[row][i]);
-      data.joints[j].velocity.push_back(v);
-      data.joints[j].volts.push_back(volts);
-      data.joints[j].amps.push_back(robot.drive(j).amps(volts, v));
+      plot::JointSeries& series = data.joints[row];
+      series.position.push_back(m.position[row][i]);
+      series.velocity.push_back(v);
+      series.volts.push_back(volts);
+      series.amps.push_back(robot.drive(j).amps(volts, v));
     }
   }
   if (data.time_s.empty()) return sourceError(SourceStatus::kNoTrajectory, path, "the trajectory has no samples");

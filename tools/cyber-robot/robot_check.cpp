@@ -10,10 +10,6 @@ namespace {
 
 using planner::JointVector;
 
-// Poses per joint of the drive check's grid: joint limits included, fine enough that a load's
-// worst angle (a cosine's peak) is missed by at most a 1 - cos(pi / 2 / 24) = 0.2 % underestimate.
-constexpr int kDriveSamplesPerJoint = 49;
-
 Severity poseSeverity(bool default_scene, double clearance_m, double worst_m, double required_m) {
   if (clearance_m < required_m) return default_scene ? Severity::kError : Severity::kWarning;
   return worst_m < required_m ? Severity::kWarning : Severity::kOk;
@@ -59,14 +55,15 @@ std::vector<std::vector<std::string>> mutualGroups(const config::PoseSet& set,
 
 // Every pose of a grid over the joint ranges, in joint 0's order first.
 std::vector<JointVector> rangeGrid(const planner::RobotModel& robot) {
-  std::vector<JointVector> poses{JointVector::Zero()};
-  for (int j = 0; j < planner::kJointCount; ++j) {
+  const int samples = driveSamplesPerJoint(robot.jointCount());
+  std::vector<JointVector> poses{JointVector::Zero(robot.jointCount())};
+  for (int j = 0; j < robot.jointCount(); ++j) {
     const planner::JointRange& r = robot.range(j);
     std::vector<JointVector> next;
     for (const JointVector& q : poses) {
-      for (int k = 0; k < kDriveSamplesPerJoint; ++k) {
+      for (int k = 0; k < samples; ++k) {
         JointVector p = q;
-        p[j] = r.min + (r.max - r.min) * k / (kDriveSamplesPerJoint - 1);
+        p[j] = r.min + (r.max - r.min) * k / (samples - 1);
         next.push_back(p);
       }
     }
@@ -79,24 +76,26 @@ std::vector<JointVector> rangeGrid(const planner::RobotModel& robot) {
 // at rest (the current is affine in the voltage there).
 double usableVolts(const planner::DriveModel& drives, int j) {
   const planner::DriveParams& d = drives.drive(j);
-  const JointVector zero = JointVector::Zero();
-  const double amps_per_volt = drives.amps(JointVector::Unit(j), zero)[j] - drives.amps(zero, zero)[j];
+  const JointVector zero = JointVector::Zero(drives.jointCount());
+  const double amps_per_volt =
+      drives.amps(JointVector::Unit(drives.jointCount(), j), zero)[j] - drives.amps(zero, zero)[j];
   double volts = d.voltage_limit_volts;
   if (d.current_limit_amps > 0.0 && amps_per_volt > 0.0) volts = std::min(volts, d.current_limit_amps / amps_per_volt);
   return volts;
 }
 
 void checkDriveAt(const planner::DriveModel& drives, int j, const JointVector& q, double usable, DriveCheck& out) {
-  const JointVector zero = JointVector::Zero();
+  const JointVector zero = JointVector::Zero(drives.jointCount());
+  const JointVector unit = JointVector::Unit(drives.jointCount(), j);
   const double hold = drives.volts(q, zero, zero)[j];
   // At rest the voltage is affine in the acceleration (chain.hpp, PathVoltage).
-  const double per_accel = drives.volts(q, zero, JointVector::Unit(j))[j] - hold;
+  const double per_accel = drives.volts(q, zero, unit)[j] - hold;
   const double up = per_accel > 0.0 ? (usable - hold) / per_accel : -std::numeric_limits<double>::infinity();
   const double down = per_accel > 0.0 ? (usable + hold) / per_accel : -std::numeric_limits<double>::infinity();
   const double accel = std::min(up, down);
   if (std::abs(hold) > out.hold_volts) {
     out.hold_volts = std::abs(hold);
-    out.hold_amps = std::abs(drives.amps(JointVector::Unit(j) * hold, zero)[j]);
+    out.hold_amps = std::abs(drives.amps(unit * hold, zero)[j]);
   }
   if (accel < out.worst_acceleration) {
     out.worst_acceleration = accel;
@@ -105,6 +104,13 @@ void checkDriveAt(const planner::DriveModel& drives, int j, const JointVector& q
 }
 
 }  // namespace
+
+// Joint limits included (docs/configuration.md, "Checking a robot"). One or two joints: 49, fine
+// enough that a load's worst angle (a cosine's peak) over a range of a turn is missed by at most a
+// 1 - cos(pi / 48) = 0.2 % underestimate. Three joints: 13, so that the grid's 13^3 = 2197 poses
+// stay within the 49^2 = 2401 of two (the same miss is then at most 1 - cos(pi / 12) = 3.4 % over
+// a turn, 1.4 % over a 4 rad wrist). Odd counts sample each range's middle.
+int driveSamplesPerJoint(int joint_count) { return joint_count <= 2 ? 49 : 13; }
 
 int RobotCheck::count(Severity severity) const {
   int n = 0;
@@ -191,9 +197,9 @@ std::vector<DriveCheck> checkDrives(const planner::RobotModel& robot, planner::H
   const planner::DriveModel drives = robot.driveModel(heaviest);
   const std::vector<JointVector> grid = rangeGrid(robot);
   std::vector<DriveCheck> out;
-  for (int j = 0; j < planner::kJointCount; ++j) {
+  for (int j = 0; j < drives.jointCount(); ++j) {
     const planner::DriveParams& d = drives.drive(j);
-    const planner::ChainJoint& joint = robot.joints[static_cast<size_t>(j)];
+    const planner::ChainJoint& joint = robot.joints[j];
     DriveCheck check;
     check.joint = joint.name;
     check.unit = planner::unitName(joint.type);

@@ -41,8 +41,9 @@ struct PoseSetReach {
   std::vector<std::vector<std::string>> groups;
 };
 
-// One joint's drive with the heaviest held set, over a grid of poses covering the joint ranges,
-// each joint driven alone from rest while the others hold still.
+// One joint's drive with the heaviest held set, over a grid of poses covering the joint ranges
+// (49 per joint for one or two joints, 13 per joint for three), each joint driven alone from rest
+// while the others hold still.
 struct DriveCheck {
   std::string joint;
   std::string unit;         // m or rad
@@ -51,7 +52,7 @@ struct DriveCheck {
   double voltage_limit_volts = 0.0;
   double current_limit_amps = 0.0;  // 0: none
   double worst_acceleration = 0.0;  // smallest of the fastest accelerations up and down (unit/s^2)
-  planner::JointVector worst_q = planner::JointVector::Zero();
+  planner::JointVector worst_q;     // where worst_acceleration is, one value per joint
   Severity severity = Severity::kOk;
 };
 
@@ -69,6 +70,9 @@ struct RobotCheck {
 std::vector<PoseClearance> checkPoseClearances(const config::Config& config);
 // Every ordered pair of each pose set planned in the default scene at offset 0.
 std::vector<PoseSetReach> checkReach(const config::Config& config, const planner::MotionPlanner& planner);
+// Poses per joint of the drive check's grid for a chain of `joint_count` joints: 49 for one or two,
+// 13 for three (13^3 poses, within the 49^2 of two).
+int driveSamplesPerJoint(int joint_count);
 // An error when a joint cannot hold still or cannot accelerate both ways somewhere in its range.
 std::vector<DriveCheck> checkDrives(const planner::RobotModel& robot, planner::HeldPieces heaviest);
 // The held set of largest total mass (all pieces when they have mass data).

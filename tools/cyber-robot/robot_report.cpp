@@ -14,6 +14,13 @@ const char* mark(Severity severity) {
   return "      ";
 }
 
+// "(0.100, 1.571)": a pose's values in chain order.
+std::string poseText(const planner::JointVector& q) {
+  std::string out;
+  for (Eigen::Index j = 0; j < q.size(); ++j) out += fmt::format("{}{:.3f}", j == 0 ? "" : ", ", q[j]);
+  return "(" + out + ")";
+}
+
 std::string jointsText(const planner::RobotModel& robot) {
   std::string out;
   for (const planner::ChainJoint& joint : robot.joints) {
@@ -64,7 +71,7 @@ std::string drivesText(const RobotCheck& check) {
     out += fmt::format("  {}{}: holds with at most {:.2f} V of {:.1f} V, {:.1f} A per motor{}; ", mark(d.severity),
                        d.joint, d.hold_volts, d.voltage_limit_volts, d.hold_amps, current);
     if (d.severity == Severity::kError) {
-      out += fmt::format("cannot hold or move both ways at ({:.3f}, {:.3f})\n", d.worst_q[0], d.worst_q[1]);
+      out += fmt::format("cannot hold or move both ways at {}\n", poseText(d.worst_q));
     } else {
       out += fmt::format("accelerates both ways at {:.2f} {}/s^2 or more\n", d.worst_acceleration, d.unit);
     }
@@ -97,9 +104,9 @@ std::string errorsText(const planner::RobotModel& robot, const RobotCheck& check
   for (const DriveCheck& d : check.drives) {
     if (d.severity != Severity::kError) continue;
     out += fmt::format(
-        "error: drive {} cannot hold its load or move both ways at ({:.3f}, {:.3f}) with the heaviest held set "
+        "error: drive {} cannot hold its load or move both ways at {} with the heaviest held set "
         "({}): check [drives.{}] (gearing, count, current_limit_amps, voltage_limit_volts, mass_kg, kG_volts)\n",
-        d.joint, d.worst_q[0], d.worst_q[1], check.heaviest_set, d.joint);
+        d.joint, poseText(d.worst_q), check.heaviest_set, d.joint);
   }
   return out;
 }

@@ -82,5 +82,14 @@ int main(int argc, char** argv) {
   std::printf("cyber-wpilog: %lld of %lld events converted (%lld undecodable, %lld on other channels) -> %s\n",
               static_cast<long long>(stats.converted), static_cast<long long>(stats.events),
               static_cast<long long>(stats.undecodable), static_cast<long long>(stats.other), args.wpilog_path.c_str());
+  // A log of another robot converts without error but without its joints (docs/operations.md,
+  // "AdvantageScope"): say so, since the likely cause is a missing or wrong --config.
+  if (stats.other_joint_count > 0) {
+    std::fprintf(stderr,
+                 "cyber-wpilog: %lld messages have another joint count than the %d-joint robot of %s: their joint "
+                 "values are left out (is --config the robot that was logged?)\n",
+                 static_cast<long long>(stats.other_joint_count), config.robot.jointCount(),
+                 args.config_path.empty() ? "the embedded config/reefscape-2025.toml" : args.config_path.c_str());
+  }
   return 0;
 }

@@ -9,7 +9,8 @@ const char* wpilogUsage() {
          "       cyber-wpilog --list FILE.wpilog\n"
          "Converts a session recorded by lcm-logger into a WPILOG that AdvantageScope opens: entries\n"
          "under /CyberPlanner/ for setpoints, measured state, goals, plan status, trajectories, the\n"
-         "daemon's mode and counters, and the arm as a Mechanism2d and as 3-D component poses.\n"
+         "daemon's mode and counters, and the mechanism as a Mechanism2d (a ligament per joint) and\n"
+         "as 3-D component poses (one per link).\n"
          "  --config FILE  robot description for the mechanism (default: the embedded\n"
          "                 config/reefscape-2025.toml); its [daemon.channels] name the channels\n"
          "  --list FILE    print every entry of a .wpilog: name, type, records, last value\n";

@@ -31,12 +31,11 @@ bool FrameWriter::send(const can::Frame& frame, WriteReport& report) {
 WriteReport FrameWriter::write(const TickOutput& tick, std::uint8_t fault_bits) {
   WriteReport report;
   if (tick.send_setpoints) {
-    std::array<can::Frame, 2> frames{};
+    planner::PerJoint<can::Frame> frames(settings_.joint_devices.size());
     bool encoded = true;
-    for (size_t j = 0; j < frames.size(); ++j) {
-      const can::Setpoint setpoint{tick.setpoints.position[static_cast<int>(j)],
-                                   tick.setpoints.velocity[static_cast<int>(j)],
-                                   tick.setpoints.volts[static_cast<int>(j)], joint_sequences_[j]++};
+    for (int j = 0; j < frames.size(); ++j) {
+      const can::Setpoint setpoint{tick.setpoints.position[j], tick.setpoints.velocity[j], tick.setpoints.volts[j],
+                                   joint_sequences_[static_cast<size_t>(j)]++};
       auto frame = can::encodeSetpoint(settings_.joint_devices[j], setpoint);
       if (frame) {
         frames[j] = frame.value();
@@ -48,7 +47,8 @@ WriteReport FrameWriter::write(const TickOutput& tick, std::uint8_t fault_bits) 
       bool written = true;
       for (const can::Frame& frame : frames) written = send(frame, report) && written;
       report.wire.written = written;
-      for (size_t j = 0; j < frames.size(); ++j) {
+      report.wire.joints = planner::PerJoint<can::Setpoint>(frames.size());
+      for (int j = 0; j < frames.size(); ++j) {
         if (auto wire = can::decodeSetpoint(frames[j])) report.wire.joints[j] = wire.value().setpoint;
       }
     } else {

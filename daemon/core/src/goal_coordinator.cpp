@@ -136,6 +136,7 @@ void GoalCoordinator::startPlanning(MonoNs now) {
     // From rest: no deadline, the plan starts when it is ready (or when the motion ends).
     job.floating = true;
     request.start = mirror_.restPosition();
+    request.start_velocity = JointVector::Zero(request.start.size());
   } else {
     job.floating = false;
     job.branch_ns = branch;

@@ -42,14 +42,14 @@ std::string joinedNames(const std::vector<std::string>& names) {
 // The sent values as the robot's joint vector: exactly one per joint of the configuration.
 planner::Result<planner::JointVector> sentPosition(const std::vector<double>& values,
                                                    const planner::RobotModel& robot) {
-  if (values.size() != robot.joints.size()) {
+  if (values.size() != static_cast<size_t>(robot.jointCount())) {
     std::vector<std::string> names;
     for (const planner::ChainJoint& joint : robot.joints) names.push_back(joint.name);
     return planner::Result<planner::JointVector>::failure(
         PlanStatus::kInvalidInput, fmt::format("num_joints = {} but this robot has {} joints ({})", values.size(),
                                                robot.joints.size(), joinedNames(names)));
   }
-  planner::JointVector q = planner::JointVector::Zero();
+  planner::JointVector q(static_cast<Eigen::Index>(values.size()));
   for (size_t j = 0; j < values.size(); ++j) q[static_cast<Eigen::Index>(j)] = values[j];
   return q;
 }

@@ -5,9 +5,9 @@ namespace cyber::daemon {
 JointSetpoints HoldModel::hold(const JointVector& q) const {
   JointSetpoints out;
   out.position = q;
-  out.velocity.setZero();
+  out.velocity = JointVector::Zero(q.size());
   // At rest only gravity is left: kS * sgn(0) vanishes.
-  out.volts = drives_.volts(q, JointVector::Zero(), JointVector::Zero());
+  out.volts = drives_.volts(q, JointVector::Zero(q.size()), JointVector::Zero(q.size()));
   return out;
 }
 

@@ -110,7 +110,7 @@ void Streamer::consider(MonoNs now, Program* offered, TickOutput& out) {
 
 bool Streamer::withinLimits(const JointSetpoints& s) const {
   const SetpointLimits& lim = settings_.limits;
-  for (int j = 0; j < planner::kJointCount; ++j) {
+  for (int j = 0; j < s.position.size(); ++j) {
     if (!(std::abs(s.position[j]) <= lim.position) || !(std::abs(s.velocity[j]) <= lim.velocity) ||
         !(std::abs(s.volts[j]) <= lim.volts)) {
       return false;  // also catches NaN

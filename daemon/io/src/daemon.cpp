@@ -48,9 +48,8 @@ MonoNs periodOf(double rate_hz) { return secondsToNs(1.0 / rate_hz); }
 FrameWriterSettings writerSettingsOf(const DaemonOptions& options) {
   const auto& s = options.settings;
   FrameWriterSettings out;
-  for (size_t j = 0; j < out.joint_devices.size(); ++j) {
-    out.joint_devices[j] = static_cast<std::uint8_t>(s.devices.joints[j]);
-  }
+  out.joint_devices = planner::PerJoint<std::uint8_t>();
+  for (const int device : s.devices.joints) out.joint_devices.push_back(static_cast<std::uint8_t>(device));
   out.status_device = static_cast<std::uint8_t>(s.devices.status);
   out.status_every_ticks = std::max(1, static_cast<int>(std::lround(s.stream_rate_hz / s.status_rate_hz)));
   return out;

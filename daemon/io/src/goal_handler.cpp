@@ -1,5 +1,6 @@
 #include "cyber/daemon/io/goal_handler.hpp"
 
+#include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <spdlog/spdlog.h>
 
@@ -54,10 +55,12 @@ void GoalHandler::onStreamEvent(const StreamEvent& event, MonoNs now) {
       spdlog::warn("motion stopped: {}", toString(event.gate_reason));
     }
   } else if (event.kind == StreamEventKind::kHolding) {
-    spdlog::info("holding {} {:.4f} {}, {} {:.4f} {} ({})", robot_.joints[0].name, event.position[0],
-                 planner::unitName(robot_.joints[0].type), robot_.joints[1].name, event.position[1],
-                 planner::unitName(robot_.joints[1].type),
-                 event.hold_cause == HoldCause::kShutdown ? "shutdown" : "motion allowed");
+    std::string where;
+    for (int j = 0; j < robot_.jointCount() && j < event.position.size(); ++j) {
+      where += fmt::format("{}{} {:.4f} {}", j == 0 ? "" : ", ", robot_.joints[j].name, event.position[j],
+                           planner::unitName(robot_.joints[j].type));
+    }
+    spdlog::info("holding {} ({})", where, event.hold_cause == HoldCause::kShutdown ? "shutdown" : "motion allowed");
   }
   coordinator_.onStreamEvent(event, now);
 }

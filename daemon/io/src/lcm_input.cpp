@@ -41,6 +41,7 @@ void LcmInput::onState(const cyberplanner::arm_state_t& message) {
     return;
   }
   state_.state_ns = now;
+  state_.joint_count = static_cast<int>(state->q.size());
   for (int j = 0; j < state->q.size(); ++j) {
     state_.measured_q[j] = state->q[j];
     state_.measured_qdot[j] = state->qdot[j];

@@ -54,7 +54,8 @@ std::optional<MeasuredState> stateFromMessage(const cyberplanner::arm_state_t& m
   const size_t joints = robot.joints.size();
   if (message.num_joints < 0 || static_cast<size_t>(message.num_joints) != joints) return std::nullopt;
   if (message.position.size() != joints || message.velocity.size() != joints) return std::nullopt;
-  MeasuredState state;
+  MeasuredState state{planner::JointVector(static_cast<Eigen::Index>(joints)),
+                      planner::JointVector(static_cast<Eigen::Index>(joints))};
   for (size_t j = 0; j < joints; ++j) {
     state.q[static_cast<Eigen::Index>(j)] = message.position[j];
     state.qdot[static_cast<Eigen::Index>(j)] = message.velocity[j];
@@ -137,7 +138,7 @@ cyberplanner::arm_setpoint_t setpointMessage(const StreamSnapshot& snapshot, int
   for (auto* row : {&message.position, &message.velocity, &message.volts})
     row->assign(static_cast<size_t>(num_joints), 0.0);
   message.sequence.assign(static_cast<size_t>(num_joints), 0);
-  for (size_t j = 0; j < std::min(snapshot.joints.size(), static_cast<size_t>(num_joints)); ++j) {
+  for (int j = 0; j < std::min(snapshot.joints.size(), num_joints); ++j) {
     const can::Setpoint& wire = snapshot.joints[j];
     message.position[j] = wire.position;
     message.velocity[j] = wire.velocity;

@@ -15,8 +15,8 @@ RobotInputs gateInputs(const MeasuredStateData& state, const RobotLink& link, st
   RobotInputs inputs;
   inputs.release_generation = release_generation;
   inputs.state_ns = state.state_ns;
-  inputs.measured_q = JointVector(state.measured_q[0], state.measured_q[1]);
-  inputs.measured_qdot = JointVector(state.measured_qdot[0], state.measured_qdot[1]);
+  inputs.measured_q = Eigen::Map<const JointVector>(state.measured_q, state.joint_count);
+  inputs.measured_qdot = Eigen::Map<const JointVector>(state.measured_qdot, state.joint_count);
   applyRobotLink(link, inputs);
   return inputs;
 }

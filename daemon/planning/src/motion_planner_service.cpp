@@ -23,7 +23,8 @@ class TrajectorySource final : public SetpointSource {
     // The optimiser holds each voltage to its limit within its tolerance between grid points
     // (docs/algorithm.md section 3, "Stopping rules"), so a sample may ask for a few millivolts
     // more; a motor controller gives the drive no more than its limit, and neither does the stream.
-    for (int j = 0; j < planner::kJointCount; ++j) {
+    out.volts = sample.volts;
+    for (int j = 0; j < sample.volts.size(); ++j) {
       const double limit = trajectory_->drive(j).voltage_limit_volts;
       out.volts[j] = std::clamp(sample.volts[j], -limit, limit);
     }

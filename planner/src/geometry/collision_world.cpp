@@ -26,14 +26,24 @@ double pointBoxDistance(const Point2& p, const Point2& lo, const Point2& hi) {
   return std::sqrt(dx * dx + dy * dy);
 }
 
-// The largest distance from joint 0's axis of a point p of link 1, over joint 1's range: for a
-// revolute joint 1, |origin| + |p| (it may turn p to point away); for a prismatic one the distance
-// is convex in q1, so its largest value is at an end of the range.
-double farthestFromFirstAxis(const ChainJoint& second, const Point2& p) {
-  if (second.type == JointType::kRevolute) return second.origin_m.norm() + p.norm();
-  const Point2 travel(std::cos(second.axis_rad), std::sin(second.axis_rad));
-  return std::max((second.origin_m + second.range.min * travel + p).norm(),
-                  (second.origin_m + second.range.max * travel + p).norm());
+// The largest distance from its parent link's origin of a point p of a joint's link, over the
+// joint's range: for a revolute joint, |origin| + |p| (it may turn p to point away); for a
+// prismatic one the distance is convex in q, so its largest value is at an end of the range.
+double farthestFromParentOrigin(const ChainJoint& joint, const Point2& p) {
+  if (joint.type == JointType::kRevolute) return joint.origin_m.norm() + p.norm();
+  const Point2 travel(std::cos(joint.axis_rad), std::sin(joint.axis_rad));
+  return std::max((joint.origin_m + joint.range.min * travel + p).norm(),
+                  (joint.origin_m + joint.range.max * travel + p).norm());
+}
+
+// A bound on the distance from joint j's axis (its link's origin) of a point p of link k >= j,
+// over the ranges of the joints after j: the exact largest distance from link k-1's origin, then
+// the triangle inequality through each joint's origin between (docs/algorithm.md section 2.1).
+double farthestFromAxis(const JointChain& chain, int j, int k, const Point2& p) {
+  if (k == j) return p.norm();
+  double reach = farthestFromParentOrigin(chain[k], p);
+  for (int m = k - 1; m > j; --m) reach += farthestFromParentOrigin(chain[m], Point2::Zero());
+  return reach;
 }
 
 }  // namespace
@@ -43,8 +53,8 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
 
 CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, HeldPieces pieces, const JointRange& band)
     : pieces_(pieces), chain_(model.joints) {
-  double reach_first_m = 0.0;   // of joint 0's axis (links 0 and 1)
-  double reach_second_m = 0.0;  // of joint 1's axis (link 1)
+  const int n = model.jointCount();
+  PerJoint<double> reach_m(n, 0.0);  // of joint j's axis, over the links from j on
   auto add_robot = [&](int link, const std::vector<ConvexPolygon>& polygons) {
     for (const ConvexPolygon& polygon : polygons) {
       if (polygon.empty()) continue;
@@ -56,12 +66,7 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
       part.centre /= static_cast<double>(part.vertices.size());
       for (const Point2& v : part.vertices) {
         part.radius = std::max(part.radius, (v - part.centre).norm());
-        if (link == 0) {
-          reach_first_m = std::max(reach_first_m, v.norm());
-        } else {
-          reach_first_m = std::max(reach_first_m, farthestFromFirstAxis(chain_[1], v));
-          reach_second_m = std::max(reach_second_m, v.norm());
-        }
+        for (int j = 0; j <= link; ++j) reach_m[j] = std::max(reach_m[j], farthestFromAxis(chain_, j, link, v));
       }
       robot_.push_back(std::move(part));
     }
@@ -70,8 +75,8 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
   for (size_t i = 0; i < model.pieces.size(); ++i) {
     if (pieces.holds(static_cast<int>(i))) add_robot(model.pieces[i].joint, model.pieces[i].polygons);
   }
-  point_speed_[0] = chain_[0].type == JointType::kPrismatic ? 1.0 : reach_first_m;
-  point_speed_[1] = chain_[1].type == JointType::kPrismatic ? 1.0 : reach_second_m;
+  point_speed_.resize(n);
+  for (int j = 0; j < n; ++j) point_speed_[j] = chain_[j].type == JointType::kPrismatic ? 1.0 : reach_m[j];
 
   auto add_obstacle = [&](const NamedPolygon& named, const JointRange& shift_m) {
     if (named.polygon.empty()) return;
@@ -92,7 +97,7 @@ CollisionWorld::CollisionWorld(const RobotModel& model, const Scene& scene, Held
 bool CollisionWorld::pairDistance(size_t r, size_t o, const ChainPose& pose, double bound, PlacedPolygon& placed,
                                   SignedDistance& out) const {
   const RobotPart& part = robot_[r];
-  const LinkFrame& frame = pose.frames[static_cast<size_t>(part.link)];
+  const LinkFrame& frame = pose.frames[part.link];
   const Obstacle& obstacle = obstacles_[o];
   const int n = static_cast<int>(part.vertices.size());
   // Circle against box bounds the distance of separated shapes only, so it prunes only when

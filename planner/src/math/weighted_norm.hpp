@@ -11,8 +11,11 @@ namespace cyber::planner {
 // Poses closer than this in the weighted norm are the same pose (a zero-length move).
 inline constexpr double kSamePoseWeighted = 1e-9;
 
+// An empty v (no start velocity given) has norm 0.
 inline double weightedNorm(const JointVector& v, const JointVector& metric) {
-  return std::sqrt(metric[0] * v[0] * v[0] + metric[1] * v[1] * v[1]);
+  double sum = 0.0;
+  for (int j = 0; j < v.size(); ++j) sum += metric[j] * v[j] * v[j];
+  return std::sqrt(sum);
 }
 
 }  // namespace cyber::planner

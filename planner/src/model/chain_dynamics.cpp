@@ -41,55 +41,63 @@ PathVoltage pathVoltage(const RigidBodyDrive& drive, const PathTorque& torque, c
                      drive.backEmfVoltsPerRate() * dq_ds[joint], per_load * torque.gravity[joint]};
 }
 
-ChainDynamics::ChainDynamics(const JointChain& chain, const std::array<LinkInertia, kJointCount>& bodies,
-                             double gravity_mps2)
+ChainDynamics::ChainDynamics(const JointChain& chain, const PerJoint<LinkInertia>& bodies, double gravity_mps2)
     : bodies_(bodies), gravity_mps2_(gravity_mps2) {
-  for (int j = 0; j < kJointCount; ++j) {
-    chain_[j].type = chain[j].type;
-    chain_[j].origin_m = chain[j].origin_m;
-    chain_[j].axis_rad = chain[j].axis_rad;
-    chain_[j].range = chain[j].range;
+  const int n = chain.size();
+  for (int j = 0; j < n; ++j) {
+    ChainJoint joint;
+    joint.type = chain[j].type;
+    joint.origin_m = chain[j].origin_m;
+    joint.axis_rad = chain[j].axis_rad;
+    joint.range = chain[j].range;
+    chain_.push_back(joint);
   }
   // A link turns with every revolute joint up to its own (algorithm.md, "Coupled rigid-body
   // dynamics"): its angle is affine in q, so this Jacobian is constant.
-  for (int k = 0; k < kJointCount; ++k) {
-    angle_jacobian_[k].setZero();
+  for (int k = 0; k < n; ++k) {
+    JointRow row = JointRow::Zero(n);
     for (int j = 0; j <= k; ++j) {
-      if (chain_[j].type == JointType::kRevolute) angle_jacobian_[k][j] = 1.0;
+      if (chain_[j].type == JointType::kRevolute) row[j] = 1.0;
     }
+    angle_jacobian_.push_back(row);
   }
 }
 
 ChainDynamics::Kinematics ChainDynamics::kinematics(const JointVector& q) const {
-  const std::array<LinkFrame, kJointCount> frames = linkFrames(chain_, q);
+  const int n = chain_.size();
+  const PerJoint<LinkFrame> frames = linkFrames(chain_, q);
   Kinematics k;
-  for (int j = 0; j < kJointCount; ++j) {
-    const LinkFrame parent = j == 0 ? LinkFrame{} : frames[0];
+  for (int j = 0; j < n; ++j) {
+    const LinkFrame parent = j == 0 ? LinkFrame{} : frames[j - 1];
     // A revolute joint turns its link about the link's origin; a prismatic one slides it along
     // the joint axis turned with the parent.
-    k.pivot_m[j] = frames[j].origin_m;
-    k.travel[j] = parent.rotate(Point2(std::cos(chain_[j].axis_rad), std::sin(chain_[j].axis_rad)));
-    k.cg_m[j] = frames[j].toWorld(bodies_[j].cg_m);
+    k.pivot_m.push_back(frames[j].origin_m);
+    k.travel.push_back(parent.rotate(Point2(std::cos(chain_[j].axis_rad), std::sin(chain_[j].axis_rad))));
+    k.cg_m.push_back(frames[j].toWorld(bodies_[j].cg_m));
   }
   // Column j of the Jacobian of a point p moving with link i >= j: Omega (p - pivot_j) for a
   // revolute joint, its travel direction for a prismatic one.
   const auto column = [&](int j, const Point2& p) -> Point2 {
     return chain_[j].type == JointType::kRevolute ? quarterTurn(p - k.pivot_m[j]) : k.travel[j];
   };
-  for (int i = 0; i < kJointCount; ++i) {
-    for (int j = 0; j < kJointCount; ++j) {
-      k.cg_jacobian[i].col(j) = j <= i ? column(j, k.cg_m[i]) : Point2::Zero();
+  for (int i = 0; i < n; ++i) {
+    PointJacobian cg = PointJacobian::Zero(2, n);
+    // Joint i's origin moves with the links before it, not with its own joint.
+    PointJacobian pivot = PointJacobian::Zero(2, n);
+    for (int j = 0; j <= i; ++j) {
+      cg.col(j) = column(j, k.cg_m[i]);
+      if (j < i) pivot.col(j) = column(j, k.pivot_m[i]);
     }
+    k.cg_jacobian.push_back(cg);
+    k.pivot_jacobian.push_back(pivot);
   }
-  // Joint 1's pivot moves with link 0.
-  k.pivot1_jacobian.col(0) = column(0, k.pivot_m[1]);
-  k.pivot1_jacobian.col(1).setZero();
   return k;
 }
 
-Eigen::Matrix2d ChainDynamics::massMatrix(const Kinematics& k) const {
-  Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
-  for (int i = 0; i < kJointCount; ++i) {
+JointMatrix ChainDynamics::massMatrix(const Kinematics& k) const {
+  const int n = chain_.size();
+  JointMatrix m = JointMatrix::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
     m += bodies_[i].mass_kg * k.cg_jacobian[i].transpose() * k.cg_jacobian[i] +
          bodies_[i].moi_kgm2 * angle_jacobian_[i].transpose() * angle_jacobian_[i];
   }
@@ -101,9 +109,11 @@ JointVector ChainDynamics::velocityTerms(const Kinematics& k, const JointVector&
   // column Omega (p - pivot_j) changes at Omega (pdot - pivotdot_j), a prismatic one (a direction
   // turning with the parent link) at omega_parent Omega travel_j. The angular terms need none:
   // the angle Jacobians are constant.
-  const std::array<Point2, kJointCount> pivot_velocity = {Point2::Zero(), k.pivot1_jacobian * qdot};
-  JointVector c = JointVector::Zero();
-  for (int i = 0; i < kJointCount; ++i) {
+  const int n = chain_.size();
+  PerJoint<Point2> pivot_velocity;
+  for (int j = 0; j < n; ++j) pivot_velocity.push_back(k.pivot_jacobian[j] * qdot);
+  JointVector c = JointVector::Zero(n);
+  for (int i = 0; i < n; ++i) {
     const Point2 cg_velocity = k.cg_jacobian[i] * qdot;
     Point2 acceleration = Point2::Zero();
     for (int j = 0; j <= i; ++j) {
@@ -121,14 +131,15 @@ JointVector ChainDynamics::velocityTerms(const Kinematics& k, const JointVector&
 
 JointVector ChainDynamics::gravityTerms(const Kinematics& k) const {
   // dV/dq with V = g sum_i m_i y_i: the y rows of the Jacobians.
-  JointVector g = JointVector::Zero();
-  for (int i = 0; i < kJointCount; ++i) {
+  const int n = chain_.size();
+  JointVector g = JointVector::Zero(n);
+  for (int i = 0; i < n; ++i) {
     g += gravity_mps2_ * bodies_[i].mass_kg * k.cg_jacobian[i].row(1).transpose();
   }
   return g;
 }
 
-Eigen::Matrix2d ChainDynamics::massMatrix(const JointVector& q) const { return massMatrix(kinematics(q)); }
+JointMatrix ChainDynamics::massMatrix(const JointVector& q) const { return massMatrix(kinematics(q)); }
 
 JointVector ChainDynamics::velocityTerms(const JointVector& q, const JointVector& qdot) const {
   return velocityTerms(kinematics(q), qdot);
@@ -143,7 +154,7 @@ JointVector ChainDynamics::torque(const JointVector& q, const JointVector& qdot,
 
 PathTorque ChainDynamics::alongPath(const JointVector& q, const JointVector& dq_ds, const JointVector& d2q_ds2) const {
   const Kinematics k = kinematics(q);
-  const Eigen::Matrix2d m = massMatrix(k);
+  const JointMatrix m = massMatrix(k);
   return PathTorque{m * dq_ds, m * d2q_ds2 + velocityTerms(k, dq_ds), gravityTerms(k)};
 }
 

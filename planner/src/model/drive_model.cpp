@@ -24,14 +24,14 @@ double DriveParams::amps(double v, double qdot) const {
   return (v - gearing * qdot / motor.kvRadpsPerVolt()) / motor.resistanceOhms();
 }
 
-DriveModel::DriveModel(const JointChain& chain, const std::array<DriveParams, kJointCount>& drives) : drives_(drives) {
-  for (size_t j = 0; j < chain.size(); ++j) {
-    types_[j] = chain[j].type;
-    axes_rad_[j] = chain[j].axis_rad;
+DriveModel::DriveModel(const JointChain& chain, const PerJoint<DriveParams>& drives) : drives_(drives) {
+  for (const ChainJoint& joint : chain) {
+    types_.push_back(joint.type);
+    axes_rad_.push_back(joint.axis_rad);
   }
 }
 
-DriveModel::DriveModel(const std::array<DriveParams, kJointCount>& drives, const ChainDynamics& dynamics)
+DriveModel::DriveModel(const PerJoint<DriveParams>& drives, const ChainDynamics& dynamics)
     : drives_(drives), dynamics_(dynamics) {}
 
 RigidBodyDrive DriveModel::rigidBodyDrive(int joint) const {
@@ -44,44 +44,47 @@ double DriveModel::gravityAngle(int joint, const JointVector& q) const {
   // along its own axis in its parent's orientation (chain.hpp).
   double angle = 0.0;
   for (int j = 0; j <= joint; ++j) {
-    if (types_[static_cast<size_t>(j)] == JointType::kRevolute) {
-      angle += axes_rad_[static_cast<size_t>(j)] + q[j];
+    if (types_[j] == JointType::kRevolute) {
+      angle += axes_rad_[j] + q[j];
     } else if (j == joint) {
-      angle += axes_rad_[static_cast<size_t>(j)];
+      angle += axes_rad_[j];
     }
   }
   return angle;
 }
 
 JointVector DriveModel::volts(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const {
-  JointVector out;
+  const int n = jointCount();
+  JointVector out(n);
   if (dynamics_) {
     const JointVector load = dynamics_->torque(q, qdot, qddot);
-    for (int j = 0; j < kJointCount; ++j) out[j] = rigidBodyDrive(j).volts(load[j], qdot[j]);
+    for (int j = 0; j < n; ++j) out[j] = rigidBodyDrive(j).volts(load[j], qdot[j]);
     return out;
   }
-  for (int j = 0; j < kJointCount; ++j) out[j] = drive(j).volts(gravityAngle(j, q), qdot[j], qddot[j]);
+  for (int j = 0; j < n; ++j) out[j] = drive(j).volts(gravityAngle(j, q), qdot[j], qddot[j]);
   return out;
 }
 
 JointVector DriveModel::amps(const JointVector& v, const JointVector& qdot) const {
-  return JointVector(drive(0).amps(v[0], qdot[0]), drive(1).amps(v[1], qdot[1]));
+  const int n = jointCount();
+  JointVector out(n);
+  for (int j = 0; j < n; ++j) out[j] = drive(j).amps(v[j], qdot[j]);
+  return out;
 }
 
-std::array<PathVoltage, kJointCount> DriveModel::pathVoltages(const PathPoint& p) const {
-  std::array<PathVoltage, kJointCount> out;
+PerJoint<PathVoltage> DriveModel::pathVoltages(const PathPoint& p) const {
+  const int n = jointCount();
+  PerJoint<PathVoltage> out(n);
   if (dynamics_) {
     const PathTorque torque = dynamics_->alongPath(p.q, p.dq_ds, p.d2q_ds2);
-    for (int j = 0; j < kJointCount; ++j)
-      out[static_cast<size_t>(j)] = pathVoltage(rigidBodyDrive(j), torque, p.dq_ds, j);
+    for (int j = 0; j < n; ++j) out[j] = pathVoltage(rigidBodyDrive(j), torque, p.dq_ds, j);
     return out;
   }
   // qdot = q' c and qddot = q' a + q'' b, so kV qdot + kA qddot = kA q' a + kA q'' b + kV q' c.
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < n; ++j) {
     const DriveParams& d = drive(j);
     const double qp = p.dq_ds[j];
-    out[static_cast<size_t>(j)] =
-        PathVoltage{d.kA * qp, d.kA * p.d2q_ds2[j], d.kV * qp, d.kG_volts * d.gravityFactor(gravityAngle(j, p.q))};
+    out[j] = PathVoltage{d.kA * qp, d.kA * p.d2q_ds2[j], d.kV * qp, d.kG_volts * d.gravityFactor(gravityAngle(j, p.q))};
   }
   return out;
 }

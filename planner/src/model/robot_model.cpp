@@ -16,18 +16,18 @@ int indexByName(const std::vector<Named>& items, const std::string& name) {
 int RobotModel::sceneIndex(const std::string& scene_name) const { return indexByName(scenes, scene_name); }
 int RobotModel::pieceIndex(const std::string& piece_name) const { return indexByName(pieces, piece_name); }
 int RobotModel::jointIndex(const std::string& joint_name) const {
-  for (int j = 0; j < kJointCount; ++j) {
-    if (joints[static_cast<size_t>(j)].name == joint_name) return j;
+  for (int j = 0; j < jointCount(); ++j) {
+    if (joints[j].name == joint_name) return j;
   }
   return -1;
 }
 
 DriveModel RobotModel::driveModel(HeldPieces held) const {
   if (drive_kind == DriveKind::kFeedforward) return DriveModel(joints, drives);
-  std::array<LinkInertia, kJointCount> moving = bodies;
+  PerJoint<LinkInertia> moving = bodies;
   for (size_t i = 0; i < pieces.size() && i < piece_inertias.size(); ++i) {
     if (!held.holds(static_cast<int>(i))) continue;
-    LinkInertia& body = moving[static_cast<size_t>(pieces[i].joint)];
+    LinkInertia& body = moving[pieces[i].joint];
     body = combine(body, piece_inertias[i]);
   }
   return DriveModel(drives, ChainDynamics(joints, moving));

@@ -25,7 +25,7 @@ constexpr double kFalsePositionGuard = 0.01;
 // Weighted distance from `start` along `direction` to the first joint limit.
 double distanceToLimits(const RobotModel& model, const JointVector& start, const JointVector& direction) {
   double reach = kNoStop;
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < model.jointCount(); ++j) {
     const JointRange range = model.range(j);
     if (direction[j] > 0.0) reach = std::min(reach, (range.max - start[j]) / direction[j]);
     if (direction[j] < 0.0) reach = std::min(reach, (range.min - start[j]) / direction[j]);

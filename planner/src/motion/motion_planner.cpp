@@ -39,8 +39,8 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
     return Result<Plan>::failure(PlanStatus::kStartInCollision,
                                  fmt::format("{}; {}", refused.error().message, escape.error().message));
   }
-  const Result<Plan> onward =
-      timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces, JointVector::Zero());
+  const Result<Plan> onward = timedPath(model, paths, restOf(escape.value()), request.goal, request.pieces,
+                                        JointVector::Zero(model.jointCount()));
   Result<Plan> plan = joinAfter(PlanMethod::kLeftTheClearance, request, escape.value(), onward);
   // The way out is a few millimetres, timed in tens of milliseconds: its switch from accelerating
   // to braking, and the jump at the junction, are large next to its peak speed, so its columns
@@ -57,6 +57,21 @@ Result<Plan> escapeThenPlan(const RobotModel& model, const PathPlanner& paths, c
   }
   if (plan) plan.value().min_clearance_m = std::min(plan.value().min_clearance_m, world.distance(request.start).value);
   return plan;
+}
+
+// kInvalidInput when the start, the goal (`with_goal`) or the start velocity has not one value per
+// joint (an empty start velocity is a start at rest).
+std::optional<PlanError> checkJointCounts(const RobotModel& robot, const PlanRequest& request, bool with_goal) {
+  const int n = robot.jointCount();
+  const auto wrong = [&](const char* what, const JointVector& v) {
+    return PlanError{PlanStatus::kInvalidInput,
+                     fmt::format("the {} has {} values; this robot has {} joints", what, v.size(), n)};
+  };
+  if (request.start.size() != n) return wrong("start pose", request.start);
+  if (with_goal && request.goal.size() != n) return wrong("goal pose", request.goal);
+  if (request.start_velocity.size() != n && request.start_velocity.size() != 0)
+    return wrong("start velocity", request.start_velocity);
+  return std::nullopt;
 }
 
 // kInvalidInput for an unknown scene, or an offset that is not finite or outside the scene's range.
@@ -106,6 +121,16 @@ Result<const PathPlanner*> pathsFor(const RobotModel& robot, const std::vector<s
 Result<MotionPlanner> MotionPlanner::create(const RobotModel& model, const GridSelection& selection,
                                             const std::optional<std::filesystem::path>& cache_dir) {
   if (model.scenes.empty()) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no scene");
+  const int n = model.jointCount();
+  if (n < 1 || n > kMaxJoints) {
+    return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput,
+                                          fmt::format("the robot has {} joints; 1 to {} are planned", n, kMaxJoints));
+  }
+  if (model.drives.size() != n || model.planner.metric.size() != n || model.planner.grid.step.size() != n ||
+      (model.drive_kind == DriveKind::kRigidBody && model.bodies.size() != n)) {
+    return Result<MotionPlanner>::failure(
+        PlanStatus::kInvalidInput, "the drives, bodies, metric and grid step need one entry per joint of the chain");
+  }
   bool has_polygon = false;
   for (const LinkGeometry& link : model.links) has_polygon = has_polygon || !link.polygons.empty();
   if (!has_polygon) return Result<MotionPlanner>::failure(PlanStatus::kInvalidInput, "the robot has no link polygons");
@@ -159,6 +184,8 @@ Result<Plan> MotionPlanner::stop(const PlanRequest& request) const {
   const auto start_time = std::chrono::steady_clock::now();
   const RobotModel& robot = model();
   if (auto refused = checkSceneAndOffset(robot, request)) return *refused;
+  if (auto refused = checkJointCounts(robot, request, false)) return *refused;
+  if (request.start_velocity.size() == 0) return PlanError{PlanStatus::kInvalidInput, "no velocity to stop from"};
   ToppSolver solver(robot.planner.topp);
   // The world the braked motion was planned in: the scene as drawn, or shifted by its offset. A
   // stop needs no grid, so it is made for any scene, whichever grids the planner was built with.
@@ -176,6 +203,13 @@ Result<Plan> MotionPlanner::stop(const PlanRequest& request) const {
 Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const auto start_time = std::chrono::steady_clock::now();
   const RobotModel& robot = model();
+  if (auto refused = checkSceneAndOffset(robot, request)) return *refused;
+  if (auto refused = checkJointCounts(robot, request, true)) return *refused;
+  if (request.start_velocity.size() == 0) {
+    PlanRequest at_rest = request;
+    at_rest.start_velocity = JointVector::Zero(robot.jointCount());
+    return plan(at_rest);
+  }
   std::optional<PathPlanner> shifted;
   const Result<const PathPlanner*> found = pathsFor(robot, scenes_->path_planners, request, shifted);
   if (!found) return found.error();
@@ -183,7 +217,8 @@ Result<Plan> MotionPlanner::plan(const PlanRequest& request) const {
   const bool moving = weightedNorm(request.start_velocity, robot.planner.metric) > 0.0;
   Result<Plan> chosen = inconsistentPlan();
   if (!moving) {
-    chosen = timedPath(robot, paths, request.start, request.goal, request.pieces, JointVector::Zero());
+    chosen =
+        timedPath(robot, paths, request.start, request.goal, request.pieces, JointVector::Zero(robot.jointCount()));
     if (!chosen && chosen.status() == PlanStatus::kStartInCollision) {
       chosen = escapeThenPlan(robot, paths, request, std::move(chosen));
     }

@@ -28,9 +28,9 @@ bool requestError(PlanStatus status) {
 
 // The rest-to-rest plan from where `stop` ends, after it.
 Result<Plan> planAfterStop(const MovingStartInputs& in, const Trajectory& stop) {
-  return joinAfter(
-      PlanMethod::kStoppedFirst, in.request, stop,
-      timedPath(in.model, in.paths, restOf(stop), in.request.goal, in.request.pieces, JointVector::Zero()));
+  return joinAfter(PlanMethod::kStoppedFirst, in.request, stop,
+                   timedPath(in.model, in.paths, restOf(stop), in.request.goal, in.request.pieces,
+                             JointVector::Zero(in.model.jointCount())));
 }
 
 // The stop and the onward paths, prepared: what the stop-first candidate times.
@@ -47,7 +47,7 @@ struct StopAndOnward {
 // the junction later (docs/moving-starts.md).
 Result<Plan> timeStopFirst(const MovingStartInputs& in, const StopAndOnward& prepared) {
   const Trajectory& stop = prepared.stop;
-  const Result<Plan> onward = timePaths(in.model, prepared.onward, JointVector::Zero());
+  const Result<Plan> onward = timePaths(in.model, prepared.onward, JointVector::Zero(in.model.jointCount()));
   Result<Plan> plan = joinAfter(PlanMethod::kStoppedFirst, in.request, stop, onward);
   const MotionSettings& settings = in.model.planner.motion;
   const double steps = stop.duration_s() / settings.consistency_step_s;
@@ -141,7 +141,7 @@ MovingStartCandidate stopFirst(const MovingStartInputs& in) {
     out.refused = onward.error();
     return out;
   }
-  const double onward_s = estimatedSeconds(in.model, onward, JointVector::Zero());
+  const double onward_s = estimatedSeconds(in.model, onward, JointVector::Zero(in.model.jointCount()));
   out.estimate_s = stop.value().duration_s() + onward_s;
   out.lower_bound_s = stop.value().duration_s() + in.model.planner.motion.rest_estimate_low * onward_s;
   auto prepared =

@@ -43,25 +43,34 @@ constexpr double kLevelWithRay = 1e-12;
 // Goal nodes are few and close together: a bounding box of their indices makes the membership
 // test on every expansion cheap.
 struct GoalBox {
-  int i_lo;
-  int i_hi;
-  int j_lo;
-  int j_hi;
-  [[nodiscard]] bool contains(int i, int j) const { return i >= i_lo && i <= i_hi && j >= j_lo && j <= j_hi; }
+  int dimensions;
+  GridIndex lo;
+  GridIndex hi;
+  [[nodiscard]] bool contains(const GridIndex& idx) const {
+    for (size_t d = 0; d < static_cast<size_t>(dimensions); ++d) {
+      if (idx[d] < lo[d] || idx[d] > hi[d]) return false;
+    }
+    return true;
+  }
 };
 
 // The box of the free goals; none when no goal is free.
 std::optional<GoalBox> goalBox(const CSpaceGrid& grid, std::span<const SearchEndpoint> goals) {
   const int n = grid.cellCount();
-  GoalBox box{grid.firstAxis().count, -1, grid.secondAxis().count, -1};
+  GoalBox box{grid.dimensions(), {}, {}};
+  box.lo.fill(std::numeric_limits<int>::max());
+  box.hi.fill(-1);
+  bool any = false;
   for (const SearchEndpoint& goal : goals) {
     if (goal.cell < 0 || goal.cell >= n || grid.blocked(goal.cell)) continue;
-    box.i_lo = std::min(box.i_lo, grid.firstIndex(goal.cell));
-    box.i_hi = std::max(box.i_hi, grid.firstIndex(goal.cell));
-    box.j_lo = std::min(box.j_lo, grid.secondIndex(goal.cell));
-    box.j_hi = std::max(box.j_hi, grid.secondIndex(goal.cell));
+    any = true;
+    const GridIndex idx = grid.indices(goal.cell);
+    for (size_t d = 0; d < static_cast<size_t>(grid.dimensions()); ++d) {
+      box.lo[d] = std::min(box.lo[d], idx[d]);
+      box.hi[d] = std::max(box.hi[d], idx[d]);
+    }
   }
-  if (box.i_hi < 0) return std::nullopt;
+  if (!any) return std::nullopt;
   return box;
 }
 
@@ -80,34 +89,38 @@ bool goalInSourceRegion(const CSpaceGrid& grid, std::span<const SearchEndpoint> 
   return reachable;
 }
 
-// The heuristic of a node at indices (i, j) in `layer` (its cell's indices are known where it is
-// pushed: no divisions on the hot path). Its own type, so that the search loop reads alone.
+// The heuristic of a node at indices idx in `layer` (its cell's indices are known where it is
+// pushed: no divisions on the hot path). Its own type, so that the search loop reads alone. A side
+// of a hole (two joints only) needs the ray's geometry.
 class SearchHeuristic {
  public:
   SearchHeuristic(const CSpaceGrid& grid, const JointVector& target, const SearchOptions& options)
-      : first_axis_(grid.firstAxis()),
-        second_axis_(grid.secondAxis()),
+      : grid_(grid),
         metric_(grid.metric()),
         target_(target),
         use_heuristic_(options.use_heuristic),
         goal_layer_(options.side ? options.side->parity : 0),
-        scale_e_(std::sqrt(metric_[0])),
-        scale_a_(std::sqrt(metric_[1])),
-        target_x_(scale_e_ * target[0]),
-        target_y_(scale_a_ * target[1]),
+        scale_e_(options.side ? std::sqrt(metric_[0]) : 0.0),
+        scale_a_(options.side ? std::sqrt(metric_[1]) : 0.0),
+        target_x_(options.side ? scale_e_ * target[0] : 0.0),
+        target_y_(options.side ? scale_a_ * target[1] : 0.0),
         ray_x_(options.side
                    ? scale_e_ * 0.5 *
                          (grid.firstAxis().at(options.side->hole.i) + grid.firstAxis().at(options.side->hole.i + 1))
                    : 0.0),
         ray_y_(options.side ? scale_a_ * grid.secondAxis().at(options.side->hole.j) : 0.0) {}
 
-  double operator()(int i, int j, int layer) const {
+  double operator()(const GridIndex& idx, int layer) const {
     if (!use_heuristic_) return 0.0;
-    const double q_e = first_axis_.at(i), q_a = second_axis_.at(j);
     if (layer == goal_layer_) {
-      const double d_e = q_e - target_[0], d_a = q_a - target_[1];
-      return std::sqrt(metric_[0] * d_e * d_e + metric_[1] * d_a * d_a);
+      double sum = 0.0;
+      for (int d = 0; d < grid_.dimensions(); ++d) {
+        const double dq = grid_.axis(d).at(idx[static_cast<size_t>(d)]) - target_[d];
+        sum += metric_[d] * dq * dq;
+      }
+      return std::sqrt(sum);
     }
+    const double q_e = grid_.firstAxis().at(idx[0]), q_a = grid_.secondAxis().at(idx[1]);
     const double x = scale_e_ * q_e, y = scale_a_ * q_a;
     // On the wrong side a path must still cross the ray: the shortest way to the target through a
     // point of the ray. Its length is convex along the ray, so the unconstrained best point (the
@@ -125,8 +138,7 @@ class SearchHeuristic {
  private:
   static double length(double a, double b) { return std::sqrt(a * a + b * b); }  // std::hypot is slower
 
-  const GridAxis& first_axis_;
-  const GridAxis& second_axis_;
+  const CSpaceGrid& grid_;
   const JointVector metric_;
   const JointVector target_;
   const bool use_heuristic_;
@@ -155,19 +167,14 @@ class AStar {
         goal_node_((options.side ? 2 : 1) * n_),
         g_(static_cast<size_t>(goal_node_) + 1, std::numeric_limits<double>::infinity()),
         parent_(static_cast<size_t>(goal_node_) + 1, -1),
-        closed_(static_cast<size_t>(goal_node_) + 1, 0),
-        step_length_{
-            {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
-            {grid.stepLength(0, 1), 0.0, grid.stepLength(0, 1)},
-            {grid.stepLength(1, 1), grid.stepLength(1, 0), grid.stepLength(1, 1)},
-        } {
+        closed_(static_cast<size_t>(goal_node_) + 1, 0) {
     open_.reserve(1024);
   }
 
   void pushSources(std::span<const SearchEndpoint> sources) {
     for (const SearchEndpoint& source : sources) {
       if (source.cell < 0 || source.cell >= n_ || grid_.blocked(source.cell)) continue;
-      push(source.cell, source.cost, -1, heuristic_(grid_.firstIndex(source.cell), grid_.secondIndex(source.cell), 0));
+      push(source.cell, source.cost, -1, heuristic_(grid_.indices(source.cell), 0));
     }
   }
 
@@ -205,35 +212,32 @@ class AStar {
     const double g_top = g_[static_cast<size_t>(top)];
     const std::optional<SideOfHole>& side = options_.side;
     const std::span<const std::uint8_t> also_blocked = options_.also_blocked;
-    const int nj = grid_.secondAxis().count;
-    const int ni = grid_.firstAxis().count;
     const double weight = grid_.potentialWeight();
     const int layer = top >= n_ ? 1 : 0;
     const int here = top - layer * n_;
-    const int i = grid_.firstIndex(here);
-    const int j = grid_.secondIndex(here);
-    if (layer == goal_layer_ && box_.contains(i, j)) {
+    const GridIndex idx = grid_.indices(here);
+    if (layer == goal_layer_ && box_.contains(idx)) {
       for (const SearchEndpoint& goal : goals_) {
         if (goal.cell == here) push(goal_node_, g_top + goal.cost, top, 0.0);
       }
     }
     const double p_here = grid_.potential(here);
-    for (int di = -1; di <= 1; ++di) {
-      const int a = i + di;
-      if (a < 0 || a >= ni) continue;
-      for (int dj = -1; dj <= 1; ++dj) {
-        const int b = j + dj;
-        if ((di == 0 && dj == 0) || b < 0 || b >= nj) continue;
-        const int next_cell = grid_.cell(a, b);
-        const int next_layer = side && grid_.crossesRay(side->hole, here, di, dj) ? 1 - layer : layer;
-        const int next = next_cell + next_layer * n_;
-        if (closed_[static_cast<size_t>(next)] != 0 || !grid_.stepFree(here, di, dj)) continue;
-        if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
-        const double cost =
-            g_top + step_length_[di + 1][dj + 1] * (1.0 + weight * 0.5 * (p_here + grid_.potential(next_cell)));
-        if (cost >= g_[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
-        push(next, cost, top, heuristic_(a, b, next_layer));
-      }
+    const std::vector<GridStep>& steps = grid_.steps();
+    for (size_t k = 0; k < steps.size(); ++k) {
+      const GridStep& step = steps[k];
+      if (!grid_.inside(idx, step)) continue;
+      const int next_cell = here + step.cell_delta;
+      const int next_layer =
+          side && grid_.crossesRay(side->hole, here, step.delta[0], step.delta[1]) ? 1 - layer : layer;
+      const int next = next_cell + next_layer * n_;
+      if (closed_[static_cast<size_t>(next)] != 0 || !grid_.stepFree(here, static_cast<int>(k))) continue;
+      if (!also_blocked.empty() && also_blocked[static_cast<size_t>(next_cell)] != 0) continue;
+      const double cost =
+          g_top + grid_.stepLength(static_cast<int>(k)) * (1.0 + weight * 0.5 * (p_here + grid_.potential(next_cell)));
+      if (cost >= g_[static_cast<size_t>(next)]) continue;  // before the heuristic's square roots
+      GridIndex next_idx = idx;
+      for (size_t d = 0; d < static_cast<size_t>(grid_.dimensions()); ++d) next_idx[d] += step.delta[d];
+      push(next, cost, top, heuristic_(next_idx, next_layer));
     }
   }
 
@@ -249,7 +253,6 @@ class AStar {
   std::vector<int> parent_;
   std::vector<std::uint8_t> closed_;
   QuaternaryHeap<OpenEntry, EarlierEntry> open_;
-  const double step_length_[3][3];
 };
 
 std::optional<SearchPath> AStar::path(std::span<const SearchEndpoint> sources, int expanded) const {

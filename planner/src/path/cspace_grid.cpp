@@ -26,13 +26,75 @@ GridAxis GridAxis::covering(const JointRange& range, double max_step, double ins
   return axis;
 }
 
-CSpaceGrid::CSpaceGrid(GridAxis first, GridAxis second, std::vector<std::uint8_t> blocked, const JointVector& metric,
+namespace {
+
+// The packed word's blocked bit: above every forward step's bit (4 in two dimensions, 13 in three).
+std::uint16_t packedBlockedBit(int bytes) { return static_cast<std::uint16_t>(1U << (8 * bytes - 1)); }
+
+// The steps to the 3^N - 1 neighbours in lexicographic order of their changes, with the strides
+// of the cells, each forward step's bit and each step's opposite. Forward steps are numbered by
+// the axis of their first change, then lexicographically: in two dimensions (+1, -1), (+1, 0),
+// (+1, +1), (0, +1) are bits 0 to 3.
+std::vector<GridStep> stepsOf(int dimensions, const std::array<int, kMaxJoints>& stride) {
+  std::vector<GridStep> steps;
+  int total = 1;
+  for (int d = 0; d < dimensions; ++d) total *= 3;
+  for (int code = 0; code < total; ++code) {
+    GridStep step;
+    int rest = code;
+    bool zero = true;
+    for (int d = dimensions - 1; d >= 0; --d) {
+      step.delta[static_cast<size_t>(d)] = rest % 3 - 1;
+      rest /= 3;
+      zero = zero && step.delta[static_cast<size_t>(d)] == 0;
+      step.cell_delta += step.delta[static_cast<size_t>(d)] * stride[static_cast<size_t>(d)];
+    }
+    if (!zero) steps.push_back(step);
+  }
+  const auto first_change = [&](const GridStep& step) {
+    int d = 0;
+    while (step.delta[static_cast<size_t>(d)] == 0) ++d;
+    return d;
+  };
+  int bit = 0;
+  for (int axis = 0; axis < dimensions; ++axis) {
+    for (GridStep& step : steps) {
+      if (first_change(step) == axis && step.delta[static_cast<size_t>(axis)] > 0) step.bit = bit++;
+    }
+  }
+  for (GridStep& step : steps) {
+    for (size_t k = 0; k < steps.size(); ++k) {
+      if (steps[k].cell_delta == -step.cell_delta) step.reverse = static_cast<int>(k);
+    }
+  }
+  return steps;
+}
+
+}  // namespace
+
+void CSpaceGrid::setAxes(const PerJoint<GridAxis>& axes) {
+  axes_ = axes;
+  cell_count_ = 1;
+  for (int d = dimensions() - 1; d >= 0; --d) {
+    stride_[static_cast<size_t>(d)] = cell_count_;
+    cell_count_ *= axes_[d].count;
+  }
+  steps_table_ = stepsOf(dimensions(), stride_);
+  step_length_.clear();
+  for (const GridStep& step : steps_table_) {
+    double sum = 0.0;
+    for (int d = 0; d < dimensions(); ++d) {
+      const double dq = step.delta[static_cast<size_t>(d)] * axes_[d].step;
+      sum += metric_[d] * dq * dq;
+    }
+    step_length_.push_back(std::sqrt(sum));
+  }
+}
+
+CSpaceGrid::CSpaceGrid(const PerJoint<GridAxis>& axes, std::vector<std::uint8_t> blocked, const JointVector& metric,
                        const SearchSettings& search)
-    : first_(first),
-      second_(second),
-      blocked_(std::move(blocked)),
-      metric_(metric),
-      potential_weight_(search.potential_weight) {
+    : blocked_(std::move(blocked)), metric_(metric), potential_weight_(search.potential_weight) {
+  setAxes(axes);
   blocked_.resize(static_cast<size_t>(cellCount()), 0);
   allowAllStepsBetweenFreeNodes();
   computePotential(search.potential_range);
@@ -44,7 +106,7 @@ void CSpaceGrid::labelRegions() {
   // A flood fill over free steps from each unlabelled free node; steps are symmetric (stepFree).
   region_.assign(static_cast<size_t>(cellCount()), -1);
   std::vector<int> stack;
-  const int ni = first_.count, nj = second_.count;
+  const int step_count = static_cast<int>(steps_table_.size());
   for (int start = 0; start < cellCount(); ++start) {
     if (blocked(start) || region_[static_cast<size_t>(start)] >= 0) continue;
     region_[static_cast<size_t>(start)] = start;
@@ -52,27 +114,26 @@ void CSpaceGrid::labelRegions() {
     while (!stack.empty()) {
       const int c = stack.back();
       stack.pop_back();
-      const int i = firstIndex(c), j = secondIndex(c);
-      for (int di = -1; di <= 1; ++di) {
-        for (int dj = -1; dj <= 1; ++dj) {
-          const int a = i + di, b = j + dj;
-          if ((di == 0 && dj == 0) || a < 0 || b < 0 || a >= ni || b >= nj) continue;
-          const int next = cell(a, b);
-          if (region_[static_cast<size_t>(next)] >= 0 || !stepFree(c, di, dj)) continue;
-          region_[static_cast<size_t>(next)] = start;
-          stack.push_back(next);
-        }
+      const GridIndex idx = indices(c);
+      for (int k = 0; k < step_count; ++k) {
+        const GridStep& step = steps_table_[static_cast<size_t>(k)];
+        if (!inside(idx, step)) continue;
+        const int next = c + step.cell_delta;
+        if (region_[static_cast<size_t>(next)] >= 0 || !stepFree(c, k)) continue;
+        region_[static_cast<size_t>(next)] = start;
+        stack.push_back(next);
       }
     }
   }
 }
 
 void CSpaceGrid::findHoles() {
+  holes_.clear();
+  if (dimensions() != 2) return;
   // Blocked regions, 8-connected, by a flood fill from each unlabelled blocked node.
-  const int ni = first_.count, nj = second_.count;
+  const int ni = axes_[0].count, nj = axes_[1].count;
   std::vector<int> label(static_cast<size_t>(cellCount()), -1);
   std::vector<int> stack;
-  holes_.clear();
   for (int start = 0; start < cellCount(); ++start) {
     if (!blocked(start) || label[static_cast<size_t>(start)] >= 0) continue;
     const int id = start;
@@ -111,55 +172,59 @@ void CSpaceGrid::findHoles() {
 }
 
 void CSpaceGrid::allowAllStepsBetweenFreeNodes() {
-  steps_.assign(static_cast<size_t>(cellCount()), 0);
-  for (int i = 0; i < first_.count; ++i) {
-    for (int j = 0; j < second_.count; ++j) {
-      const int c = cell(i, j);
-      if (blocked(c)) continue;
-      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
-        const int a = i + di, b = j + dj;
-        if (a >= first_.count || b < 0 || b >= second_.count || blocked(cell(a, b))) continue;
-        steps_[static_cast<size_t>(c)] |= static_cast<std::uint8_t>(1U << kStepBit[di + 1][dj + 1]);
-      }
+  node_steps_.assign(static_cast<size_t>(cellCount()), 0);
+  for (int c = 0; c < cellCount(); ++c) {
+    if (blocked(c)) continue;
+    const GridIndex idx = indices(c);
+    for (const GridStep& step : steps_table_) {
+      if (step.bit < 0 || !inside(idx, step) || blocked(c + step.cell_delta)) continue;
+      node_steps_[static_cast<size_t>(c)] |= static_cast<std::uint16_t>(1U << step.bit);
     }
   }
 }
 
-CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
+PerJoint<GridAxis> CSpaceGrid::axesOf(const RobotModel& model) {
   const GridSettings& settings = model.planner.grid;
-  const GridAxis first = GridAxis::covering(model.range(0), settings.step[0], settings.joint_limit_margin);
-  const GridAxis second = GridAxis::covering(model.range(1), settings.step[1], settings.joint_limit_margin);
+  PerJoint<GridAxis> axes;
+  for (int j = 0; j < model.jointCount(); ++j)
+    axes.push_back(GridAxis::covering(model.range(j), settings.step[j], settings.joint_limit_margin));
+  return axes;
+}
+
+CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& model) {
+  const PerJoint<GridAxis> axes = axesOf(model);
   const double clearance = model.clearance_m;
+  const int n = axes.size();
+  JointVector cell_size(n);
+  for (int d = 0; d < n; ++d) cell_size[d] = axes[d].step;
   // Half a diagonal step can lose at most this much distance; farther nodes need no exact value.
-  const double widest_margin = 0.5 * world.lipschitzBound(JointVector(first.step, second.step));
-  const auto count = static_cast<size_t>(first.count) * static_cast<size_t>(second.count);
+  const double widest_margin = 0.5 * world.lipschitzBound(cell_size);
+  CSpaceGrid grid;
+  grid.metric_ = model.planner.metric;
+  grid.setAxes(axes);
+  const auto count = static_cast<size_t>(grid.cellCount());
   std::vector<double> distance(count);
   std::vector<std::uint8_t> blocked(count, 0);
-  for (int i = 0; i < first.count; ++i) {
-    for (int j = 0; j < second.count; ++j) {
-      const size_t c = static_cast<size_t>(i) * static_cast<size_t>(second.count) + static_cast<size_t>(j);
-      distance[c] = world.distance(JointVector(first.at(i), second.at(j)), clearance + widest_margin).value;
-      blocked[c] = distance[c] < clearance;
-    }
+  for (size_t c = 0; c < count; ++c) {
+    distance[c] = world.distance(grid.node(static_cast<int>(c)), clearance + widest_margin).value;
+    blocked[c] = distance[c] < clearance;
   }
-  CSpaceGrid grid(first, second, std::move(blocked), model.planner.metric, model.planner.search);
+  grid = CSpaceGrid(axes, std::move(blocked), model.planner.metric, model.planner.search);
   grid.clearance_m_ = clearance;
   // Steps near obstacles: keep only those a continuous check clears.
-  for (int i = 0; i < first.count; ++i) {
-    for (int j = 0; j < second.count; ++j) {
-      const int c = grid.cell(i, j);
-      for (const auto& [di, dj] : {std::pair{1, -1}, std::pair{1, 0}, std::pair{1, 1}, std::pair{0, 1}}) {
-        const int bit = kStepBit[di + 1][dj + 1];
-        if (((grid.steps_[static_cast<size_t>(c)] >> bit) & 1U) == 0) continue;
-        const int target = grid.cell(i + di, j + dj);
-        const double margin =
-            0.5 * world.lipschitzBound(JointVector(std::abs(di) * first.step, std::abs(dj) * second.step));
-        if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin)
-          continue;
-        ++grid.checked_steps_;
-        if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
-          grid.steps_[static_cast<size_t>(c)] &= static_cast<std::uint8_t>(~(1U << bit));
-        }
+  for (int c = 0; c < grid.cellCount(); ++c) {
+    if (grid.node_steps_[static_cast<size_t>(c)] == 0) continue;
+    for (const GridStep& step : grid.steps_table_) {
+      if (step.bit < 0 || ((grid.node_steps_[static_cast<size_t>(c)] >> step.bit) & 1U) == 0) continue;
+      const int target = c + step.cell_delta;
+      JointVector span(n);
+      for (int d = 0; d < n; ++d) span[d] = std::abs(step.delta[static_cast<size_t>(d)]) * axes[d].step;
+      const double margin = 0.5 * world.lipschitzBound(span);
+      if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin)
+        continue;
+      ++grid.checked_steps_;
+      if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
+        grid.node_steps_[static_cast<size_t>(c)] &= static_cast<std::uint16_t>(~(1U << step.bit));
       }
     }
   }
@@ -168,34 +233,45 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
 }
 
 std::vector<std::uint8_t> CSpaceGrid::packedNodes() const {
-  std::vector<std::uint8_t> out(steps_);
-  for (size_t c = 0; c < out.size(); ++c) {
-    if (blocked_[c] != 0) out[c] |= kPackedBlocked;
+  const int bytes = bytesPerNode();
+  const std::uint16_t blocked_bit = packedBlockedBit(bytes);
+  std::vector<std::uint8_t> out(node_steps_.size() * static_cast<size_t>(bytes));
+  for (size_t c = 0; c < node_steps_.size(); ++c) {
+    std::uint16_t word = node_steps_[c];
+    if (blocked_[c] != 0) word |= blocked_bit;
+    for (int b = 0; b < bytes; ++b)
+      out[c * static_cast<size_t>(bytes) + static_cast<size_t>(b)] = static_cast<std::uint8_t>(word >> (8 * b));
   }
   return out;
 }
 
-std::optional<CSpaceGrid> CSpaceGrid::fromPackedNodes(GridAxis first, GridAxis second,
+std::optional<CSpaceGrid> CSpaceGrid::fromPackedNodes(const PerJoint<GridAxis>& axes,
                                                       std::span<const std::uint8_t> nodes, const RobotModel& model,
                                                       int checked_steps) {
-  if (nodes.size() != static_cast<size_t>(first.count) * static_cast<size_t>(second.count)) return std::nullopt;
-  std::vector<std::uint8_t> blocked(nodes.size());
-  for (size_t c = 0; c < nodes.size(); ++c) blocked[c] = (nodes[c] & kPackedBlocked) != 0 ? 1 : 0;
   // What the constructor derives from the blocked nodes, but the regions, which depend on the
   // steps: every step between free nodes, of which build() took the checked ones out.
   CSpaceGrid grid;
-  grid.first_ = first;
-  grid.second_ = second;
-  grid.blocked_ = std::move(blocked);
   grid.metric_ = model.planner.metric;
+  grid.setAxes(axes);
+  const int bytes = grid.bytesPerNode();
+  const std::uint16_t blocked_bit = packedBlockedBit(bytes);
+  const auto count = static_cast<size_t>(grid.cellCount());
+  if (nodes.size() != count * static_cast<size_t>(bytes)) return std::nullopt;
+  std::vector<std::uint16_t> words(count, 0);
+  for (size_t c = 0; c < count; ++c) {
+    for (int b = 0; b < bytes; ++b)
+      words[c] |= static_cast<std::uint16_t>(nodes[c * static_cast<size_t>(bytes) + static_cast<size_t>(b)] << (8 * b));
+  }
+  grid.blocked_.resize(count);
+  for (size_t c = 0; c < count; ++c) grid.blocked_[c] = (words[c] & blocked_bit) != 0 ? 1 : 0;
   grid.potential_weight_ = model.planner.search.potential_weight;
   grid.allowAllStepsBetweenFreeNodes();
   grid.computePotential(model.planner.search.potential_range);
   grid.findHoles();
-  for (size_t c = 0; c < nodes.size(); ++c) {
-    const auto steps = static_cast<std::uint8_t>(nodes[c] & ~kPackedBlocked);
-    if ((steps & ~grid.steps_[c]) != 0) return std::nullopt;
-    grid.steps_[c] = steps;
+  for (size_t c = 0; c < count; ++c) {
+    const auto steps = static_cast<std::uint16_t>(words[c] & ~blocked_bit);
+    if ((steps & ~grid.node_steps_[c]) != 0) return std::nullopt;
+    grid.node_steps_[c] = steps;
   }
   grid.clearance_m_ = model.clearance_m;
   grid.checked_steps_ = checked_steps;
@@ -207,55 +283,34 @@ int CSpaceGrid::blockedCount() const {
   return static_cast<int>(std::count(blocked_.begin(), blocked_.end(), std::uint8_t{1}));
 }
 
-double CSpaceGrid::stepLength(int di, int dj) const {
-  const double dt = di * first_.step;
-  const double dth = dj * second_.step;
-  return std::sqrt(metric_[0] * dt * dt + metric_[1] * dth * dth);
-}
-
 int CSpaceGrid::lowerCorner(const JointVector& q) const {
-  auto index = [](const GridAxis& axis, double x) {
-    const double f = std::floor((x - axis.min) / axis.step);
-    return static_cast<int>(std::clamp(f, 0.0, static_cast<double>(axis.count - 1)));
-  };
-  return cell(index(first_, q[0]), index(second_, q[1]));
+  GridIndex idx{};
+  for (int d = 0; d < dimensions(); ++d) {
+    const GridAxis& axis = axes_[d];
+    const double f = std::floor((q[d] - axis.min) / axis.step);
+    idx[static_cast<size_t>(d)] = static_cast<int>(std::clamp(f, 0.0, static_cast<double>(axis.count - 1)));
+  }
+  return cellAt(idx);
 }
 
 void CSpaceGrid::computePotential(double range) {
-  // Chamfer distance transform with the weighted lengths of the 8 neighbour steps: a forward and
-  // a backward raster pass, each relaxing the 4 already-visited neighbours.
-  const int ni = first_.count;
-  const int nj = second_.count;
-  const double straight_i = stepLength(1, 0);
-  const double straight_j = stepLength(0, 1);
-  const double diagonal = stepLength(1, 1);
+  // Chamfer distance transform with the weighted lengths of the neighbour steps: a forward raster
+  // pass relaxing the already-visited neighbours (the backward steps), then a backward pass
+  // relaxing the forward ones.
   std::vector<double> dist(static_cast<size_t>(cellCount()), std::numeric_limits<double>::infinity());
   for (size_t c = 0; c < dist.size(); ++c) {
     if (blocked_[c] != 0) dist[c] = 0.0;
   }
-  auto relax = [&](int i, int j, int di, int dj, double w) {
-    const int a = i + di;
-    const int b = j + dj;
-    if (a < 0 || a >= ni || b < 0 || b >= nj) return;
-    double& here = dist[static_cast<size_t>(cell(i, j))];
-    here = std::min(here, dist[static_cast<size_t>(cell(a, b))] + w);
+  const auto relax = [&](int c, const GridIndex& idx, bool forward) {
+    double& here = dist[static_cast<size_t>(c)];
+    for (size_t k = 0; k < steps_table_.size(); ++k) {
+      const GridStep& step = steps_table_[k];
+      if ((step.cell_delta > 0) != forward || !inside(idx, step)) continue;
+      here = std::min(here, dist[static_cast<size_t>(c + step.cell_delta)] + step_length_[k]);
+    }
   };
-  for (int i = 0; i < ni; ++i) {
-    for (int j = 0; j < nj; ++j) {
-      relax(i, j, -1, -1, diagonal);
-      relax(i, j, -1, 0, straight_i);
-      relax(i, j, -1, 1, diagonal);
-      relax(i, j, 0, -1, straight_j);
-    }
-  }
-  for (int i = ni - 1; i >= 0; --i) {
-    for (int j = nj - 1; j >= 0; --j) {
-      relax(i, j, 1, 1, diagonal);
-      relax(i, j, 1, 0, straight_i);
-      relax(i, j, 1, -1, diagonal);
-      relax(i, j, 0, 1, straight_j);
-    }
-  }
+  for (int c = 0; c < cellCount(); ++c) relax(c, indices(c), false);
+  for (int c = cellCount() - 1; c >= 0; --c) relax(c, indices(c), true);
   potential_.assign(dist.size(), 0.0F);
   if (!(range > 0.0)) return;
   for (size_t c = 0; c < dist.size(); ++c) {

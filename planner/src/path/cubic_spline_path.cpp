@@ -46,7 +46,7 @@ std::vector<JointVector> knotDerivatives(const Chords& chords, const JointVector
   const size_t n = h.size();
   const size_t size = n + 1;
   std::vector<double> lower(size, 0.0), diag(size, 0.0), upper(size, 0.0);
-  std::vector<JointVector> rhs(size, JointVector::Zero());
+  std::vector<JointVector> rhs(size, JointVector::Zero(metric.size()));
   const double start_speed = weightedNorm(start_direction, metric);
   if (start_speed > 0.0) {
     diag[0] = 1.0;
@@ -139,6 +139,8 @@ PathPoint CubicSplinePath::at(double s) const {
   PathPoint p;
   if (segments_.empty()) {
     if (!points_.empty()) p.q = points_.front();
+    p.dq_ds = JointVector::Zero(p.q.size());
+    p.d2q_ds2 = JointVector::Zero(p.q.size());
     return p;
   }
   s = std::clamp(s, 0.0, length());
@@ -158,7 +160,11 @@ CubicSplinePath::SegmentBounds CubicSplinePath::segmentBounds(int segment) const
   SegmentBounds b;
   const Segment& seg = segments_[static_cast<size_t>(segment)];
   const double h = knots_[static_cast<size_t>(segment) + 1] - knots_[static_cast<size_t>(segment)];
-  for (int j = 0; j < kJointCount; ++j) {
+  const int joints = static_cast<int>(seg.c0.size());
+  b.q_min.resize(joints);
+  b.q_max.resize(joints);
+  b.abs_dq_max.resize(joints);
+  for (int j = 0; j < joints; ++j) {
     const double c0 = seg.c0[j], c1 = seg.c1[j], c2 = seg.c2[j], c3 = seg.c3[j];
     auto q = [&](double u) { return c0 + u * (c1 + u * (c2 + u * c3)); };
     auto dq = [&](double u) { return c1 + u * (2.0 * c2 + u * kCubicDegree * c3); };

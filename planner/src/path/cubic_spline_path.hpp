@@ -18,9 +18,9 @@ class CubicSplinePath final : public GeometricPath {
  public:
   // Per joint over one segment: range of q and the largest |q'|.
   struct SegmentBounds {
-    JointVector q_min = JointVector::Zero();
-    JointVector q_max = JointVector::Zero();
-    JointVector abs_dq_max = JointVector::Zero();
+    JointVector q_min;
+    JointVector q_max;
+    JointVector abs_dq_max;
   };
 
   CubicSplinePath() = default;
@@ -29,7 +29,7 @@ class CubicSplinePath final : public GeometricPath {
   // exactly). One remaining point gives the zero-length path. A non-zero start_direction clamps
   // q'(0) = start_direction / |start_direction|_Sigma.
   static Result<CubicSplinePath> through(std::span<const JointVector> waypoints, const JointVector& metric,
-                                         const JointVector& start_direction = JointVector::Zero());
+                                         const JointVector& start_direction = {});
 
   [[nodiscard]] double length() const override { return knots_.empty() ? 0.0 : knots_.back(); }
   [[nodiscard]] PathPoint at(double s) const override;

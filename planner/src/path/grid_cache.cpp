@@ -18,7 +18,8 @@ namespace cyber::planner {
 namespace {
 
 // The file: a header of fixed size, then per grid its checked-step count (4 bytes) and its
-// packedNodes(). Numbers are little-endian whatever the machine's order.
+// packedNodes(). Numbers are little-endian whatever the machine's order. The header's two counts
+// are the first axis's nodes and the nodes of the other axes together (1 for one joint).
 constexpr std::array<std::uint8_t, 8> kMagic = {'C', 'Y', 'G', 'R', 'I', 'D', 'S', 0};
 constexpr size_t kVersionAt = 8;
 constexpr size_t kGridCountAt = 12;
@@ -52,16 +53,18 @@ std::uint64_t checksum(std::span<const std::uint8_t> payload) {
   return hash.value();
 }
 
+// The node counts of the header: the first axis's, and the other axes' product.
 struct Axes {
-  GridAxis first;
-  GridAxis second;
+  PerJoint<GridAxis> axes;
+  std::uint64_t first = 0;
+  std::uint64_t rest = 1;
+  [[nodiscard]] std::uint64_t nodes() const { return first * rest; }
 };
 
-// The axes CSpaceGrid::build gives this model's grids.
-Axes axesOf(const RobotModel& model) {
-  const GridSettings& settings = model.planner.grid;
-  return {GridAxis::covering(model.range(0), settings.step[0], settings.joint_limit_margin),
-          GridAxis::covering(model.range(1), settings.step[1], settings.joint_limit_margin)};
+Axes countsOf(const PerJoint<GridAxis>& axes) {
+  Axes out{axes, static_cast<std::uint64_t>(axes[0].count), 1};
+  for (int d = 1; d < axes.size(); ++d) out.rest *= static_cast<std::uint64_t>(axes[d].count);
+  return out;
 }
 
 // Reads up to `size` bytes; fewer at the file's end.
@@ -100,12 +103,12 @@ GridCacheStatus checkHeader(const Bytes& header, const GridCacheFile& file, cons
     return GridCacheStatus::kStale;
   }
   const auto grids = static_cast<std::uint64_t>(model.pieceSetCount());
-  const auto nodes = static_cast<std::uint64_t>(axes.first.count) * static_cast<std::uint64_t>(axes.second.count);
-  const std::uint64_t payload = grids * (kCheckedStepsSize + nodes);
-  const bool sizes_agree = get(header, kGridCountAt, 4) == grids &&
-                           get(header, kFirstCountAt, 4) == static_cast<std::uint64_t>(axes.first.count) &&
-                           get(header, kSecondCountAt, 4) == static_cast<std::uint64_t>(axes.second.count) &&
-                           get(header, kPayloadSizeAt, 8) == payload && file_size == kHeaderSize + payload;
+  const std::uint64_t bytes =
+      axes.nodes() * static_cast<std::uint64_t>(CSpaceGrid::packedBytesPerNode(axes.axes.size()));
+  const std::uint64_t payload = grids * (kCheckedStepsSize + bytes);
+  const bool sizes_agree = get(header, kGridCountAt, 4) == grids && get(header, kFirstCountAt, 4) == axes.first &&
+                           get(header, kSecondCountAt, 4) == axes.rest && get(header, kPayloadSizeAt, 8) == payload &&
+                           file_size == kHeaderSize + payload;
   return sizes_agree ? GridCacheStatus::kOk : GridCacheStatus::kCorrupt;
 }
 
@@ -140,7 +143,7 @@ GridCacheResult<std::vector<CSpaceGrid>> readGridCache(const GridCacheFile& file
   if (in.fd < 0) return errno == ENOENT ? GridCacheStatus::kMissing : GridCacheStatus::kUnreadable;
   struct stat status {};
   if (::fstat(in.fd, &status) != 0 || !S_ISREG(status.st_mode)) return GridCacheStatus::kUnreadable;
-  const Axes axes = axesOf(model);
+  const Axes axes = countsOf(CSpaceGrid::axesOf(model));
   GridCacheResult<Bytes> header = readBytes(in.fd, kHeaderSize);
   if (!header) return header.error();
   const GridCacheStatus checked =
@@ -153,13 +156,14 @@ GridCacheResult<std::vector<CSpaceGrid>> readGridCache(const GridCacheFile& file
   if (bytes.size() != payload_size || checksum(bytes) != get(header.value(), kChecksumAt, 8)) {
     return GridCacheStatus::kCorrupt;
   }
-  const size_t nodes = static_cast<size_t>(axes.first.count) * static_cast<size_t>(axes.second.count);
+  const size_t nodes =
+      static_cast<size_t>(axes.nodes()) * static_cast<size_t>(CSpaceGrid::packedBytesPerNode(axes.axes.size()));
   std::vector<CSpaceGrid> grids;
   grids.reserve(static_cast<size_t>(model.pieceSetCount()));
   for (size_t at = 0; at < bytes.size(); at += kCheckedStepsSize + nodes) {
     const auto checked_steps = static_cast<int>(get(bytes, at, kCheckedStepsSize));
     std::optional<CSpaceGrid> grid = CSpaceGrid::fromPackedNodes(
-        axes.first, axes.second, std::span(bytes).subspan(at + kCheckedStepsSize, nodes), model, checked_steps);
+        axes.axes, std::span(bytes).subspan(at + kCheckedStepsSize, nodes), model, checked_steps);
     if (!grid || checked_steps < 0) return GridCacheStatus::kCorrupt;
     grids.push_back(std::move(*grid));
   }
@@ -168,8 +172,7 @@ GridCacheResult<std::vector<CSpaceGrid>> readGridCache(const GridCacheFile& file
 
 GridCacheResult<Done> writeGridCache(const GridCacheFile& file, std::span<const CSpaceGrid> grids) {
   if (grids.empty()) return GridCacheStatus::kUnwritable;
-  const GridAxis& first = grids.front().firstAxis();
-  const GridAxis& second = grids.front().secondAxis();
+  const Axes axes = countsOf(grids.front().axes());
   Bytes bytes(kHeaderSize);
   for (const CSpaceGrid& grid : grids) {
     const size_t at = bytes.size();
@@ -182,8 +185,8 @@ GridCacheResult<Done> writeGridCache(const GridCacheFile& file, std::span<const 
   put(bytes, kVersionAt, kGridFormatVersion, 4);
   put(bytes, kGridCountAt, grids.size(), 4);
   put(bytes, kKeyAt, file.key, 8);
-  put(bytes, kFirstCountAt, static_cast<std::uint64_t>(first.count), 4);
-  put(bytes, kSecondCountAt, static_cast<std::uint64_t>(second.count), 4);
+  put(bytes, kFirstCountAt, axes.first, 4);
+  put(bytes, kSecondCountAt, axes.rest, 4);
   put(bytes, kPayloadSizeAt, bytes.size() - kHeaderSize, 8);
   put(bytes, kChecksumAt, checksum(std::span(bytes).subspan(kHeaderSize)), 8);
 

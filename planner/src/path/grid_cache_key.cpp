@@ -84,10 +84,8 @@ std::uint64_t gridCacheKey(const RobotModel& model, const Scene& scene, const Jo
   hash.f64(band.max);
   hash.f64(model.clearance_m);
   const PlannerSettings& settings = model.planner;
-  hash.f64(settings.metric[0]);
-  hash.f64(settings.metric[1]);
-  hash.f64(settings.grid.step[0]);
-  hash.f64(settings.grid.step[1]);
+  for (int j = 0; j < settings.metric.size(); ++j) hash.f64(settings.metric[j]);
+  for (int j = 0; j < settings.grid.step.size(); ++j) hash.f64(settings.grid.step[j]);
   hash.f64(settings.grid.joint_limit_margin);
   hash.f64(settings.search.potential_weight);
   hash.f64(settings.search.potential_range);

@@ -8,7 +8,7 @@ PathPoint StraightPath::at(double s) const {
   PathPoint p;
   p.q = from_ + std::clamp(s, 0.0, length_) * direction_;
   p.dq_ds = direction_;
-  p.d2q_ds2 = JointVector::Zero();
+  p.d2q_ds2 = JointVector::Zero(direction_.size());
   return p;
 }
 

@@ -63,7 +63,7 @@ ClearanceCheck checkPath(const CubicSplinePath& path, const CollisionWorld& worl
   bool have_exact = false;
   auto q_at = [&](double s) -> JointVector { return path.at(s).q; };
   if (path.segmentCount() == 0) {
-    walk(q_at, 0.0, 0.0, JointVector::Zero(), world, clearance_m, max_step, &check, &have_exact);
+    walk(q_at, 0.0, 0.0, JointVector::Zero(model.jointCount()), world, clearance_m, max_step, &check, &have_exact);
     check.within_limits = model.withinLimits(path.at(0.0).q);
     return check;
   }

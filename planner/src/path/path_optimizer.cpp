@@ -21,38 +21,38 @@ SmoothingObjective::SmoothingObjective(const CollisionWorld& world, std::vector<
       free_count_(std::max(0, static_cast<int>(prior_.size()) - 1 - fixed_head_)),
       metric_(model.planner.metric),
       settings_(settings),
-      limits_{model.range(0), model.range(1)},
+      limits_(model.jointCount()),
       limit_margin_(model.planner.grid.joint_limit_margin),
-      points_(prior_) {}
+      points_(prior_) {
+  for (int j = 0; j < model.jointCount(); ++j) limits_[j] = model.range(j);
+}
 
 Eigen::VectorXd SmoothingObjective::priorVariables() const {
-  Eigen::VectorXd x(2 * free_count_);
+  Eigen::VectorXd x(jointCount() * free_count_);
   for (int k = 0; k < free_count_; ++k) {
-    x[k] = prior_[static_cast<size_t>(fixed_head_ + k)][0];
-    x[free_count_ + k] = prior_[static_cast<size_t>(fixed_head_ + k)][1];
+    for (int j = 0; j < jointCount(); ++j) x[j * free_count_ + k] = prior_[static_cast<size_t>(fixed_head_ + k)][j];
   }
   return x;
 }
 
 std::vector<JointVector> SmoothingObjective::waypoints(const Eigen::VectorXd& x) const {
   std::vector<JointVector> out = prior_;
-  for (int k = 0; k < free_count_; ++k)
-    out[static_cast<size_t>(fixed_head_ + k)] = JointVector(x[k], x[free_count_ + k]);
+  for (int k = 0; k < free_count_; ++k) out[static_cast<size_t>(fixed_head_ + k)] = variablesOf(x, k);
   return out;
 }
 
 double SmoothingObjective::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& gradient) const {
   const int m = free_count_;
   const int n = static_cast<int>(prior_.size());
-  for (int k = 0; k < m; ++k) points_[static_cast<size_t>(fixed_head_ + k)] = JointVector(x[k], x[m + k]);
+  const int joints = jointCount();
+  for (int k = 0; k < m; ++k) points_[static_cast<size_t>(fixed_head_ + k)] = variablesOf(x, k);
   gradient.setZero();
   // Gradient of a term in waypoint i, joint j, lands in variable (i - fixed_head) + j * m when
   // waypoint i is free.
   auto add = [&](int i, const JointVector& g) {
     const int k = i - fixed_head_;
     if (k < 0 || k >= m) return;
-    gradient[k] += g[0];
-    gradient[m + k] += g[1];
+    for (int j = 0; j < joints; ++j) gradient[j * m + k] += g[j];
   };
   const JointVector sigma = metric_;
   double cost = 0.0;
@@ -74,13 +74,13 @@ double SmoothingObjective::evaluate(const Eigen::VectorXd& x, Eigen::VectorXd& g
         add(i, settings_.obstacle_weight * (-2.0 / d0) * (e - e_cut) * d.gradient);
       }
     }
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < joints; ++j) {
       const double below = limits_[j].min + limit_margin_ - q[j];
       const double above = q[j] - (limits_[j].max - limit_margin_);
       const double excess = below > 0.0 ? -below : (above > 0.0 ? above : 0.0);
       if (excess != 0.0) {
         cost += settings_.joint_limit_weight * excess * excess;
-        JointVector g = JointVector::Zero();
+        JointVector g = JointVector::Zero(joints);
         g[j] = 2.0 * settings_.joint_limit_weight * excess;
         add(i, g);
       }
@@ -142,18 +142,19 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
     result.waypoints = prior;
     return result;
   }
-  BandedCholesky factors[kJointCount];
+  const int joints = model.jointCount();
+  BandedCholesky factors[kMaxJoints];
   bool preconditioned = true;
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < joints; ++j) {
     objective.quadraticHessian(j, factors[j]);
     // A pivot floor of 0 replaces only pivots that are not positive: then there is no factor.
     preconditioned = preconditioned && factors[j].factor(0.0) == 0;
   }
   const Eigen::VectorXd x_prior = objective.priorVariables();
-  Eigen::VectorXd x(2 * m), gradient_x(2 * m);
+  Eigen::VectorXd x(joints * m), gradient_x(joints * m);
   // x = x_prior + L^-T y, per joint block; without a factor (all quadratic weights zero) y = x - x_prior.
   auto to_x = [&](const Eigen::VectorXd& y) {
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < joints; ++j) {
       x.segment(j * m, m) = y.segment(j * m, m);
       if (preconditioned) factors[j].solveUpper(x.segment(j * m, m));
     }
@@ -162,7 +163,7 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
   const LbfgsObjective f = [&](const Eigen::VectorXd& y, Eigen::VectorXd& gradient_y) {
     to_x(y);
     const double cost = objective.evaluate(x, gradient_x);
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < joints; ++j) {
       gradient_y.segment(j * m, m) = gradient_x.segment(j * m, m);
       if (preconditioned) factors[j].solveLower(gradient_y.segment(j * m, m));
     }
@@ -172,7 +173,7 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
   lbfgs.max_iterations = settings.max_iterations;
   lbfgs.gradient_tolerance = settings.gradient_tolerance;
   lbfgs.relative_cost_tolerance = settings.relative_cost_tolerance;
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * m);
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(joints * m);
   result.lbfgs = minimizeLbfgs(f, y, lbfgs);
   to_x(y);
   // The limit term is soft (a stiff one slows L-BFGS down a lot); clamp what it leaves.

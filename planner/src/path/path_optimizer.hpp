@@ -60,7 +60,15 @@ class SmoothingObjective {
   int free_count_;
   JointVector metric_;
   SmoothingSettings settings_;
-  JointRange limits_[kJointCount];
+  [[nodiscard]] int jointCount() const { return limits_.size(); }
+  // Free waypoint k's joint values: variable k of each joint's block of freeCount().
+  [[nodiscard]] JointVector variablesOf(const Eigen::VectorXd& x, int k) const {
+    JointVector q(jointCount());
+    for (int j = 0; j < jointCount(); ++j) q[j] = x[j * free_count_ + k];
+    return q;
+  }
+
+  PerJoint<JointRange> limits_;
   double limit_margin_;                      // GridSettings::joint_limit_margin
   mutable std::vector<JointVector> points_;  // scratch: the whole waypoint list at x
 };

@@ -24,13 +24,20 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 std::string poseText(const RobotModel& model, const JointVector& q) {
-  return fmt::format("({:.4f} {}, {:.4f} {})", q[0], unitName(model.joints[0].type), q[1],
-                     unitName(model.joints[1].type));
+  std::string out = "(";
+  for (int j = 0; j < q.size(); ++j) {
+    out += fmt::format("{}{:.4f} {}", j == 0 ? "" : ", ", q[j], unitName(model.joints[j].type));
+  }
+  return out + ")";
 }
 
 std::string rangeText(const RobotModel& model) {
-  return fmt::format("{} [{:.4f}, {:.4f}], {} [{:.4f}, {:.4f}]", model.joints[0].name, model.range(0).min,
-                     model.range(0).max, model.joints[1].name, model.range(1).min, model.range(1).max);
+  std::string out;
+  for (int j = 0; j < model.jointCount(); ++j) {
+    out += fmt::format("{}{} [{:.4f}, {:.4f}]", j == 0 ? "" : ", ", model.joints[j].name, model.range(j).min,
+                       model.range(j).max);
+  }
+  return out;
 }
 
 std::string obstacleName(const Scene& scene, int index) {
@@ -49,26 +56,28 @@ constexpr int kLeadInHalvings = 5;
 
 // Free grid nodes near a pose that a straight, clear segment reaches, with the connection cost
 // |segment|_Sigma (1 + w p(node) / 2) >= |segment|_Sigma (what A*'s heuristic needs). Tries the
-// 2 x 2 nodes around the pose first and widens ring by ring.
+// 2^N nodes around the pose first and widens ring by ring.
 std::vector<SearchEndpoint> connectToGrid(const CSpaceGrid& grid, const CollisionWorld& world, const JointVector& pose,
                                           double clearance_m) {
   std::vector<SearchEndpoint> out;
-  const int corner = grid.lowerCorner(pose);
-  const int i0 = grid.firstIndex(corner), j0 = grid.secondIndex(corner);
+  const GridIndex corner = grid.indices(grid.lowerCorner(pose));
   for (int ring = 1; ring <= kMaxConnectionRing && out.empty(); ++ring) {
-    for (int i = i0 - ring + 1; i <= i0 + ring; ++i) {
-      for (int j = j0 - ring + 1; j <= j0 + ring; ++j) {
-        if (i < 0 || j < 0 || i >= grid.firstAxis().count || j >= grid.secondAxis().count) continue;
-        // Only the new ring: the inner nodes were tried already.
-        const bool inner = i > i0 - ring + 1 && i < i0 + ring && j > j0 - ring + 1 && j < j0 + ring;
-        if (ring > 1 && inner) continue;
-        const int cell = grid.cell(i, j);
-        if (grid.blocked(cell)) continue;
-        if (!checkSegment(world, pose, grid.node(cell), clearance_m).clear) continue;
-        const double length = weightedNorm(grid.node(cell) - pose, grid.metric());
-        out.push_back({cell, length * (1.0 + 0.5 * grid.potentialWeight() * grid.potential(cell))});
-      }
+    GridIndex lo{}, hi{};
+    for (size_t d = 0; d < static_cast<size_t>(grid.dimensions()); ++d) {
+      lo[d] = corner[d] - ring + 1;
+      hi[d] = corner[d] + ring;
     }
+    grid.forEachInBox(lo, hi, [&](const GridIndex& idx, int cell) {
+      // Only the new ring: the inner nodes were tried already.
+      bool inner = true;
+      for (size_t d = 0; d < static_cast<size_t>(grid.dimensions()); ++d)
+        inner = inner && idx[d] > lo[d] && idx[d] < hi[d];
+      if (ring > 1 && inner) return;
+      if (grid.blocked(cell)) return;
+      if (!checkSegment(world, pose, grid.node(cell), clearance_m).clear) return;
+      const double length = weightedNorm(grid.node(cell) - pose, grid.metric());
+      out.push_back({cell, length * (1.0 + 0.5 * grid.potentialWeight() * grid.potential(cell))});
+    });
   }
   return out;
 }

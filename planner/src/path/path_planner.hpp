@@ -69,14 +69,13 @@ class PathPlanner {
   // start_velocity (joint units/s) only shapes the start of the path: the spline leaves along it
   // with unit Sigma-speed, after a straight lead-in. Typed errors, never an exception.
   [[nodiscard]] Result<PlannedPath> plan(const JointVector& start, const JointVector& goal, HeldPieces pieces,
-                                         const JointVector& start_velocity = JointVector::Zero()) const;
+                                         const JointVector& start_velocity = {}) const;
   // Every path that passed the clearance check, the one a reachability pass times fastest first
   // (the search's smoothed polyline, its shortcut, the other side of each hole of C-space, and the
   // fastest of these shaped against its time; docs/performance.md). plan() is the first.
   // Without alternatives, the search's smoothed polyline alone (a quick first look at a move).
   [[nodiscard]] Result<std::vector<PlannedPath>> candidates(
-      const JointVector& start, const JointVector& goal, HeldPieces pieces,
-      const JointVector& start_velocity = JointVector::Zero(),
+      const JointVector& start, const JointVector& goal, HeldPieces pieces, const JointVector& start_velocity = {},
       PathAlternatives alternatives = PathAlternatives::kSearch) const;
   // The first path smoothed, then the candidates of these strategies, in their order
   // (path_strategies.hpp; kSearch is every one of pathStrategies(), kNone none).

@@ -43,7 +43,7 @@ class ShapeSearch {
   }
 
   [[nodiscard]] bool ready() const { return ready_; }
-  [[nodiscard]] int parameters() const { return kJointCount * bumps_; }
+  [[nodiscard]] int parameters() const { return model_.jointCount() * bumps_; }
   [[nodiscard]] int evaluations() const { return best_.evaluations; }
   [[nodiscard]] int freeKnots() const { return free_last_ - free_first_ + 1; }
 
@@ -101,6 +101,13 @@ class ShapeSearch {
   ShapedPath best_;
 };
 
+// Each joint's amplitude step in its own unit: the first joint's, then the later joints'.
+JointVector initialSteps(const RobotModel& model, double first, double later) {
+  JointVector out = JointVector::Constant(model.jointCount(), later);
+  out[0] = first;
+  return out;
+}
+
 }  // namespace
 
 ShapedPath shapeForTime(std::span<const JointVector> waypoints, int fixed_head, const JointVector& start_velocity,
@@ -110,10 +117,11 @@ ShapedPath shapeForTime(std::span<const JointVector> waypoints, int fixed_head, 
                      settings.grid_points);
   if (!search.ready()) return search.take();
   const int bumps = settings.bumps;
-  JointVector step = settings.initial_step;
-  const JointVector min_step = settings.min_step_fraction * settings.initial_step;
+  const JointVector initial_step = initialSteps(model, settings.initial_step_first, settings.initial_step_later);
+  JointVector step = initial_step;
+  const JointVector min_step = settings.min_step_fraction * initial_step;
   std::vector<int> last_sign(static_cast<size_t>(search.parameters()), 1);
-  while (search.evaluations() < settings.max_evaluations && (step[0] >= min_step[0] || step[1] >= min_step[1])) {
+  while (search.evaluations() < settings.max_evaluations && (step.array() >= min_step.array()).any()) {
     bool improved = false;
     for (int p = 0; p < search.parameters() && search.evaluations() < settings.max_evaluations; ++p) {
       // The direction that helped last time first.
@@ -137,6 +145,7 @@ ShapedPath refineShapeForTime(std::span<const JointVector> waypoints, int fixed_
                      settings.grid_points);
   if (!search.ready() || search.freeKnots() < 2 * settings.bumps) return search.take();
   const auto parameters = static_cast<size_t>(search.parameters());
+  const JointVector initial_step = initialSteps(model, settings.initial_step_first, settings.initial_step_later);
   std::vector<double> scale(parameters, 1.0);  // of the initial step, per amplitude
   std::vector<int> last_sign(parameters, 1);
   auto live = [&] {
@@ -145,7 +154,7 @@ ShapedPath refineShapeForTime(std::span<const JointVector> waypoints, int fixed_
   while (search.evaluations() < settings.max_evaluations && live()) {
     for (size_t p = 0; p < parameters && search.evaluations() < settings.max_evaluations; ++p) {
       if (scale[p] < settings.min_step_fraction) continue;
-      const double amount = scale[p] * settings.initial_step[static_cast<int>(p) / settings.bumps];
+      const double amount = scale[p] * initial_step[static_cast<int>(p) / settings.bumps];
       bool helped = false;
       for (int sign : {last_sign[p], -last_sign[p]}) {
         double blocked_at = -1.0;

@@ -28,7 +28,7 @@ struct JointProfile {
 
 std::optional<JointProfile> ownProfile(const JointVector& from, const JointVector& to, int joint,
                                        const DriveModel& drives, int grid_points) {
-  JointVector direction = JointVector::Zero();
+  JointVector direction = JointVector::Zero(from.size());
   const double travel = std::abs(to[joint] - from[joint]);
   direction[joint] = to[joint] > from[joint] ? 1.0 : -1.0;
   JointProfile profile{reachabilityTimes(StraightPath(from, direction, travel), drives, 0.0, grid_points)};
@@ -44,37 +44,44 @@ std::optional<SynchronisedPath> synchronisedPath(const JointVector& from, const 
   const DriveModel drives = model.driveModel(world.pieces());
   // StraightPath's length is in joint units here, so each joint's travel must be worth planning.
   constexpr double kMinTravel = 1e-3;  // m or rad
-  for (int j = 0; j < kJointCount; ++j) {
+  const int joints = model.jointCount();
+  // One joint alone has nothing to synchronise with.
+  if (joints < 2) return std::nullopt;
+  for (int j = 0; j < joints; ++j) {
     if (!(std::abs(to[j] - from[j]) > kMinTravel)) return std::nullopt;
   }
-  std::array<std::optional<JointProfile>, kJointCount> own;
-  for (int j = 0; j < kJointCount; ++j) {
-    own[static_cast<size_t>(j)] = ownProfile(from, to, j, drives, settings.profile_points);
-    if (!own[static_cast<size_t>(j)]) return std::nullopt;
+  PerJoint<std::optional<JointProfile>> own(joints);
+  int slow = 0;
+  for (int j = 0; j < joints; ++j) {
+    own[j] = ownProfile(from, to, j, drives, settings.profile_points);
+    if (!own[j]) return std::nullopt;
+    if (own[j]->durationS() > own[slow]->durationS()) slow = j;
   }
-  const int slow = own[0]->durationS() >= own[1]->durationS() ? 0 : 1, fast = 1 - slow;
-  const JointProfile& slower = *own[static_cast<size_t>(slow)];
-  const JointProfile& faster = *own[static_cast<size_t>(fast)];
+  const JointProfile& slower = *own[slow];
   if (!(slower.durationS() < beat_s)) return std::nullopt;
 
   std::optional<SynchronisedPath> best;
   int estimates = 0;
-  std::vector<JointVector> waypoints(static_cast<size_t>(settings.samples) + 1);
+  std::vector<JointVector> waypoints(static_cast<size_t>(settings.samples) + 1, from);
   const int n = settings.divisions;
   for (double slowdown : settings.slowdowns) {
     const double total_s = slowdown * slower.durationS();
     if (!(total_s < beat_s) || (best && best->estimate_s <= total_s)) break;
     for (int d = 0; d <= n; ++d) {
-      // The faster joint's motion lasts from its own duration to the whole move, and starts
-      // anywhere that lets it end in time.
-      const double stretch_s = faster.durationS() + (total_s - faster.durationS()) * d / n;
       for (int w = 0; w <= n; ++w) {
-        const double delay_s = (total_s - stretch_s) * w / n;
         for (int k = 0; k <= settings.samples; ++k) {
           const double t = total_s * k / settings.samples;
           JointVector& q = waypoints[static_cast<size_t>(k)];
           q[slow] = from[slow] + (to[slow] - from[slow]) * slower.at(t / slowdown);
-          q[fast] = from[fast] + (to[fast] - from[fast]) * faster.at((t - delay_s) * faster.durationS() / stretch_s);
+          for (int fast = 0; fast < joints; ++fast) {
+            if (fast == slow) continue;
+            // A faster joint's motion lasts from its own duration to the whole move, and starts
+            // anywhere that lets it end in time (the same shares of both for every faster joint).
+            const JointProfile& faster = *own[fast];
+            const double stretch_s = faster.durationS() + (total_s - faster.durationS()) * d / n;
+            const double delay_s = (total_s - stretch_s) * w / n;
+            q[fast] = from[fast] + (to[fast] - from[fast]) * faster.at((t - delay_s) * faster.durationS() / stretch_s);
+          }
         }
         waypoints.back() = to;  // exactly: the fractions' last product may miss it by a rounding
         auto spline = CubicSplinePath::through(waypoints, model.planner.metric);

@@ -31,20 +31,20 @@ struct JointRow {
   double alpha = 0.0, beta = 0.0, gamma = 0.0, offset = 0.0, coulomb = 0.0;
 };
 
-using Row = std::array<JointRow, kJointCount>;
+using Row = PerJoint<JointRow>;
 
 Row rowAt(const DriveModel& drives, const TrajectorySample& s) {
   // V(a, b) is linear in a (q'' = q' a + q'' b) and, for b > 0, beta b + gamma sqrt(b) plus
   // constants (the Coriolis terms go with b, the back-EMF and kV with sqrt(b)): evaluations at rest,
   // at a = 1 and at a = 0 with b = 1 and 4 separate them once kS sgn(q') is taken out.
-  const JointVector zero = JointVector::Zero();
+  const JointVector zero = JointVector::Zero(drives.jointCount());
   const JointVector at_rest = drives.volts(s.q, zero, zero);
   const JointVector per_a = drives.volts(s.q, zero, s.qdot) - at_rest;
   const JointVector b1 = drives.volts(s.q, s.qdot, s.qddot) - at_rest;
   const JointVector b4 = drives.volts(s.q, 2.0 * s.qdot, kDoubledSpeedB * s.qddot) - at_rest;
-  Row row;
-  for (int j = 0; j < kJointCount; ++j) {
-    JointRow& r = row[static_cast<size_t>(j)];
+  Row row(drives.jointCount());
+  for (int j = 0; j < row.size(); ++j) {
+    JointRow& r = row[j];
     r.dq = s.qdot[j];
     r.d2q = s.qddot[j];
     r.coulomb = drives.drive(j).kS_volts * static_cast<double>((r.dq > 0.0) - (r.dq < 0.0));
@@ -80,8 +80,8 @@ struct Interval {
 Interval admissible(const DriveModel& drives, const Row& row, double b) {
   Interval interval;
   const double speed = std::sqrt(b);
-  for (int j = 0; j < kJointCount && !interval.empty(); ++j) {
-    const JointRow& r = row[static_cast<size_t>(j)];
+  for (int j = 0; j < row.size() && !interval.empty(); ++j) {
+    const JointRow& r = row[j];
     const DriveParams& d = drives.drive(j);
     const double qdot = r.dq * speed;
     const double volts0 = r.beta * b + r.gamma * speed + r.offset + (b > 0.0 ? r.coulomb : 0.0);

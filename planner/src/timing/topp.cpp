@@ -123,7 +123,7 @@ std::optional<std::string> invalidInput(double length, double b_start, const Dri
   if (!std::isfinite(length) || length < 0.0) return "path length is not finite";
   if (!std::isfinite(b_start) || b_start < 0.0) return "start path speed^2 b_start must be finite and >= 0";
   std::string error;
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < drives.jointCount(); ++j) {
     if (!validDrive(drives.drive(j), j, &error)) return error;
   }
   return std::nullopt;

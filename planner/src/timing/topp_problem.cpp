@@ -275,10 +275,10 @@ Result<Done> buildRows(const DriveModel& drives, const LimitMargins& margins, Pr
       const PathPoint& p = *samples[static_cast<size_t>(place)];
       const bool pinned_at_rest = (place == 0 && k == 0 && problem.b_start == 0.0) ||
                                   (place == 1 && k + 1 == intervals && problem.b_end == 0.0);
-      const std::array<PathVoltage, kJointCount> voltages = drives.pathVoltages(p);
-      for (int j = 0; j < kJointCount; ++j) {
-        if (!addJointRows(drives.drive(j), voltages[static_cast<size_t>(j)], margins, RowPlace{k, kAt[place], place, p},
-                          j, coulombSigns(samples, j, pinned_at_rest), problem, &error)) {
+      const PerJoint<PathVoltage> voltages = drives.pathVoltages(p);
+      for (int j = 0; j < voltages.size(); ++j) {
+        if (!addJointRows(drives.drive(j), voltages[j], margins, RowPlace{k, kAt[place], place, p}, j,
+                          coulombSigns(samples, j, pinned_at_rest), problem, &error)) {
           return PlanError{PlanStatus::kInvalidInput, std::move(error)};
         }
       }

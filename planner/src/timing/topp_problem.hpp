@@ -48,7 +48,7 @@ struct LinearRow {
 // the trajectory between grid points over a limit (topp.cpp).
 class LimitMargins {
  public:
-  void reset(int intervals) { values_.assign(static_cast<size_t>(intervals) * kJointCount * kLimitKindCount, 0.0); }
+  void reset(int intervals) { values_.assign(static_cast<size_t>(intervals) * kMaxJoints * kLimitKindCount, 0.0); }
   [[nodiscard]] double get(int interval, int joint, LimitKind kind) const {
     return values_.empty() ? 0.0 : values_[index(interval, joint, kind)];
   }
@@ -56,7 +56,7 @@ class LimitMargins {
 
  private:
   static size_t index(int interval, int joint, LimitKind kind) {
-    return (static_cast<size_t>(interval) * kJointCount + static_cast<size_t>(joint)) * kLimitKindCount +
+    return (static_cast<size_t>(interval) * kMaxJoints + static_cast<size_t>(joint)) * kLimitKindCount +
            static_cast<size_t>(kind);
   }
   std::vector<double> values_;

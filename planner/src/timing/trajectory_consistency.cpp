@@ -29,8 +29,8 @@ ColumnConsistency columnConsistency(const Trajectory& trajectory, double step_s)
   TrajectorySample previous = trajectory.sampleMotion(0.0);
   const TrajectorySample first = previous;
   JointVector low = first.q, high = first.q, peak = first.qdot.cwiseAbs();
-  JointVector integral_q = JointVector::Zero(), integral_v = JointVector::Zero();
-  JointVector position_error = JointVector::Zero(), velocity_error = JointVector::Zero();
+  JointVector integral_q = JointVector::Zero(first.q.size()), integral_v = JointVector::Zero(first.q.size());
+  JointVector position_error = JointVector::Zero(first.q.size()), velocity_error = JointVector::Zero(first.q.size());
   for (long i = 1; i < count; ++i) {
     const TrajectorySample s = trajectory.sampleMotion(time_of(i));
     low = low.cwiseMin(s.q);
@@ -43,8 +43,8 @@ ColumnConsistency columnConsistency(const Trajectory& trajectory, double step_s)
     velocity_error = velocity_error.cwiseMax((s.qdot - first.qdot - integral_v).cwiseAbs());
     previous = s;
   }
-  const JointVector travel = (high - low).cwiseMax(JointVector::Constant(kTravelFloor));
-  const JointVector speed = peak.cwiseMax(JointVector::Constant(kSpeedFloor));
+  const JointVector travel = (high - low).cwiseMax(JointVector::Constant(first.q.size(), kTravelFloor));
+  const JointVector speed = peak.cwiseMax(JointVector::Constant(first.q.size(), kSpeedFloor));
   ColumnConsistency out;
   out.position_error = position_error.cwiseQuotient(travel).maxCoeff();
   out.velocity_error = velocity_error.cwiseQuotient(speed).maxCoeff();

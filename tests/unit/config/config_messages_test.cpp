@@ -101,14 +101,14 @@ TEST(ConfigMessages, AFileWithoutPlannerOrDaemonTakesEveryDefault) {
   EXPECT_EQ(value("daemon.devices.lift"), "1 derived");
   EXPECT_EQ(value("daemon.devices.status"), "3 derived");
   // What the planner runs with.
-  EXPECT_EQ(config.robot.planner.metric, planner::JointVector(1.0, 0.25));
-  EXPECT_EQ(config.robot.planner.grid.step, planner::JointVector(0.04, 0.08));
+  EXPECT_EQ(config.robot.planner.metric, (planner::JointVector{{1.0, 0.25}}));
+  EXPECT_EQ(config.robot.planner.grid.step, (planner::JointVector{{0.04, 0.08}}));
   EXPECT_DOUBLE_EQ(config.robot.planner.search.potential_range, 0.2);
 }
 
 TEST(ConfigMessages, AGivenKeyIsLoggedAsGiven) {
   const Config config = parseConfig(minimalText() + "[planner]\nmetric = [1.0, 0.5]\n", "robot.toml");
-  EXPECT_EQ(config.robot.planner.metric, planner::JointVector(1.0, 0.5));
+  EXPECT_EQ(config.robot.planner.metric, (planner::JointVector{{1.0, 0.5}}));
   EXPECT_EQ(config.settings.front().key, "planner.metric");
   EXPECT_EQ(config.settings.front().source, SettingSource::kGiven);
 }

@@ -195,8 +195,12 @@ const BadCase kBadCases[] = {
     {"NegativeClearance", "clearance_m = 0.03", "clearance_m = -0.01", "clearance_m", "out of range"},
     {"InvertedRange", "max = 2.0", "max = -1.0", "joints[0].max", "out of range"},
     {"UnknownJointType", "type = \"prismatic\"", "type = \"telescopic\"", "joints[0].type", "expected \"prismatic\""},
-    {"OneJoint", "  { name = \"arm\"", "#  { name = \"arm\"", "joints", "exactly two"},
-    {"SameJointNames", "name = \"arm\", type", "name = \"elevator\", type", "joints[1].name", "different names"},
+    {"FourJoints", "  { name = \"arm\"",
+     "  { name = \"a\", type = \"revolute\", min = 0.0, max = 1.0, origin_m = [0.0, 0.0], axis_deg = 0.0 },\n"
+     "  { name = \"b\", type = \"revolute\", min = 0.0, max = 1.0, origin_m = [0.0, 0.0], axis_deg = 0.0 },\n"
+     "  { name = \"arm\"",
+     "joints", "expected one to 3 joints, in chain order (got 4)"},
+    {"SameJointNames", "name = \"arm\", type", "name = \"elevator\", type", "joints[1].name", "its own name"},
     {"UnknownJointOfLink", "arm = { joint = \"arm\"", "arm = { joint = \"wrist\"", "links.arm.joint",
      "unknown joint \"wrist\""},
     {"UnknownJointOfPiece", "coral = { joint = \"arm\"", "coral = { joint = \"claw\"", "pieces.coral.joint",

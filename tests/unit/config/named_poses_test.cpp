@@ -55,7 +55,7 @@ TEST(NamedPoses, AreOptional) {
   const Config coral_only = parseConfig(withPoses("[poses.coral]\nA = [0.5, 1.0]"), "test.toml");
   ASSERT_EQ(coral_only.poses.size(), 1u);
   EXPECT_EQ(coral_only.poses[0].name, "coral");
-  EXPECT_EQ(coral_only.poses[0].poses[0].q, planner::JointVector(0.5, 1.0));
+  EXPECT_EQ(coral_only.poses[0].poses[0].q, (planner::JointVector{{0.5, 1.0}}));
 }
 
 TEST(NamedPoses, BadPoseTablesAreErrors) {

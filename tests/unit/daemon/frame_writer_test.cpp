@@ -27,9 +27,9 @@ struct FakeCanPort final : CanPort {
 TickOutput moving(double q0, double q1) {
   TickOutput tick;
   tick.send_setpoints = true;
-  tick.setpoints.position = JointVector(q0, q1);
-  tick.setpoints.velocity = JointVector(0.5, -1.25);
-  tick.setpoints.volts = JointVector(2.5, -0.75);
+  tick.setpoints.position = JointVector{{q0, q1}};
+  tick.setpoints.velocity = JointVector{{0.5, -1.25}};
+  tick.setpoints.volts = JointVector{{2.5, -0.75}};
   tick.mode = StreamMode::kMoving;
   tick.gate_reason = GateReason::kOpen;
   tick.request_id = 0x123456;

@@ -17,9 +17,9 @@ namespace {
 using test::Harness;
 using S = GoalStatus;
 
-const JointVector kStow(0.1, 1.2);
-const JointVector kHigh(1.6, 2.8);
-const JointVector kLow(0.4, 0.5);
+const JointVector kStow{{0.1, 1.2}};
+const JointVector kHigh{{1.6, 2.8}};
+const JointVector kLow{{0.4, 0.5}};
 
 const char* const kHoldReason = "cancelled by ARM_CANCEL: hold";
 const char* const kReleaseReason = "cancelled by ARM_CANCEL: release (manual override)";
@@ -76,7 +76,7 @@ TEST(GoalCoordinatorCancel, HoldWhileExecutingSplicesAStopAndEndsAtRest) {
   // At rest where the stop ends, short of the cancelled target, holding with zero velocity.
   const auto& r = h.lastRecord();
   EXPECT_EQ(r.mode, StreamMode::kHolding);
-  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero(2));
   EXPECT_TRUE(
       r.setpoints.position.isApprox(stop.request.start + 0.5 * h.stop_duration_s * stop.request.start_velocity, 1e-9));
   EXPECT_GT((r.setpoints.position - kHigh).norm(), 0.3);
@@ -107,7 +107,7 @@ TEST(GoalCoordinatorCancel, HoldWhilePlanningDropsThePlanWhenItReturnsAndBrakes)
   EXPECT_EQ(h.sink.jobs_started.back().request.kind, MotionKind::kStop);
   EXPECT_EQ(h.coordinator().counters().stops_planned, 1);
   const auto& r = h.lastRecord();
-  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero(2));
   EXPECT_GT((r.setpoints.position - kHigh).norm(), 0.3);
   EXPECT_GT((r.setpoints.position - kLow).norm(), 0.3);
   EXPECT_EQ(h.sink.of(2), (std::vector<S>{S::kAccepted, S::kPlanning, S::kCancelled}));
@@ -184,7 +184,7 @@ TEST(GoalCoordinatorCancel, WithoutAnAdmissibleStopTheRunningMotionRunsToItsEnd)
   // The motion (collision-free) ended where it was going, at rest; no further status for 1.
   const auto& r = h.lastRecord();
   EXPECT_TRUE(r.setpoints.position.isApprox(kHigh, 1e-9));
-  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero(2));
   EXPECT_EQ(h.sink.of(1).size(), 4u);
 }
 
@@ -226,7 +226,7 @@ TEST(GoalCoordinatorCancel, ReleaseStopsTheSetpointsAndTheNextGoalStartsFromTheM
   runMeasured(h, kLow, 0.02);
   ASSERT_EQ(h.sink.jobs_started.size(), jobs + 1);
   EXPECT_EQ(h.sink.jobs_started.back().request.start, kLow);
-  EXPECT_EQ(h.sink.jobs_started.back().request.start_velocity, JointVector::Zero());
+  EXPECT_EQ(h.sink.jobs_started.back().request.start_velocity, JointVector::Zero(2));
   h.auto_state = true;
   ASSERT_TRUE(h.runUntilFinal(2));
   EXPECT_EQ(h.sink.of(2), (std::vector<S>{S::kAccepted, S::kPlanning, S::kExecuting, S::kDone}));
@@ -269,7 +269,7 @@ TEST(GoalCoordinatorCancel, AReleaseWithNothingOpenReleasesAndOnlyAValidGoalEnds
   h.cancel(CancelRequest::kActive, CancelAction::kHold);
   h.cancel(CancelRequest::kActive, CancelAction::kRelease);
   EXPECT_TRUE(h.sink.noted("already released"));
-  h.goal(3, JointVector(5.0, 1.0));  // out of range
+  h.goal(3, JointVector{{5.0, 1.0}});  // out of range
   EXPECT_EQ(h.sink.of(3), std::vector<S>{S::kRejected});
   h.run(0.05);
   EXPECT_TRUE(h.coordinator().released());

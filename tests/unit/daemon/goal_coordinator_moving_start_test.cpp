@@ -13,9 +13,9 @@ namespace {
 using test::Harness;
 using S = GoalStatus;
 
-const JointVector kStow(0.1, 1.2);
-const JointVector kHigh(1.6, 2.8);
-const JointVector kLow(0.4, 0.5);
+const JointVector kStow{{0.1, 1.2}};
+const JointVector kHigh{{1.6, 2.8}};
+const JointVector kLow{{0.4, 0.5}};
 
 // The planner of these tests: `moving` answers a start with velocity, the harness's default plan
 // one at rest unless `at_rest` fails too.

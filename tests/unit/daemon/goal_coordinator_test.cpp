@@ -16,9 +16,9 @@ namespace {
 using test::Harness;
 using S = GoalStatus;
 
-const JointVector kStow(0.1, 1.2);
-const JointVector kHigh(1.6, 2.8);
-const JointVector kLow(0.4, 0.5);
+const JointVector kStow{{0.1, 1.2}};
+const JointVector kHigh{{1.6, 2.8}};
+const JointVector kLow{{0.4, 0.5}};
 
 std::vector<S> sequence(std::initializer_list<S> s) { return s; }
 
@@ -36,7 +36,7 @@ TEST(GoalCoordinator, AGoalAtRestIsAcceptedPlannedExecutedAndDone) {
   const auto& r = h.lastRecord();
   EXPECT_EQ(r.mode, StreamMode::kHolding);
   EXPECT_TRUE(r.setpoints.position.isApprox(kHigh));
-  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(r.setpoints.velocity, JointVector::Zero(2));
   EXPECT_DOUBLE_EQ(r.setpoints.volts[1], h.robot.drive(1).kG_volts * std::cos(r.setpoints.position[1]));
   EXPECT_EQ(h.coordinator().counters().goals_done, 1);
   EXPECT_TRUE(h.coordinator().idle());
@@ -48,7 +48,7 @@ TEST(GoalCoordinator, ThePlanStartsFromTheHeldPositionAtRest) {
   h.goal(1, kHigh);
   ASSERT_EQ(h.sink.jobs_started.size(), 1u);
   EXPECT_EQ(h.sink.jobs_started[0].request.start, kStow);
-  EXPECT_EQ(h.sink.jobs_started[0].request.start_velocity, JointVector::Zero());
+  EXPECT_EQ(h.sink.jobs_started[0].request.start_velocity, JointVector::Zero(2));
   EXPECT_EQ(h.sink.jobs_started[0].request.goal, kHigh);
 }
 
@@ -82,13 +82,13 @@ TEST(GoalCoordinator, AGoalOutsideItsScenesOffsetRangeIsRejectedUnplanned) {
 
 TEST(GoalCoordinator, BadGoalsAreRejectedWithReasonsAndTheDaemonCarriesOn) {
   Harness h;
-  h.collision_goals.push_back(JointVector(0.3, 0.1));
+  h.collision_goals.push_back(JointVector{{0.3, 0.1}});
   h.start(kStow);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  h.rawGoal(Harness::request(1, JointVector(nan, 1.0)));
-  h.rawGoal(Harness::request(2, JointVector(0.5, std::numeric_limits<double>::infinity())));
-  h.goal(3, JointVector(3.0, 1.0));
-  h.goal(4, JointVector(0.5, 1.0), "moon");
+  h.rawGoal(Harness::request(1, JointVector{{nan, 1.0}}));
+  h.rawGoal(Harness::request(2, JointVector{{0.5, std::numeric_limits<double>::infinity()}}));
+  h.goal(3, JointVector{{3.0, 1.0}});
+  h.goal(4, JointVector{{0.5, 1.0}}, "moon");
   for (std::int64_t id : {1, 2, 3, 4}) {
     ASSERT_NE(h.sink.last(id), nullptr);
     EXPECT_EQ(h.sink.of(id), sequence({S::kRejected})) << id;
@@ -99,7 +99,7 @@ TEST(GoalCoordinator, BadGoalsAreRejectedWithReasonsAndTheDaemonCarriesOn) {
   EXPECT_NE(h.sink.last(3)->reason.find("outside [0, 2]"), std::string::npos);
   EXPECT_NE(h.sink.last(4)->reason.find("unknown scene 'moon'"), std::string::npos);
 
-  h.goal(5, JointVector(0.3, 0.1));  // the fake planner says: in collision
+  h.goal(5, JointVector{{0.3, 0.1}});  // the fake planner says: in collision
   ASSERT_TRUE(h.runUntilFinal(5));
   EXPECT_EQ(h.sink.last(5)->status, S::kRejected);
   EXPECT_NE(h.sink.last(5)->reason.find("goal in collision"), std::string::npos) << h.sink.last(5)->reason;
@@ -187,7 +187,7 @@ TEST(GoalCoordinator, AFloodOfGoalsGivesEveryGoalExactlyOneFinalStatusAndTheLast
   for (int period = 0; period < 200; ++period) {
     for (int k = 0; k < 5; ++k, ++id) {
       const double u = static_cast<double>(id % 17) / 16.0;
-      h.goal(id, JointVector(0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)));
+      h.goal(id, JointVector{{0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)}});
     }
     h.step();
   }
@@ -364,7 +364,7 @@ TEST(GoalCoordinator, RandomFloodsBetweenTicksGiveEveryGoalExactlyOneFinalStatus
         }
         if (t == goal_at && id < goals) {
           const double u = static_cast<double>(random() % 17) / 16.0;
-          h.goal(id++, JointVector(0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)));
+          h.goal(id++, JointVector{{0.1 + 1.7 * u, 0.3 + 2.5 * (1.0 - u)}});
         }
       }
       h.now = tick;
@@ -420,7 +420,7 @@ TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinThe
   EXPECT_EQ(h.coordinator().counters().plans_late, 1);
   ASSERT_EQ(h.sink.jobs_started.size(), 3u);
   EXPECT_TRUE(h.sink.jobs_started[2].request.start.isApprox(kHigh));  // from where motion 1 rests
-  EXPECT_EQ(h.sink.jobs_started[2].request.start_velocity, JointVector::Zero());
+  EXPECT_EQ(h.sink.jobs_started[2].request.start_velocity, JointVector::Zero(2));
 }
 
 TEST(GoalCoordinator, PlansThatAreAlwaysLateFallBackToStartingWhereTheMotionEnds) {
@@ -465,7 +465,7 @@ TEST(GoalCoordinator, GateClosingMidMotionCancelsTheGoalAndReEnableHoldsTheMeasu
   h.goal(2, kLow);
   EXPECT_EQ(h.sink.of(2), sequence({S::kRejected}));
   // Re-enabled with the mechanism somewhere else: hold there, then plan from there.
-  const JointVector sagged(0.5, 1.4);
+  const JointVector sagged{{0.5, 1.4}};
   h.auto_state = false;
   h.feedState(sagged);
   h.auto_heartbeat = true;
@@ -473,7 +473,7 @@ TEST(GoalCoordinator, GateClosingMidMotionCancelsTheGoalAndReEnableHoldsTheMeasu
   h.step();
   EXPECT_TRUE(h.records.back().sent);
   EXPECT_EQ(h.records.back().setpoints.position, sagged);
-  EXPECT_EQ(h.records.back().setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(h.records.back().setpoints.velocity, JointVector::Zero(2));
   h.auto_state = true;
   h.goal(3, kLow);
   EXPECT_EQ(h.sink.jobs_started.back().request.start, sagged);
@@ -515,7 +515,7 @@ TEST(GoalCoordinator, ShutdownHoldsTheCommandedPositionAndCancelsOpenGoals) {
   EXPECT_EQ(h.sink.last(1)->reason, "daemon shutting down");
   h.run(0.05);
   EXPECT_EQ(h.lastRecord().mode, StreamMode::kHolding);
-  EXPECT_EQ(h.lastRecord().setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(h.lastRecord().setpoints.velocity, JointVector::Zero(2));
   EXPECT_LT((h.lastRecord().setpoints.position - commanded).norm(), 0.1);
 }
 

@@ -13,9 +13,9 @@ namespace {
 
 using S = GoalStatus;
 
-const JointVector kStow(0.1, 1.2);
-const JointVector kHigh(1.6, 2.8);
-const JointVector kLow(0.4, 0.5);
+const JointVector kStow{{0.1, 1.2}};
+const JointVector kHigh{{1.6, 2.8}};
+const JointVector kLow{{0.4, 0.5}};
 
 constexpr MonoNs kMs = 1'000'000;
 
@@ -333,7 +333,7 @@ TEST_F(Transitions, LateRejectionsFallBackToPlanningFromWhereTheMotionEnds) {
     rejectPosted(RejectReason::kLate);
   }
   EXPECT_TRUE(sink.jobs_started.back().request.start.isApprox(kHigh));  // from rest at 1's end
-  EXPECT_EQ(sink.jobs_started.back().request.start_velocity, JointVector::Zero());
+  EXPECT_EQ(sink.jobs_started.back().request.start_velocity, JointVector::Zero(2));
   planned();
   adopt();
   ASSERT_EQ(coordinator.mirror().segmentCount(), 2);
@@ -399,7 +399,7 @@ TEST_F(Transitions, AGoalWaitsWhileTheChainIsFullAndTheTimerStartsIt) {
 TEST_F(Transitions, AResultOfAnotherJobOrWithoutAJobIsIgnored) {
   hold(kStow);
   PlannedMotion motion;
-  motion.trajectory = test::makeHermite(kStow, JointVector::Zero(), kHigh, 1.0, robot);
+  motion.trajectory = test::makeHermite(kStow, JointVector::Zero(2), kHigh, 1.0, robot);
   coordinator.onPlanResult(7, planner::Result<PlannedMotion>(motion), 0.001, now);  // Idle
   EXPECT_TRUE(coordinator.idle());
   goal(1, kHigh);
@@ -470,7 +470,7 @@ TEST_F(Transitions, AGoalRefusedOnArrivalLeavesTheStateAsItWas) {
   hold(kStow);
   goal(1, kHigh);
   goal(2, kLow, GateReason::kNoHeartbeat);
-  goal(3, JointVector(5.0, 1.0));
+  goal(3, (JointVector{{5.0, 1.0}}));
   EXPECT_EQ(statuses(2), std::vector<S>{S::kRejected});
   EXPECT_EQ(statuses(3), std::vector<S>{S::kRejected});
   planned();

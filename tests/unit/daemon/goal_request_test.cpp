@@ -45,7 +45,7 @@ TEST(ValidateGoal, AcceptsAGoalInsideTheLimits) {
   auto valid = validateGoal(holding({"coral"}), robot);
   ASSERT_TRUE(valid) << valid.error().message;
   EXPECT_EQ(valid.value().request_id, 7);
-  EXPECT_EQ(valid.value().q, planner::JointVector(1.0, 1.5));
+  EXPECT_EQ(valid.value().q, (planner::JointVector{{1.0, 1.5}}));
   EXPECT_EQ(valid.value().pieces, cyber::test::referencePieces("coral"));
   EXPECT_EQ(valid.value().scene, 0);
   EXPECT_EQ(valid.value().scene_offset_m, 0.0);
@@ -65,8 +65,8 @@ TEST(ValidateGoal, RejectsAJointCountOtherThanTheRobotsNamingTheJoints) {
 // A stand-in for the daemon's configuration (daemon/io/named_poses.hpp): "L3" of the held set
 // "none" only, and the names it knows in its refusal.
 planner::Result<planner::JointVector> fakePoses(planner::HeldPieces held, const std::string& name) {
-  if (held == planner::HeldPieces{} && name == "L3") return planner::JointVector(1.22, 5.69);
-  if (name == "HIGH") return planner::JointVector(2.5, 1.0);  // past the elevator's 2 m
+  if (held == planner::HeldPieces{} && name == "L3") return planner::JointVector{{1.22, 5.69}};
+  if (name == "HIGH") return planner::JointVector{{2.5, 1.0}};  // past the elevator's 2 m
   return planner::Result<planner::JointVector>::failure(PlanStatus::kInvalidInput,
                                                         fmt::format("no pose \"{}\" (its poses: L3)", name));
 }
@@ -78,11 +78,11 @@ TEST(ValidateGoal, ANamedGoalTakesThePoseOfItsHeldSetAndIgnoresThePosition) {
   goal.pose_name = "L3";
   auto valid = validateGoal(goal, robot, fakePoses);
   ASSERT_TRUE(valid) << valid.error().message;
-  EXPECT_EQ(valid.value().q, planner::JointVector(1.22, 5.69));
+  EXPECT_EQ(valid.value().q, (planner::JointVector{{1.22, 5.69}}));
   goal.position = {9.0, 9.0, 9.0};
   auto ignored = validateGoal(goal, robot, fakePoses);
   ASSERT_TRUE(ignored) << ignored.error().message;
-  EXPECT_EQ(ignored.value().q, planner::JointVector(1.22, 5.69));
+  EXPECT_EQ(ignored.value().q, (planner::JointVector{{1.22, 5.69}}));
 }
 
 TEST(ValidateGoal, RejectsAnUnknownNameWithTheLookupsReasonAndChecksANamedPoseLikeValues) {

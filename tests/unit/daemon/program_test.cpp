@@ -24,13 +24,13 @@ class ProgramTest : public ::testing::Test {
 };
 
 TEST_F(ProgramTest, WithoutSegmentsItHoldsWithGravityFeedforward) {
-  const JointVector q(0.8, 0.6);
+  const JointVector q{{0.8, 0.6}};
   const Program program = Program::holdAt(3, q);
   const ProgramSample s = program.sample(123 * kMs, hold);
   EXPECT_EQ(s.request_id, -1);
   EXPECT_FALSE(s.moving);
   EXPECT_EQ(s.setpoints.position, q);
-  EXPECT_EQ(s.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(s.setpoints.velocity, JointVector::Zero(2));
   EXPECT_DOUBLE_EQ(s.setpoints.volts[0], robot.drive(0).kG_volts);
   EXPECT_DOUBLE_EQ(s.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(0.6));
   EXPECT_EQ(program.endNs(), kNever);
@@ -38,12 +38,12 @@ TEST_F(ProgramTest, WithoutSegmentsItHoldsWithGravityFeedforward) {
 }
 
 TEST_F(ProgramTest, FloatingSpliceStartsFromRestAtAdoption) {
-  const JointVector q0(0.2, 1.0), q1(1.0, 2.0);
+  const JointVector q0{{0.2, 1.0}}, q1{{1.0, 2.0}};
   const Program base = Program::holdAt(1, q0);
   Program next;
   std::vector<std::int64_t> dropped;
   ASSERT_TRUE(
-      test::spliceInto(base, {0, segment(5, q0, JointVector::Zero(), q1, 0.5, kNever), true, 9}, next, dropped));
+      test::spliceInto(base, {0, segment(5, q0, JointVector::Zero(2), q1, 0.5, kNever), true, 9}, next, dropped));
   EXPECT_TRUE(dropped.empty());
   EXPECT_EQ(next.id, 9u);
   EXPECT_EQ(next.base_id, 0u);
@@ -61,31 +61,32 @@ TEST_F(ProgramTest, FloatingSpliceStartsFromRestAtAdoption) {
   EXPECT_FALSE(end.moving);
   EXPECT_EQ(end.request_id, 5);
   EXPECT_TRUE(end.setpoints.position.isApprox(q1));
-  EXPECT_EQ(end.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(end.setpoints.velocity, JointVector::Zero(2));
   EXPECT_EQ(next.restPosition(), end.setpoints.position);
 }
 
 TEST_F(ProgramTest, FloatingStartWaitsForTheRunningMotionToEnd) {
-  const JointVector q0(0.2, 1.0), q1(1.0, 2.0), q2(0.5, 0.5);
+  const JointVector q0{{0.2, 1.0}}, q1{{1.0, 2.0}}, q2{{0.5, 0.5}};
   Program base = Program::holdAt(1, q0);
   std::vector<std::int64_t> dropped;
   Program one;
-  ASSERT_TRUE(test::spliceInto(base, {0, segment(1, q0, JointVector::Zero(), q1, 0.5, kNever), true, 1}, one, dropped));
+  ASSERT_TRUE(
+      test::spliceInto(base, {0, segment(1, q0, JointVector::Zero(2), q1, 0.5, kNever), true, 1}, one, dropped));
   one.resolveFloatingStart(0);
   Program two;
   ASSERT_TRUE(
-      test::spliceInto(one, {100 * kMs, segment(2, q1, JointVector::Zero(), q2, 0.5, kNever), true, 2}, two, dropped));
+      test::spliceInto(one, {100 * kMs, segment(2, q1, JointVector::Zero(2), q2, 0.5, kNever), true, 2}, two, dropped));
   two.resolveFloatingStart(100 * kMs);
   ASSERT_EQ(two.segmentCount(), 2);
   EXPECT_EQ(two.segment(1).start_ns, 500 * kMs);
 }
 
 TEST_F(ProgramTest, FixedSpliceEqualsTheBaseBeforeItAndContinuesPositionAndVelocity) {
-  const JointVector q0(0.2, 1.0), q1(1.5, 3.0), q2(0.4, 0.3);
+  const JointVector q0{{0.2, 1.0}}, q1{{1.5, 3.0}}, q2{{0.4, 0.3}};
   Program base;
   std::vector<std::int64_t> dropped;
   ASSERT_TRUE(test::spliceInto(Program::holdAt(1, q0),
-                               {0, segment(1, q0, JointVector::Zero(), q1, 1.0, kNever), true, 1}, base, dropped));
+                               {0, segment(1, q0, JointVector::Zero(2), q1, 1.0, kNever), true, 1}, base, dropped));
   base.resolveFloatingStart(0);
   const MonoNs t_b = 400 * kMs;
   const ProgramSample at_branch = base.sample(t_b, hold);
@@ -107,20 +108,20 @@ TEST_F(ProgramTest, FixedSpliceEqualsTheBaseBeforeItAndContinuesPositionAndVeloc
 }
 
 TEST_F(ProgramTest, SpliceDropsSegmentsThatWouldStartAfterItAndPrunesFinishedOnes) {
-  const JointVector a(0.2, 1.0), b(1.0, 1.5), c(1.2, 2.0), d(0.3, 0.2);
+  const JointVector a{{0.2, 1.0}}, b{{1.0, 1.5}}, c{{1.2, 2.0}}, d{{0.3, 0.2}};
   Program p;
   std::vector<std::int64_t> dropped;
-  ASSERT_TRUE(test::spliceInto(Program::holdAt(1, a), {0, segment(1, a, JointVector::Zero(), b, 1.0, kNever), true, 1},
+  ASSERT_TRUE(test::spliceInto(Program::holdAt(1, a), {0, segment(1, a, JointVector::Zero(2), b, 1.0, kNever), true, 1},
                                p, dropped));
   p.resolveFloatingStart(0);
   Program q;
   ASSERT_TRUE(
-      test::spliceInto(p, {10 * kMs, segment(2, b, JointVector::Zero(), c, 1.0, 500 * kMs), false, 2}, q, dropped));
+      test::spliceInto(p, {10 * kMs, segment(2, b, JointVector::Zero(2), c, 1.0, 500 * kMs), false, 2}, q, dropped));
   ASSERT_EQ(q.segmentCount(), 2);
   // A plan branching at 300 ms replaces request 2, which never started.
   Program r;
   ASSERT_TRUE(
-      test::spliceInto(q, {20 * kMs, segment(3, c, JointVector::Zero(), d, 1.0, 300 * kMs), false, 3}, r, dropped));
+      test::spliceInto(q, {20 * kMs, segment(3, c, JointVector::Zero(2), d, 1.0, 300 * kMs), false, 3}, r, dropped));
   ASSERT_EQ(dropped, std::vector<std::int64_t>{2});
   ASSERT_EQ(r.segmentCount(), 2);
   EXPECT_EQ(r.segment(0).request_id, 1);
@@ -129,37 +130,38 @@ TEST_F(ProgramTest, SpliceDropsSegmentsThatWouldStartAfterItAndPrunesFinishedOne
   Program s;
   dropped.clear();
   ASSERT_TRUE(
-      test::spliceInto(r, {600 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4}, s, dropped));
+      test::spliceInto(r, {600 * kMs, segment(4, d, JointVector::Zero(2), a, 1.0, 900 * kMs), false, 4}, s, dropped));
   EXPECT_TRUE(dropped.empty());
   ASSERT_EQ(s.segmentCount(), 2);
   EXPECT_EQ(s.segment(0).request_id, 3);
   EXPECT_EQ(s.segment(1).request_id, 4);
   EXPECT_TRUE(s.rest_q.isApprox(b));
   // The pruned segment is reported with the one that superseded it (no streamer event may name it).
-  const auto spliced = Program::splice(r, {600 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4});
+  const auto spliced =
+      Program::splice(r, {600 * kMs, segment(4, d, JointVector::Zero(2), a, 1.0, 900 * kMs), false, 4});
   ASSERT_TRUE(spliced);
   EXPECT_EQ(spliced->pruned_requests, (std::vector<std::pair<std::int64_t, std::int64_t>>{{1, 3}}));
-  EXPECT_TRUE(Program::splice(r, {20 * kMs, segment(4, d, JointVector::Zero(), a, 1.0, 900 * kMs), false, 4})
+  EXPECT_TRUE(Program::splice(r, {20 * kMs, segment(4, d, JointVector::Zero(2), a, 1.0, 900 * kMs), false, 4})
                   ->pruned_requests.empty());
 }
 
 TEST_F(ProgramTest, AFullChainRefusesAnotherSegmentAndReportsNothingDropped) {
-  const JointVector a(0.2, 1.0);
+  const JointVector a{{0.2, 1.0}};
   Program p = Program::holdAt(1, a);
   std::vector<std::int64_t> dropped;
   for (int i = 0; i < kMaxSegments; ++i) {
     Program next;
-    ASSERT_TRUE(test::spliceInto(
-        p,
-        {0, segment(i, a, JointVector::Zero(), a, 10.0, (i + 1) * 100 * kMs), false, static_cast<std::uint64_t>(i + 1)},
-        next, dropped));
+    ASSERT_TRUE(test::spliceInto(p,
+                                 {0, segment(i, a, JointVector::Zero(2), a, 10.0, (i + 1) * 100 * kMs), false,
+                                  static_cast<std::uint64_t>(i + 1)},
+                                 next, dropped));
     p = next;
   }
   EXPECT_TRUE(p.full());
   Program refused;
   dropped = {42};
   EXPECT_FALSE(
-      test::spliceInto(p, {0, segment(99, a, JointVector::Zero(), a, 1.0, 5000 * kMs), false, 99}, refused, dropped));
+      test::spliceInto(p, {0, segment(99, a, JointVector::Zero(2), a, 1.0, 5000 * kMs), false, 99}, refused, dropped));
   EXPECT_EQ(dropped, std::vector<std::int64_t>{42});
 }
 

@@ -88,7 +88,7 @@ class StreamToCan : public ::testing::Test {
 };
 
 TEST_F(StreamToCan, EveryPeriodCarriesOneFramePerJointAndTheStatusComesAt10Hz) {
-  enabledFor(1.0, JointVector(0.2, 1.57));
+  enabledFor(1.0, JointVector{{0.2, 1.57}});
   const auto elevator = port.setpoints(1);
   const auto arm = port.setpoints(2);
   ASSERT_EQ(elevator.size(), 200u);
@@ -110,13 +110,13 @@ TEST_F(StreamToCan, EveryPeriodCarriesOneFramePerJointAndTheStatusComesAt10Hz) {
 }
 
 TEST_F(StreamToCan, AStaleHeartbeatStopsSetpointFramesWithinOnePeriodButNotTheStatus) {
-  const JointVector a(0.2, 1.57);
+  const JointVector a{{0.2, 1.57}};
   enabledFor(0.1, a);
   auto* program = new Program();
   std::vector<std::int64_t> dropped;
   ASSERT_TRUE(test::spliceInto(
       Program::holdAt(streamer.epoch(), a),
-      {now, Segment{test::makeHermite(a, JointVector::Zero(), JointVector(1.5, 3.0), 2.0, robot), 9, 0}, true, 1},
+      {now, Segment{test::makeHermite(a, JointVector::Zero(2), (JointVector{{1.5, 3.0}}), 2.0, robot), 9, 0}, true, 1},
       *program, dropped));
   inputs.heartbeat_ns = now;
   inputs.state_ns = now;
@@ -141,7 +141,7 @@ TEST_F(StreamToCan, AStaleHeartbeatStopsSetpointFramesWithinOnePeriodButNotTheSt
 }
 
 TEST_F(StreamToCan, AnInterfaceThatGoesDownDropsFramesAndStreamingResumesWithFreshOnes) {
-  const JointVector a(0.2, 1.57);
+  const JointVector a{{0.2, 1.57}};
   enabledFor(0.1, a);
   port.down = true;
   enabledFor(0.2, a);
@@ -149,7 +149,7 @@ TEST_F(StreamToCan, AnInterfaceThatGoesDownDropsFramesAndStreamingResumesWithFre
   const size_t before = port.frames.size();
   port.down = false;
   const MonoNs back = now;
-  enabledFor(0.05, JointVector(0.3, 1.6));
+  enabledFor(0.05, JointVector{{0.3, 1.6}});
   // Nothing was queued: the first frames after the outage are from this period, not stale ones.
   ASSERT_GT(port.frames.size(), before);
   EXPECT_EQ(port.frames[before].time, back);

@@ -74,7 +74,7 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   RobotLink link;
   RobotInputs inputs;
   MonoNs now = 1000 * kMs;
-  const JointVector a(0.2, 1.57), b(1.5, 3.0), c(0.6, 2.9);
+  const JointVector a{{0.2, 1.57}}, b{{1.5, 3.0}}, c{{0.6, 2.9}};
 
   // Programs are built outside the counted region, as the event loop does.
   std::vector<std::int64_t> dropped;
@@ -109,7 +109,7 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
 
   run(10, nullptr, true, false);  // enable, hold
   ASSERT_TRUE(test::spliceInto(Program::holdAt(streamer.epoch(), a),
-                               {now, Segment{test::makeHermite(a, JointVector::Zero(), b, 1.0, robot), 1, 0}, true, 1},
+                               {now, Segment{test::makeHermite(a, JointVector::Zero(2), b, 1.0, robot), 1, 0}, true, 1},
                                *first, dropped));
   run(40, first, true, false);  // adopt and move
   const MonoNs branch = now + 30 * kMs;
@@ -125,8 +125,8 @@ TEST(StreamerAllocation, TicksAndFrameWritesNeverAllocate) {
   run(10, nullptr, true, false);   // re-enabled: hold measured
   ASSERT_TRUE(test::spliceInto(
       Program::holdAt(streamer.epoch(), a),
-      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.05, JointVector(0.2, 1.57)), 3, 0}, true, 3}, *faulty,
-      dropped));
+      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.05, (JointVector{{0.2, 1.57}})), 3, 0}, true, 3},
+      *faulty, dropped));
   run(40, faulty, true, false);  // fault
   EXPECT_EQ(allocations, 0);
   EXPECT_GT(writer.framesSent(), 0);

@@ -59,7 +59,7 @@ class StreamerTest : public ::testing::Test {
     EXPECT_TRUE(out.send_setpoints);
     EXPECT_EQ(out.mode, StreamMode::kHolding);
     EXPECT_EQ(out.setpoints.position, measured);
-    EXPECT_EQ(out.setpoints.velocity, JointVector::Zero());
+    EXPECT_EQ(out.setpoints.velocity, JointVector::Zero(2));
     EXPECT_EQ(events.back().kind, StreamEventKind::kHolding);
     EXPECT_EQ(events.back().hold_cause, HoldCause::kEnabled);
     return out;
@@ -85,7 +85,7 @@ class StreamerTest : public ::testing::Test {
     std::vector<std::int64_t> dropped;
     Program base = Program::holdAt(streamer.epoch(), from);
     EXPECT_TRUE(test::spliceInto(
-        base, {now, Segment{makeHermite(from, JointVector::Zero(), to, duration_s, robot), id, 0}, true, program_id},
+        base, {now, Segment{makeHermite(from, JointVector::Zero(2), to, duration_s, robot), id, 0}, true, program_id},
         *p, dropped));
     return p;
   }
@@ -108,7 +108,7 @@ TEST_F(StreamerTest, StreamsNothingBeforeAnyState) {
 }
 
 TEST_F(StreamerTest, FirstFreshStateHoldsTheMeasuredPositionWithGravityFeedforward) {
-  const JointVector measured(0.7, 0.9);
+  const JointVector measured{{0.7, 0.9}};
   const TickOutput out = expectEnabledHoldAt(measured);
   EXPECT_DOUBLE_EQ(out.setpoints.volts[0], robot.drive(0).kG_volts);
   EXPECT_DOUBLE_EQ(out.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(0.9));
@@ -119,7 +119,7 @@ TEST_F(StreamerTest, FirstFreshStateHoldsTheMeasuredPositionWithGravityFeedforwa
 }
 
 TEST_F(StreamerTest, RunsAProgramFromRestToItsEndAndHoldsThere) {
-  const JointVector a(0.2, 1.0), b(1.0, 2.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.0, 2.0}};
   feed(a);
   tick();
   Program* p = moveFromRest(11, 1, a, b, 0.5);
@@ -135,7 +135,7 @@ TEST_F(StreamerTest, RunsAProgramFromRestToItsEndAndHoldsThere) {
   const TickOutput last = tick();
   EXPECT_EQ(last.mode, StreamMode::kHolding);
   EXPECT_TRUE(last.setpoints.position.isApprox(b));
-  EXPECT_EQ(last.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(last.setpoints.velocity, JointVector::Zero(2));
   EXPECT_DOUBLE_EQ(last.setpoints.volts[1], robot.drive(1).kG_volts * std::cos(last.setpoints.position[1]));
   EXPECT_EQ(last.request_id, 11);  // the held target still belongs to request 11
   EXPECT_EQ(kinds(), (std::vector<StreamEventKind>{StreamEventKind::kHolding, StreamEventKind::kAdopted,
@@ -143,7 +143,7 @@ TEST_F(StreamerTest, RunsAProgramFromRestToItsEndAndHoldsThere) {
 }
 
 TEST_F(StreamerTest, RejectsAFixedSpliceWhoseTimeWasAlreadyStreamed) {
-  const JointVector a(0.2, 1.0), b(1.0, 2.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.0, 2.0}};
   feed(a);
   tick();
   Program* p = moveFromRest(1, 1, a, b, 1.0);
@@ -153,7 +153,7 @@ TEST_F(StreamerTest, RejectsAFixedSpliceWhoseTimeWasAlreadyStreamed) {
   std::vector<std::int64_t> dropped;
   Program running = *p;
   ASSERT_TRUE(test::spliceInto(
-      running, {now, Segment{makeHermite(a, JointVector::Zero(), b, 1.0, robot), 2, streamed}, false, 2}, *late,
+      running, {now, Segment{makeHermite(a, JointVector::Zero(2), b, 1.0, robot), 2, streamed}, false, 2}, *late,
       dropped));
   feed(a);
   tick(late);
@@ -163,7 +163,7 @@ TEST_F(StreamerTest, RejectsAFixedSpliceWhoseTimeWasAlreadyStreamed) {
 }
 
 TEST_F(StreamerTest, RejectsAProgramBuiltOnAnotherBase) {
-  const JointVector a(0.2, 1.0), b(1.0, 2.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.0, 2.0}};
   feed(a);
   tick();
   Program* p = moveFromRest(1, 1, a, b, 1.0);
@@ -175,7 +175,7 @@ TEST_F(StreamerTest, RejectsAProgramBuiltOnAnotherBase) {
 }
 
 TEST_F(StreamerTest, HeartbeatTimeoutStopsMotionAndReEnableHoldsTheMeasuredPosition) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   // Heartbeats stop; state keeps coming.
   const MonoNs last_heartbeat = now;
@@ -196,11 +196,11 @@ TEST_F(StreamerTest, HeartbeatTimeoutStopsMotionAndReEnableHoldsTheMeasuredPosit
   EXPECT_EQ(sent_after_timeout, 0);
   expectStopped(1, GateReason::kNoHeartbeat);
   // The mechanism sagged while disabled; on re-enable the streamer holds where it is now.
-  expectEnabledHoldAt(JointVector(0.9, 1.7));
+  expectEnabledHoldAt(JointVector{{0.9, 1.7}});
 }
 
 TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   feed(a);
   inputs.broadcast_disable_ns = now;
@@ -210,16 +210,16 @@ TEST_F(StreamerTest, BroadcastDisableStopsMotionAtTheNextTick) {
   EXPECT_EQ(out.gate_reason, GateReason::kBroadcastDisable);
   EXPECT_EQ(events.back().kind, StreamEventKind::kStopped);
   // Heartbeats that still claim "enabled" after the disable lift it; the hold is where it is.
-  feed(JointVector(0.25, 1.05));
+  feed(JointVector{{0.25, 1.05}});
   const TickOutput again = tick();
   ASSERT_TRUE(again.send_setpoints);
-  EXPECT_EQ(again.setpoints.position, JointVector(0.25, 1.05));
+  EXPECT_EQ(again.setpoints.position, (JointVector{{0.25, 1.05}}));
 }
 
 // The bug hil.daemon_faults caught: the disable and the next enabled heartbeat arrived 1-3 ms apart,
 // both between two ticks, and the gate alone saw nothing but an enabled heartbeat after the disable.
 TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   for (int i = 0; i < 3; ++i) tick();
   feed(a);
@@ -233,7 +233,7 @@ TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
   EXPECT_EQ(out.mode, StreamMode::kRobotDisabled);
   expectStopped(1, GateReason::kBroadcastDisable);
   // Latched once: the next tick, with the same count and the robot enabled, holds the measured position.
-  expectEnabledHoldAt(JointVector(0.3, 1.1));
+  expectEnabledHoldAt(JointVector{{0.3, 1.1}});
   // A second disable is a new event again.
   inputs.broadcast_disable_count = 2;
   EXPECT_FALSE(tick().send_setpoints);
@@ -243,7 +243,7 @@ TEST_F(StreamerTest, ADisableLiftedBeforeTheNextTickStillStopsMotionOnce) {
 // ARM_CANCEL's release (docs/lcm.md, "Cancel and manual override"): nothing is streamed while the
 // generation is odd; the status says RELEASED; the end of the release holds the measured position.
 TEST_F(StreamerTest, ReleaseStreamsNothingUntilItEndsThenHoldsTheMeasuredPosition) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   feed(a);
   inputs.release_generation = 1;
@@ -259,12 +259,12 @@ TEST_F(StreamerTest, ReleaseStreamsNothingUntilItEndsThenHoldsTheMeasuredPositio
   EXPECT_EQ(events.back().release_generation, 1u);
   inputs.release_generation = 2;
   EXPECT_FALSE(tick().send_setpoints);  // the new generation is latched as one stop
-  expectEnabledHoldAt(JointVector(0.7, 2.0));
+  expectEnabledHoldAt(JointVector{{0.7, 2.0}});
   EXPECT_EQ(events.back().release_generation, 2u);
 }
 
 TEST_F(StreamerTest, AReleaseEndedBeforeTheNextTickStillStopsOnce) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   feed(a);
   inputs.release_generation = 2;  // released and ended between two ticks
@@ -272,11 +272,11 @@ TEST_F(StreamerTest, AReleaseEndedBeforeTheNextTickStillStopsOnce) {
   EXPECT_FALSE(out.send_setpoints);
   EXPECT_EQ(out.mode, StreamMode::kReleased);
   expectStopped(1, GateReason::kReleased);
-  expectEnabledHoldAt(JointVector(0.3, 1.1));
+  expectEnabledHoldAt(JointVector{{0.3, 1.1}});
 }
 
 TEST_F(StreamerTest, ProgramsOfAStoppedEpochAreRejected) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   feed(a);
   tick();
   Program* p = moveFromRest(1, 1, a, b, 2.0);
@@ -287,7 +287,7 @@ TEST_F(StreamerTest, ProgramsOfAStoppedEpochAreRejected) {
 }
 
 TEST_F(StreamerTest, StopRequestHoldsTheCommandedPositionAndRefusesNewPrograms) {
-  const JointVector a(0.2, 1.0), b(1.6, 3.0);
+  const JointVector a{{0.2, 1.0}}, b{{1.6, 3.0}};
   holdThenMove(a, b);
   TickOutput moving;
   for (int i = 0; i < 20; ++i) {
@@ -299,7 +299,7 @@ TEST_F(StreamerTest, StopRequestHoldsTheCommandedPositionAndRefusesNewPrograms) 
   const TickOutput held = tick(nullptr, true);
   EXPECT_EQ(held.mode, StreamMode::kHolding);
   EXPECT_EQ(held.setpoints.position, moving.setpoints.position);
-  EXPECT_EQ(held.setpoints.velocity, JointVector::Zero());
+  EXPECT_EQ(held.setpoints.velocity, JointVector::Zero(2));
   EXPECT_EQ(events.back().kind, StreamEventKind::kHolding);
   EXPECT_EQ(events.back().hold_cause, HoldCause::kShutdown);
   Program* p = moveFromRest(2, 2, moving.setpoints.position, a, 1.0);
@@ -309,20 +309,20 @@ TEST_F(StreamerTest, StopRequestHoldsTheCommandedPositionAndRefusesNewPrograms) 
 }
 
 TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPositionIsHeld) {
-  const JointVector a(0.2, 1.0);
+  const JointVector a{{0.2, 1.0}};
   feed(a);
   tick();
   auto* p = new Program();
   std::vector<std::int64_t> dropped;
   ASSERT_TRUE(test::spliceInto(
       Program::holdAt(streamer.epoch(), a),
-      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.02, JointVector(0.2, 1.0)), 5, 0}, true, 1}, *p,
+      {now, Segment{std::make_shared<test::NanAfterTrajectory>(0.02, (JointVector{{0.2, 1.0}})), 5, 0}, true, 1}, *p,
       dropped));
   int sent = 0, faulted = 0;
   TickOutput out;
   const MonoNs begin = now;
   while (now < begin + 900 * kMs) {  // the fault stops streaming for 1 s
-    feed(JointVector(0.21, 1.0));
+    feed(JointVector{{0.21, 1.0}});
     out = tick(now == begin ? p : nullptr);
     if (out.send_setpoints) {
       ++sent;
@@ -343,12 +343,12 @@ TEST_F(StreamerTest, ASetpointThatCannotBeSentStopsStreamingThenTheMeasuredPosit
   EXPECT_TRUE(fault);
   EXPECT_TRUE(stopped);
   while (now < begin + 1100 * kMs) {
-    feed(JointVector(0.21, 1.0));
+    feed(JointVector{{0.21, 1.0}});
     out = tick();
   }
   ASSERT_TRUE(out.send_setpoints);
   EXPECT_EQ(out.mode, StreamMode::kHolding);
-  EXPECT_EQ(out.setpoints.position, JointVector(0.21, 1.0));
+  EXPECT_EQ(out.setpoints.position, (JointVector{{0.21, 1.0}}));
 }
 
 // A tick's event and retired lists are bounded; going past either is a defect, and it must stop

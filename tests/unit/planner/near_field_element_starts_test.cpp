@@ -44,8 +44,8 @@ std::optional<JointVector> nearFieldElement(const RobotModel& model, const Colli
                                             std::mt19937& random) {
   const int field_elements = static_cast<int>(model.scenes.front().obstacles.size());
   for (int tries = 0; tries < kStartTries; ++tries) {
-    JointVector q;
-    for (int j = 0; j < 2; ++j)
+    JointVector q(model.jointCount());
+    for (int j = 0; j < model.jointCount(); ++j)
       q[j] = std::uniform_real_distribution<double>(model.range(j).min, model.range(j).max)(random);
     const SignedDistance d = world.distance(q);
     if (d.value >= kNearestM && d.value <= kFarthestM && d.obstacle < field_elements) return q;

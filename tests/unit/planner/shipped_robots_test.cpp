@@ -92,14 +92,14 @@ TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
   EXPECT_EQ(model.drive_kind, DriveKind::kRigidBody);
   // The shoulder's gravity load depends on the elbow: the same shoulder angle, two elbow angles.
   const DriveModel drives = model.driveModel({});
-  const JointVector rest = JointVector::Zero();
-  EXPECT_GT(
-      std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[0] - drives.volts(JointVector(0.5, 3.0), rest, rest)[0]),
-      0.1);
+  const JointVector rest = JointVector::Zero(2);
+  EXPECT_GT(std::abs(drives.volts(JointVector{{0.5, 1.0}}, rest, rest)[0] -
+                     drives.volts(JointVector{{0.5, 3.0}}, rest, rest)[0]),
+            0.1);
   // A held cone adds its weight.
   const HeldPieces cone = model.piecesNamed("cone").value();
-  EXPECT_GT(std::abs(model.driveModel(cone).volts(JointVector(0.5, 1.0), rest, rest)[1]),
-            std::abs(drives.volts(JointVector(0.5, 1.0), rest, rest)[1]));
+  EXPECT_GT(std::abs(model.driveModel(cone).volts(JointVector{{0.5, 1.0}}, rest, rest)[1]),
+            std::abs(drives.volts(JointVector{{0.5, 1.0}}, rest, rest)[1]));
 }
 
 // A seeded random moving start of the double-jointed arm (the state 0.199 s into a planned move):
@@ -111,9 +111,9 @@ TEST(ShippedRobots, TheDoubleJointedArmIsDrivenByItsCoupledDynamics) {
 TEST(ShippedRobots, AShortMoveAfterAShortStopIsSlowedUntilTheJoinedColumnsAgree) {
   const ShippedRobot& robot = shippedRobot("chargedup-2023-double-jointed");
   PlanRequest request;
-  request.start = JointVector(1.49215116, 3.97783964);
-  request.goal = JointVector(1.9864, 3.7218);
-  request.start_velocity = JointVector(-2.61471287, 0.391380071);
+  request.start = JointVector{{1.49215116, 3.97783964}};
+  request.goal = JointVector{{1.9864, 3.7218}};
+  request.start_velocity = JointVector{{-2.61471287, 0.391380071}};
   const auto plan = robot.planner.plan(request);
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_TRUE(plan.value().method.has(PlanMethod::kSlowedAfterStop)) << plan.value().method.name();
@@ -159,8 +159,8 @@ TEST(ShippedRobots, AnOffsetThatMovesTheReefIntoThePlanYieldsAnotherPlanThatKeep
   }
   EXPECT_GE(moved_into, 2);
   PlanRequest outside;
-  outside.start = JointVector(0.20, 1.57);
-  outside.goal = JointVector(1.22, 5.69);
+  outside.start = JointVector{{0.20, 1.57}};
+  outside.goal = JointVector{{1.22, 5.69}};
   outside.scene_offset_m = 0.31;
   EXPECT_EQ(planner.value().plan(outside).status(), PlanStatus::kInvalidInput);
 }
@@ -192,8 +192,8 @@ TEST(ShippedRobots, APlannerOfOneSceneAndOffsetPlansItsMovesAsTheFullOneDoes) {
   const auto full = MotionPlanner::create(model);
   ASSERT_TRUE(full.ok());
   PlanRequest request;
-  request.start = JointVector(0.20, 1.57);
-  request.goal = JointVector(1.22, 5.69);
+  request.start = JointVector{{0.20, 1.57}};
+  request.goal = JointVector{{1.22, 5.69}};
   for (const double offset : {0.0, 0.2}) {
     request.scene_offset_m = offset;
     const auto selected = MotionPlanner::create(model, {0, offset});

@@ -46,9 +46,9 @@ TEST(ShortMove, TheRefereesShortMovesAgreeAtOneMillisecond) {
   const auto planner = MotionPlanner::create(test::referenceModel());
   ASSERT_TRUE(planner.ok());
   const ShortMove moves[] = {
-      {JointVector(0.84427, 4.15376), JointVector(0.81929, 4.36080), HeldPieces{}, 0.0557777},
-      {JointVector(0.54757, 4.89680), JointVector(0.47999, 5.00276), test::referencePieces("coral"), 0.0726723},
-      {JointVector(1.22049, 3.63779), JointVector(1.14852, 3.50259), HeldPieces{}, 0.0749960},
+      {JointVector{{0.84427, 4.15376}}, JointVector{{0.81929, 4.36080}}, HeldPieces{}, 0.0557777},
+      {JointVector{{0.54757, 4.89680}}, JointVector{{0.47999, 5.00276}}, test::referencePieces("coral"), 0.0726723},
+      {JointVector{{1.22049, 3.63779}}, JointVector{{1.14852, 3.50259}}, HeldPieces{}, 0.0749960},
   };
   for (const ShortMove& move : moves) {
     PlanRequest request;
@@ -84,8 +84,8 @@ TEST(ShortMove, SeededShortMovesFromRestAgreeAndStayFast) {
     // One draw a statement: a call's arguments are evaluated in an order the target chooses.
     const double start_t = t(rng), start_theta = theta(rng);
     const double step_t = dt(rng), step_theta = dtheta(rng);
-    request.start = JointVector(start_t, start_theta);
-    request.goal = request.start + JointVector(step_t, step_theta);
+    request.start = JointVector{{start_t, start_theta}};
+    request.goal = request.start + JointVector{{step_t, step_theta}};
     if (!model.withinLimits(request.goal) || world.distance(request.start).value < model.clearance_m ||
         world.distance(request.goal).value < model.clearance_m) {
       continue;

@@ -67,7 +67,7 @@ struct TopEdgeMove {
 };
 
 // The one place that turns the file's joint values into the planner's joint vector.
-JointVector joints(double elevator_m, double arm_rad) { return JointVector(elevator_m, arm_rad); }
+JointVector joints(double elevator_m, double arm_rad) { return JointVector{{elevator_m, arm_rad}}; }
 
 std::vector<TopEdgeMove> storedMoves() {
   std::ifstream in(test::sourceFile(kMovesFile));

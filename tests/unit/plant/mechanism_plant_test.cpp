@@ -1,6 +1,6 @@
 // The plant simulator's mechanism: the planner's drive model read backwards, on every shipped
-// robot (feedforward per joint and coupled rigid-body), and closed-form solutions of the
-// single-joint ODE on the reference robot.
+// robot (feedforward per joint and coupled rigid-body; chains of one, two and three joints), and
+// closed-form solutions of the single-joint ODE on the reference robot.
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,8 @@ using test::kArm;
 using test::kElevator;
 
 const std::vector<std::string>& shippedRobots() {
-  static const std::vector<std::string> names{"reefscape-2025", "chargedup-2023-double-jointed", "pivot-telescope"};
+  static const std::vector<std::string> names{"reefscape-2025", "chargedup-2023-double-jointed", "pivot-telescope",
+                                              "intake-pivot", "reefscape-2025-elevator-pivot-wrist"};
   return names;
 }
 
@@ -37,18 +38,42 @@ const planner::RobotModel& shippedRobot(const std::string& name) {
 MechanismPlant referencePlant() { return MechanismPlant::fromRobot(test::referenceModel()); }
 
 MechanismState run(const MechanismPlant& plant, MechanismState state, const JointVector& volts, double duration_s,
-                   double dt_s, std::array<bool, kJointCount> latched = {}) {
+                   double dt_s, JointFlags latched = {}) {
   const long steps = std::lround(duration_s / dt_s);
   for (long i = 0; i < steps; ++i) state = plant.step(state, volts, dt_s, latched);
   return state;
 }
 
 JointVector randomPose(const planner::RobotModel& robot, std::mt19937& rng) {
-  JointVector q;
-  for (int j = 0; j < kJointCount; ++j) {
+  JointVector q(robot.jointCount());
+  for (int j = 0; j < robot.jointCount(); ++j) {
     q[j] = std::uniform_real_distribution<double>(robot.range(j).min, robot.range(j).max)(rng);
   }
   return q;
+}
+
+// The middle of every joint's range.
+JointVector middlePose(const planner::RobotModel& robot) {
+  JointVector q(robot.jointCount());
+  for (int j = 0; j < robot.jointCount(); ++j) q[j] = 0.5 * (robot.range(j).min + robot.range(j).max);
+  return q;
+}
+
+TEST(MechanismPlant, HasOneJointPerJointOfTheChain) {
+  for (const auto& [name, joints] : std::vector<std::pair<std::string, int>>{
+           {"reefscape-2025", 2}, {"intake-pivot", 1}, {"reefscape-2025-elevator-pivot-wrist", 3}}) {
+    const planner::RobotModel& robot = shippedRobot(name);
+    ASSERT_EQ(robot.jointCount(), joints) << name;
+    const MechanismPlant plant = MechanismPlant::fromRobot(robot);
+    EXPECT_EQ(plant.jointCount(), joints) << name;
+    for (int j = 0; j < joints; ++j) {
+      EXPECT_EQ(plant.range(j).min, robot.range(j).min) << name << " joint " << j;
+      EXPECT_EQ(plant.range(j).max, robot.range(j).max) << name << " joint " << j;
+    }
+    const MechanismState next = plant.step(MechanismState::atRest(middlePose(robot)), JointVector::Zero(joints), 1e-3);
+    EXPECT_EQ(next.q.size(), joints) << name;
+    EXPECT_EQ(next.qdot.size(), joints) << name;
+  }
 }
 
 // The plant is the inverse of DriveModel::volts: applying the voltage the planner computes for
@@ -60,23 +85,104 @@ TEST(MechanismPlant, AcceleratesAsThePlannerModelSaysOnEveryShippedRobot) {
     std::mt19937 rng(7);
     for (int trial = 0; trial < 200; ++trial) {
       // Away from the stops, moving (stiction is a separate case).
-      MechanismState state{randomPose(robot, rng), JointVector::Zero()};
-      JointVector a;
-      for (int j = 0; j < kJointCount; ++j) {
+      MechanismState state = MechanismState::atRest(randomPose(robot, rng));
+      JointVector a(robot.jointCount());
+      for (int j = 0; j < robot.jointCount(); ++j) {
         const double span = robot.range(j).max - robot.range(j).min;
         state.q[j] = std::clamp(state.q[j], robot.range(j).min + 0.1 * span, robot.range(j).max - 0.1 * span);
         state.qdot[j] = std::uniform_real_distribution<double>(0.2, 2.0)(rng) * (trial % 2 == 0 ? 1.0 : -1.0);
         a[j] = std::uniform_real_distribution<double>(-20.0, 20.0)(rng);
       }
       const JointVector volts = plant.drive().volts(state.q, state.qdot, a);
-      const double dt = 1e-7;
+      // Short enough that the back-EMF the step takes implicitly, an O(dt) term that the coupling
+      // carries to a joint of small acceleration (the three-joint wrist), stays far inside the
+      // tolerance.
+      const double dt = 1e-8;
       const MechanismState next = plant.step(state, volts, dt);
       const JointVector measured = (next.qdot - state.qdot) / dt;
-      for (int j = 0; j < kJointCount; ++j) {
+      ASSERT_EQ(next.q.size(), robot.jointCount()) << name;
+      for (int j = 0; j < robot.jointCount(); ++j) {
         ASSERT_NEAR(measured[j], a[j], 1e-3 * (1.0 + std::abs(a[j]))) << name << " trial " << trial << " joint " << j;
       }
     }
   }
+}
+
+// With any joints latched (at rest, not moving this step), the free ones still accelerate as the
+// planner's model says for an acceleration that is zero on the latched ones, whatever voltage the
+// latched ones get: the free joints' rows of the coupled system are solved alone (on three joints,
+// a middle joint latched leaves joints 0 and 2).
+TEST(MechanismPlant, AcceleratesAsThePlannerModelSaysWithAnyJointsLatched) {
+  for (const std::string& name : shippedRobots()) {
+    const planner::RobotModel& robot = shippedRobot(name);
+    const MechanismPlant plant = MechanismPlant::fromRobot(robot);
+    const int n = robot.jointCount();
+    std::mt19937 rng(11);
+    // Every set of latched joints but all of them (bit j: joint j latched).
+    for (unsigned mask = 0; mask + 1 < (1U << n); ++mask) {
+      JointFlags latched{};
+      for (int j = 0; j < n; ++j) latched[static_cast<size_t>(j)] = ((mask >> j) & 1U) != 0;
+      for (int trial = 0; trial < 20; ++trial) {
+        MechanismState state = MechanismState::atRest(randomPose(robot, rng));
+        JointVector a = JointVector::Zero(n);
+        for (int j = 0; j < n; ++j) {
+          const double span = robot.range(j).max - robot.range(j).min;
+          state.q[j] = std::clamp(state.q[j], robot.range(j).min + 0.1 * span, robot.range(j).max - 0.1 * span);
+          if (latched[static_cast<size_t>(j)]) continue;
+          state.qdot[j] = std::uniform_real_distribution<double>(0.2, 2.0)(rng) * (trial % 2 == 0 ? 1.0 : -1.0);
+          a[j] = std::uniform_real_distribution<double>(-20.0, 20.0)(rng);
+        }
+        JointVector volts = plant.drive().volts(state.q, state.qdot, a);
+        // A latched joint's own voltage moves nothing: its row is out of the solve.
+        for (int j = 0; j < n; ++j) {
+          if (latched[static_cast<size_t>(j)]) volts[j] += trial % 2 == 0 ? 3.0 : -3.0;
+        }
+        // Short enough that the back-EMF the step takes implicitly, an O(dt) term that the coupling
+        // carries to a joint of small acceleration (the three-joint wrist), stays far inside the
+        // tolerance.
+        const double dt = 1e-8;
+        const MechanismState next = plant.step(state, volts, dt, latched);
+        for (int j = 0; j < n; ++j) {
+          if (latched[static_cast<size_t>(j)]) {
+            EXPECT_EQ(next.q[j], state.q[j]) << name << " latched " << mask << " joint " << j;
+            EXPECT_EQ(next.qdot[j], 0.0) << name << " latched " << mask << " joint " << j;
+          } else {
+            ASSERT_NEAR((next.qdot[j] - state.qdot[j]) / dt, a[j], 1e-3 * (1.0 + std::abs(a[j])))
+                << name << " latched " << mask << " trial " << trial << " joint " << j;
+          }
+        }
+      }
+    }
+  }
+}
+
+// The one-joint intake pivot (config/intake-pivot.toml) in neutral: pointing forward, gravity beats
+// friction and it swings down, onto its lower hard stop where it stays; near vertical friction
+// holds it.
+TEST(MechanismPlant, OneJointPivotFallsOntoItsStopInNeutral) {
+  const planner::RobotModel& robot = shippedRobot("intake-pivot");
+  ASSERT_EQ(robot.jointCount(), 1);
+  const MechanismPlant plant = MechanismPlant::fromRobot(robot);
+  const JointVector forward{{0.3}};
+  EXPECT_LT(neutralSlideVelocity(plant, 0, forward), 0.0);
+  EXPECT_GT(neutralSlideVelocity(plant, 0, (JointVector{{2.5}})), 0.0);  // leaning back: falls back
+  EXPECT_EQ(neutralSlideVelocity(plant, 0, (JointVector{{M_PI / 2}})), 0.0);
+  // Geared 50:1, the back-EMF of brake mode lets it swing down only slowly, at about the balance
+  // speed of where it is.
+  MechanismState state = run(plant, MechanismState::atRest(forward), JointVector::Zero(1), 1.0, 1e-3);
+  EXPECT_LT(state.q[0], forward[0] - 0.05);
+  EXPECT_NEAR(state.qdot[0], neutralSlideVelocity(plant, 0, state.q), 0.05 * std::abs(state.qdot[0]));
+  // Near the lower stop it lands on it and stays.
+  state = MechanismState::atRest(JointVector{{plant.range(0).min + 0.03}});
+  for (int i = 0; i < 2000; ++i) {
+    state = plant.step(state, JointVector::Zero(1), 1e-3);
+    ASSERT_GE(state.q[0], plant.range(0).min);
+  }
+  EXPECT_EQ(state.q[0], plant.range(0).min);
+  EXPECT_EQ(state.qdot[0], 0.0);
+  const MechanismState upright =
+      run(plant, MechanismState::atRest(JointVector{{M_PI / 2}}), JointVector::Zero(1), 0.5, 1e-3);
+  EXPECT_EQ(upright.q[0], M_PI / 2);
 }
 
 // The feedforward of a constant velocity, re-evaluated as the pose changes, keeps that velocity.
@@ -84,15 +190,15 @@ TEST(MechanismPlant, FeedforwardOfAConstantVelocityHoldsItOnEveryShippedRobot) {
   for (const std::string& name : shippedRobots()) {
     const planner::RobotModel& robot = shippedRobot(name);
     const MechanismPlant plant = MechanismPlant::fromRobot(robot);
-    MechanismState state;
-    const JointVector v(0.3, -0.4);
-    for (int j = 0; j < kJointCount; ++j) state.q[j] = 0.5 * (robot.range(j).min + robot.range(j).max);
+    const int n = robot.jointCount();
+    MechanismState state = MechanismState::atRest(middlePose(robot));
+    JointVector v(n);
+    for (int j = 0; j < n; ++j) v[j] = j % 2 == 0 ? 0.3 : -0.4;
     state.qdot = v;
     for (int i = 0; i < 100; ++i) {
-      state = plant.step(state, plant.drive().volts(state.q, state.qdot, JointVector::Zero()), 0.001);
+      state = plant.step(state, plant.drive().volts(state.q, state.qdot, JointVector::Zero(n)), 0.001);
     }
-    EXPECT_NEAR(state.qdot[0], v[0], 1e-9) << name;
-    EXPECT_NEAR(state.qdot[1], v[1], 1e-9) << name;
+    for (int j = 0; j < n; ++j) EXPECT_NEAR(state.qdot[j], v[j], 1e-9) << name << " joint " << j;
   }
 }
 
@@ -106,8 +212,8 @@ TEST(MechanismPlant, ConstantVoltageMatchesTheExponentialToFirstOrder) {
   const double tau = drive.kA / drive.kV;
   const double t = 0.02;  // two time constants
   const double exact = v_inf * (1.0 - std::exp(-t / tau));
-  const MechanismState start{JointVector(0.5, 1.57), JointVector::Zero()};
-  const JointVector applied(volts, 0.0);
+  const MechanismState start{JointVector{{0.5, 1.57}}, JointVector::Zero(2)};
+  const JointVector applied{{volts, 0.0}};
   double previous_error = 0.0;
   for (double dt : {1e-3, 5e-4, 2.5e-4}) {
     const MechanismState end = run(plant, start, applied, t, dt, {false, true});
@@ -125,17 +231,17 @@ TEST(MechanismPlant, ConstantVoltageMatchesTheExponentialToFirstOrder) {
 TEST(MechanismPlant, StictionHoldsAJointAtRestWithinTheFrictionBand) {
   const MechanismPlant plant = referencePlant();
   const planner::DriveParams& drive = plant.drive().drive(kElevator);
-  const MechanismState start{JointVector(0.7, 1.57), JointVector::Zero()};
+  const MechanismState start{JointVector{{0.7, 1.57}}, JointVector::Zero(2)};
   for (double dv : {-0.999 * drive.kS_volts, -0.05, 0.0, 0.1, 0.999 * drive.kS_volts}) {
-    const MechanismState end = run(plant, start, JointVector(drive.kG_volts + dv, 0.0), 0.5, 1e-3, {false, true});
+    const MechanismState end = run(plant, start, JointVector{{drive.kG_volts + dv, 0.0}}, 0.5, 1e-3, {false, true});
     EXPECT_EQ(end.q[kElevator], 0.7) << dv;
     EXPECT_EQ(end.qdot[kElevator], 0.0) << dv;
   }
   // Just past the band it moves, in the direction of the pull.
-  EXPECT_GT(run(plant, start, JointVector(drive.kG_volts + drive.kS_volts + 0.01, 0.0), 0.1, 1e-3, {false, true})
+  EXPECT_GT(run(plant, start, (JointVector{{drive.kG_volts + drive.kS_volts + 0.01, 0.0}}), 0.1, 1e-3, {false, true})
                 .q[kElevator],
             0.7);
-  EXPECT_LT(run(plant, start, JointVector(drive.kG_volts - drive.kS_volts - 0.01, 0.0), 0.1, 1e-3, {false, true})
+  EXPECT_LT(run(plant, start, (JointVector{{drive.kG_volts - drive.kS_volts - 0.01, 0.0}}), 0.1, 1e-3, {false, true})
                 .q[kElevator],
             0.7);
 }
@@ -152,9 +258,9 @@ TEST(MechanismPlant, FrictionStopsAJointWithoutReversingIt) {
   const double v0 = 0.8;
   const double s = drive.kS_volts / drive.kV;
   const double distance = drive.kA / drive.kV * (v0 - s * std::log(1.0 + v0 / s));
-  MechanismState state{JointVector(1.0, 1.57), JointVector(v0, 0.0)};
+  MechanismState state{JointVector{{1.0, 1.57}}, JointVector{{v0, 0.0}}};
   for (int i = 0; i < 1000; ++i) {
-    state = plant.step(state, JointVector::Zero(), 1e-4, {false, true});
+    state = plant.step(state, JointVector::Zero(2), 1e-4, {false, true});
     ASSERT_GE(state.qdot[kElevator], 0.0);
   }
   EXPECT_EQ(state.qdot[kElevator], 0.0);
@@ -166,44 +272,44 @@ TEST(MechanismPlant, FrictionStopsAJointWithoutReversingIt) {
 TEST(MechanismPlant, NeutralSlidesAtTheBrakeVelocityOrStaysPut) {
   const MechanismPlant plant = referencePlant();
   const planner::DriveParams& elevator = plant.drive().drive(kElevator);
-  const double slide = neutralSlideVelocity(plant, kElevator, JointVector(1.0, 1.57));
+  const double slide = neutralSlideVelocity(plant, kElevator, JointVector{{1.0, 1.57}});
   EXPECT_NEAR(slide, -(elevator.kG_volts - elevator.kS_volts) / elevator.kV, 1e-12);
-  const MechanismState start{JointVector(1.0, 1.57), JointVector::Zero()};
-  const MechanismState end = run(plant, start, JointVector::Zero(), 0.3, 1e-3);
+  const MechanismState start{JointVector{{1.0, 1.57}}, JointVector::Zero(2)};
+  const MechanismState end = run(plant, start, JointVector::Zero(2), 0.3, 1e-3);
   EXPECT_NEAR(end.qdot[kElevator], slide, 1e-9);
   EXPECT_EQ(end.q[kArm], 1.57);  // near vertical, friction holds it
 
-  EXPECT_EQ(neutralSlideVelocity(plant, kArm, JointVector(1.0, 1.57)), 0.0);
+  EXPECT_EQ(neutralSlideVelocity(plant, kArm, (JointVector{{1.0, 1.57}})), 0.0);
   // Horizontal, pointing forward: gravity beats friction, it falls (theta decreases).
-  EXPECT_LT(neutralSlideVelocity(plant, kArm, JointVector(1.0, 0.5)), 0.0);
-  EXPECT_LT(run(plant, MechanismState{JointVector(1.0, 0.5), JointVector::Zero()}, JointVector::Zero(), 0.1, 1e-3,
+  EXPECT_LT(neutralSlideVelocity(plant, kArm, (JointVector{{1.0, 0.5}})), 0.0);
+  EXPECT_LT(run(plant, MechanismState{(JointVector{{1.0, 0.5}}), JointVector::Zero(2)}, JointVector::Zero(2), 0.1, 1e-3,
                 {true, false})
                 .q[kArm],
             0.5);
   // Pointing backward it falls the other way.
-  EXPECT_GT(neutralSlideVelocity(plant, kArm, JointVector(1.0, 3.0)), 0.0);
+  EXPECT_GT(neutralSlideVelocity(plant, kArm, (JointVector{{1.0, 3.0}})), 0.0);
 }
 
 TEST(MechanismPlant, HardStopsAtTheJointRange) {
   const MechanismPlant plant = referencePlant();
   const double limit = plant.voltageLimit(kElevator);
   const planner::JointRange& range = plant.range(kElevator);
-  MechanismState state{JointVector(range.min + 0.05, 1.57), JointVector::Zero()};
+  MechanismState state{JointVector{{range.min + 0.05, 1.57}}, JointVector::Zero(2)};
   for (int i = 0; i < 500; ++i) {
-    state = plant.step(state, JointVector(-limit, 0.0), 1e-3, {false, true});
+    state = plant.step(state, JointVector{{-limit, 0.0}}, 1e-3, {false, true});
     ASSERT_GE(state.q[kElevator], range.min);
   }
   EXPECT_EQ(state.q[kElevator], range.min);
   EXPECT_EQ(state.qdot[kElevator], 0.0);
-  state = MechanismState{JointVector(range.max - 0.05, 1.57), JointVector::Zero()};
+  state = MechanismState{JointVector{{range.max - 0.05, 1.57}}, JointVector::Zero(2)};
   for (int i = 0; i < 500; ++i) {
-    state = plant.step(state, JointVector(limit, 0.0), 1e-3, {false, true});
+    state = plant.step(state, JointVector{{limit, 0.0}}, 1e-3, {false, true});
     ASSERT_LE(state.q[kElevator], range.max);
   }
   EXPECT_EQ(state.q[kElevator], range.max);
   EXPECT_EQ(state.qdot[kElevator], 0.0);
   // Pulling away from a stop moves off it.
-  state = plant.step(state, JointVector(-limit, 0.0), 1e-3, {false, true});
+  state = plant.step(state, JointVector{{-limit, 0.0}}, 1e-3, {false, true});
   EXPECT_LT(state.qdot[kElevator], 0.0);
 }
 
@@ -243,16 +349,16 @@ TEST(MechanismPlant, DerivedGainsSettleEveryShippedJointWithoutOvershoot) {
   for (const std::string& name : shippedRobots()) {
     const planner::RobotModel& robot = shippedRobot(name);
     const MechanismPlant plant = MechanismPlant::fromRobot(robot);
-    for (int joint = 0; joint < kJointCount; ++joint) {
+    const int n = robot.jointCount();
+    for (int joint = 0; joint < n; ++joint) {
       const PdGains gains = derivedGains(plant, joint, kBandwidth_radps);
-      JointVector target;
-      for (int j = 0; j < kJointCount; ++j) target[j] = 0.5 * (robot.range(j).min + robot.range(j).max);
-      const JointVector hold_volts = plant.drive().volts(target, JointVector::Zero(), JointVector::Zero());
+      const JointVector target = middlePose(robot);
+      const JointVector hold_volts = plant.drive().volts(target, JointVector::Zero(n), JointVector::Zero(n));
       const double band = plant.drive().drive(joint).kS_volts / gains.kp_volts_per_unit;
-      MechanismState state{target, JointVector::Zero()};
+      MechanismState state = MechanismState::atRest(target);
       state.q[joint] -= 0.01;
-      std::array<bool, kJointCount> latched{};
-      latched[1 - joint] = true;
+      JointFlags latched{};
+      for (int j = 0; j < n; ++j) latched[static_cast<size_t>(j)] = j != joint;  // the others held
       double overshoot = 0.0;
       for (int i = 0; i < 100; ++i) {  // 0.1 s = 10 / w
         JointVector volts = hold_volts;

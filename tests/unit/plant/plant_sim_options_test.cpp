@@ -35,8 +35,7 @@ TEST(SimOptions, DefaultsWithoutArguments) {
   EXPECT_EQ(o.duration_s, 0.0);
   EXPECT_EQ(o.setpoint_timeout_s, 0.1);
   EXPECT_EQ(o.controller_bandwidth_radps, kDefaultControllerBandwidth_radps);
-  EXPECT_FALSE(o.joint_gains[0]);
-  EXPECT_FALSE(o.joint_gains[1]);
+  for (const auto& gains : o.joint_gains) EXPECT_FALSE(gains);
   EXPECT_EQ(o.realtime_priority, 0);
   EXPECT_FALSE(o.control_path);
 }
@@ -71,6 +70,8 @@ TEST(SimOptions, EveryOption) {
                              "200,2",
                              "--joint1-gains",
                              "40,0",
+                             "--joint2-gains",
+                             "15,0.5",
                              "--realtime",
                              "40",
                              "--control",
@@ -79,7 +80,7 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.config_path, "robot.toml");
   EXPECT_EQ(o.can_interface, "vcan0");
   EXPECT_EQ(o.lcm_url, "memq://");
-  EXPECT_EQ(o.initial_q, planner::JointVector(1.2, -0.5));
+  EXPECT_EQ(o.initial_q, (planner::JointVector{{1.2, -0.5}}));
   EXPECT_EQ(o.pieces, (std::vector<std::string>{"coral", "algae"}));
   EXPECT_EQ(o.state_rate_hz, 50.0);
   EXPECT_FALSE(o.heartbeat);
@@ -94,6 +95,8 @@ TEST(SimOptions, EveryOption) {
   EXPECT_EQ(o.joint_gains[0]->kd_volts_per_unit_per_s, 2.0);
   EXPECT_EQ(o.joint_gains[1]->kp_volts_per_unit, 40.0);
   EXPECT_EQ(o.joint_gains[1]->kd_volts_per_unit_per_s, 0.0);
+  EXPECT_EQ(o.joint_gains[2]->kp_volts_per_unit, 15.0);
+  EXPECT_EQ(o.joint_gains[2]->kd_volts_per_unit_per_s, 0.5);
   EXPECT_EQ(o.realtime_priority, 40);
   EXPECT_EQ(o.control_path, "ctl.fifo");
 }
@@ -110,10 +113,13 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"vcan0"},
       {"--can"},
       {"--can", ""},
-      {"--initial", "1.0"},
-      {"--initial", "1.0,2.0,3.0"},
+      {"--initial", "1.0,2.0,3.0,4.0"},  // more joints than any chain has
       {"--initial", "a,b"},
       {"--initial", "1.0,nan"},
+      {"--initial", "inf"},
+      {"--initial", "1.0,"},
+      {"--initial", ",1.0"},
+      {"--initial", "1.0,,2.0"},
       {"--state-rate", "0"},
       {"--state-rate", "2000"},
       {"--state-rate", "fast"},
@@ -123,6 +129,8 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
       {"--setpoint-timeout", "0"},
       {"--joint0-gains", "1"},
       {"--joint1-gains", "-1,0"},
+      {"--joint2-gains", "1,0,0"},
+      {"--joint3-gains", "1,0"},
       {"--elevator-gains", "1,0"},
       {"--bandwidth", "0"},
       {"--bandwidth", "-5"},
@@ -143,11 +151,20 @@ TEST(SimOptions, BadUsageNamesTheProblem) {
   }
 }
 
+// One value per joint: whether there are as many as the config has joints is checked once it is
+// loaded (plant_sim_tool_test), so a chain of one, two or three joints parses here.
+TEST(SimOptions, InitialTakesOneValuePerJoint) {
+  EXPECT_EQ(parse({"--initial", "1.9"}).options.initial_q, planner::JointVector{{1.9}});
+  EXPECT_EQ(parse({"--initial", "-0.72"}).options.initial_q->size(), 1);
+  EXPECT_EQ(parse({"--initial", "0.05,1.5708,0"}).options.initial_q, (planner::JointVector{{0.05, 1.5708, 0.0}}));
+  EXPECT_EQ(parse({"--initial=0.5,-1e-3"}).options.initial_q, (planner::JointVector{{0.5, -1e-3}}));
+}
+
 TEST(SimOptions, BothSpellingsOfAValueMeanTheSame) {
   for (const auto& args : {std::vector<std::string>{"--initial", "-0.2,1", "--can", "vcan1", "--fault", "exit@2"},
                            std::vector<std::string>{"--initial=-0.2,1", "--can=vcan1", "--fault=exit@2"}}) {
     const SimOptions o = parse(args).options;
-    EXPECT_EQ(o.initial_q, planner::JointVector(-0.2, 1.0));
+    EXPECT_EQ(o.initial_q, (planner::JointVector{{-0.2, 1.0}}));
     EXPECT_EQ(o.can_interface, "vcan1");
     ASSERT_EQ(o.faults.size(), 1u);
     EXPECT_EQ(o.faults[0].kind, FaultKind::kExit);

@@ -28,7 +28,8 @@ TEST(PlantSimTool, HelpExitsZero) {
   const ToolRun run = runTool("--help");
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("usage: cyber-plant-sim"), std::string::npos);
-  EXPECT_NE(run.out.find("--initial Q0,Q1"), std::string::npos);
+  EXPECT_NE(run.out.find("--initial Q0[,Q1[,Q2]]"), std::string::npos);
+  EXPECT_NE(run.out.find("--joint2-gains KP,KD"), std::string::npos);
 }
 
 TEST(PlantSimTool, BadUsageExitsTwoWithTheUsage) {
@@ -43,6 +44,48 @@ TEST(PlantSimTool, InitialPoseOutsideTheRangeExitsTwo) {
   const ToolRun run = runTool("--initial 2.5,1.0 --can nosuchcan0");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("outside the joint ranges"), std::string::npos) << run.err;
+}
+
+std::string shippedConfig(const std::string& name) {
+  return std::string(CYBER_SOURCE_DIR) + "/config/" + name + ".toml";
+}
+
+// --initial takes one value per joint of the config, named in the refusal.
+TEST(PlantSimTool, InitialPoseWithoutOneValuePerJointExitsTwo) {
+  ToolRun run = runTool("--initial 0.5 --can nosuchcan0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("reefscape-2025 has 2 joints (elevator, arm), one value each"), std::string::npos) << run.err;
+  run = runTool("--config " + shippedConfig("intake-pivot") + " --initial 0.5,1.0 --can nosuchcan0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("intake-pivot has 1 joint (pivot), one value each"), std::string::npos) << run.err;
+  run = runTool("--config " + shippedConfig("reefscape-2025-elevator-pivot-wrist") +
+                " --initial 0.5,1.0 --can nosuchcan0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("has 3 joints (elevator, pivot, wrist)"), std::string::npos) << run.err;
+}
+
+TEST(PlantSimTool, GainsForAJointTheConfigLacksExitTwo) {
+  ToolRun run = runTool("--joint2-gains 10,0 --can nosuchcan0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--joint2-gains: reefscape-2025 has 2 joints"), std::string::npos) << run.err;
+  run = runTool("--config " + shippedConfig("intake-pivot") + " --joint1-gains 10,0 --can nosuchcan0");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--joint1-gains: intake-pivot has 1 joint (pivot)"), std::string::npos) << run.err;
+}
+
+// The one- and three-joint robots pass every check of their options and config (initial pose,
+// gains, pieces, one device per joint) and get as far as opening the CAN interface.
+TEST(PlantSimTool, ChainsOfOneAndThreeJointsGetToTheBus) {
+  for (const std::string& args :
+       {"--config " + shippedConfig("intake-pivot") + " --pieces coral",
+        "--config " + shippedConfig("intake-pivot") + " --initial -0.72 --joint0-gains 30,0.5",
+        "--config " + shippedConfig("reefscape-2025-elevator-pivot-wrist"),
+        "--config " + shippedConfig("reefscape-2025-elevator-pivot-wrist") +
+            " --initial 0.05,1.5708,0 --joint2-gains 20,0 --pieces coral"}) {
+    const ToolRun run = runTool(args + " --can nosuchcan0 --duration 0.1");
+    EXPECT_EQ(run.exit_code, 1) << args << "\n" << run.err;
+    EXPECT_NE(run.err.find("nosuchcan0"), std::string::npos) << args << "\n" << run.err;
+  }
 }
 
 TEST(PlantSimTool, InvalidConfigExitsTwoNamingTheKey) {

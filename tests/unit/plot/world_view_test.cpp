@@ -3,13 +3,9 @@
 // obstacle, arm and coral colours, and pixels just outside do not. The APNG animation is a
 // well-formed PNG whose frames, sequence numbers and CRCs agree.
 #include <gtest/gtest.h>
-#include <cairo.h>
-#include <unistd.h>
 #include <zlib.h>
 
-#include <array>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -18,68 +14,20 @@
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner.hpp"
 #include "cyber/plot/world_view.hpp"
+#include "pixel_checks.hpp"
 #include "public_moves.hpp"
 #include "reference_model.hpp"
 
 namespace cyber::plot {
 namespace {
 
+using pixels::centroid;
+using pixels::corner;
+using pixels::Image;
+using pixels::inset;
+using pixels::near;
+using pixels::tempPath;
 using planner::Point2;
-
-std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / (name + "_" + std::to_string(getpid()) + ".png")).string();
-}
-
-class Image {
- public:
-  explicit Image(const std::string& path) : surface_(cairo_image_surface_create_from_png(path.c_str())) {}
-  ~Image() { cairo_surface_destroy(surface_); }
-  Image(const Image&) = delete;
-  Image& operator=(const Image&) = delete;
-  [[nodiscard]] bool ok() const { return cairo_surface_status(surface_) == CAIRO_STATUS_SUCCESS; }
-  // RGB of the pixel containing (x, y).
-  [[nodiscard]] std::array<int, 3> at(double x, double y) const {
-    const int ix = static_cast<int>(std::floor(x)), iy = static_cast<int>(std::floor(y));
-    const unsigned char* row = cairo_image_surface_get_data(surface_) + iy * cairo_image_surface_get_stride(surface_);
-    uint32_t argb = 0;
-    std::memcpy(&argb, row + 4 * ix, 4);
-    return {static_cast<int>((argb >> 16) & 0xff), static_cast<int>((argb >> 8) & 0xff), static_cast<int>(argb & 0xff)};
-  }
-
- private:
-  cairo_surface_t* surface_;
-};
-
-bool near(const std::array<int, 3>& got, const uint8_t (&want)[3]) {
-  for (int i = 0; i < 3; ++i) {
-    if (std::abs(got[i] - want[i]) > 4) return false;
-  }
-  return true;
-}
-
-// The pixel point `px` pixels from world point p toward (or, negative, away from) `toward`.
-Point2 inset(const WorldCanvas& c, const Point2& p, const Point2& toward, double px) {
-  const Point2 a(c.px(p.x()), c.py(p.y())), b(c.px(toward.x()), c.py(toward.y()));
-  return a + px * (b - a).normalized();
-}
-
-// The pixel point `px` pixels inside both edges at corner `i` of a convex polygon (world
-// vertices), or `px` pixels outside it along the corner's bisector when px < 0.
-Point2 corner(const WorldCanvas& c, const std::vector<Point2>& world, size_t i, double px) {
-  auto pixel = [&](const Point2& p) { return Point2(c.px(p.x()), c.py(p.y())); };
-  const size_t n = world.size();
-  const Point2 a = pixel(world[i]);
-  const Point2 u1 = (pixel(world[(i + n - 1) % n]) - a).normalized(), u2 = (pixel(world[(i + 1) % n]) - a).normalized();
-  const Point2 bisector = (u1 + u2).normalized();
-  const double sin_half = std::sqrt(std::max(1e-6, (1 - u1.dot(u2)) / 2));
-  return px > 0 ? a + bisector * (px / sin_half) : a + bisector * px;
-}
-
-Point2 centroid(const std::vector<Point2>& vertices) {
-  Point2 sum = Point2::Zero();
-  for (const Point2& v : vertices) sum += v;
-  return sum / static_cast<double>(vertices.size());
-}
 
 class WorldView : public ::testing::Test {
  protected:
@@ -167,7 +115,7 @@ TEST_F(WorldView, AnimationIsAWellFormedApng) {
   for (int k = 0; k <= 50; ++k) {
     const double s = k / 50.0;
     move.time_s.push_back(s);
-    move.q.emplace_back(0.20 + s * (0.58 - 0.20), 1.57 + s * (2.97 - 1.57));  // STOW -> INTAKE
+    move.q.push_back(planner::JointVector{{0.20 + s * (0.58 - 0.20), 1.57 + s * (2.97 - 1.57)}});  // STOW -> INTAKE
   }
   const std::string path = tempPath("anim");
   const auto written = renderAnimationApng(robot_, 0, {}, move, 10, "STOW -> INTAKE", path);
@@ -219,7 +167,7 @@ TEST_F(WorldView, SmallestClearanceIsTheMinimumOverTheSamples) {
   Move move;
   for (int k = 0; k <= 20; ++k) {
     move.time_s.push_back(k * 0.05);
-    move.q.emplace_back(1.22, 5.69 - 0.02 * std::abs(k - 12));  // L3, swinging closest at k = 12
+    move.q.push_back(planner::JointVector{{1.22, 5.69 - 0.02 * std::abs(k - 12)}});  // L3, swinging closest at k = 12
   }
   const Clearance smallest = smallestClearance(robot_, 0, {}, move);
   const planner::CollisionWorld world(robot_, robot_.scenes[0], {});

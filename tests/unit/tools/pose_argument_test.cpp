@@ -62,7 +62,7 @@ class ResolvePose : public ::testing::Test {
   planner::JointVector q(std::string_view text, std::string_view pieces) const {
     const auto pose = resolve(text, pieces);
     EXPECT_TRUE(pose.ok()) << text << ": " << (pose.ok() ? "" : pose.error().message);
-    return pose.ok() ? pose.value() : planner::JointVector::Constant(NAN);
+    return pose.ok() ? pose.value() : planner::JointVector::Constant(2, NAN);
   }
   std::string error(std::string_view text, std::string_view pieces) const {
     const auto pose = resolve(text, pieces);
@@ -74,15 +74,15 @@ class ResolvePose : public ::testing::Test {
 
 // [poses.none] L3 = [1.22, 5.69], [poses.coral] L3 = [1.27, 5.79]: the held pieces choose the table.
 TEST_F(ResolvePose, ANameIsThePoseOfTheHeldSet) {
-  EXPECT_EQ(q("STOW", "coral"), planner::JointVector(0.20, 1.57));
-  EXPECT_EQ(q("L3", "coral"), planner::JointVector(1.27, 5.79));
-  EXPECT_EQ(q("L3", "none"), planner::JointVector(1.22, 5.69));
-  EXPECT_EQ(q("L3", ""), planner::JointVector(1.22, 5.69));
-  EXPECT_EQ(q("HOLD_HIGH", "algae"), planner::JointVector(1.98, 5.69));
+  EXPECT_EQ(q("STOW", "coral"), (planner::JointVector{{0.20, 1.57}}));
+  EXPECT_EQ(q("L3", "coral"), (planner::JointVector{{1.27, 5.79}}));
+  EXPECT_EQ(q("L3", "none"), (planner::JointVector{{1.22, 5.69}}));
+  EXPECT_EQ(q("L3", ""), (planner::JointVector{{1.22, 5.69}}));
+  EXPECT_EQ(q("HOLD_HIGH", "algae"), (planner::JointVector{{1.98, 5.69}}));
 }
 
 TEST_F(ResolvePose, NumbersAreThePoseWhenThereIsOnePerJoint) {
-  EXPECT_EQ(q("0.5,-1", "coral"), planner::JointVector(0.5, -1.0)) << "ranges are the planner's to judge";
+  EXPECT_EQ(q("0.5,-1", "coral"), (planner::JointVector{{0.5, -1.0}})) << "ranges are the planner's to judge";
   EXPECT_EQ(error("1,2,3", "none"), "expects 2 values, one per joint (elevator, arm), got 3");
   EXPECT_EQ(error("1.5", "none"), "expects 2 values, one per joint (elevator, arm), got 1");
 }

@@ -24,13 +24,22 @@ std::string fileText(const std::string& relative) {
   return text.str();
 }
 
-// The shipped pivot-telescope with `from` replaced by `to` (which must be there).
-config::Config pivotTelescopeWith(const std::string& from, const std::string& to) {
-  std::string text = fileText("config/pivot-telescope.toml");
+// config/NAME.toml with `from` replaced by `to` (which must be there).
+config::Config robotWith(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = fileText("config/" + name + ".toml");
   const size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) text.replace(at, from.size(), to);
-  return config::parseConfig(text, "pivot-telescope (edited)");
+  return config::parseConfig(text, name + " (edited)");
+}
+
+config::Config pivotTelescopeWith(const std::string& from, const std::string& to) {
+  return robotWith("pivot-telescope", from, to);
+}
+
+// The one-joint and the three-joint robot of issue 34, not (yet) among the shipped ones.
+config::Config robotNamed(const std::string& name) {
+  return config::loadConfigFile(test::sourceFile("config/" + name + ".toml"));
 }
 
 // The severity of the one entry of pose `pose` of [poses.none] in `scene`.
@@ -65,7 +74,7 @@ TEST(RobotCheck, EveryShippedRobotHasNoError) {
     size_t poses = 0;
     for (const config::PoseSet& set : config.poses) poses += set.poses.size();
     EXPECT_EQ(check.poses.size(), poses * config.robot.scenes.size()) << name;
-    EXPECT_EQ(check.drives.size(), static_cast<size_t>(planner::kJointCount)) << name;
+    EXPECT_EQ(check.drives.size(), static_cast<size_t>(config.robot.jointCount())) << name;
   }
 }
 
@@ -121,6 +130,75 @@ TEST(RobotCheck, TheDriveCheckBoundaryIsTheHoldingCurrent) {
   EXPECT_EQ(checkDrives(config.robot, heaviestPieces(config.robot))[0].severity, Severity::kOk);
   config.robot.drives[0].current_limit_amps = hold_amps * 0.95;
   EXPECT_EQ(checkDrives(config.robot, heaviestPieces(config.robot))[0].severity, Severity::kError);
+}
+
+// The one-joint intake and the elevator-pivot-wrist: every pose clear in its default scene and
+// every drive able to hold and move its load, one drive per joint in chain order.
+TEST(RobotCheck, TheOneAndTheThreeJointRobotsPosesAndDrivesHaveNoError) {
+  for (const char* name : {"intake-pivot", "reefscape-2025-elevator-pivot-wrist"}) {
+    const config::Config config = robotNamed(name);
+    RobotCheck check;
+    check.poses = checkPoseClearances(config);
+    check.drives = checkDrives(config.robot, heaviestPieces(config.robot));
+    EXPECT_EQ(check.count(Severity::kError), 0) << name << "\n" << robotReportText(config, check);
+    ASSERT_EQ(check.drives.size(), static_cast<size_t>(config.robot.jointCount())) << name;
+    for (int j = 0; j < config.robot.jointCount(); ++j) {
+      const DriveCheck& d = check.drives[static_cast<size_t>(j)];
+      EXPECT_EQ(d.joint, config.robot.joints[j].name) << name;
+      EXPECT_EQ(d.worst_q.size(), config.robot.jointCount()) << name << " " << d.joint;
+      EXPECT_GT(d.hold_volts, 0.0) << name << " " << d.joint;
+      EXPECT_GT(d.worst_acceleration, 0.0) << name << " " << d.joint;
+    }
+  }
+}
+
+// The intake's moves between its named poses, planned for one joint.
+TEST(RobotCheck, TheOneJointRobotsPosesJoinBothWays) {
+  const config::Config config = robotNamed("intake-pivot");
+  const RobotCheck check = fullCheck(config);
+  EXPECT_EQ(check.count(Severity::kError), 0) << robotReportText(config, check);
+  ASSERT_EQ(check.reach.size(), config.poses.size());
+  for (const PoseSetReach& r : check.reach) {
+    EXPECT_EQ(r.pairs_planned, r.poses * (r.poses - 1)) << r.pose_set << "\n" << robotReportText(config, check);
+    EXPECT_EQ(r.groups.size(), 1U) << r.pose_set;
+  }
+}
+
+// A wrist on a 1 A limit cannot hold the effector level: the error names the wrist and the pose
+// by its three values.
+TEST(RobotCheck, AWeakWristIsAnErrorNamingItsPose) {
+  const config::Config config =
+      robotWith("reefscape-2025-elevator-pivot-wrist", "current_limit_amps = 50.0", "current_limit_amps = 1.0");
+  RobotCheck check;
+  check.drives = checkDrives(config.robot, heaviestPieces(config.robot));
+  ASSERT_EQ(check.drives.size(), 3U);
+  EXPECT_EQ(check.drives[0].severity, Severity::kOk);
+  EXPECT_EQ(check.drives[1].severity, Severity::kOk);
+  EXPECT_EQ(check.drives[2].severity, Severity::kError);
+  const std::string text = robotReportText(config, check);
+  const size_t at = text.find("error: drive wrist cannot hold its load or move both ways at (");
+  ASSERT_NE(at, std::string::npos) << text;
+  const std::string pose = text.substr(at, text.find(')', at) - at);
+  EXPECT_EQ(std::count(pose.begin(), pose.end(), ','), 2) << pose;
+}
+
+TEST(RobotCheck, AWeakIntakePivotIsAnError) {
+  const config::Config config = robotWith("intake-pivot", "current_limit_amps = 40.0", "current_limit_amps = 5.0");
+  const std::vector<DriveCheck> drives = checkDrives(config.robot, heaviestPieces(config.robot));
+  ASSERT_EQ(drives.size(), 1U);
+  EXPECT_EQ(drives[0].severity, Severity::kError);
+  EXPECT_EQ(drives[0].worst_q.size(), 1);
+}
+
+// The drive check's grid: the joint limits and each range's middle, and for three joints no more
+// poses than two joints take (docs/configuration.md, "Checking a robot").
+TEST(RobotCheck, TheDriveGridOfThreeJointsStaysWithinTheWorkOfTwo) {
+  EXPECT_EQ(driveSamplesPerJoint(1), 49);
+  EXPECT_EQ(driveSamplesPerJoint(2), 49);
+  const int three = driveSamplesPerJoint(3);
+  EXPECT_EQ(three % 2, 1);
+  EXPECT_LE(three * three * three, 49 * 49);
+  EXPECT_GE(three * three * three, 49 * 49 * 3 / 4) << "much coarser than it needs to be";
 }
 
 TEST(RobotCheck, TheHeaviestSetHoldsEveryPieceWithMass) {

@@ -1,19 +1,23 @@
 #include "cyber/plant/plant_simulation.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace cyber::plant {
 
 SimulationSettings::SimulationSettings(const MechanismPlant& mechanism, double controller_bandwidth_radps)
     : plant(mechanism) {
-  for (int joint = 0; joint < kJointCount; ++joint)
-    gains[joint] = derivedGains(plant, joint, controller_bandwidth_radps);
+  for (int joint = 0; joint < plant.jointCount(); ++joint) {
+    gains.push_back(derivedGains(plant, joint, controller_bandwidth_radps));
+  }
 }
 
 PlantSimulation::PlantSimulation(const SimulationSettings& settings, const planner::JointVector& initial_q)
-    : settings_(settings) {
-  state_.q = initial_q;
+    : settings_(settings),
+      state_(MechanismState::atRest(initial_q)),
+      applied_volts_(planner::JointVector::Zero(settings.plant.jointCount())) {
+  assert(initial_q.size() == settings.plant.jointCount());
 }
 
 void PlantSimulation::advanceTo(double t_s) {
@@ -25,15 +29,15 @@ void PlantSimulation::advanceTo(double t_s) {
 
 void PlantSimulation::receiveSetpoint(int joint, const JointCommand& command, double t_s) {
   advanceTo(t_s);
-  latest_[joint] = ReceivedSetpoint{command, t_s};
-  disabled_[joint] = false;
+  latest_[static_cast<size_t>(joint)] = ReceivedSetpoint{command, t_s};
+  disabled_[static_cast<size_t>(joint)] = false;
 }
 
 void PlantSimulation::disableOutputs() { disabled_.fill(true); }
 
 std::optional<JointCommand> PlantSimulation::effectiveCommand(int joint, double t_s) const {
-  const auto& latest = latest_[joint];
-  if (!latest || disabled_[joint]) return std::nullopt;
+  const auto& latest = latest_[static_cast<size_t>(joint)];
+  if (!latest || disabled_[static_cast<size_t>(joint)]) return std::nullopt;
   const double age_s = t_s - latest->arrival_s;
   if (age_s > settings_.setpoint_timeout_s) return std::nullopt;
   JointCommand command = latest->command;
@@ -43,16 +47,16 @@ std::optional<JointCommand> PlantSimulation::effectiveCommand(int joint, double 
 
 void PlantSimulation::step() {
   const double now_s = time_s();
-  std::array<bool, kJointCount> latched{};
-  for (int joint = 0; joint < kJointCount; ++joint) {
-    latched[joint] = !latest_[joint];  // resting at the initial pose until its first setpoint
+  JointFlags latched{};
+  for (int joint = 0; joint < jointCount(); ++joint) {
+    const auto j = static_cast<size_t>(joint);
+    latched[j] = !latest_[j];  // resting at the initial pose until its first setpoint
     const auto command = effectiveCommand(joint, now_s);
     applied_volts_[joint] = command ? controllerVolts(settings_.plant.voltageLimit(joint), settings_.gains[joint],
                                                       *command, state_.q[joint], state_.qdot[joint])
                                     : 0.0;
   }
-  state_ = settings_.plant.step(state_, planner::JointVector(applied_volts_[0], applied_volts_[1]), settings_.step_s,
-                                latched);
+  state_ = settings_.plant.step(state_, applied_volts_, settings_.step_s, latched);
   ++steps_;
 }
 

@@ -9,13 +9,15 @@ namespace {
 
 constexpr std::string_view kUsage =
     "usage: cyber-plant-sim [options]\n"
-    "Simulates the two joints' motor controllers on a CAN interface: follows the setpoint\n"
-    "frames of docs/can-protocol.md, publishes ARM_STATE on LCM and sends the roboRIO heartbeat.\n"
+    "Simulates the motor controller of each of the config's joints on a CAN interface: follows\n"
+    "the setpoint frames of docs/can-protocol.md, publishes ARM_STATE on LCM and sends the roboRIO\n"
+    "heartbeat.\n"
     "  --config FILE            robot and daemon config (default: the embedded reference robot)\n"
     "  --can IFACE              CAN interface (default: the config's [daemon] can_interface)\n"
     "  --lcm-url URL            LCM URL (default: the config's [daemon] lcm_url)\n"
-    "  --initial Q0,Q1          initial joint 0 and joint 1 (m or rad; default: the config's\n"
-    "                           first named pose, else the middle of both ranges)\n"
+    "  --initial Q0[,Q1[,Q2]]   initial position of each joint, one per joint of the config (m or\n"
+    "                           rad; default: the config's first named pose, else the middle of\n"
+    "                           every range)\n"
     "  --pieces NAME[,NAME...]  game pieces reported as held in ARM_STATE (the config's names)\n"
     "  --state-rate HZ          ARM_STATE rate, 1..1000 (default 100)\n"
     "  --no-heartbeat           send no roboRIO heartbeat (id 0x01011840, 20 ms)\n"
@@ -33,6 +35,7 @@ constexpr std::string_view kUsage =
     "                           from the config's drives (default 100 rad/s)\n"
     "  --joint0-gains KP,KD     joint 0's PD gains instead, V/unit and V/(unit/s) (unit: m or rad)\n"
     "  --joint1-gains KP,KD     joint 1's PD gains instead\n"
+    "  --joint2-gains KP,KD     joint 2's PD gains instead (a chain of three joints)\n"
     "  --realtime PRIO          run under SCHED_FIFO at PRIO 1..99 (needs CAP_SYS_NICE; tests\n"
     "                           use it so the heartbeat keeps its period on a busy machine)\n"
     "  --help                   this text\n"
@@ -55,6 +58,21 @@ cli::ValueHandler seconds(double* into, bool zero_allowed) {
     *into = *s;
     return "";
   };
+}
+
+// "Q0[,Q1[,Q2]]": 1 to kMaxJoints finite numbers, one comma between each two. Whether there is one
+// per joint is checked against the config once it is loaded.
+std::optional<planner::JointVector> parseJointList(std::string_view text) {
+  planner::JointVector q(0);
+  while (true) {
+    const std::size_t comma = text.find(',');
+    const auto value = cli::parseNumber(text.substr(0, comma));
+    if (!value || q.size() == kMaxJoints) return std::nullopt;
+    q.conservativeResize(q.size() + 1);
+    q[q.size() - 1] = *value;
+    if (comma == std::string_view::npos) return q;
+    text.remove_prefix(comma + 1);
+  }
 }
 
 cli::ValueHandler gains(std::optional<PdGains>* into) {
@@ -98,9 +116,9 @@ Result<SimArguments, cli::ArgumentStatus> parseSimArguments(const std::vector<st
   parser.option("--log", cli::store(o.log_path));
   parser.option("--control", cli::store(o.control_path));
   parser.option("--initial", [&](const std::string& v) -> std::string {
-    const auto q = cli::parseNumberPair(v);
-    if (!q) return "must be Q0,Q1 (joint 0, joint 1: m or rad), got '" + v + "'";
-    o.initial_q = planner::JointVector((*q)[0], (*q)[1]);
+    const auto q = parseJointList(v);
+    if (!q) return "must be Q0[,Q1[,Q2]] (one position per joint: m or rad), got '" + v + "'";
+    o.initial_q = *q;
     return "";
   });
   parser.option("--state-rate", [&](const std::string& v) -> std::string {
@@ -125,6 +143,7 @@ Result<SimArguments, cli::ArgumentStatus> parseSimArguments(const std::vector<st
   });
   parser.option("--joint0-gains", gains(&o.joint_gains[0]));
   parser.option("--joint1-gains", gains(&o.joint_gains[1]));
+  parser.option("--joint2-gains", gains(&o.joint_gains[2]));
   parser.option("--realtime", [&](const std::string& v) -> std::string {
     const auto prio = cli::parseInteger(v);
     if (!prio || *prio < 1 || *prio > 99) return "must be a priority 1..99, got '" + v + "'";

@@ -36,10 +36,11 @@ std::string stateLogHeader(const planner::JointChain& joints) {
 
 std::string stateLogRow(const StateLogRow& row) {
   std::string out = fmt::format("{:.6f},{}", row.t_s, row.utime);
-  for (int joint : {0, 1}) {
+  const auto joints = static_cast<std::size_t>(row.joint_count);
+  for (std::size_t joint = 0; joint < joints; ++joint) {
     fmt::format_to(std::back_inserter(out), ",{:.6f},{:.6f}", row.state[joint].position, row.state[joint].velocity);
   }
-  for (int joint : {0, 1}) {
+  for (std::size_t joint = 0; joint < joints; ++joint) {
     appendCommand(out, row.command[joint]);
     fmt::format_to(std::back_inserter(out), ",{:.4f}", row.applied_volts[joint]);
   }

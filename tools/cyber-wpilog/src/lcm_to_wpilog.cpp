@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <vector>
 
 #include "cyber/lcmtypes/constant_names.hpp"
 #include "cyber/lcmtypes/safe_decode.hpp"
@@ -82,6 +83,23 @@ JointNames jointNames(const planner::ChainJoint& joint) {
 
 std::string key(const JointNames& j, const std::string& what) { return j.joint + "/" + what; }
 
+// A Mechanism2d ligament: its absolute angle in the side view and its length.
+struct Ligament {
+  double angle_rad = 0.0;
+  double length_m = 0.0;
+};
+
+// The segment d, given in a frame turned by direction_rad, as a ligament whose angle stays
+// within a quarter turn of direction_rad: a segment pointing backwards is a negative length, so
+// that an elevator's ligament keeps the rail's tilt below its zero as above it instead of flipping
+// by half a turn.
+Ligament ligamentAlong(double direction_rad, const planner::Point2& d) {
+  if (d.x() == 0.0) {
+    return Ligament{direction_rad + (d.y() == 0.0 ? 0.0 : std::copysign(M_PI / 2, d.y())), std::abs(d.y())};
+  }
+  return Ligament{direction_rad + std::atan(d.y() / d.x()), std::copysign(d.norm(), d.x())};
+}
+
 // Held pieces as one string: the names joined by ',' ("none" for none).
 std::string pieceList(const std::vector<std::string>& pieces) {
   std::string out;
@@ -91,8 +109,9 @@ std::string pieceList(const std::vector<std::string>& pieces) {
 
 class Converter {
  public:
-  Converter(Entries& entries, const MechanismGeometry& geometry)
-      : e_(entries), g_(geometry), j_{jointNames(geometry.chain[0]), jointNames(geometry.chain[1])} {}
+  Converter(Entries& entries, const MechanismGeometry& geometry) : e_(entries), g_(geometry) {
+    for (const planner::ChainJoint& joint : geometry.chain) j_.push_back(jointNames(joint));
+  }
 
   // A state or setpoint of another joint count than the config's is of another robot: skipped, as
   // the daemon ignores such a state (docs/lcm.md, "Joints by index").
@@ -103,7 +122,7 @@ class Converter {
       e_.putDouble(key(j_[j], "Measured" + j_[j].velocity), t, m.velocity[j]);
     }
     e_.putString("State/Pieces", t, pieceList(m.pieces));
-    mechanism("Measured", t, m.position[0], m.position[1]);
+    mechanism("Measured", t, m.position);
   }
 
   void setpoint(uint64_t t, const cyberplanner::arm_setpoint_t& m) {
@@ -112,14 +131,15 @@ class Converter {
     e_.putString("Setpoint/Mode", t, lcmtypes::modeName(m.mode));
     e_.putInt64("Setpoint/RequestId", t, m.request_id);
     e_.putDouble("Setpoint/TrajectoryTimeSeconds", t, m.trajectory_t_s);
-    mechanism("Setpoint", t, m.position[0], m.position[1]);
+    mechanism("Setpoint", t, m.position);
   }
 
   void goal(uint64_t t, const cyberplanner::arm_goal_t& m) {
     e_.putInt64("Goal/RequestId", t, m.request_id);
     // A named goal sends no values (docs/lcm.md, "Named goals"): its name is the target.
     if (!m.pose_name.empty()) e_.putString("Goal/PoseName", t, m.pose_name);
-    if (ours(m.num_joints)) {
+    const bool named_without_values = !m.pose_name.empty() && m.num_joints == 0;
+    if (!named_without_values && ours(m.num_joints)) {
       for (size_t j = 0; j < j_.size(); ++j) e_.putDouble("Goal/" + j_[j].joint + j_[j].position, t, m.position[j]);
     }
     e_.putString("Goal/Pieces", t, pieceList(m.pieces));
@@ -184,6 +204,7 @@ class Converter {
     planned_.clear();
   }
   void setTrajectoryChannel(const std::string& channel) { channel_of_trajectories_ = channel; }
+  [[nodiscard]] int64_t otherJointCount() const { return other_joint_count_; }
 
   void daemonStatus(uint64_t t, const cyberplanner::arm_daemon_status_t& m) {
     e_.putString("Daemon/Mode", t, lcmtypes::modeName(m.mode));
@@ -206,7 +227,11 @@ class Converter {
   }
 
  private:
-  [[nodiscard]] bool ours(int num_joints) const { return num_joints == static_cast<int>(j_.size()); }
+  bool ours(int num_joints) {
+    if (num_joints == static_cast<int>(j_.size())) return true;
+    ++other_joint_count_;
+    return false;
+  }
 
   void joint(const JointNames& j, uint64_t t, double q, double v, double volts, uint8_t sequence) {
     e_.putDouble(key(j, "Setpoint" + j.position), t, q);
@@ -221,14 +246,20 @@ class Converter {
     e_.putDouble(key(j, "PlannedVolts"), t, volts);
   }
 
-  // The mechanism as AdvantageScope draws logged mechanisms: a Mechanism2d (one ligament per joint,
-  // named as the robot description names it, angles in degrees, each relative to its parent) and
-  // each link frame's robot-frame pose as a 3-D component (x forward, z up; the side view's y is z).
-  void mechanism(const std::string& which, uint64_t t, double q0, double q1) {
-    const planner::JointVector q(q0, q1);
+  // The mechanism as AdvantageScope draws logged mechanisms (docs/operations.md, "AdvantageScope"):
+  // a Mechanism2d of one ligament per joint, each the child of the one before and named as the
+  // robot description names its joint, angles in degrees relative to the parent; and each link
+  // frame's robot-frame pose as a 3-D component (x forward, z up; the side view's y is z), one per
+  // link in chain order.
+  void mechanism(const std::string& which, uint64_t t, const std::vector<double>& position) {
+    const int n = g_.chain.size();
+    if (n == 0) return;
+    planner::JointVector q(n);
+    for (int j = 0; j < n; ++j) q[j] = position[static_cast<size_t>(j)];
     const std::string m = "Mechanism2d/" + which + "/";
-    const std::string first = m + "Base/" + g_.chain[0].name + "/";
-    const std::string second = first + g_.chain[1].name + "/";
+    std::vector<std::string> ligament;  // "Mechanism2d/Measured/Base/elevator/", ".../elevator/arm/", ...
+    std::string path = m + "Base/";
+    for (const planner::ChainJoint& joint : g_.chain) ligament.push_back(path += joint.name + "/");
     if (!e_.started(m + ".type")) {
       e_.putString(m + ".type", t, "Mechanism2d");
       e_.putBoolean(m + ".controllable", t, false);
@@ -236,36 +267,47 @@ class Converter {
       e_.putString(m + "backgroundColor", t, "#000020");
       e_.putDouble(m + "Base/x", t, g_.chain[0].origin_m.x() + kMechanismOriginXM);
       e_.putDouble(m + "Base/y", t, g_.chain[0].origin_m.y());
-      e_.putString(first + ".type", t, "line");
-      e_.putString(first + "color", t, "#3070FF");
-      e_.putDouble(first + "weight", t, 8.0);
-      e_.putString(second + ".type", t, "line");
-      e_.putString(second + "color", t, which == "Measured" ? "#FF8020" : "#20FF80");
-      e_.putDouble(second + "weight", t, 6.0);
+      // The links that carry another joint in blue, the last in the colour of its entry.
+      for (int j = 0; j < n; ++j) {
+        const bool carries = j + 1 < n;
+        const std::string& l = ligament[static_cast<size_t>(j)];
+        e_.putString(l + ".type", t, "line");
+        e_.putString(l + "color", t, carries ? "#3070FF" : which == "Measured" ? "#FF8020" : "#20FF80");
+        e_.putDouble(l + "weight", t, carries ? 8.0 : 6.0);
+      }
     }
-    // A ligament points along its link's x axis (a prismatic joint's along its travel) and is as
-    // long as the travel (prismatic) or the link's outline (revolute). Angles are summed along the
-    // chain, not wrapped: a ligament turns on as its joint does.
-    const auto frames = planner::linkFrames(g_.chain, q);
-    std::array<double, planner::kJointCount> angle_rad{}, length_m{};
+    // Ligament j runs from where joint j sits in its parent's link to its end in link j's frame
+    // (MechanismGeometry): a revolute link's along the link turned by its joint, a prismatic
+    // link's along its travel from the travel's zero. Angles are summed along the chain, not
+    // wrapped: a ligament turns on as its joint does.
+    double link_rad = 0.0;  // the previous link's angle (chain.hpp: a prismatic joint keeps it)
     double parent_rad = 0.0;
-    for (int j = 0; j < planner::kJointCount; ++j) {
-      const planner::ChainJoint& joint = g_.chain[static_cast<size_t>(j)];
-      const bool slides = joint.type == planner::JointType::kPrismatic;
-      angle_rad[static_cast<size_t>(j)] = parent_rad + joint.axis_rad + (slides ? 0.0 : q[j]);
-      length_m[static_cast<size_t>(j)] = (slides ? q[j] : 0.0) + g_.link_length_m[static_cast<size_t>(j)];
-      if (!slides) parent_rad = angle_rad[static_cast<size_t>(j)];
+    for (int j = 0; j < n; ++j) {
+      const planner::ChainJoint& joint = g_.chain[j];
+      const planner::Point2& end = g_.ligament_end_m[j];
+      Ligament l;
+      if (joint.type == planner::JointType::kRevolute) {
+        link_rad += joint.axis_rad + q[j];
+        l = ligamentAlong(link_rad, end);
+      } else {
+        // The end in the frame of the travel: the carriage is q along it, and its frame keeps the
+        // parent's orientation, axis_rad off the travel.
+        const double c = std::cos(joint.axis_rad);
+        const double s = std::sin(joint.axis_rad);
+        l = ligamentAlong(link_rad + joint.axis_rad,
+                          planner::Point2(q[j] + c * end.x() + s * end.y(), -s * end.x() + c * end.y()));
+      }
+      const std::string& name = ligament[static_cast<size_t>(j)];
+      e_.putDouble(name + "angle", t, (l.angle_rad - parent_rad) * kRadToDeg);
+      e_.putDouble(name + "length", t, l.length_m);
+      parent_rad = l.angle_rad;
     }
-    e_.putDouble(first + "angle", t, angle_rad[0] * kRadToDeg);
-    e_.putDouble(first + "length", t, length_m[0]);
-    e_.putDouble(second + "angle", t, (angle_rad[1] - angle_rad[0]) * kRadToDeg);
-    e_.putDouble(second + "length", t, length_m[1]);
 
     // A rotation by -angle about +y turns +x up toward +z by angle.
-    std::array<Pose3d, planner::kJointCount> poses;
-    for (size_t k = 0; k < poses.size(); ++k) {
-      const double a = frames[k].angle_rad();
-      poses[k] = Pose3d{frames[k].origin_m.x(), 0, frames[k].origin_m.y(), std::cos(-a / 2), 0, std::sin(-a / 2), 0};
+    std::vector<Pose3d> poses;
+    for (const planner::LinkFrame& frame : planner::linkFrames(g_.chain, q)) {
+      const double a = frame.angle_rad();
+      poses.push_back(Pose3d{frame.origin_m.x(), 0, frame.origin_m.y(), std::cos(-a / 2), 0, std::sin(-a / 2), 0});
     }
     e_.putPoses("Mechanism3d/" + which, t, poses);
   }
@@ -278,14 +320,15 @@ class Converter {
   struct PlannedSample {
     int64_t t_us;
     int64_t request_id;
-    std::array<std::array<double, 3>, planner::kJointCount> joints;  // position, velocity, feedforward volts
+    std::array<std::array<double, 3>, planner::kMaxJoints> joints;  // position, velocity, feedforward volts
   };
 
   Entries& e_;
   const MechanismGeometry& g_;
-  std::array<JointNames, planner::kJointCount> j_;
+  std::vector<JointNames> j_;  // one per joint of the chain
   std::vector<PlannedSample> planned_;
   std::string channel_of_trajectories_;
+  int64_t other_joint_count_ = 0;
 };
 
 struct Event {
@@ -304,25 +347,16 @@ bool decode(const Event& event, Message* m) {
 MechanismGeometry mechanismGeometry(const planner::RobotModel& robot) {
   MechanismGeometry g;
   g.chain = robot.joints;
+  const int n = robot.jointCount();
+  planner::PerJoint<double> reach_m(n, 0.0);  // how far each link's outline reaches along its x
   for (const planner::LinkGeometry& link : robot.links) {
+    if (link.joint < 0 || link.joint >= n) continue;
     for (const planner::ConvexPolygon& p : link.polygons) {
-      for (const planner::Point2& v : p.vertices()) {
-        double& length = g.link_length_m[static_cast<size_t>(link.joint)];
-        length = std::max(length, v.x());
-      }
+      for (const planner::Point2& v : p.vertices()) reach_m[link.joint] = std::max(reach_m[link.joint], v.x());
     }
   }
-  // A revolute link that carries the next joint reaches at least to it.
-  for (int j = 0; j + 1 < planner::kJointCount; ++j) {
-    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kRevolute) {
-      double& length = g.link_length_m[static_cast<size_t>(j)];
-      length = std::max(length, g.chain[static_cast<size_t>(j) + 1].origin_m.x());
-    }
-  }
-  // A prismatic link's ligament is its travel alone (the carriage's outline is not along it).
-  for (int j = 0; j < planner::kJointCount; ++j) {
-    if (g.chain[static_cast<size_t>(j)].type == planner::JointType::kPrismatic)
-      g.link_length_m[static_cast<size_t>(j)] = 0;
+  for (int j = 0; j < n; ++j) {
+    g.ligament_end_m.push_back(j + 1 < n ? g.chain[j + 1].origin_m : planner::Point2(reach_m[j], 0.0));
   }
   return g;
 }
@@ -383,6 +417,7 @@ Result<Conversion, WpilogStatus> convertLcmLog(const std::string& lcm_path, cons
     }
   }
   converter.finish();
+  s.other_joint_count = converter.otherJointCount();
   if (s.converted == 0) {
     return Result<Conversion, WpilogStatus>::failure(
         WpilogStatus::kNoMessages,

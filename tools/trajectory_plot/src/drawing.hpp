@@ -44,8 +44,9 @@ inline Result<Done, PlotStatus> writePng(cairo_surface_t* surface, const std::st
   return Done{};
 }
 
-// The C-space map in a box with the poses marked (render_png.cpp draws it as cyber-plan --plot).
-void drawCSpaceWithPoses(cairo_t* cr, const CSpaceMap& map, const std::vector<NamedJointPose>& poses, double x,
+// The C-space view in a box with the poses marked (render_png.cpp draws it as cyber-plan --plot):
+// one joint's strip, two joints' plane, or the first of three joints' maps.
+void drawCSpaceWithPoses(cairo_t* cr, const CSpaceView& view, const std::vector<NamedJointPose>& poses, double x,
                          double y, double w, double h);
 
 }  // namespace cyber::plot::detail

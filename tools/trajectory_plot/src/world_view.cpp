@@ -68,7 +68,7 @@ std::vector<RobotPart> robotParts(const planner::RobotModel& robot, planner::Hel
 double lastLinkReach(const planner::RobotModel& robot, planner::HeldPieces pieces) {
   double reach = 0;
   for (const RobotPart& part : robotParts(robot, pieces)) {
-    if (part.link != planner::kJointCount - 1) continue;
+    if (part.link != robot.jointCount() - 1) continue;
     for (const Point2& v : part.polygon->vertices()) reach = std::max(reach, v.x());
   }
   return reach;
@@ -176,7 +176,7 @@ void drawTipTrace(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel& 
   setColor(cr, Rgb{0.05, 0.55, 0.15}, 0.8);
   cairo_set_line_width(cr, 1.5);
   for (size_t k = 0; k < move.q.size(); ++k) {
-    const Point2 tip = planner::linkFrames(robot.joints, move.q[k])[1].toWorld(Point2(reach, 0));
+    const Point2 tip = planner::linkFrames(robot.joints, move.q[k]).back().toWorld(Point2(reach, 0));
     if (k == 0) {
       cairo_move_to(cr, c.px(tip.x()), c.py(tip.y()));
     } else {
@@ -220,10 +220,20 @@ std::vector<double> frameTimes(const Move& move, int count, double clearance_tim
   return times;
 }
 
-// kNothingToDraw unless the move has samples (as many poses as times).
-Result<Done, PlotStatus> checkMove(const Move& move, const std::string& path) {
-  if (!move.q.empty() && move.q.size() == move.time_s.size()) return Done{};
-  return detail::pictureError(PlotStatus::kNothingToDraw, path, "the move has no samples");
+// kNothingToDraw unless the move has samples (as many poses as times), each of the robot's joint
+// count.
+Result<Done, PlotStatus> checkMove(const planner::RobotModel& robot, const Move& move, const std::string& path) {
+  if (move.q.empty() || move.q.size() != move.time_s.size()) {
+    return detail::pictureError(PlotStatus::kNothingToDraw, path, "the move has no samples");
+  }
+  for (const JointVector& q : move.q) {
+    if (q.size() != robot.jointCount()) {
+      return detail::pictureError(
+          PlotStatus::kNothingToDraw, path,
+          fmt::format("the move's poses have {} values, the robot {} joints", q.size(), robot.jointCount()));
+    }
+  }
+  return Done{};
 }
 
 // One frame of a move: scene, tip trace, the robot at t, the smallest clearance when at it.
@@ -269,24 +279,28 @@ void drawMoveFrame(cairo_t* cr, const WorldCanvas& c, const planner::RobotModel&
 }  // namespace
 
 WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_y, double box_w, double box_h) {
-  // Everything the robot can sweep: its polygons (every piece held) over a grid of joint values.
+  // Everything the robot can sweep: its polygons (every piece held) over a grid of joint values,
+  // kSamples per joint (9^3 poses for three joints: transforms only, no distances).
   constexpr int kSamples = 9;
   constexpr double kMargin = 0.1;
   Point2 lo = Point2::Constant(std::numeric_limits<double>::infinity());
   Point2 hi = -lo;
   const std::vector<RobotPart> parts = robotParts(robot, robot.allPieces());
-  for (int i = 0; i < kSamples; ++i) {
-    for (int k = 0; k < kSamples; ++k) {
-      const double f0 = static_cast<double>(i) / (kSamples - 1), f1 = static_cast<double>(k) / (kSamples - 1);
-      const JointVector q(robot.range(0).min + f0 * (robot.range(0).max - robot.range(0).min),
-                          robot.range(1).min + f1 * (robot.range(1).max - robot.range(1).min));
-      const auto frames = planner::linkFrames(robot.joints, q);
-      for (const RobotPart& part : parts) {
-        for (const Point2& v : part.polygon->vertices()) {
-          const Point2 w = frames[static_cast<size_t>(part.link)].toWorld(v);
-          lo = lo.cwiseMin(w);
-          hi = hi.cwiseMax(w);
-        }
+  const int n = robot.jointCount();
+  int poses = 1;
+  for (int j = 0; j < n; ++j) poses *= kSamples;
+  for (int index = 0; index < poses; ++index) {
+    JointVector q(n);
+    for (int j = 0, rest = index; j < n; ++j, rest /= kSamples) {
+      const double f = static_cast<double>(rest % kSamples) / (kSamples - 1);
+      q[j] = robot.range(j).min + f * (robot.range(j).max - robot.range(j).min);
+    }
+    const auto frames = planner::linkFrames(robot.joints, q);
+    for (const RobotPart& part : parts) {
+      for (const Point2& v : part.polygon->vertices()) {
+        const Point2 w = frames[part.link].toWorld(v);
+        lo = lo.cwiseMin(w);
+        hi = hi.cwiseMax(w);
       }
     }
   }
@@ -304,8 +318,11 @@ WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_
 Move moveOf(const TrajectoryPlotData& data) {
   Move move;
   move.time_s = data.time_s;
-  for (size_t k = 0; k < data.time_s.size(); ++k)
-    move.q.emplace_back(data.joints[0].position[k], data.joints[1].position[k]);
+  for (size_t k = 0; k < data.time_s.size(); ++k) {
+    JointVector q(static_cast<Eigen::Index>(data.joints.size()));
+    for (size_t j = 0; j < data.joints.size(); ++j) q[static_cast<Eigen::Index>(j)] = data.joints[j].position[k];
+    move.q.push_back(q);
+  }
   return move;
 }
 
@@ -347,7 +364,7 @@ Result<Done, PlotStatus> renderWorldPng(const planner::RobotModel& robot, int sc
 Result<Done, PlotStatus> renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
                                             const Move& move, int frames, const std::string& title,
                                             const std::string& path) {
-  if (auto checked = checkMove(move, path); !checked) return checked;
+  if (auto checked = checkMove(robot, move, path); !checked) return checked;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const std::vector<double> times = frameTimes(move, std::max(2, frames), smallest.time_s);
   constexpr int kPanelW = 250, kPanelH = 360, kGap = 12;
@@ -371,7 +388,7 @@ Result<Done, PlotStatus> renderFilmstripPng(const planner::RobotModel& robot, in
 Result<Done, PlotStatus> renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
                                              const Move& move, int fps, const std::string& title,
                                              const std::string& path) {
-  if (auto checked = checkMove(move, path); !checked) return checked;
+  if (auto checked = checkMove(robot, move, path); !checked) return checked;
   const Clearance smallest = smallestClearance(robot, scene, pieces, move);
   const double duration = move.time_s.back() - move.time_s.front();
   constexpr int kMaxFrames = 200;
@@ -405,7 +422,7 @@ Result<Done, PlotStatus> renderConfigPreviewPng(const planner::RobotModel& robot
   for (const NamedJointPose& p : poses) drawRobot(s.cr, c, robot, pieces, p.q, 0.55);
   cairo_set_source_rgb(s.cr, 0, 0, 0);
   for (const NamedJointPose& p : poses) {
-    const Point2 tip = planner::linkFrames(robot.joints, p.q)[1].toWorld(Point2(reach + 0.03, 0));
+    const Point2 tip = planner::linkFrames(robot.joints, p.q).back().toWorld(Point2(reach + 0.03, 0));
     text(s.cr, c.px(tip.x()), c.py(tip.y()), p.name, 11, true);
   }
   endScene(s.cr, c);

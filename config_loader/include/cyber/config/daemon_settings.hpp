@@ -1,8 +1,8 @@
 #pragma once
 // The [daemon] section: how the daemon talks to LCM and CAN and how fast it streams.
 
-#include <array>
 #include <string>
+#include <vector>
 
 namespace cyber::config {
 
@@ -14,8 +14,8 @@ inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:5810?ttl=0";
 // [daemon.devices]: one key per joint, named by the joint's [[joints]] name, and `status`. Without
 // the table, 1..N in joint order and N + 1 for the status frame: these values.
 struct DeviceNumbers {
-  std::array<int, 2> joints{1, 2};  // setpoint frames of joint 0 and joint 1 (config order)
-  int status = 3;                   // the daemon's own status frame
+  std::vector<int> joints{1, 2};  // setpoint frame of each joint (config order); the loader sets N
+  int status = 3;                 // the daemon's own status frame
 };
 
 struct ChannelNames {

@@ -15,6 +15,11 @@ inline constexpr double kMinReach_m = 0.01;
 // The shipped robots have 45 to 306 cells per joint.
 inline constexpr int kGridMinCells = 20;
 inline constexpr int kGridMaxCells = 400;
+// At most this many nodes in one grid: a three-joint chain at one clearance per step would have
+// millions, each built at start-up per scene, held set and band. More than any two-joint grid can
+// have (kGridMaxCells squared), so it changes only three-joint chains (docs/algorithm.md
+// section 2.1).
+inline constexpr double kGridMaxNodes = 262144.0;
 // The potential decays over five clearances of the robot's motion (the shipped robots: 0.15 m
 // with their 0.03 m clearance), and over at least kMinPotentialRange_m for a zero clearance.
 inline constexpr double kPotentialRangeClearances = 5.0;
@@ -25,7 +30,7 @@ struct DerivedPlannerDefaults {
   // prismatic joint; for a revolute one the distance from its axis to the farthest point of the
   // links and game pieces it carries, over the range of the joints after it (its reach).
   planner::JointVector sweep_m_per_unit;
-  // Sigma = diag((w_j / max w)^2): a step of either joint weighs the distance it moves the robot,
+  // Sigma = diag((w_j / max w)^2): a step of any joint weighs the distance it moves the robot,
   // scaled so that the joint that moves it most has weight 1.
   planner::JointVector metric;
   // Per joint, the step that moves the robot by one clearance (a diagonal step of the search, by

@@ -1,5 +1,5 @@
 #pragma once
-// A serial chain of two joints in the 2-D side view (docs/algorithm.md section 1): the frame of
+// A serial chain of one to three joints in the 2-D side view (docs/algorithm.md section 1): the frame of
 // link k is its parent's frame (the world's for link 0) moved by Trans(origin_m) and then by the
 // joint: a revolute joint turns it by axis_rad + q (q in rad); a prismatic joint slides it by
 // q (cos axis_rad, sin axis_rad) without turning it (q in m). So a prismatic joint's carriage keeps the
@@ -41,8 +41,8 @@ struct ChainJoint {
   JointRange range;                  ///< m (prismatic) or rad (revolute)
 };
 
-/// The joints in chain order, each carried by the one before it.
-using JointChain = std::array<ChainJoint, kJointCount>;
+/// The joints in chain order, each carried by the one before it (1 to kMaxJoints).
+using JointChain = PerJoint<ChainJoint>;
 
 /// A rigid frame in the world: x_world = origin_m + R(angle) x_link.
 struct LinkFrame {
@@ -79,30 +79,33 @@ inline LinkFrame childFrame(const LinkFrame& parent, const ChainJoint& joint, do
   return frame;
 }
 
-/// Both links' frames at q (index = joint index).
-inline std::array<LinkFrame, kJointCount> linkFrames(const JointChain& chain, const JointVector& q) {
-  const LinkFrame first = childFrame(LinkFrame{}, chain[0], q[0]);
-  return {first, childFrame(first, chain[1], q[1])};
+/// Every link's frame at q (index = joint index).
+inline PerJoint<LinkFrame> linkFrames(const JointChain& chain, const JointVector& q) {
+  PerJoint<LinkFrame> frames;
+  LinkFrame parent;
+  for (int j = 0; j < chain.size(); ++j) {
+    parent = childFrame(parent, chain[j], q[j]);
+    frames.push_back(parent);
+  }
+  return frames;
 }
 
 /// (x, y) -> (-y, x): rotation by +90 degrees, the derivative of R(angle) p with respect to angle.
 inline Point2 perpendicular(const Point2& v) { return Point2(-v.y(), v.x()); }
 
-/// Both links' frames at one q, with what the point Jacobians need.
+/// Every link's frame at one q, with what the point Jacobians need.
 struct ChainPose {
-  std::array<LinkFrame, kJointCount> frames;
-  std::array<JointType, kJointCount> types{JointType::kRevolute, JointType::kRevolute};
-  std::array<Point2, kJointCount> travel;  ///< a prismatic joint's direction of travel in the world
+  PerJoint<LinkFrame> frames;
+  PerJoint<JointType> types;
+  PerJoint<Point2> travel;  ///< a prismatic joint's direction of travel in the world
 
   /// Velocity of the point of link `link` now at world position x per unit joint rate: column j
   /// is dx/dq_j (zero for joints after the link; a revolute joint turns x about its origin, a
   /// prismatic one moves it along its travel).
-  [[nodiscard]] Eigen::Matrix2d pointJacobian(int link, const Point2& x_world) const {
-    Eigen::Matrix2d jacobian = Eigen::Matrix2d::Zero();
+  [[nodiscard]] PointJacobian pointJacobian(int link, const Point2& x_world) const {
+    PointJacobian jacobian = PointJacobian::Zero(2, frames.size());
     for (int j = 0; j <= link; ++j) {
-      jacobian.col(j) = types[static_cast<size_t>(j)] == JointType::kRevolute
-                            ? perpendicular(x_world - frames[static_cast<size_t>(j)].origin_m)
-                            : travel[static_cast<size_t>(j)];
+      jacobian.col(j) = types[j] == JointType::kRevolute ? perpendicular(x_world - frames[j].origin_m) : travel[j];
     }
     return jacobian;
   }
@@ -112,12 +115,12 @@ struct ChainPose {
 inline ChainPose chainPose(const JointChain& chain, const JointVector& q) {
   ChainPose pose;
   LinkFrame parent;
-  for (int j = 0; j < kJointCount; ++j) {
-    const ChainJoint& joint = chain[static_cast<size_t>(j)];
-    pose.types[static_cast<size_t>(j)] = joint.type;
-    pose.travel[static_cast<size_t>(j)] = parent.rotate(Point2(std::cos(joint.axis_rad), std::sin(joint.axis_rad)));
+  for (int j = 0; j < chain.size(); ++j) {
+    const ChainJoint& joint = chain[j];
+    pose.types.push_back(joint.type);
+    pose.travel.push_back(parent.rotate(Point2(std::cos(joint.axis_rad), std::sin(joint.axis_rad))));
     parent = childFrame(parent, joint, q[j]);
-    pose.frames[static_cast<size_t>(j)] = parent;
+    pose.frames.push_back(parent);
   }
   return pose;
 }
@@ -141,7 +144,7 @@ struct MotorParams {
   [[nodiscard]] double ktNmPerAmp() const { return stall_torque_nm / stall_current_amps; }
 };
 
-/// Coupled rigid-body dynamics of a two-joint serial chain (docs/algorithm.md section 3,
+/// Coupled rigid-body dynamics of a serial chain of one to three joints (docs/algorithm.md section 3,
 /// "Coupled rigid-body dynamics"): tau = M(q) qdd + c(q, qd) + g(q) for any pair of prismatic and
 /// revolute joints, its form along a path q(s) (linear in the path acceleration a and the path
 /// speed squared b), and the voltage and current of the motors that drive it.
@@ -184,9 +187,9 @@ struct RigidBodyDrive {
 /// Joint torques (forces) along a path: tau = alpha a + beta b + gravity, with a = s-ddot and
 /// b = s-dot^2.
 struct PathTorque {
-  JointVector alpha = JointVector::Zero();    ///< M q'
-  JointVector beta = JointVector::Zero();     ///< M q'' + c(q, q')
-  JointVector gravity = JointVector::Zero();  ///< g(q)
+  JointVector alpha;    ///< M q'
+  JointVector beta;     ///< M q'' + c(q, q')
+  JointVector gravity;  ///< g(q)
 
   [[nodiscard]] JointVector at(double a, double b) const { return alpha * a + beta * b + gravity; }
 };
@@ -206,13 +209,14 @@ struct PathVoltage {
 [[nodiscard]] PathVoltage pathVoltage(const RigidBodyDrive& drive, const PathTorque& torque, const JointVector& dq_ds,
                                       int joint);
 
-/// The chain, the two links' bodies (index = joint index) and gravity g acting in -y.
+/// The chain, its links' bodies (index = joint index) and gravity g acting in -y.
 class ChainDynamics {
  public:
-  ChainDynamics(const JointChain& chain, const std::array<LinkInertia, kJointCount>& bodies,
+  ChainDynamics(const JointChain& chain, const PerJoint<LinkInertia>& bodies,
                 double gravity_mps2 = kStandardGravityMps2);
 
-  [[nodiscard]] Eigen::Matrix2d massMatrix(const JointVector& q) const;
+  [[nodiscard]] int jointCount() const { return chain_.size(); }
+  [[nodiscard]] JointMatrix massMatrix(const JointVector& q) const;
   /// c(q, qdot): the Coriolis and centripetal terms, quadratic in qdot.
   [[nodiscard]] JointVector velocityTerms(const JointVector& q, const JointVector& qdot) const;
   [[nodiscard]] JointVector gravityTerms(const JointVector& q) const;
@@ -220,27 +224,27 @@ class ChainDynamics {
   /// Along q(s): tau = M q' a + (M q'' + c(q, q')) b + g(q), since c(q, q' sdot) = c(q, q') b.
   [[nodiscard]] PathTorque alongPath(const JointVector& q, const JointVector& dq_ds, const JointVector& d2q_ds2) const;
 
-  [[nodiscard]] const std::array<LinkInertia, kJointCount>& bodies() const { return bodies_; }
+  [[nodiscard]] const PerJoint<LinkInertia>& bodies() const { return bodies_; }
 
  private:
   /// Positions and Jacobians of the chain at one q.
   struct Kinematics {
-    std::array<Point2, kJointCount> cg_m;                  ///< each body's centre of mass, world
-    std::array<Eigen::Matrix2d, kJointCount> cg_jacobian;  ///< d cg_k / dq
-    std::array<Point2, kJointCount> pivot_m;               ///< each revolute joint's centre of rotation
-    Eigen::Matrix2d pivot1_jacobian;                       ///< d pivot_1 / dq (pivot_0 is fixed)
-    std::array<Point2, kJointCount> travel;                ///< each prismatic joint's unit direction
+    PerJoint<Point2> cg_m;                   ///< each body's centre of mass, world
+    PerJoint<PointJacobian> cg_jacobian;     ///< d cg_k / dq
+    PerJoint<Point2> pivot_m;                ///< each joint's origin (a revolute joint's centre of rotation)
+    PerJoint<PointJacobian> pivot_jacobian;  ///< d pivot_k / dq (it moves with the links before k)
+    PerJoint<Point2> travel;                 ///< each prismatic joint's unit direction
   };
 
   [[nodiscard]] Kinematics kinematics(const JointVector& q) const;
-  [[nodiscard]] Eigen::Matrix2d massMatrix(const Kinematics& k) const;
+  [[nodiscard]] JointMatrix massMatrix(const Kinematics& k) const;
   [[nodiscard]] JointVector velocityTerms(const Kinematics& k, const JointVector& qdot) const;
   [[nodiscard]] JointVector gravityTerms(const Kinematics& k) const;
 
   JointChain chain_;  ///< names dropped: copies never allocate
-  std::array<LinkInertia, kJointCount> bodies_;
+  PerJoint<LinkInertia> bodies_;
   /// Row k: d(angle of link k)/dq, constant for a planar chain (1 for each revolute joint <= k).
-  std::array<Eigen::RowVector2d, kJointCount> angle_jacobian_;
+  PerJoint<JointRow> angle_jacobian_;
   double gravity_mps2_;
 };
 
@@ -277,7 +281,7 @@ struct DriveParams {
 /// WPILib feedforward on its own, or the coupled rigid-body dynamics of the chain.
 enum class DriveKind { kFeedforward, kRigidBody };
 
-/// Both joints' drives with what their voltages need of the chain (no names: copying it allocates
+/// Every joint's drive with what its voltage needs of the chain (no names: copying it allocates
 /// nothing). Along a path a joint's voltage is alpha a + beta b + gamma sqrt(b) + offset +
 /// kS sgn(qdot) for either kind (PathVoltage, chain.hpp); its current times R is the same
 /// with gamma less the back-EMF's G q' / Kv.
@@ -285,31 +289,32 @@ class DriveModel {
  public:
   DriveModel() = default;
   /// WPILib feedforward per joint.
-  DriveModel(const JointChain& chain, const std::array<DriveParams, kJointCount>& drives);
+  DriveModel(const JointChain& chain, const PerJoint<DriveParams>& drives);
   /// Coupled rigid-body dynamics: the drives' motors, gearing, kS and limits (their kG, kV, kA are
   /// not used) driving `dynamics`.
-  DriveModel(const std::array<DriveParams, kJointCount>& drives, const ChainDynamics& dynamics);
+  DriveModel(const PerJoint<DriveParams>& drives, const ChainDynamics& dynamics);
 
   [[nodiscard]] DriveKind kind() const { return dynamics_ ? DriveKind::kRigidBody : DriveKind::kFeedforward; }
 
-  [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[static_cast<size_t>(joint)]; }
-  [[nodiscard]] const std::array<DriveParams, kJointCount>& drives() const { return drives_; }
+  [[nodiscard]] int jointCount() const { return drives_.size(); }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return drives_[joint]; }
+  [[nodiscard]] const PerJoint<DriveParams>& drives() const { return drives_; }
 
   /// psi_j(q): the absolute angle in the world of joint j's gravity term: a revolute joint's link
   /// x axis, a prismatic joint's direction of travel.
   [[nodiscard]] double gravityAngle(int joint, const JointVector& q) const;
   [[nodiscard]] JointVector volts(const JointVector& q, const JointVector& qdot, const JointVector& qddot) const;
   [[nodiscard]] JointVector amps(const JointVector& volts, const JointVector& qdot) const;
-  /// Both joints' path coefficients at one path point.
-  [[nodiscard]] std::array<PathVoltage, kJointCount> pathVoltages(const PathPoint& p) const;
+  /// Every joint's path coefficients at one path point.
+  [[nodiscard]] PerJoint<PathVoltage> pathVoltages(const PathPoint& p) const;
 
  private:
   [[nodiscard]] RigidBodyDrive rigidBodyDrive(int joint) const;
 
-  std::array<DriveParams, kJointCount> drives_{};
+  PerJoint<DriveParams> drives_;
   std::optional<ChainDynamics> dynamics_;
-  std::array<JointType, kJointCount> types_{JointType::kRevolute, JointType::kRevolute};
-  std::array<double, kJointCount> axes_rad_{};
+  PerJoint<JointType> types_;
+  PerJoint<double> axes_rad_;
 };
 
 }  // namespace cyber::planner

@@ -18,7 +18,7 @@ struct SignedDistance {
   /// d(q) when it is below the cutoff asked for; otherwise only a lower bound >= the cutoff
   /// (exact == false, gradient zero). +inf when the scene has no obstacles.
   double value = std::numeric_limits<double>::infinity();
-  JointVector gradient = JointVector::Zero();  ///< dd/dq (joint units)
+  JointVector gradient;  ///< dd/dq (joint units), one entry per joint
   bool exact = false;
   Point2 witness_robot = Point2::Zero();  ///< closest (or deepest) points, world frame
   Point2 witness_obstacle = Point2::Zero();
@@ -92,7 +92,7 @@ class CollisionWorld {
   JointChain chain_;
   std::vector<RobotPart> robot_;
   std::vector<Obstacle> obstacles_;
-  JointVector point_speed_ = JointVector::Zero();
+  JointVector point_speed_;
 };
 
 }  // namespace cyber::planner

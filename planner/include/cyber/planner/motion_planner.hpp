@@ -31,9 +31,9 @@ struct StageTimesMs {
 
 /// One move to plan: from a start (at rest or moving) to a goal at rest, with held pieces, in a scene.
 struct PlanRequest {
-  JointVector start = JointVector::Zero();           ///< (m, rad)
-  JointVector goal = JointVector::Zero();            ///< (m, rad)
-  JointVector start_velocity = JointVector::Zero();  ///< (m/s, rad/s); zero: start at rest
+  JointVector start;           ///< one value per joint (m or rad)
+  JointVector goal;            ///< one value per joint (m or rad)
+  JointVector start_velocity;  ///< (m/s or rad/s); empty or zero: start at rest
   HeldPieces pieces;
   int scene = 0;  ///< index into RobotModel::scenes
   /// Shift of the scene's field elements in x (> 0: the robot further from them), within the

@@ -39,8 +39,10 @@ namespace cyber::planner {
 
 /// The configuration-space grid each held set is searched on (docs/algorithm.md section 2.1).
 struct GridSettings {
-  /// Cell size of each joint, joint units (the loader's default: one clearance of motion per step).
-  JointVector step = JointVector(0.02, 0.02);
+  /// Cell size of each joint, joint units, one entry per joint (the loader derives it
+  /// when the description leaves it out: one clearance of motion per step). MotionPlanner::create
+  /// refuses a model whose step has not one entry per joint.
+  JointVector step;
   /// Search nodes and optimised waypoints keep this far inside the joint limits [m or rad], so that
   /// a spline through them does not overshoot a limit it runs along (observed overshoots: <= 3 mm).
   double joint_limit_margin = 0.005;
@@ -120,11 +122,15 @@ struct ToppSettings {
 
 /// The shape search (path_shaping.hpp).
 struct ShapeSearchSettings {
-  int bumps = 2;                         ///< per joint
-  int max_evaluations = 16;              ///< spline + reachability estimates
-  int grid_points = 40;                  ///< of each estimate
-  JointVector initial_step{0.03, 0.09};  ///< amplitude steps [m, rad]; about 10 ms of top speed each
-  double min_step_fraction = 0.125;      ///< stop when the steps have shrunk to this share
+  int bumps = 2;             ///< per joint
+  int max_evaluations = 16;  ///< spline + reachability estimates
+  int grid_points = 40;      ///< of each estimate
+  /// Amplitude steps in joint units: the first joint's, and every later joint's. The first joint
+  /// carries the whole chain, so the same step of it moves the robot furthest; measured on the
+  /// public moves (about 10 ms of the reference robot's top speed each).
+  double initial_step_first = 0.03;
+  double initial_step_later = 0.09;
+  double min_step_fraction = 0.125;  ///< stop when the steps have shrunk to this share
   /// A shape (here and in the refinement) is taken only when it is estimated at least this share
   /// faster: smaller gains are the estimate's noise.
   double min_gain = 1e-4;
@@ -132,10 +138,11 @@ struct ShapeSearchSettings {
 
 /// The shape search's refinement (path_shaping.hpp): more bumps, each with its own step.
 struct ShapeRefinementSettings {
-  int bumps = 6;                                                  ///< per joint
-  int max_evaluations = 100;                                      ///< spline + reachability estimates
-  int grid_points = ShapeSearchSettings{}.grid_points;            ///< of each estimate: the first search's,
-  JointVector initial_step = ShapeSearchSettings{}.initial_step;  ///< whose shape it goes on from
+  int bumps = 6;                                                         ///< per joint
+  int max_evaluations = 100;                                             ///< spline + reachability estimates
+  int grid_points = ShapeSearchSettings{}.grid_points;                   ///< of each estimate: the first search's,
+  double initial_step_first = ShapeSearchSettings{}.initial_step_first;  ///< whose shape it goes on from
+  double initial_step_later = ShapeSearchSettings{}.initial_step_later;  ///< whose shape it goes on from
   double min_step_fraction = 0.02;  ///< an amplitude whose step has shrunk to this share is done
   double max_step_fraction = 4.0;   ///< steps grow to at most this share
   double pin_width = 0.15;          ///< of the knots' arc fraction: the held window's half width (0: none)
@@ -281,9 +288,10 @@ struct EscapeSettings {
 
 /// Every tuned number of the planner, each part with its reasons; RobotModel::planner holds one.
 struct PlannerSettings {
-  /// Diagonal of Sigma: |v|^2 = v' Sigma v (the loader's default: each joint weighted by the distance
-  /// it moves the robot, the largest 1).
-  JointVector metric = JointVector(1.0, 0.1);
+  /// Diagonal of Sigma: |v|^2 = v' Sigma v, one entry per joint (the loader derives it
+  /// when the description leaves it out: each joint weighted by the distance it moves the robot,
+  /// the largest 1). MotionPlanner::create refuses a model whose metric has not one entry per joint.
+  JointVector metric;
   GridSettings grid;
   SearchSettings search;
   SmoothingSettings smoothing;

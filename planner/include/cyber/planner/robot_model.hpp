@@ -53,18 +53,25 @@ struct RobotModel {
   std::vector<GamePiece> pieces;    ///< at most HeldPieces::kMaxPieces
   std::vector<Scene> scenes;        ///< scenes.front() is the default
   double clearance_m = 0.0;
-  std::array<DriveParams, kJointCount> drives;
+  PerJoint<DriveParams> drives;  ///< one per joint
   DriveKind drive_kind = DriveKind::kFeedforward;
   /// Rigid-body drives: what moves with each link's frame (index = joint), and each piece's mass
   /// data by piece index (massless unless the description gives it).
-  std::array<LinkInertia, kJointCount> bodies{};
+  PerJoint<LinkInertia> bodies;
   std::vector<LinkInertia> piece_inertias;
   PlannerSettings planner;
 
-  [[nodiscard]] const JointRange& range(int joint) const { return joints[static_cast<size_t>(joint)].range; }
-  [[nodiscard]] const DriveParams& drive(int joint) const { return drives[static_cast<size_t>(joint)]; }
+  /// N, the number of joints of the chain (1 to kMaxJoints).
+  [[nodiscard]] int jointCount() const { return joints.size(); }
+  [[nodiscard]] const JointRange& range(int joint) const { return joints[joint].range; }
+  [[nodiscard]] const DriveParams& drive(int joint) const { return drives[joint]; }
+  /// Whether q has one value per joint, each within its range (widened by tolerance).
   [[nodiscard]] bool withinLimits(const JointVector& q, double tolerance = 0.0) const {
-    return range(0).contains(q[0], tolerance) && range(1).contains(q[1], tolerance);
+    if (q.size() != jointCount()) return false;
+    for (int j = 0; j < jointCount(); ++j) {
+      if (!range(j).contains(q[j], tolerance)) return false;
+    }
+    return true;
   }
   /// Index of a scene, a piece or a joint by name; -1 when there is none.
   [[nodiscard]] int sceneIndex(const std::string& name) const;

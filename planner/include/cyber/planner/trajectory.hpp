@@ -45,11 +45,11 @@ struct TrajectorySample {
   double s = 0.0;      ///< path parameter
   double sdot = 0.0;   ///< ds/dt
   double sddot = 0.0;  ///< d2s/dt2 (constant on each grid interval)
-  JointVector q = JointVector::Zero();
-  JointVector qdot = JointVector::Zero();
-  JointVector qddot = JointVector::Zero();
-  JointVector volts = JointVector::Zero();  ///< feedforward voltage of each joint (DriveModel::volts)
-  JointVector amps = JointVector::Zero();   ///< current of each motor of each joint (DriveModel::amps)
+  JointVector q;
+  JointVector qdot;
+  JointVector qddot;
+  JointVector volts;  ///< feedforward voltage of each joint (DriveModel::volts)
+  JointVector amps;   ///< current of each motor of each joint (DriveModel::amps)
 };
 
 /// A time-parameterised path: what a Plan carries and the daemon streams.
@@ -105,7 +105,7 @@ void forEachLimitSample(const Trajectory& trajectory, double step_s, Visit&& vis
   for (long i = 0; i <= samples; ++i) {
     const double t = i == samples ? duration : std::min(duration, static_cast<double>(i) * step_s);
     const TrajectorySample s = trajectory.sample(t);
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < s.q.size(); ++j) {
       const DriveParams& d = trajectory.drive(j);
       visit(t, j, DriveLimit::kVoltage, s.volts[j], d.voltage_limit_volts);
       visit(t, j, DriveLimit::kCurrent, s.amps[j], d.current_limit_amps);

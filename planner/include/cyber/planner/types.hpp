@@ -1,8 +1,13 @@
 #pragma once
-// Configuration-space vectors q = (q0, q1): the two joints of the chain in chain order, each in
-// its own unit (m for a prismatic joint, rad for a revolute one; docs/algorithm.md section 1).
+// Configuration-space vectors q = (q0, ..., q{N-1}): the N joints of the chain (1 <= N <= 3) in
+// chain order, each in its own unit (m for a prismatic joint, rad for a revolute one;
+// docs/algorithm.md section 1). N is read from the robot description, not compiled in: a
+// JointVector carries its own size in a fixed capacity, so making one never allocates.
 
+#include <array>
+#include <cassert>
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -15,10 +20,63 @@
 
 namespace cyber::planner {
 
-using JointVector = Eigen::Vector2d;  ///< joint positions (or their rates), chain order
-using Point2 = Eigen::Vector2d;       ///< a point in the 2-D side view [m]
+/// The most joints a chain may have: the grids and roadmaps of docs/algorithm.md section 2 grow
+/// with the power of the joint count, and no FRC superstructure we know of has more than three.
+inline constexpr int kMaxJoints = 3;
 
-inline constexpr int kJointCount = 2;
+/// Joint positions (or their rates), chain order: N entries in a fixed capacity of kMaxJoints.
+using JointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kMaxJoints, 1>;
+/// An N x N matrix of the joints (a mass matrix), fixed capacity.
+using JointMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, kMaxJoints, kMaxJoints>;
+/// A 2 x N Jacobian: how a point of the side view moves per unit of each joint.
+using PointJacobian = Eigen::Matrix<double, 2, Eigen::Dynamic, Eigen::ColMajor, 2, kMaxJoints>;
+/// A 1 x N row: how one angle moves per unit of each joint.
+using JointRow = Eigen::Matrix<double, 1, Eigen::Dynamic, Eigen::RowMajor, 1, kMaxJoints>;
+using Point2 = Eigen::Vector2d;  ///< a point in the 2-D side view [m]
+
+/// One value per joint, chain order, in a fixed capacity: copying one never allocates (unless T
+/// does).
+template <class T>
+class PerJoint {
+ public:
+  PerJoint() = default;
+  explicit PerJoint(int count, const T& value = T{}) : count_(count) {
+    assert(count >= 0 && count <= kMaxJoints);
+    for (int j = 0; j < count; ++j) items_[static_cast<size_t>(j)] = value;
+  }
+  PerJoint(std::initializer_list<T> items) : count_(static_cast<int>(items.size())) {
+    assert(items.size() <= static_cast<size_t>(kMaxJoints));
+    std::size_t j = 0;
+    for (const T& item : items) items_[j++] = item;
+  }
+
+  [[nodiscard]] int size() const { return count_; }
+  [[nodiscard]] bool empty() const { return count_ == 0; }
+  T& operator[](int j) { return items_[static_cast<size_t>(j)]; }
+  const T& operator[](int j) const { return items_[static_cast<size_t>(j)]; }
+  T& operator[](size_t j) { return items_[j]; }
+  const T& operator[](size_t j) const { return items_[j]; }
+  T& front() { return items_[0]; }
+  const T& front() const { return items_[0]; }
+  T& back() { return items_[static_cast<size_t>(count_ - 1)]; }
+  const T& back() const { return items_[static_cast<size_t>(count_ - 1)]; }
+  void push_back(const T& item) {
+    assert(count_ < kMaxJoints);
+    items_[static_cast<size_t>(count_++)] = item;
+  }
+  void resize(int count) {
+    assert(count >= 0 && count <= kMaxJoints);
+    count_ = count;
+  }
+  T* begin() { return items_.data(); }
+  T* end() { return items_.data() + count_; }
+  const T* begin() const { return items_.data(); }
+  const T* end() const { return items_.data() + count_; }
+
+ private:
+  std::array<T, kMaxJoints> items_{};
+  int count_ = 0;
+};
 
 /// The game pieces held, as a set of indices into RobotModel::pieces. Each held piece adds
 /// polygons; none removes any.
@@ -82,9 +140,9 @@ using Result = cyber::Result<T, PlanStatus>;
 
 /// A point of a geometric path with its first and second derivatives in s.
 struct PathPoint {
-  JointVector q = JointVector::Zero();
-  JointVector dq_ds = JointVector::Zero();    ///< q'(s)
-  JointVector d2q_ds2 = JointVector::Zero();  ///< q''(s)
+  JointVector q;
+  JointVector dq_ds;    ///< q'(s)
+  JointVector d2q_ds2;  ///< q''(s)
 };
 
 /// A geometric path q(s), s in [0, length]: what the path stage produces and TOPP consumes.

@@ -166,7 +166,7 @@ double straightEstimate(const JointVector& from, const JointVector& to, const Dr
 double slowerJointAlone(const JointVector& from, const JointVector& to, const DriveModel& drives,
                         const JointVector& metric, int grid_points) {
   double slower = 0.0;
-  for (int joint = 0; joint < kJointCount; ++joint) {
+  for (int joint = 0; joint < from.size(); ++joint) {
     JointVector alone = from;
     alone[joint] = to[joint];
     slower = std::max(slower, straightEstimate(from, alone, drives, metric, grid_points));

@@ -12,20 +12,26 @@ namespace {
 std::vector<std::uint8_t> bandAround(const CSpaceGrid& grid, const std::vector<int>& cells, int radius) {
   std::vector<std::uint8_t> band(static_cast<size_t>(grid.cellCount()), 0);
   if (cells.empty()) return band;
-  const int ni = grid.firstAxis().count, nj = grid.secondAxis().count;
-  auto near_end = [&](int i, int j) {
-    for (int end : {cells.front(), cells.back()}) {
-      if (std::abs(i - grid.firstIndex(end)) <= radius && std::abs(j - grid.secondIndex(end)) <= radius) return true;
+  const auto dims = static_cast<size_t>(grid.dimensions());
+  const GridIndex ends[2] = {grid.indices(cells.front()), grid.indices(cells.back())};
+  auto near_end = [&](const GridIndex& idx) {
+    for (const GridIndex& end : ends) {
+      bool near = true;
+      for (size_t d = 0; d < dims; ++d) near = near && std::abs(idx[d] - end[d]) <= radius;
+      if (near) return true;
     }
     return false;
   };
   for (int cell : cells) {
-    const int i0 = grid.firstIndex(cell), j0 = grid.secondIndex(cell);
-    for (int i = std::max(0, i0 - radius); i <= std::min(ni - 1, i0 + radius); ++i) {
-      for (int j = std::max(0, j0 - radius); j <= std::min(nj - 1, j0 + radius); ++j) {
-        if (!near_end(i, j)) band[static_cast<size_t>(grid.cell(i, j))] = 1;
-      }
+    const GridIndex centre = grid.indices(cell);
+    GridIndex lo{}, hi{};
+    for (size_t d = 0; d < dims; ++d) {
+      lo[d] = centre[d] - radius;
+      hi[d] = centre[d] + radius;
     }
+    grid.forEachInBox(lo, hi, [&](const GridIndex& idx, int c) {
+      if (!near_end(idx)) band[static_cast<size_t>(c)] = 1;
+    });
   }
   return band;
 }

@@ -111,8 +111,8 @@ TEST(LcmMessages, StatesMustBeFiniteAndNearTheJointRanges) {
   message.velocity = {0.1, -0.2};
   auto state = stateFromMessage(message, robot);
   ASSERT_TRUE(state);
-  EXPECT_EQ(state->q, JointVector(0.5, 1.0));
-  EXPECT_EQ(state->qdot, JointVector(0.1, -0.2));
+  EXPECT_EQ(state->q, (JointVector{{0.5, 1.0}}));
+  EXPECT_EQ(state->qdot, (JointVector{{0.1, -0.2}}));
   message.position[0] = -0.3;  // a little below the limit: still the mechanism's position
   EXPECT_TRUE(stateFromMessage(message, robot));
   message.position[0] = -0.6;
@@ -171,7 +171,7 @@ TEST(LcmMessages, StatusCarriesStatusReasonTimesAndDuration) {
 TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
   const auto& robot = cyber::test::referenceModel();
   auto trajectory =
-      daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), 1.234, robot);
+      daemon::test::makeHermite(JointVector{{0.1, 1.0}}, JointVector::Zero(2), JointVector{{1.5, 2.5}}, 1.234, robot);
   const auto message = trajectoryMessage(4, *trajectory, 2, 1000, 0.01, 2000);
   EXPECT_EQ(message.request_id, 4);
   EXPECT_EQ(message.start_utime, 1000);
@@ -202,8 +202,8 @@ TEST(LcmMessages, TrajectoryIsSampledAtTheStepAndCoversTheWholeMotion) {
 TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
   const auto& robot = cyber::test::referenceModel();
   for (double duration : {9.98, 9.99, 10.0, 33.3, 120.0}) {
-    auto trajectory =
-        daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(1.5, 2.5), duration, robot);
+    auto trajectory = daemon::test::makeHermite(JointVector{{0.1, 1.0}}, JointVector::Zero(2), JointVector{{1.5, 2.5}},
+                                                duration, robot);
     const auto message = trajectoryMessage(1, *trajectory, 2, 0, 0.01, 0);
     EXPECT_LE(message.num_samples, cyberplanner::arm_trajectory_t::MAX_SAMPLES) << duration;
     EXPECT_GE(message.dt_s, 0.01);
@@ -214,7 +214,8 @@ TEST(LcmMessages, LongTrajectoriesAreCappedAtMaxSamplesAndStayUnder60kB) {
     EXPECT_LT(message.getEncodedSize(), 60000);
   }
   EXPECT_EQ(maxTrajectorySamples(2), cyberplanner::arm_trajectory_t::MAX_SAMPLES);
-  auto still = daemon::test::makeHermite(JointVector(0.1, 1.0), JointVector::Zero(), JointVector(0.1, 1.0), 0.0, robot);
+  auto still =
+      daemon::test::makeHermite(JointVector{{0.1, 1.0}}, JointVector::Zero(2), JointVector{{0.1, 1.0}}, 0.0, robot);
   EXPECT_EQ(trajectoryMessage(1, *still, 2, 0, 0.01, 0).num_samples, 1);
 }
 

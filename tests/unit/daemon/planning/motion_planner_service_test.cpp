@@ -113,7 +113,7 @@ TEST(MotionPlannerService, AStopRequestIsThePlannersFastestStop) {
   EXPECT_GT(stop.value().times_ms.total, 0.0);
 
   // At rest there is nothing to stop: the planner's own error, as a value.
-  request.start_velocity = JointVector::Zero();
+  request.start_velocity = JointVector::Zero(2);
   EXPECT_EQ(service.value()->plan(request).status(), planner::PlanStatus::kInvalidInput);
   request.start_velocity = moving.qdot;
   request.scene = 7;

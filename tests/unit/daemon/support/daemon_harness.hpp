@@ -226,7 +226,7 @@ class Harness {
   GateSettings settings_gate_;
   Streamer streamer_;
   GoalCoordinator coordinator_;
-  JointVector last_position_ = JointVector::Zero();
+  JointVector last_position_ = JointVector::Zero(2);
 };
 
 }  // namespace cyber::daemon::test

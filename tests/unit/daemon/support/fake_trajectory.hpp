@@ -28,7 +28,8 @@ class HermiteTrajectory final : public SetpointSource {
     JointSetpoints out;
     if (duration_s_ <= 0.0) {
       out.position = p1_;
-      out.volts = drives_.volts(p1_, JointVector::Zero(), JointVector::Zero());
+      out.velocity = JointVector::Zero(p1_.size());
+      out.volts = drives_.volts(p1_, JointVector::Zero(p1_.size()), JointVector::Zero(p1_.size()));
       return out;
     }
     const double T = duration_s_;
@@ -59,6 +60,8 @@ class NanAfterTrajectory final : public SetpointSource {
   [[nodiscard]] JointSetpoints at(double t_s) const override {
     JointSetpoints s;
     s.position = position_;
+    s.velocity = JointVector::Zero(position_.size());
+    s.volts = JointVector::Zero(position_.size());
     if (t_s > nan_after_s_) s.position[0] = std::numeric_limits<double>::quiet_NaN();
     return s;
   }

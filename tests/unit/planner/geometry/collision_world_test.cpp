@@ -23,7 +23,7 @@ JointVector randomPose(std::mt19937& rng) {
   std::uniform_real_distribution<double> t(model().range(0).min, model().range(0).max);
   std::uniform_real_distribution<double> th(model().range(1).min, model().range(1).max);
   const double t_m = t(rng);  // drawn in sequence: argument order is unspecified
-  return JointVector(t_m, th(rng));
+  return JointVector{{t_m, th(rng)}};
 }
 
 std::vector<Point2> normalsOf(const std::vector<Point2>& v) {
@@ -140,7 +140,7 @@ TEST(CollisionWorld, GradientMatchesCentralDifferences) {
       const double h = 1e-7;
       JointVector central, forward, backward;
       for (int j = 0; j < 2; ++j) {
-        JointVector dq = JointVector::Zero();
+        JointVector dq = JointVector::Zero(2);
         dq[j] = h;
         const double plus = world.distance(q + dq).value;
         const double minus = world.distance(q - dq).value;
@@ -163,7 +163,7 @@ TEST(CollisionWorld, GradientMatchesCentralDifferences) {
 
 TEST(CollisionWorld, EmptySceneIsInfinitelyFarAway) {
   const CollisionWorld world(model(), Scene{"empty", {}, {}, {}}, HeldPieces{});
-  const SignedDistance d = world.distance(JointVector(1.0, 1.0));
+  const SignedDistance d = world.distance(JointVector{{1.0, 1.0}});
   EXPECT_FALSE(d.exact);
   EXPECT_TRUE(std::isinf(d.value));
 }

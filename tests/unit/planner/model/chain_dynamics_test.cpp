@@ -23,8 +23,8 @@ double derivative(F&& f, double h) {
 }
 
 struct Model {
-  JointChain chain;
-  std::array<LinkInertia, kJointCount> bodies;
+  JointChain chain = JointChain(2);
+  PerJoint<LinkInertia> bodies = PerJoint<LinkInertia>(2);
 };
 
 double lagrangian(const Model& model, const JointVector& q, const JointVector& qdot) {
@@ -32,7 +32,7 @@ double lagrangian(const Model& model, const JointVector& q, const JointVector& q
   double kinetic = 0.0;
   double potential = 0.0;
   const auto frames = linkFrames(model.chain, q);
-  for (int i = 0; i < kJointCount; ++i) {
+  for (int i = 0; i < 2; ++i) {
     const LinkInertia& body = model.bodies[i];
     const auto along = [&](double t) { return linkFrames(model.chain, q + t * qdot)[i]; };
     const Point2 velocity(derivative([&](double t) { return along(t).toWorld(body.cg_m).x(); }, kStep),
@@ -48,9 +48,9 @@ double lagrangian(const Model& model, const JointVector& q, const JointVector& q
 
 JointVector numericTorque(const Model& model, const JointVector& q, const JointVector& qdot, const JointVector& qddot) {
   constexpr double kStep = 1e-3;
-  JointVector tau;
-  for (int j = 0; j < kJointCount; ++j) {
-    const JointVector unit = JointVector::Unit(j);
+  JointVector tau(2);
+  for (int j = 0; j < 2; ++j) {
+    const JointVector unit = JointVector::Unit(2, j);
     const auto momentum = [&](const JointVector& at_q, const JointVector& at_qdot) {
       return derivative([&](double e) { return lagrangian(model, at_q, at_qdot + e * unit); }, kStep);
     };
@@ -96,9 +96,9 @@ TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForEveryJointTypePair) {
       for (int trial = 0; trial < 20; ++trial) {
         const Model model = randomModel(first, second, rng);
         const ChainDynamics dynamics(model.chain, model.bodies);
-        const JointVector q(position(rng), position(rng));
-        const JointVector qdot(rate(rng), rate(rng));
-        const JointVector qddot(rate(rng), rate(rng));
+        const JointVector q{{position(rng), position(rng)}};
+        const JointVector qdot{{rate(rng), rate(rng)}};
+        const JointVector qddot{{rate(rng), rate(rng)}};
         const JointVector expected = numericTorque(model, q, qdot, qddot);
         const JointVector actual = dynamics.torque(q, qdot, qddot);
         // Torques are of order 10-100 N m here; the nested differences agree to 2.5e-7 relative.
@@ -106,9 +106,9 @@ TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForEveryJointTypePair) {
             << "q " << q.transpose() << " qdot " << qdot.transpose() << " qddot " << qddot.transpose() << "\nactual "
             << actual.transpose() << "\nnumeric " << expected.transpose();
         // The split itself: at rest only gravity remains, and c carries all of the velocity.
-        EXPECT_LT((dynamics.torque(q, JointVector::Zero(), JointVector::Zero()) - dynamics.gravityTerms(q)).norm(),
+        EXPECT_LT((dynamics.torque(q, JointVector::Zero(2), JointVector::Zero(2)) - dynamics.gravityTerms(q)).norm(),
                   1e-12);
-        EXPECT_LT((numericTorque(model, q, qdot, JointVector::Zero()) - dynamics.gravityTerms(q) -
+        EXPECT_LT((numericTorque(model, q, qdot, JointVector::Zero(2)) - dynamics.gravityTerms(q) -
                    dynamics.velocityTerms(q, qdot))
                       .norm(),
                   5e-6 * (1.0 + expected.norm()));
@@ -126,7 +126,7 @@ TEST(ChainDynamics, MassMatrixIsSymmetricPositiveDefiniteForEveryJointTypePair) 
       for (int trial = 0; trial < 50; ++trial) {
         const Model model = randomModel(first, second, rng);
         const ChainDynamics dynamics(model.chain, model.bodies);
-        const Eigen::Matrix2d m = dynamics.massMatrix(JointVector(position(rng), position(rng)));
+        const Eigen::Matrix2d m = dynamics.massMatrix(JointVector{{position(rng), position(rng)}});
         EXPECT_LT(std::abs(m(0, 1) - m(1, 0)), 1e-12 * m.norm());
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(m);
         EXPECT_GT(eigen.eigenvalues().minCoeff(), 1e-6) << m;
@@ -146,9 +146,9 @@ TEST(ChainDynamics, PathFormIsTheTorqueOfTheMotionAlongThePath) {
       for (int trial = 0; trial < 50; ++trial) {
         const Model model = randomModel(first, second, rng);
         const ChainDynamics dynamics(model.chain, model.bodies);
-        const JointVector q(position(rng), position(rng));
-        const JointVector dq_ds(derivative_value(rng), derivative_value(rng));
-        const JointVector d2q_ds2(derivative_value(rng), derivative_value(rng));
+        const JointVector q{{position(rng), position(rng)}};
+        const JointVector dq_ds{{derivative_value(rng), derivative_value(rng)}};
+        const JointVector d2q_ds2{{derivative_value(rng), derivative_value(rng)}};
         const double a = derivative_value(rng);
         const double b = speed_squared(rng);
         // eq. 11: qdot = q' sqrt(b), qddot = q'' b + q' a.
@@ -211,29 +211,29 @@ TEST(ChainDynamics, CombiningWithNothingChangesNothing) {
 TEST(ChainDynamics, StaticTorquesOfHandWorkedCases) {
   const double g = kStandardGravityMps2;
   // A horizontal arm (mass 2 kg, cg 0.4 m out) on a shoulder; the second link carries nothing.
-  JointChain arm;
+  JointChain arm(2);
   arm[0] = ChainJoint{"shoulder", JointType::kRevolute, Point2(0.0, 0.5), 0.0, {}};
   arm[1] = ChainJoint{"elbow", JointType::kRevolute, Point2(0.7, 0.0), 0.0, {}};
   const ChainDynamics single(arm, {LinkInertia{2.0, Point2(0.4, 0.0), 0.1}, LinkInertia{}});
-  EXPECT_NEAR(single.gravityTerms(JointVector(0.0, 1.0))[0], 2.0 * g * 0.4, 1e-12);
-  EXPECT_NEAR(single.gravityTerms(JointVector(M_PI / 2.0, 1.0))[0], 0.0, 1e-12);
-  EXPECT_NEAR(single.gravityTerms(JointVector(M_PI / 3.0, 1.0))[0], 2.0 * g * 0.4 * 0.5, 1e-12);
+  EXPECT_NEAR(single.gravityTerms(JointVector{{0.0, 1.0}})[0], 2.0 * g * 0.4, 1e-12);
+  EXPECT_NEAR(single.gravityTerms(JointVector{{M_PI / 2.0, 1.0}})[0], 0.0, 1e-12);
+  EXPECT_NEAR(single.gravityTerms(JointVector{{M_PI / 3.0, 1.0}})[0], 2.0 * g * 0.4 * 0.5, 1e-12);
   // Spinning it needs no torque at constant rate: the centripetal force passes through the pivot.
-  EXPECT_NEAR(single.velocityTerms(JointVector(0.3, 1.0), JointVector(5.0, 0.0))[0], 0.0, 1e-12);
+  EXPECT_NEAR(single.velocityTerms(JointVector{{0.3, 1.0}}, (JointVector{{5.0, 0.0}}))[0], 0.0, 1e-12);
   // Its inertia about the pivot: I + m r^2.
-  EXPECT_NEAR(single.massMatrix(JointVector(0.3, 1.0))(0, 0), 0.1 + 2.0 * 0.16, 1e-12);
+  EXPECT_NEAR(single.massMatrix(JointVector{{0.3, 1.0}})(0, 0), 0.1 + 2.0 * 0.16, 1e-12);
 
   // A vertical elevator (carriage 5 kg) carrying a horizontal arm (1.5 kg, cg 0.3 m out).
-  JointChain elevator;
+  JointChain elevator(2);
   elevator[0] = ChainJoint{"lift", JointType::kPrismatic, Point2(0.1, 0.2), M_PI / 2.0, {}};
   elevator[1] = ChainJoint{"arm", JointType::kRevolute, Point2::Zero(), 0.0, {}};
   const ChainDynamics lift(elevator,
                            {LinkInertia{5.0, Point2(0.0, 0.1), 0.2}, LinkInertia{1.5, Point2(0.3, 0.0), 0.02}});
-  const JointVector gravity = lift.gravityTerms(JointVector(0.6, 0.0));
+  const JointVector gravity = lift.gravityTerms(JointVector{{0.6, 0.0}});
   EXPECT_NEAR(gravity[0], 6.5 * g, 1e-12);
   EXPECT_NEAR(gravity[1], 1.5 * g * 0.3, 1e-12);
   // The carriage does not turn: its own moment of inertia never appears.
-  EXPECT_NEAR(lift.massMatrix(JointVector(0.6, 0.0))(0, 0), 6.5, 1e-12);
+  EXPECT_NEAR(lift.massMatrix(JointVector{{0.6, 0.0}})(0, 0), 6.5, 1e-12);
 }
 
 // --- The referee: ../shared/tools/verify-trajectory's dynamics(), torque(), Drive.rigid_volts()
@@ -246,7 +246,7 @@ MotorParams motorFromReference(double stall_torque, double stall_current, double
 
 struct ReferenceCase {
   Model model;
-  std::array<RigidBodyDrive, kJointCount> drives;
+  PerJoint<RigidBodyDrive> drives = PerJoint<RigidBodyDrive>(2);
   JointVector q, qdot, qddot;
   JointVector torque, volts, amps;  // the referee's
 };
@@ -254,7 +254,7 @@ struct ReferenceCase {
 void expectReferee(const ReferenceCase& c) {
   const ChainDynamics dynamics(c.model.chain, c.model.bodies);
   const JointVector tau = dynamics.torque(c.q, c.qdot, c.qddot);
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < 2; ++j) {
     SCOPED_TRACE(j);
     EXPECT_NEAR(tau[j], c.torque[j], 1e-9 * std::abs(c.torque[j]));
     const double volts = c.drives[j].volts(tau[j], c.qdot[j]);
@@ -278,12 +278,12 @@ TEST(ChainDynamics, MatchesTheRefereeOnTheDoubleJointedArmHoldingACone) {
   EXPECT_NEAR(c.model.bodies[1].moi_kgm2, 0.30937569508500357, 1e-12);
   const MotorParams neo = motorFromReference(2.6, 105.0, 1.8, 5676.0);
   c.drives = {RigidBodyDrive{neo, 2, 197.0, 0.0, 10.0, 30.0}, RigidBodyDrive{neo, 1, 200.0, 0.0, 10.0, 30.0}};
-  c.q = JointVector(1.2, 3.9);
-  c.qdot = JointVector(0.7, -1.3);
-  c.qddot = JointVector(2.0, -3.0);
-  c.torque = JointVector(25.018709709967677, 5.6221911244124856);
-  c.volts = JointVector(3.0293810532543155, -5.02935762085104);
-  c.amps = JointVector(2.5643933224781379, 1.1352501308909824);
+  c.q = JointVector{{1.2, 3.9}};
+  c.qdot = JointVector{{0.7, -1.3}};
+  c.qddot = JointVector{{2.0, -3.0}};
+  c.torque = JointVector{{25.018709709967677, 5.6221911244124856}};
+  c.volts = JointVector{{3.0293810532543155, -5.02935762085104}};
+  c.amps = JointVector{{2.5643933224781379, 1.1352501308909824}};
   expectReferee(c);
 }
 
@@ -296,12 +296,12 @@ TEST(ChainDynamics, MatchesTheRefereeOnThePivotTelescopeHoldingABall) {
   c.model.bodies = {LinkInertia{3.5, Point2(0.22, 0.0), 0.15}, combine(LinkInertia{3.0, Point2(0.4, 0.0), 0.12}, ball)};
   const MotorParams kraken = motorFromReference(7.09, 366.0, 2.0, 6000.0);
   c.drives = {RigidBodyDrive{kraken, 2, 80.0, 0.15, 12.0, 60.0}, RigidBodyDrive{kraken, 1, 350.0, 0.2, 12.0, 40.0}};
-  c.q = JointVector(0.8, 0.5);
-  c.qdot = JointVector(-0.9, 0.6);
-  c.qddot = JointVector(1.5, -2.0);
-  c.torque = JointVector(27.315481074840964, 13.937345353664366);
-  c.volts = JointVector(-1.2286337206116487, 4.2561861504419713);
-  c.amps = JointVector(4.2379990068686455, 8.1556390890353292);
+  c.q = JointVector{{0.8, 0.5}};
+  c.qdot = JointVector{{-0.9, 0.6}};
+  c.qddot = JointVector{{1.5, -2.0}};
+  c.torque = JointVector{{27.315481074840964, 13.937345353664366}};
+  c.volts = JointVector{{-1.2286337206116487, 4.2561861504419713}};
+  c.amps = JointVector{{4.2379990068686455, 8.1556390890353292}};
   expectReferee(c);
 }
 
@@ -309,9 +309,9 @@ TEST(ChainDynamics, MatchesTheRefereeOnThePivotTelescopeHoldingABall) {
 // the link axis): ../shared/tools/verify-trajectory's torque() called with python3 on these joints
 // and bodies, at q (0.4, 0.7), qdot (0.5, -1.1), qddot (1.3, 0.4).
 TEST(ChainDynamics, MatchesTheRefereesClosedFormsForAnElevatorPairAndTwoSlides) {
-  const JointVector q(0.4, 0.7), qdot(0.5, -1.1), qddot(1.3, 0.4);
+  const JointVector q{{0.4, 0.7}}, qdot{{0.5, -1.1}}, qddot{{1.3, 0.4}};
   const double deg = M_PI / 180.0;
-  JointChain elevator_arm;
+  JointChain elevator_arm(2);
   elevator_arm[0] = ChainJoint{"lift", JointType::kPrismatic, Point2(0.1, 0.2), 80.0 * deg, {}};
   elevator_arm[1] = ChainJoint{"arm", JointType::kRevolute, Point2(0.05, 0.3), 10.0 * deg, {}};
   const ChainDynamics pr(elevator_arm,
@@ -320,7 +320,7 @@ TEST(ChainDynamics, MatchesTheRefereesClosedFormsForAnElevatorPairAndTwoSlides) 
   EXPECT_NEAR(pr_tau[0], 70.77123530340684, 1e-9);
   EXPECT_NEAR(pr_tau[1], 2.5365136106389561, 1e-9);
 
-  JointChain slides;
+  JointChain slides(2);
   slides[0] = ChainJoint{"up", JointType::kPrismatic, Point2(0.0, 0.1), 90.0 * deg, {}};
   slides[1] = ChainJoint{"out", JointType::kPrismatic, Point2(0.1, 0.0), 30.0 * deg, {}};
   const ChainDynamics pp(slides, {LinkInertia{4.0, Point2(0.1, 0.1), 0.1}, LinkInertia{2.0, Point2(0.2, -0.1), 0.05}});
@@ -336,18 +336,18 @@ TEST(ChainDynamics, PathVoltageIsTheDriveVoltageAlongThePath) {
   const Model model = randomModel(JointType::kRevolute, JointType::kPrismatic, rng);
   const ChainDynamics dynamics(model.chain, model.bodies);
   const MotorParams kraken = motorFromReference(7.09, 366.0, 2.0, 6000.0);
-  const std::array<RigidBodyDrive, kJointCount> drives = {RigidBodyDrive{kraken, 2, 80.0, 0.15, 12.0, 60.0},
-                                                          RigidBodyDrive{kraken, 1, 350.0, 0.2, 12.0, 40.0}};
+  const PerJoint<RigidBodyDrive> drives = {RigidBodyDrive{kraken, 2, 80.0, 0.15, 12.0, 60.0},
+                                           RigidBodyDrive{kraken, 1, 350.0, 0.2, 12.0, 40.0}};
   for (int trial = 0; trial < 50; ++trial) {
-    const JointVector q(value(rng), value(rng));
-    const JointVector dq_ds(value(rng), value(rng));
-    const JointVector d2q_ds2(value(rng), value(rng));
+    const JointVector q{{value(rng), value(rng)}};
+    const JointVector dq_ds{{value(rng), value(rng)}};
+    const JointVector d2q_ds2{{value(rng), value(rng)}};
     const double a = value(rng);
     const double b = speed_squared(rng);
     const JointVector qdot = dq_ds * std::sqrt(b);
     const JointVector tau = dynamics.torque(q, qdot, dq_ds * a + d2q_ds2 * b);
     const PathTorque path = dynamics.alongPath(q, dq_ds, d2q_ds2);
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < 2; ++j) {
       const PathVoltage v = pathVoltage(drives[j], path, dq_ds, j);
       const double coulomb = drives[j].kS_volts * (dq_ds[j] > 0.0 ? 1.0 : -1.0);
       const double volts = v.alpha * a + v.beta * b + v.gamma * std::sqrt(b) + v.offset + coulomb;

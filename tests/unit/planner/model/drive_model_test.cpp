@@ -55,7 +55,7 @@ double kt(const MotorParams& m) { return m.stall_torque_nm / m.stall_current_amp
 // would draw different vectors).
 JointVector draw(std::uniform_real_distribution<double>& d, std::mt19937& rng) {
   const double first = d(rng);
-  return JointVector(first, d(rng));
+  return JointVector{{first, d(rng)}};
 }
 
 // A chain of each pair of joint types, with seeded origins and axes.
@@ -64,7 +64,7 @@ std::vector<JointChain> everyJointTypePair(std::mt19937& rng) {
   std::vector<JointChain> chains;
   for (const JointType first : {JointType::kPrismatic, JointType::kRevolute}) {
     for (const JointType second : {JointType::kPrismatic, JointType::kRevolute}) {
-      JointChain& chain = chains.emplace_back();
+      JointChain& chain = chains.emplace_back(2);
       const double x0 = u(rng), y0 = u(rng), axis0 = axis(rng), x1 = u(rng), y1 = u(rng), axis1 = axis(rng);
       chain[0] = ChainJoint{"first", first, Point2(x0, y0), axis0, {-3.0, 3.0}};
       chain[1] = ChainJoint{"second", second, Point2(x1, y1), axis1, {-3.0, 3.0}};
@@ -121,7 +121,7 @@ TEST(DriveModel, GravityAngleIsTheJointsDirectionInTheWorld) {
     for (int i = 0; i < 50; ++i) {
       const JointVector at = draw(q, rng);
       const ChainPose pose = chainPose(chain, at);
-      for (int j = 0; j < kJointCount; ++j) {
+      for (int j = 0; j < 2; ++j) {
         const Point2 direction = chain[static_cast<size_t>(j)].type == JointType::kRevolute
                                      ? pose.frames[static_cast<size_t>(j)].rotate(Point2(1.0, 0.0))
                                      : pose.travel[static_cast<size_t>(j)];
@@ -137,14 +137,14 @@ TEST(DriveModel, FeedforwardVoltsAndAmpsAreEachJointsOwn) {
   std::mt19937 rng(4);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
   const JointChain chain = everyJointTypePair(rng)[1];  // an arm on an elevator
-  const std::array<DriveParams, kJointCount> params{drive(GravityModel::kSine, 0.15, 0.37, 3.93, 0.038),
-                                                    drive(GravityModel::kCosine, 0.2, 0.21, 1.18, 0.0056)};
+  const PerJoint<DriveParams> params{drive(GravityModel::kSine, 0.15, 0.37, 3.93, 0.038),
+                                     drive(GravityModel::kCosine, 0.2, 0.21, 1.18, 0.0056)};
   const DriveModel drives(chain, params);
   for (int i = 0; i < 100; ++i) {
     const JointVector q = draw(u, rng), qdot = draw(u, rng), qddot = draw(u, rng);
     const JointVector volts = drives.volts(q, qdot, qddot);
     const JointVector amps = drives.amps(volts, qdot);
-    for (int j = 0; j < kJointCount; ++j) {
+    for (int j = 0; j < 2; ++j) {
       const DriveParams& d = params[static_cast<size_t>(j)];
       const double psi = drives.gravityAngle(j, q);
       const double f = d.gravity == GravityModel::kSine ? std::sin(psi) : std::cos(psi);
@@ -162,8 +162,8 @@ TEST(DriveModel, RigidBodyVoltsAreTheChainsTorqueThroughTheMotors) {
   for (const JointChain& chain : everyJointTypePair(rng)) {
     const ChainDynamics dynamics(chain,
                                  {LinkInertia{3.0, Point2(0.3, 0.05), 0.1}, LinkInertia{1.5, Point2(0.2, -0.1), 0.04}});
-    std::array<DriveParams, kJointCount> params{drive(GravityModel::kCosine, 0.15, 9.0, 9.0, 9.0),
-                                                drive(GravityModel::kConstant, 0.25, 9.0, 9.0, 9.0)};
+    PerJoint<DriveParams> params{drive(GravityModel::kCosine, 0.15, 9.0, 9.0, 9.0),
+                                 drive(GravityModel::kConstant, 0.25, 9.0, 9.0, 9.0)};
     params[1].motor_count = 1;
     params[1].gearing = 120.0;
     const DriveModel drives(params, dynamics);
@@ -173,7 +173,7 @@ TEST(DriveModel, RigidBodyVoltsAreTheChainsTorqueThroughTheMotors) {
       const JointVector tau = dynamics.torque(q, qdot, qddot);
       const JointVector volts = drives.volts(q, qdot, qddot);
       const JointVector amps = drives.amps(volts, qdot);
-      for (int j = 0; j < kJointCount; ++j) {
+      for (int j = 0; j < 2; ++j) {
         const DriveParams& d = params[static_cast<size_t>(j)];
         const MotorParams& m = d.motor;
         const double expected = d.kS_volts * sgn(qdot[j]) +
@@ -194,8 +194,8 @@ TEST(DriveModel, PathVoltagesAreTheVoltsOfTheMotionAlongThePath) {
   std::mt19937 rng(6);
   std::uniform_real_distribution<double> u(-2.0, 2.0), speed_squared(0.01, 4.0);
   const JointChain chain = everyJointTypePair(rng)[2];  // a telescope on a pivot
-  const std::array<DriveParams, kJointCount> params{drive(GravityModel::kCosine, 0.15, 0.3, 2.0, 0.05),
-                                                    drive(GravityModel::kSine, 0.2, 0.5, 4.0, 0.02)};
+  const PerJoint<DriveParams> params{drive(GravityModel::kCosine, 0.15, 0.3, 2.0, 0.05),
+                                     drive(GravityModel::kSine, 0.2, 0.5, 4.0, 0.02)};
   const DriveModel feedforward(chain, params);
   const DriveModel rigid(params, ChainDynamics(chain, {LinkInertia{2.0, Point2(0.4, 0.0), 0.08},
                                                        LinkInertia{1.0, Point2(0.1, 0.05), 0.02}}));
@@ -209,8 +209,8 @@ TEST(DriveModel, PathVoltagesAreTheVoltsOfTheMotionAlongThePath) {
       const JointVector qdot = p.dq_ds * c;
       const JointVector volts = drives->volts(p.q, qdot, p.dq_ds * a + p.d2q_ds2 * b);
       const JointVector amps = drives->amps(volts, qdot);
-      const std::array<PathVoltage, kJointCount> path = drives->pathVoltages(p);
-      for (int j = 0; j < kJointCount; ++j) {
+      const PerJoint<PathVoltage> path = drives->pathVoltages(p);
+      for (int j = 0; j < 2; ++j) {
         const PathVoltage& v = path[static_cast<size_t>(j)];
         const DriveParams& d = params[static_cast<size_t>(j)];
         const double coulomb = d.kS_volts * sgn(p.dq_ds[j]);

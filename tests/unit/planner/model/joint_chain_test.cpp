@@ -36,10 +36,10 @@ TEST(JointChain, LinkFramesAreTheProductOfTheJointTransformsForEveryJointTypePai
   for (const JointType first : {JointType::kPrismatic, JointType::kRevolute}) {
     for (const JointType second : {JointType::kPrismatic, JointType::kRevolute}) {
       for (int trial = 0; trial < 200; ++trial) {
-        JointChain chain;
+        JointChain chain(2);
         chain[0] = ChainJoint{"a", first, Point2(u(rng), u(rng)), u(rng), {}};
         chain[1] = ChainJoint{"b", second, Point2(u(rng), u(rng)), u(rng), {}};
-        const JointVector q(u(rng), u(rng));
+        const JointVector q{{u(rng), u(rng)}};
         const auto frames = linkFrames(chain, q);
         const Eigen::Matrix3d m0 = jointMatrix(chain[0], q[0]);
         const Eigen::Matrix3d m1 = m0 * jointMatrix(chain[1], q[1]);
@@ -60,17 +60,17 @@ TEST(JointChain, PointJacobianMatchesCentralDifferencesForEveryJointTypePair) {
   for (const JointType first : {JointType::kPrismatic, JointType::kRevolute}) {
     for (const JointType second : {JointType::kPrismatic, JointType::kRevolute}) {
       for (int trial = 0; trial < 50; ++trial) {
-        JointChain chain;
+        JointChain chain(2);
         chain[0] = ChainJoint{"a", first, Point2(u(rng), u(rng)), u(rng), {}};
         chain[1] = ChainJoint{"b", second, Point2(u(rng), u(rng)), u(rng), {}};
-        const JointVector q(u(rng), u(rng));
+        const JointVector q{{u(rng), u(rng)}};
         const Point2 p(u(rng), u(rng));
         const ChainPose pose = chainPose(chain, q);
-        for (int link = 0; link < kJointCount; ++link) {
+        for (int link = 0; link < 2; ++link) {
           const Eigen::Matrix2d jacobian = pose.pointJacobian(link, pose.frames[static_cast<size_t>(link)].toWorld(p));
           constexpr double h = 1e-6;
-          for (int j = 0; j < kJointCount; ++j) {
-            JointVector dq = JointVector::Zero();
+          for (int j = 0; j < 2; ++j) {
+            JointVector dq = JointVector::Zero(2);
             dq[j] = h;
             const Point2 diff = (linkFrames(chain, q + dq)[static_cast<size_t>(link)].toWorld(p) -
                                  linkFrames(chain, q - dq)[static_cast<size_t>(link)].toWorld(p)) /
@@ -84,10 +84,10 @@ TEST(JointChain, PointJacobianMatchesCentralDifferencesForEveryJointTypePair) {
 }
 
 TEST(JointChain, AnElevatorKeepsTheWorldsOrientationAndItsArmAngleIsMeasuredFromX) {
-  JointChain chain;
+  JointChain chain(2);
   chain[0] = ChainJoint{"lift", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * M_PI / 180.0, {0.0, 2.0}};
   chain[1] = ChainJoint{"pivot", JointType::kRevolute, Point2::Zero(), 0.0, {0.0, 6.0}};
-  const auto frames = linkFrames(chain, JointVector(1.0, 0.5));
+  const auto frames = linkFrames(chain, JointVector{{1.0, 0.5}});
   EXPECT_NEAR(frames[0].angle_rad(), 0.0, 1e-12);
   EXPECT_NEAR(frames[1].angle_rad(), 0.5, 1e-12);
   EXPECT_NEAR(frames[1].origin_m.x(), -0.4 + std::cos(80.0 * M_PI / 180.0), 1e-12);

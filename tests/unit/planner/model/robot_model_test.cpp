@@ -104,12 +104,12 @@ TEST(RobotModel, AnUnknownPieceIsRefusedWithTheNamesThereAre) {
 TEST(RobotModel, WithinLimitsIsBothJointsRangesWithTheTolerance) {
   const RobotModel& model = test::referenceModel();
   const JointRange e = model.range(test::kElevator), a = model.range(test::kArm);
-  EXPECT_TRUE(model.withinLimits(JointVector(e.min, a.max)));
-  EXPECT_TRUE(model.withinLimits(JointVector(e.max, a.min)));
-  EXPECT_FALSE(model.withinLimits(JointVector(e.max + 1e-9, a.min)));
-  EXPECT_FALSE(model.withinLimits(JointVector(e.min, a.min - 1e-9)));
-  EXPECT_TRUE(model.withinLimits(JointVector(e.max + 1e-9, a.min - 1e-9), 2e-9));
-  EXPECT_FALSE(model.withinLimits(JointVector(e.max + 3e-9, a.min), 2e-9));
+  EXPECT_TRUE(model.withinLimits(JointVector{{e.min, a.max}}));
+  EXPECT_TRUE(model.withinLimits(JointVector{{e.max, a.min}}));
+  EXPECT_FALSE(model.withinLimits(JointVector{{e.max + 1e-9, a.min}}));
+  EXPECT_FALSE(model.withinLimits(JointVector{{e.min, a.min - 1e-9}}));
+  EXPECT_TRUE(model.withinLimits(JointVector{{e.max + 1e-9, a.min - 1e-9}}, 2e-9));
+  EXPECT_FALSE(model.withinLimits(JointVector{{e.max + 3e-9, a.min}}, 2e-9));
 }
 
 // Under the feedforward kind the held pieces change nothing (their mass is in the gains); under the
@@ -117,7 +117,7 @@ TEST(RobotModel, WithinLimitsIsBothJointsRangesWithTheTolerance) {
 // without mass data adds none, and the pieces not held add nothing.
 TEST(RobotModel, DriveModelOfAHeldSetAddsItsPiecesToTheirLinks) {
   RobotModel model = threePieces();
-  const JointVector q(0.8, 2.0), qdot(0.3, -1.0), qddot(2.0, 5.0);
+  const JointVector q{{0.8, 2.0}}, qdot{{0.3, -1.0}}, qddot{{2.0, 5.0}};
   const JointVector bare = DriveModel(model.joints, model.drives).volts(q, qdot, qddot);
   EXPECT_EQ(model.driveModel(model.allPieces()).kind(), DriveKind::kFeedforward);
   EXPECT_EQ(model.driveModel(model.allPieces()).volts(q, qdot, qddot), bare);
@@ -128,7 +128,7 @@ TEST(RobotModel, DriveModelOfAHeldSetAddsItsPiecesToTheirLinks) {
   // (the third piece, cube, has no mass data)
   for (int set = 0; set < model.pieceSetCount(); ++set) {
     const HeldPieces held = HeldPieces::fromIndex(set);
-    std::array<LinkInertia, kJointCount> bodies = model.bodies;
+    PerJoint<LinkInertia> bodies = model.bodies;
     if (held.holds(0)) bodies[test::kArm] = combine(bodies[test::kArm], model.piece_inertias[0]);
     if (held.holds(1)) bodies[test::kArm] = combine(bodies[test::kArm], model.piece_inertias[1]);
     const DriveModel expected(model.drives, ChainDynamics(model.joints, bodies));

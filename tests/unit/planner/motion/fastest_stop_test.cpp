@@ -34,7 +34,7 @@ struct Reef {
 };
 
 // In the middle of the reef scene's free space, moving up and back.
-const JointVector kStart(1.0, 3.0), kVelocity(0.8, -3.0);
+const JointVector kStart{{1.0, 3.0}}, kVelocity{{0.8, -3.0}};
 
 TEST(FastestStop, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
   Reef reef;
@@ -58,7 +58,7 @@ TEST(FastestStop, StopAlongTheVelocityBrakesFromTheFirstInstantAndEndsAtRest) {
 // it, and its velocity is parallel to v0.
 TEST(FastestStop, StaysOnTheLineAlongTheVelocity) {
   Reef reef;
-  const JointVector start(0.6, 2.0), velocity(-0.5, 2.0);
+  const JointVector start{{0.6, 2.0}}, velocity{{-0.5, 2.0}};
   const auto stop = reef.stop(start, velocity);
   ASSERT_TRUE(stop.ok()) << stop.error().message;
   const JointVector along = velocity.normalized();
@@ -78,7 +78,7 @@ TEST(FastestStop, StaysOnTheLineAlongTheVelocity) {
 TEST(FastestStop, IsAboutTheFineReferencesTimeOnAboutTheShortestLine) {
   Reef reef;
   const JointVector metric = reef.model.planner.metric;
-  for (const JointVector& velocity : {kVelocity, JointVector(1.2, 0.0), JointVector(0.0, 4.0)}) {
+  for (const JointVector& velocity : {kVelocity, JointVector{{1.2, 0.0}}, JointVector{{0.0, 4.0}}}) {
     const JointVector& start = kStart;
     const auto stop = reef.stop(start, velocity);
     ASSERT_TRUE(stop.ok()) << stop.error().message;
@@ -98,21 +98,21 @@ TEST(FastestStop, IsAboutTheFineReferencesTimeOnAboutTheShortestLine) {
 
 TEST(FastestStop, NoStopIsOfferedIntoAJointLimit) {
   Reef reef;
-  const JointVector start(1.999, 3.0), velocity(2.5, 0.0);
+  const JointVector start{{1.999, 3.0}}, velocity{{2.5, 0.0}};
   const auto stop = reef.stop(start, velocity);
   ASSERT_FALSE(stop.ok());
   EXPECT_EQ(stop.status(), PlanStatus::kInfeasibleStart);
-  EXPECT_EQ(reef.stop(start, JointVector::Zero()).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(reef.stop(start, JointVector::Zero(2)).status(), PlanStatus::kInvalidInput);
   // At the limit already, moving out of the range: no room at all.
   const double top = reef.model.range(0).max;
-  EXPECT_EQ(reef.stop(JointVector(top, 3.0), JointVector(0.1, 0.0)).status(), PlanStatus::kInfeasibleStart);
+  EXPECT_EQ(reef.stop(JointVector{{top, 3.0}}, (JointVector{{0.1, 0.0}})).status(), PlanStatus::kInfeasibleStart);
 }
 
 TEST(FastestStop, AVelocityThatIsNotFiniteIsInvalidInput) {
   Reef reef;
   const double inf = std::numeric_limits<double>::infinity();
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const JointVector& velocity : {JointVector(nan, 1.0), JointVector(0.0, inf), JointVector(-inf, 0.0)}) {
+  for (const JointVector& velocity : {JointVector{{nan, 1.0}}, JointVector{{0.0, inf}}, JointVector{{-inf, 0.0}}}) {
     const auto stop = reef.stop(kStart, velocity);
     ASSERT_FALSE(stop.ok()) << velocity.transpose();
     EXPECT_EQ(stop.status(), PlanStatus::kInvalidInput) << velocity.transpose();
@@ -122,7 +122,7 @@ TEST(FastestStop, AVelocityThatIsNotFiniteIsInvalidInput) {
 
 // Next to the reef's L4 trunk with coral held, moving into it (moving_start_test.cpp's refusal):
 // the stop itself would come closer than the clearance.
-const JointVector kNearTheTrunk(1.4124, 5.6042), kIntoTheTrunk(1.4675, 3.1783);
+const JointVector kNearTheTrunk{{1.4124, 5.6042}}, kIntoTheTrunk{{1.4675, 3.1783}};
 
 TEST(FastestStop, BrakingIntoAnObstacleIsRefused) {
   Reef reef("coral");
@@ -166,7 +166,7 @@ TEST(FastestStop, AStretchedStopIsTheSameStopSlowerByItsFactor) {
 
 TEST(FastestStop, AStretchedStopOutOfTheRangeOrIntoAnObstacleIsRefused) {
   Reef reef;
-  const auto stop = reef.stop(JointVector(1.9, 3.0), JointVector(0.5, 0.0));
+  const auto stop = reef.stop(JointVector{{1.9, 3.0}}, JointVector{{0.5, 0.0}});
   ASSERT_TRUE(stop.ok()) << stop.error().message;
   const double room = reef.model.range(0).max - 1.9;
   const double factor = 1.01 * room / (stop.value().sample(stop.value().duration_s()).q.x() - 1.9);

@@ -73,7 +73,7 @@ TEST(MotionPlanner, PlanRefusesAnUnknownScene) {
     request.scene = scene;
     expectRefused(reefPlanner().plan(request), PlanStatus::kInvalidInput,
                   "unknown scene index " + std::to_string(scene));
-    request.start_velocity = JointVector(0.5, 0.0);
+    request.start_velocity = JointVector{{0.5, 0.0}};
     expectRefused(reefPlanner().stop(request), PlanStatus::kInvalidInput,
                   "unknown scene index " + std::to_string(scene));
   }
@@ -105,7 +105,7 @@ TEST(MotionPlanner, PlanRefusesAnOffsetOutsideTheScenesRange) {
 
 TEST(MotionPlanner, PlanRefusesAStartVelocityThatIsNotFinite) {
   const auto move = test::publicMove("none:STOW->L4");
-  for (const JointVector& velocity : {JointVector(kNaN, 0.0), JointVector(0.0, kInf), JointVector(-kInf, kNaN)}) {
+  for (const JointVector& velocity : {JointVector{{kNaN, 0.0}}, JointVector{{0.0, kInf}}, JointVector{{-kInf, kNaN}}}) {
     PlanRequest request;
     request.start = move.from;
     request.goal = move.to;
@@ -119,11 +119,11 @@ TEST(MotionPlanner, PlanPassesOnThePathStagesRefusals) {
   const RobotModel& model = test::referenceModel();
   const auto move = test::publicMove("none:STOW->L4");
   PlanRequest request;
-  request.start = JointVector(kNaN, move.from.y());
+  request.start = JointVector{{kNaN, move.from.y()}};
   request.goal = move.to;
   expectRefused(reefPlanner().plan(request), PlanStatus::kInvalidInput, "start pose is not a finite number");
   request.start = move.from;
-  request.goal = JointVector(model.range(0).max + 0.1, move.to.y());
+  request.goal = JointVector{{model.range(0).max + 0.1, move.to.y()}};
   const auto out = reefPlanner().plan(request);
   ASSERT_FALSE(out.ok());
   EXPECT_EQ(out.status(), PlanStatus::kGoalOutOfRange);
@@ -208,9 +208,9 @@ TEST(MotionPlanner, APlannerOfSomeGridsRefusesTheOthers) {
 TEST(MotionPlanner, StopIsTheFastestStopInTheRequestsWorld) {
   const RobotModel& model = test::referenceModel();
   PlanRequest request;
-  request.start = JointVector(1.0, 3.0);
-  request.start_velocity = JointVector(0.8, -3.0);
-  request.goal = JointVector(0.2, 0.2);
+  request.start = JointVector{{1.0, 3.0}};
+  request.start_velocity = JointVector{{0.8, -3.0}};
+  request.goal = JointVector{{0.2, 0.2}};
   for (const double offset : {0.0, 0.2}) {
     request.scene_offset_m = offset;
     const auto stop = reefPlanner().stop(request);
@@ -224,7 +224,7 @@ TEST(MotionPlanner, StopIsTheFastestStopInTheRequestsWorld) {
     EXPECT_LT(stop.value().trajectory->sample(stop.value().trajectory->duration_s()).qdot.norm(), 1e-9);
   }
   request.scene_offset_m = 0.0;
-  request.goal = JointVector(1.5, 5.0);
+  request.goal = JointVector{{1.5, 5.0}};
   const auto same = reefPlanner().stop(request);
   ASSERT_TRUE(same.ok());
   EXPECT_EQ(same.value().trajectory->sGrid(), reefPlanner().stop(request).value().trajectory->sGrid());
@@ -235,8 +235,8 @@ TEST(MotionPlanner, StopIsTheFastestStopInTheRequestsWorld) {
 // none.
 TEST(MotionPlanner, StopChecksTheOffsetAndNeedsNoGrid) {
   PlanRequest request;
-  request.start = JointVector(1.0, 3.0);
-  request.start_velocity = JointVector(0.8, -3.0);
+  request.start = JointVector{{1.0, 3.0}};
+  request.start_velocity = JointVector{{0.8, -3.0}};
   for (const double offset : {-0.01, 0.3001, kNaN, kInf}) {
     request.scene_offset_m = offset;
     const auto refused = reefPlanner().stop(request);
@@ -257,9 +257,10 @@ TEST(MotionPlanner, StopChecksTheOffsetAndNeedsNoGrid) {
 }
 
 TEST(MotionPlanner, StopRefusesAVelocityThatIsZeroOrNotFinite) {
-  for (const JointVector& velocity : {JointVector::Zero().eval(), JointVector(kNaN, 1.0), JointVector(0.0, kInf)}) {
+  for (const JointVector& velocity :
+       {JointVector::Zero(2).eval(), JointVector{{kNaN, 1.0}}, JointVector{{0.0, kInf}}}) {
     PlanRequest request;
-    request.start = JointVector(1.0, 3.0);
+    request.start = JointVector{{1.0, 3.0}};
     request.start_velocity = velocity;
     expectRefused(reefPlanner().stop(request), PlanStatus::kInvalidInput, "no velocity to stop from");
   }

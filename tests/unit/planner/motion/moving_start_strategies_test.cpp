@@ -26,16 +26,16 @@ const MotionPlanner& referencePlanner() {
 // A state in the middle of the reef scene's free space, moving up and out, and a goal below it.
 PlanRequest aheadRequest() {
   PlanRequest request;
-  request.start = JointVector(0.6, 3.0);
-  request.goal = JointVector(1.2, 3.6);
-  request.start_velocity = JointVector(0.8, 1.0);
+  request.start = JointVector{{0.6, 3.0}};
+  request.goal = JointVector{{1.2, 3.6}};
+  request.start_velocity = JointVector{{0.8, 1.0}};
   return request;
 }
 
 // The same state moving away from the goal: stopping first is the better candidate.
 PlanRequest awayRequest() {
   PlanRequest request = aheadRequest();
-  request.goal = JointVector(0.3, 2.6);
+  request.goal = JointVector{{0.3, 2.6}};
   return request;
 }
 
@@ -98,7 +98,7 @@ TEST(MovingStartStrategies, StoppingFirstIsRefusedWhenTheJointLimitComesFirst) {
   const RobotModel& model = test::referenceModel();
   PlanRequest request = aheadRequest();
   request.start.x() = model.range(0).max - 0.002;
-  request.start_velocity = JointVector(2.5, 0.0);
+  request.start_velocity = JointVector{{2.5, 0.0}};
   const MovingStartCandidate candidate =
       stopFirst(MovingStartInputs{model, drawnPathPlanner(referencePlanner(), 0), request});
   ASSERT_TRUE(candidate.refused);
@@ -115,13 +115,13 @@ TEST(MovingStartStrategies, TheWholeListIsWhatMotionPlannerPlans) {
   for (int i = 0; i < 12; ++i) {
     PlanRequest request;
     const CollisionWorld& world = paths.world(request.pieces);
-    do request.start = JointVector(0.1 + 1.8 * std::abs(unit(rng)), 3.0 + 2.5 * std::abs(unit(rng)));
+    do request.start = JointVector{{0.1 + 1.8 * std::abs(unit(rng)), 3.0 + 2.5 * std::abs(unit(rng))}};
     while (world.distance(request.start).value < model.clearance_m);
-    do request.goal = JointVector(0.1 + 1.8 * std::abs(unit(rng)), 3.0 + 2.5 * std::abs(unit(rng)));
+    do request.goal = JointVector{{0.1 + 1.8 * std::abs(unit(rng)), 3.0 + 2.5 * std::abs(unit(rng))}};
     while (world.distance(request.goal).value < model.clearance_m);
     const double v0 = unit(rng);
     const double v1 = unit(rng);
-    request.start_velocity = JointVector(v0, 3.0 * v1);
+    request.start_velocity = JointVector{{v0, 3.0 * v1}};
     const Result<Plan> listed = planMovingStart(MovingStartInputs{model, paths, request}, movingStartStrategies());
     const Result<Plan> planned = referencePlanner().plan(request);
     ASSERT_EQ(listed.ok(), planned.ok()) << i;
@@ -146,7 +146,7 @@ std::array<Fake, 2> fakes;
 
 Plan restPlan(std::string_view method) {  // a literal: the plan keeps a view of it
   PlanRequest request = aheadRequest();
-  request.start_velocity = JointVector::Zero();
+  request.start_velocity = JointVector::Zero(2);
   Plan plan = referencePlanner().plan(request).value();
   plan.method.strategy = method;
   return plan;

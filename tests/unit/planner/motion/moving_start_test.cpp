@@ -24,7 +24,7 @@ constexpr int kStarts = 300;
 JointVector uniformPose(const RobotModel& model, std::mt19937& rng) {
   std::uniform_real_distribution<double> t(model.range(0).min, model.range(0).max);
   std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);
-  return {t(rng), theta(rng)};
+  return JointVector{{t(rng), theta(rng)}};
 }
 
 TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
@@ -49,7 +49,7 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
     // between targets (amd64 and arm64 drew the two swapped), and then so would every start.
     const double elevator_unit = unit(rng);
     const double arm_unit = unit(rng);
-    request.start_velocity = JointVector(1.7 * elevator_unit, 5.9 * arm_unit);
+    request.start_velocity = JointVector{{1.7 * elevator_unit, 5.9 * arm_unit}};
     SCOPED_TRACE("start " + std::to_string(i));
 
     // The reference: stop first, then plan from rest (skipped when even that is impossible).
@@ -58,7 +58,7 @@ TEST(MovingStart, NeverSlowerThanStoppingFirstAndConsistentOverSeededStarts) {
     if (!stop.ok()) continue;
     PlanRequest from_rest = request;
     from_rest.start = stop.value().path().at(stop.value().path().length()).q;
-    from_rest.start_velocity = JointVector::Zero();
+    from_rest.start_velocity = JointVector::Zero(2);
     const auto rest_plan = planner.value().plan(from_rest);
     if (!rest_plan.ok()) continue;
     const double stop_first_s = stop.value().duration_s() + rest_plan.value().trajectory->duration_s();
@@ -101,7 +101,7 @@ Result<Plan> planMovingStart(const JointVector& start, const JointVector& goal, 
 
 TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
   const auto plan =
-      planMovingStart(JointVector(0.5441, 4.4945), JointVector(0.4446, 5.9159), JointVector(-0.243, -1.828));
+      planMovingStart(JointVector{{0.5441, 4.4945}}, JointVector{{0.4446, 5.9159}}, JointVector{{-0.243, -1.828}});
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   // Looping round along the velocity took 0.255 s; braking first takes 0.186 s.
   EXPECT_LT(plan.value().trajectory->duration_s(), 0.19);
@@ -113,9 +113,9 @@ TEST(MovingStart, TheIssuesExampleStopsFirstAndIsConsistent) {
 // rest whose columns disagreed at 1 ms, so the joined plan disagreed too and leaving along the
 // velocity (0.159 s) won over stopping first (0.068 s).
 TEST(MovingStart, AShortMoveAfterTheStopIsSlowedRatherThanLosingToTheSlowerCandidate) {
-  const auto plan = planMovingStart(JointVector(0.79572848625775672, 2.9642388715108963),
-                                    JointVector(0.80615715896675055, 2.7645670388188806),
-                                    JointVector(0.7081390749417088, -4.7212700707904016));
+  const auto plan = planMovingStart(JointVector{{0.79572848625775672, 2.9642388715108963}},
+                                    JointVector{{0.80615715896675055, 2.7645670388188806}},
+                                    JointVector{{0.7081390749417088, -4.7212700707904016}});
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_TRUE(plan.value().method.has(PlanMethod::kStoppedFirst)) << plan.value().method.name();
   // Stopping first took 0.0675 s before the short move was slowed (by at most two steps).
@@ -132,11 +132,11 @@ TEST(MovingStart, ARefusalSaysWhyStoppingFirstFailedToo) {
   const auto planner = MotionPlanner::create(test::referenceModel());
   ASSERT_TRUE(planner.ok());
   PlanRequest request;
-  request.start = JointVector(1.4124, 5.6042);
-  request.goal = JointVector(1.4750, 5.3602);
+  request.start = JointVector{{1.4124, 5.6042}};
+  request.goal = JointVector{{1.4750, 5.3602}};
   request.pieces = test::referencePieces("coral");
   ASSERT_TRUE(planner.value().plan(request).ok());
-  request.start_velocity = JointVector(1.4675, 3.1783);
+  request.start_velocity = JointVector{{1.4675, 3.1783}};
   const auto plan = planner.value().plan(request);
   ASSERT_FALSE(plan.ok());
   EXPECT_NE(

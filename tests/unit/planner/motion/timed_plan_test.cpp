@@ -32,7 +32,7 @@ const MotionSettings& motion() { return model().planner.motion; }
 // Rest to rest along the elevator alone over `length` m in `duration_s`: path acceleration +a up
 // to halfway, -a after (b = 0, (2 L / T)^2, 0 at s = 0, L / 2, L).
 Trajectory bangBang(double length, double duration_s) {
-  auto line = std::make_shared<const StraightPath>(JointVector(0.5, 1.6), JointVector(1.0, 0.0), length);
+  auto line = std::make_shared<const StraightPath>(JointVector{{0.5, 1.6}}, JointVector{{1.0, 0.0}}, length);
   const double peak = 2.0 * length / duration_s;
   auto t =
       Trajectory::create(line, model().driveModel(HeldPieces{}), {0.0, 0.5 * length, length}, {0.0, peak * peak, 0.0});
@@ -121,7 +121,7 @@ TEST(TimedPlan, TheShortestSlowdownThatAgreesIsTheClosedFormsFirst) {
 }
 
 // The path stage's candidates for a public move, from rest and leaving along a velocity.
-std::vector<PlannedPath> candidates(const test::PublicMove& move, const JointVector& v0 = JointVector::Zero()) {
+std::vector<PlannedPath> candidates(const test::PublicMove& move, const JointVector& v0 = JointVector::Zero(2)) {
   auto found = test::referencePathPlanner().candidates(move.from, move.to, move.pieces, v0);
   EXPECT_TRUE(found.ok()) << found.error().message;
   return found.ok() ? std::move(found).value() : std::vector<PlannedPath>{};
@@ -133,7 +133,7 @@ TEST(TimedPlan, TimePathsIsTheSolversTrajectoryAlongTheFirstAgreeingCandidate) {
   const auto& move = test::publicMove("none:STOW->L4");
   const std::vector<PlannedPath> found = candidates(move);
   ASSERT_FALSE(found.empty());
-  const auto plan = timePaths(model(), found, JointVector::Zero());
+  const auto plan = timePaths(model(), found, JointVector::Zero(2));
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   ToppSolver solver(model().planner.topp);
   size_t chosen = found.size();
@@ -161,7 +161,7 @@ TEST(TimedPlan, TimePathsIsTheSolversTrajectoryAlongTheFirstAgreeingCandidate) {
 
 TEST(TimedPlan, TimePathsLeavesAlongTheStartVelocity) {
   const auto& move = test::publicMove("none:STOW->L4");
-  const JointVector v0(0.4, 1.0);
+  const JointVector v0{{0.4, 1.0}};
   const auto plan = timePaths(model(), candidates(move, v0), v0);
   ASSERT_TRUE(plan.ok()) << plan.error().message;
   EXPECT_LT((plan.value().trajectory->sample(0.0).qdot - v0).norm(), 1e-6);
@@ -169,7 +169,7 @@ TEST(TimedPlan, TimePathsLeavesAlongTheStartVelocity) {
 }
 
 TEST(TimedPlan, NoCandidateIsNoPlan) {
-  const auto plan = timePaths(model(), {}, JointVector::Zero());
+  const auto plan = timePaths(model(), {}, JointVector::Zero(2));
   ASSERT_FALSE(plan.ok());
   EXPECT_EQ(plan.status(), inconsistentPlan().status());
   EXPECT_EQ(plan.error().message, inconsistentPlan().error().message);
@@ -181,14 +181,14 @@ TEST(TimedPlan, NoCandidateIsNoPlan) {
 TEST(TimedPlan, TimedPathIsThePathStageThenTimePaths) {
   const auto& move = test::publicMove("none:STOW->L4");
   const auto plan =
-      timedPath(model(), test::referencePathPlanner(), move.from, move.to, move.pieces, JointVector::Zero());
-  const auto expected = timePaths(model(), candidates(move), JointVector::Zero());
+      timedPath(model(), test::referencePathPlanner(), move.from, move.to, move.pieces, JointVector::Zero(2));
+  const auto expected = timePaths(model(), candidates(move), JointVector::Zero(2));
   ASSERT_TRUE(plan.ok() && expected.ok());
   EXPECT_EQ(plan.value().trajectory->duration_s(), expected.value().trajectory->duration_s());
   EXPECT_EQ(plan.value().method, expected.value().method);
-  const JointVector outside(model().range(0).max + 0.1, move.to.y());
+  const JointVector outside{{model().range(0).max + 0.1, move.to.y()}};
   const auto refused =
-      timedPath(model(), test::referencePathPlanner(), move.from, outside, move.pieces, JointVector::Zero());
+      timedPath(model(), test::referencePathPlanner(), move.from, outside, move.pieces, JointVector::Zero(2));
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.status(), PlanStatus::kGoalOutOfRange);
 }
@@ -196,7 +196,7 @@ TEST(TimedPlan, TimedPathIsThePathStageThenTimePaths) {
 // The estimate of the first candidate from its start speed |v0|_Sigma; infinity without one.
 TEST(TimedPlan, EstimatedSecondsAreTheFirstCandidatesReachabilityEstimate) {
   const auto& move = test::publicMove("none:STOW->L4");
-  for (const JointVector& v0 : {JointVector::Zero().eval(), JointVector(0.4, 1.0)}) {
+  for (const JointVector& v0 : {JointVector::Zero(2).eval(), JointVector{{0.4, 1.0}}}) {
     const Result<std::vector<PlannedPath>> found = candidates(move, v0);
     const double speed = weightedNorm(v0, model().planner.metric);
     EXPECT_EQ(estimatedSeconds(model(), found, v0),
@@ -205,9 +205,10 @@ TEST(TimedPlan, EstimatedSecondsAreTheFirstCandidatesReachabilityEstimate) {
   }
   const double inf = std::numeric_limits<double>::infinity();
   EXPECT_EQ(
-      estimatedSeconds(model(), Result<std::vector<PlannedPath>>(std::vector<PlannedPath>{}), JointVector::Zero()),
+      estimatedSeconds(model(), Result<std::vector<PlannedPath>>(std::vector<PlannedPath>{}), JointVector::Zero(2)),
       inf);
-  EXPECT_EQ(estimatedSeconds(model(), Result<std::vector<PlannedPath>>(PlanStatus::kNoPath), JointVector::Zero()), inf);
+  EXPECT_EQ(estimatedSeconds(model(), Result<std::vector<PlannedPath>>(PlanStatus::kNoPath), JointVector::Zero(2)),
+            inf);
 }
 
 // A stop, then the plan from where it rests: one trajectory through the junction, the request's
@@ -216,13 +217,13 @@ TEST(TimedPlan, EstimatedSecondsAreTheFirstCandidatesReachabilityEstimate) {
 TEST(TimedPlan, JoinAfterPutsTheFirstPartBeforeTheOnwardPlan) {
   // Braking down the elevator into the STOW pose.
   const auto& move = test::publicMove("none:STOW->L4");
-  const JointVector start = move.from + JointVector(0.01, 0.0);
-  const auto stop_line = std::make_shared<const StraightPath>(start, JointVector(-1.0, 0.0), 0.01);
+  const JointVector start = move.from + JointVector{{0.01, 0.0}};
+  const auto stop_line = std::make_shared<const StraightPath>(start, JointVector{{-1.0, 0.0}}, 0.01);
   auto stop = Trajectory::create(stop_line, model().driveModel(HeldPieces{}), {0.0, 0.01}, {0.04, 0.0});
   ASSERT_TRUE(stop.ok());
   EXPECT_EQ(restOf(stop.value()), stop_line->at(0.01).q);
   const auto onward = timedPath(model(), test::referencePathPlanner(), restOf(stop.value()), move.to, HeldPieces{},
-                                JointVector::Zero());
+                                JointVector::Zero(2));
   ASSERT_TRUE(onward.ok()) << onward.error().message;
   PlanRequest request;
   request.start = start;

@@ -23,7 +23,7 @@ CSpaceGrid randomGrid(std::mt19937& rng, int ni, int nj, double blocked_fraction
   SearchSettings search;
   search.potential_weight = weight;
   search.potential_range = 0.1;
-  return CSpaceGrid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, std::move(blocked), JointVector(1.0, 0.1),
+  return CSpaceGrid({GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}}, std::move(blocked), JointVector{{1.0, 0.1}},
                     search);
 }
 
@@ -88,7 +88,7 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
     std::uniform_int_distribution<int> any_cell(0, grid.cellCount() - 1);
     // A target pose near a random node; goals are nodes around it with at least the weighted
     // distance as connection cost (the admissibility precondition), sometimes more.
-    const JointVector target = grid.node(any_cell(rng)) + JointVector(0.004, -0.01);
+    const JointVector target = grid.node(any_cell(rng)) + JointVector{{0.004, -0.01}};
     std::vector<SearchEndpoint> sources, goals;
     std::uniform_real_distribution<double> extra(0.0, 0.05);
     for (int k = 0; k < 1 + trial % 3; ++k) sources.push_back({any_cell(rng), extra(rng)});
@@ -141,7 +141,8 @@ TEST(AstarSearch, CostEqualsDijkstraOnRandomGrids) {
 TEST(AstarSearch, BlockedOrMissingEndpointsFindNothing) {
   std::vector<std::uint8_t> blocked(25, 0);
   blocked[12] = 1;
-  const CSpaceGrid grid(GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}, blocked, JointVector(1.0, 1.0), SearchSettings{});
+  const CSpaceGrid grid({GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}}, blocked, JointVector{{1.0, 1.0}},
+                        SearchSettings{});
   const std::vector<SearchEndpoint> sources{{0, 0.0}};
   EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{{12, 0.0}}, grid.node(12)).has_value());
   EXPECT_FALSE(astarSearch(grid, sources, std::vector<SearchEndpoint>{}, grid.node(12)).has_value());
@@ -159,7 +160,8 @@ TEST(AstarSearch, BlockedOrMissingEndpointsFindNothing) {
 TEST(AstarSearch, WallWithoutGapIsUnreachable) {
   std::vector<std::uint8_t> blocked(7 * 7, 0);
   for (int j = 0; j < 7; ++j) blocked[static_cast<size_t>(3 * 7 + j)] = 1;
-  const CSpaceGrid grid(GridAxis{0.0, 0.1, 7}, GridAxis{0.0, 0.1, 7}, blocked, JointVector(1.0, 1.0), SearchSettings{});
+  const CSpaceGrid grid({GridAxis{0.0, 0.1, 7}, GridAxis{0.0, 0.1, 7}}, blocked, JointVector{{1.0, 1.0}},
+                        SearchSettings{});
   EXPECT_FALSE(astarSearch(grid, std::vector<SearchEndpoint>{{grid.cell(0, 0), 0.0}},
                            std::vector<SearchEndpoint>{{grid.cell(6, 6), 0.0}}, grid.node(grid.cell(6, 6)))
                    .has_value());
@@ -184,7 +186,7 @@ TEST(AstarSearch, SideOfHoleFindsTheCheapestPathOnThatSide) {
     SearchSettings search;
     search.potential_weight = trial % 2 == 0 ? 0.0 : 2.0;
     search.potential_range = 0.1;
-    const CSpaceGrid grid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, blocked, JointVector(1.0, 0.1), search);
+    const CSpaceGrid grid({GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}}, blocked, JointVector{{1.0, 0.1}}, search);
     // The square is a hole unless random nodes join it to the edge.
     const GridHole* square = nullptr;
     for (const GridHole& hole : grid.holes()) {
@@ -248,7 +250,7 @@ TEST(AstarSearch, SideOfHoleHeuristicKeepsTheCost) {
     SearchSettings search;
     search.potential_weight = trial % 2 == 0 ? 0.0 : 2.0;
     search.potential_range = 0.1;
-    const CSpaceGrid grid(GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}, blocked, JointVector(1.0, 0.1), search);
+    const CSpaceGrid grid({GridAxis{0.0, 0.02, ni}, GridAxis{1.0, 0.05, nj}}, blocked, JointVector{{1.0, 0.1}}, search);
     if (grid.holes().empty()) continue;
     std::uniform_int_distribution<int> any_cell(0, grid.cellCount() - 1);
     const int source = any_cell(rng), goal = any_cell(rng);
@@ -302,7 +304,7 @@ TEST(CSpaceGrid, HolesAreTheBlockedRegionsAwayFromTheEdges) {
   for (int j = 0; j < 4; ++j) block(8, j);             // touches the edge: not a hole
   block(8, 7), block(9, 7), block(8, 6);               // a hole of 3 nodes
   block(5, 8);                                         // one node wide: no ray foot, left out
-  const CSpaceGrid grid(GridAxis{0.0, 0.1, ni}, GridAxis{0.0, 0.1, nj}, blocked, JointVector(1.0, 1.0),
+  const CSpaceGrid grid({GridAxis{0.0, 0.1, ni}, GridAxis{0.0, 0.1, nj}}, blocked, JointVector{{1.0, 1.0}},
                         SearchSettings{});
   ASSERT_EQ(grid.holes().size(), 2U);
   EXPECT_EQ(grid.holes()[0].cells, 4);
@@ -370,10 +372,10 @@ TEST(CSpaceGrid, AxisCoversTheRangeWithNodesAtBothEnds) {
 }
 
 TEST(CSpaceGrid, LowerCornerClampsToTheGrid) {
-  const CSpaceGrid grid(GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}, std::vector<std::uint8_t>(25, 0),
-                        JointVector(1.0, 1.0), SearchSettings{});
-  EXPECT_EQ(grid.lowerCorner(JointVector(0.25, 0.31)), grid.cell(2, 3));
-  EXPECT_EQ(grid.lowerCorner(JointVector(-1.0, 9.0)), grid.cell(0, 4));
+  const CSpaceGrid grid({GridAxis{0.0, 0.1, 5}, GridAxis{0.0, 0.1, 5}}, std::vector<std::uint8_t>(25, 0),
+                        JointVector{{1.0, 1.0}}, SearchSettings{});
+  EXPECT_EQ(grid.lowerCorner(JointVector{{0.25, 0.31}}), grid.cell(2, 3));
+  EXPECT_EQ(grid.lowerCorner(JointVector{{-1.0, 9.0}}), grid.cell(0, 4));
   EXPECT_EQ(grid.blockedCount(), 0);
 }
 

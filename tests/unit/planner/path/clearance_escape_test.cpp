@@ -17,7 +17,7 @@ namespace {
 
 constexpr double kStepS = 0.001;
 constexpr int kStarts = 60;
-const JointVector kStow(0.20, 1.57);
+const JointVector kStow{{0.20, 1.57}};
 
 // Seeded random poses of the bare arm whose distance to the nearest obstacle is between 10 % and
 // 95 % of the clearance.
@@ -27,7 +27,7 @@ std::vector<JointVector> startsInsideTheClearance(const RobotModel& model, const
   std::uniform_real_distribution<double> theta(model.range(1).min, model.range(1).max);
   std::vector<JointVector> out;
   while (static_cast<int>(out.size()) < kStarts) {
-    const JointVector q(t(rng), theta(rng));
+    const JointVector q{{t(rng), theta(rng)}};
     const double d = world.distance(q).value;
     if (d > 0.1 * model.clearance_m && d < 0.95 * model.clearance_m) out.push_back(q);
   }
@@ -101,7 +101,7 @@ TEST(ClearanceEscape, AStartTouchingAnObstacleIsStillRefused) {
   const auto planner = MotionPlanner::create(model);
   ASSERT_TRUE(planner.ok());
   PlanRequest request;
-  request.start = JointVector(0.0, 4.71);  // arm straight down at the bottom: through the drivetrain
+  request.start = JointVector{{0.0, 4.71}};  // arm straight down at the bottom: through the drivetrain
   request.goal = kStow;
   const CollisionWorld world(model, model.scenes.front(), HeldPieces{});
   ASSERT_LT(world.distance(request.start).value, 0.0);

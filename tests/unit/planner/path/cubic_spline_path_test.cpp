@@ -19,16 +19,16 @@
 namespace cyber::planner {
 namespace {
 
-const JointVector kMetric(1.0, 0.1);
+const JointVector kMetric{{1.0, 0.1}};
 
 double weightedNorm(const JointVector& v) { return std::sqrt(kMetric[0] * v[0] * v[0] + kMetric[1] * v[1] * v[1]); }
 
 std::vector<JointVector> randomWaypoints(std::mt19937& rng, int count) {
   std::uniform_real_distribution<double> step_t(-0.1, 0.1), step_th(-0.4, 0.4);
-  std::vector<JointVector> w{JointVector(1.0, 3.0)};
+  std::vector<JointVector> w{JointVector{{1.0, 3.0}}};
   for (int k = 1; k < count; ++k) {
     const double dt = step_t(rng);  // drawn in sequence: argument order is unspecified
-    w.push_back(w.back() + JointVector(dt, step_th(rng)));
+    w.push_back(w.back() + JointVector{{dt, step_th(rng)}});
   }
   return w;
 }
@@ -56,7 +56,7 @@ TEST(CubicSplinePath, IsTwiceContinuouslyDifferentiableAtTheKnots) {
   std::mt19937 rng(2);
   for (int trial = 0; trial < 50; ++trial) {
     const auto w = randomWaypoints(rng, 3 + trial % 10);
-    const JointVector v0 = trial % 2 == 0 ? JointVector::Zero() : JointVector(0.5, -2.0);
+    const JointVector v0 = trial % 2 == 0 ? JointVector::Zero(2) : JointVector{{0.5, -2.0}};
     const auto path = CubicSplinePath::through(w, kMetric, v0);
     ASSERT_TRUE(path.ok());
     const auto& knots = path.value().knots();
@@ -81,7 +81,7 @@ TEST(CubicSplinePath, NaturalEndsOrAClampedUnitSpeedStart) {
   EXPECT_NEAR(natural.value().at(0.0).d2q_ds2.norm(), 0.0, 1e-9);
   EXPECT_NEAR(natural.value().at(natural.value().length()).d2q_ds2.norm(), 0.0, 1e-9);
 
-  const JointVector v0(1.5, -4.0);  // m/s, rad/s
+  const JointVector v0{{1.5, -4.0}};  // m/s, rad/s
   const auto clamped = CubicSplinePath::through(w, kMetric, v0);
   ASSERT_TRUE(clamped.ok());
   const PathPoint start = clamped.value().at(0.0);
@@ -93,7 +93,7 @@ TEST(CubicSplinePath, NaturalEndsOrAClampedUnitSpeedStart) {
 TEST(CubicSplinePath, DerivativesMatchCentralDifferences) {
   std::mt19937 rng(4);
   const auto w = randomWaypoints(rng, 12);
-  const auto path = CubicSplinePath::through(w, kMetric, JointVector(0.2, 1.0));
+  const auto path = CubicSplinePath::through(w, kMetric, JointVector{{0.2, 1.0}});
   ASSERT_TRUE(path.ok());
   std::uniform_real_distribution<double> where(1e-3, path.value().length() - 1e-3);
   const double h = 1e-6;
@@ -110,7 +110,7 @@ TEST(CubicSplinePath, DerivativesMatchCentralDifferences) {
 TEST(CubicSplinePath, ChordLengthParameterIsCloseToUnitSpeed) {
   // Finely sampled smooth data: the spline's Sigma-speed stays near 1 (s is an arc length).
   std::vector<JointVector> w;
-  for (int k = 0; k <= 40; ++k) w.emplace_back(0.5 + 0.5 * std::sin(k * 0.05), 1.0 + 2.0 * k * 0.05);
+  for (int k = 0; k <= 40; ++k) w.push_back(JointVector{{0.5 + 0.5 * std::sin(k * 0.05), 1.0 + 2.0 * k * 0.05}});
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   for (double s = 0.0; s <= path.value().length(); s += 0.01) {
@@ -119,7 +119,7 @@ TEST(CubicSplinePath, ChordLengthParameterIsCloseToUnitSpeed) {
 }
 
 TEST(CubicSplinePath, TwoPointsGiveAStraightLine) {
-  const std::vector<JointVector> w{JointVector(0.2, 1.57), JointVector(1.9, 5.0)};
+  const std::vector<JointVector> w{JointVector{{0.2, 1.57}}, JointVector{{1.9, 5.0}}};
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   const double length = weightedNorm(w[1] - w[0]);
@@ -133,7 +133,7 @@ TEST(CubicSplinePath, TwoPointsGiveAStraightLine) {
 }
 
 TEST(CubicSplinePath, ZeroLengthPathHoldsThePoseWithZeroDerivatives) {
-  const std::vector<JointVector> w{JointVector(0.5, 2.0), JointVector(0.5, 2.0)};
+  const std::vector<JointVector> w{JointVector{{0.5, 2.0}}, JointVector{{0.5, 2.0}}};
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   EXPECT_EQ(path.value().length(), 0.0);
@@ -141,14 +141,14 @@ TEST(CubicSplinePath, ZeroLengthPathHoldsThePoseWithZeroDerivatives) {
   for (double s : {-1.0, 0.0, 3.0}) {
     const PathPoint p = path.value().at(s);
     EXPECT_EQ(p.q, w[0]);
-    EXPECT_EQ(p.dq_ds, JointVector::Zero());
-    EXPECT_EQ(p.d2q_ds2, JointVector::Zero());
+    EXPECT_EQ(p.dq_ds, JointVector::Zero(2));
+    EXPECT_EQ(p.d2q_ds2, JointVector::Zero(2));
   }
 }
 
 TEST(CubicSplinePath, RepeatedWaypointsAreMergedAndTheGoalKeptExactly) {
-  const std::vector<JointVector> w{JointVector(0.0, 0.0), JointVector(0.0, 0.0), JointVector(0.5, 1.0),
-                                   JointVector(1.0, 1.0), JointVector(1.0, 1.0 + 1e-12)};
+  const std::vector<JointVector> w{JointVector{{0.0, 0.0}}, JointVector{{0.0, 0.0}}, JointVector{{0.5, 1.0}},
+                                   JointVector{{1.0, 1.0}}, JointVector{{1.0, 1.0 + 1e-12}}};
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   EXPECT_EQ(path.value().points().size(), 3U);
@@ -156,7 +156,7 @@ TEST(CubicSplinePath, RepeatedWaypointsAreMergedAndTheGoalKeptExactly) {
 }
 
 TEST(CubicSplinePath, ParameterOutsideTheRangeIsClamped) {
-  const std::vector<JointVector> w{JointVector(0.0, 0.0), JointVector(0.5, 1.0), JointVector(1.0, 0.0)};
+  const std::vector<JointVector> w{JointVector{{0.0, 0.0}}, JointVector{{0.5, 1.0}}, JointVector{{1.0, 0.0}}};
   const auto path = CubicSplinePath::through(w, kMetric);
   ASSERT_TRUE(path.ok());
   EXPECT_EQ(path.value().at(-5.0).q, w.front());
@@ -167,22 +167,22 @@ TEST(CubicSplinePath, BadInputIsATypedError) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<JointVector> empty;
   EXPECT_EQ(CubicSplinePath::through(empty, kMetric).status(), PlanStatus::kInvalidInput);
-  const std::vector<JointVector> bad{JointVector(0.0, 0.0), JointVector(nan, 1.0)};
+  const std::vector<JointVector> bad{JointVector{{0.0, 0.0}}, JointVector{{nan, 1.0}}};
   EXPECT_EQ(CubicSplinePath::through(bad, kMetric).status(), PlanStatus::kInvalidInput);
-  const std::vector<JointVector> good{JointVector(0.0, 0.0), JointVector(1.0, 1.0)};
-  EXPECT_EQ(CubicSplinePath::through(good, JointVector(1.0, 0.0)).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(CubicSplinePath::through(good, kMetric, JointVector(nan, 0.0)).status(), PlanStatus::kInvalidInput);
+  const std::vector<JointVector> good{JointVector{{0.0, 0.0}}, JointVector{{1.0, 1.0}}};
+  EXPECT_EQ(CubicSplinePath::through(good, (JointVector{{1.0, 0.0}})).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(CubicSplinePath::through(good, kMetric, (JointVector{{nan, 0.0}})).status(), PlanStatus::kInvalidInput);
 }
 
 TEST(CubicSplinePath, SegmentBoundsAreExact) {
   std::mt19937 rng(5);
   const auto w = randomWaypoints(rng, 10);
-  const auto path = CubicSplinePath::through(w, kMetric, JointVector(1.0, 1.0));
+  const auto path = CubicSplinePath::through(w, kMetric, JointVector{{1.0, 1.0}});
   ASSERT_TRUE(path.ok());
   const auto& knots = path.value().knots();
   for (int k = 0; k < path.value().segmentCount(); ++k) {
     const auto bounds = path.value().segmentBounds(k);
-    JointVector lo = JointVector::Constant(1e9), hi = JointVector::Constant(-1e9), speed = JointVector::Zero();
+    JointVector lo = JointVector::Constant(2, 1e9), hi = JointVector::Constant(2, -1e9), speed = JointVector::Zero(2);
     for (int i = 0; i <= 2000; ++i) {
       const double s = knots[static_cast<size_t>(k)] +
                        (knots[static_cast<size_t>(k) + 1] - knots[static_cast<size_t>(k)]) * i / 2000.0;
@@ -206,11 +206,11 @@ TEST(CubicSplinePath, SegmentBoundsAreExact) {
 // REACH_UP lie on the telescope's 0 and 0.9 m): the polynomial evaluated at the segment's end was
 // a few ulp outside the limit, and the limit check refused the straight path.
 TEST(CubicSplinePath, AStraightMoveToAPoseOnALimitStaysExactlyWithinItsEnds) {
-  const JointVector metric(1.0, 0.4);
+  const JointVector metric{{1.0, 0.4}};
   const std::vector<std::pair<JointVector, JointVector>> moves{
-      {JointVector(1.45, 0.0), JointVector(1.3, 0.9)},     {JointVector(0.524, 0.879), JointVector(1.45, 0.0)},
-      {JointVector(2.6, 0.2), JointVector(1.45, 0.0)},     {JointVector(1.3, 0.9), JointVector(1.45, 0.0)},
-      {JointVector(1.45, 0.0), JointVector(0.524, 0.879)}, {JointVector(1.45, 0.0), JointVector(2.6, 0.2)}};
+      {JointVector{{1.45, 0.0}}, JointVector{{1.3, 0.9}}},     {JointVector{{0.524, 0.879}}, JointVector{{1.45, 0.0}}},
+      {JointVector{{2.6, 0.2}}, JointVector{{1.45, 0.0}}},     {JointVector{{1.3, 0.9}}, JointVector{{1.45, 0.0}}},
+      {JointVector{{1.45, 0.0}}, JointVector{{0.524, 0.879}}}, {JointVector{{1.45, 0.0}}, JointVector{{2.6, 0.2}}}};
   for (const auto& [from, to] : moves) {
     const std::vector<JointVector> w{from, to};
     const auto path = CubicSplinePath::through(w, metric);
@@ -241,9 +241,9 @@ TEST(CubicSplinePath, ReproducesEveryKnotAndTheGoalExactly) {
   for (int trial = 0; trial < 200; ++trial) {
     auto w = randomWaypoints(rng, 2 + trial % 8);
     const double gt = goal_t(rng);
-    w.back() = JointVector(w.back()[0] + gt, goal_th(rng));
+    w.back() = JointVector{{w.back()[0] + gt, goal_th(rng)}};
     const auto path =
-        CubicSplinePath::through(w, kMetric, trial % 3 == 0 ? JointVector(0.3, -1.0) : JointVector::Zero());
+        CubicSplinePath::through(w, kMetric, trial % 3 == 0 ? JointVector{{0.3, -1.0}} : JointVector::Zero(2));
     ASSERT_TRUE(path.ok());
     const auto& knots = path.value().knots();
     for (size_t k = 0; k < knots.size(); ++k) EXPECT_EQ(path.value().at(knots[k]).q, w[k]) << trial << " knot " << k;

@@ -158,7 +158,7 @@ TEST_F(GridCache, NodesNoBuiltGridHasAreCorruptEvenWithTheirChecksum) {
     std::vector<std::uint8_t> nodes = grid.packedNodes();
     nodes[static_cast<size_t>(cell)] |= bits;
     const GridAxis first = grid.firstAxis(), second = grid.secondAxis();
-    return CSpaceGrid::fromPackedNodes(first, second, nodes, model(), grid.checkedStepCount()).has_value();
+    return CSpaceGrid::fromPackedNodes({first, second}, nodes, model(), grid.checkedStepCount()).has_value();
   };
   EXPECT_TRUE(forge(blocked_neighbour, 0));
   EXPECT_FALSE(forge(blocked_neighbour, 1U << 3)) << "a step into a blocked node";
@@ -166,7 +166,7 @@ TEST_F(GridCache, NodesNoBuiltGridHasAreCorruptEvenWithTheirChecksum) {
   EXPECT_FALSE(forge(grid.cellCount() - 1, 1U << 3)) << "a step out of the grid";
   std::vector<std::uint8_t> fewer = grid.packedNodes();
   fewer.pop_back();
-  EXPECT_FALSE(CSpaceGrid::fromPackedNodes(grid.firstAxis(), grid.secondAxis(), fewer, model(), 0).has_value());
+  EXPECT_FALSE(CSpaceGrid::fromPackedNodes({grid.firstAxis(), grid.secondAxis()}, fewer, model(), 0).has_value());
 }
 
 TEST_F(GridCache, AFolderOrAPipeInPlaceOfTheFileIsUnreadable) {
@@ -210,10 +210,10 @@ TEST_F(GridCache, CreateRebuildsACorruptFileAndPlansAreTheSameWithTheCache) {
   std::vector<PlanRequest> moves;
   for (const char* label : {"none:STOW->L4", "coral:L2->STOW", "algae:STOW->NET"}) {
     const test::PublicMove& move = test::publicMove(label);
-    moves.push_back({move.from, move.to, JointVector::Zero(), move.pieces, 0, 0.0});
+    moves.push_back({move.from, move.to, JointVector::Zero(2), move.pieces, 0, 0.0});
   }
   moves.push_back(moves.front());
-  moves.back().start_velocity = JointVector(0.3, 0.5);
+  moves.back().start_velocity = JointVector{{0.3, 0.5}};
   int planned = 0;
   for (const PlanRequest& move : moves) {
     const auto expected = cold.value().plan(move);

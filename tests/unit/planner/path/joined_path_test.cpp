@@ -18,11 +18,11 @@
 namespace cyber::planner {
 namespace {
 
-const JointVector kStart(0.5, 2.0);
-const JointVector kFirstDirection = JointVector(0.6, 2.5).normalized();
+const JointVector kStart{{0.5, 2.0}};
+const JointVector kFirstDirection = JointVector{{0.6, 2.5}}.normalized();
 constexpr double kFirstLength = 0.3;
 const JointVector kJunction = kStart + kFirstLength * kFirstDirection;
-const JointVector kSecondDirection = JointVector(-0.2, 1.0).normalized();
+const JointVector kSecondDirection = JointVector{{-0.2, 1.0}}.normalized();
 constexpr double kSecondLength = 0.5;
 
 std::shared_ptr<const StraightPath> firstPiece() {
@@ -41,7 +41,7 @@ TEST(StraightPath, IsTheLineFromItsStartInClosedForm) {
     const double clamped = std::clamp(s, 0.0, kFirstLength);
     EXPECT_LT((p.q - (kStart + clamped * kFirstDirection)).norm(), 1e-15) << s;
     EXPECT_EQ(p.dq_ds, kFirstDirection);
-    EXPECT_EQ(p.d2q_ds2, JointVector::Zero());
+    EXPECT_EQ(p.d2q_ds2, JointVector::Zero(2));
   }
 }
 

@@ -72,7 +72,7 @@ JointVector randomPose(const RobotModel& model, std::mt19937& rng) {
   std::uniform_real_distribution<double> e(model.range(0).min, model.range(0).max);
   std::uniform_real_distribution<double> a(model.range(1).min, model.range(1).max);
   const double elevator = e(rng);
-  return JointVector(elevator, a(rng));
+  return JointVector{{elevator, a(rng)}};
 }
 
 // A seeded segment from a pose anywhere in the range: up to 25 cm and 0.8 rad long.
@@ -85,7 +85,7 @@ Segment randomSegment(const RobotModel& model, std::mt19937& rng) {
   std::uniform_real_distribution<double> de(-0.25, 0.25), da(-0.8, 0.8);
   const JointVector from = randomPose(model, rng);
   const double elevator = de(rng);
-  return {from, JointVector(elevator, da(rng))};
+  return {from, JointVector{{elevator, da(rng)}}};
 }
 
 struct Reef {
@@ -148,7 +148,7 @@ TEST(PathClearance, CertifiedStepsSpendFewerEvaluationsThanDenseSamplingWithRoom
   EXPECT_GE(roomy, 5);
   // With no obstacle at all, one evaluation at each end.
   const ClearanceCheck free =
-      checkSegment(emptyWorld(reef.model), JointVector(0.1, 1.4), JointVector(0.4, 2.2), clearance);
+      checkSegment(emptyWorld(reef.model), JointVector{{0.1, 1.4}}, JointVector{{0.4, 2.2}}, clearance);
   EXPECT_TRUE(free.clear);
   EXPECT_EQ(free.evaluations, 2);
 }
@@ -166,9 +166,9 @@ TEST(PathClearance, SplinesAgreeWithDenseSampling) {
     std::vector<JointVector> waypoints{randomPose(reef.model, rng)};
     for (int k = 0; k < 3; ++k) {
       const double step_e = de(rng);
-      const JointVector next = waypoints.back() + JointVector(step_e, da(rng));
-      waypoints.push_back(next.cwiseMax(JointVector(reef.model.range(0).min, reef.model.range(1).min))
-                              .cwiseMin(JointVector(reef.model.range(0).max, reef.model.range(1).max)));
+      const JointVector next = waypoints.back() + JointVector{{step_e, da(rng)}};
+      waypoints.push_back(next.cwiseMax(JointVector{{reef.model.range(0).min, reef.model.range(1).min}})
+                              .cwiseMin(JointVector{{reef.model.range(0).max, reef.model.range(1).max}}));
     }
     const auto path = CubicSplinePath::through(waypoints, reef.model.planner.metric);
     ASSERT_TRUE(path.ok());
@@ -206,8 +206,8 @@ TEST(PathClearance, SplineLeavingTheRangeIsRefusedAtItsSegment) {
   const double top = reef.model.range(0).max;
   // A fast rise that turns just below the top of the elevator: the natural spline overshoots it
   // (by about 2 cm).
-  const std::vector<JointVector> waypoints{JointVector(1.0, 3.0), JointVector(1.9, 3.02), JointVector(top - 1e-3, 3.04),
-                                           JointVector(1.5, 3.06)};
+  const std::vector<JointVector> waypoints{JointVector{{1.0, 3.0}}, JointVector{{1.9, 3.02}},
+                                           JointVector{{top - 1e-3, 3.04}}, JointVector{{1.5, 3.06}}};
   const auto path = CubicSplinePath::through(waypoints, reef.model.planner.metric);
   ASSERT_TRUE(path.ok());
   double highest = 0.0;
@@ -231,7 +231,7 @@ TEST(PathClearance, SplineLeavingTheRangeIsRefusedAtItsSegment) {
 // A single pose: its own distance and range decide.
 TEST(PathClearance, AZeroLengthPathIsThePoseItself) {
   const Reef reef;
-  const JointVector pose(0.3, 1.8);
+  const JointVector pose{{0.3, 1.8}};
   const JointVector both[] = {pose, pose};
   const auto path = CubicSplinePath::through(both, reef.model.planner.metric);
   ASSERT_TRUE(path.ok());
@@ -245,7 +245,7 @@ TEST(PathClearance, AZeroLengthPathIsThePoseItself) {
   EXPECT_EQ(too_close.min_distance_m, d);
   EXPECT_TRUE(checkPath(path.value(), reef.world, reef.model, d - 1e-6).clear);
   // Outside the range, the pose is refused whatever its distance.
-  const JointVector above[] = {JointVector(reef.model.range(0).max + 0.01, 1.8)};
+  const JointVector above[] = {JointVector{{reef.model.range(0).max + 0.01, 1.8}}};
   const auto out = CubicSplinePath::through(above, reef.model.planner.metric);
   ASSERT_TRUE(out.ok());
   EXPECT_FALSE(checkPath(out.value(), reef.world, reef.model, 0.0).within_limits);

@@ -29,7 +29,7 @@ std::vector<JointVector> wavyPath(int count) {
   std::vector<JointVector> w;
   for (int k = 0; k < count; ++k) {
     const double f = static_cast<double>(k) / (count - 1);
-    w.emplace_back(0.5 + 1.2 * f + 0.05 * std::sin(9.0 * f), 4.9 + 0.9 * f + 0.2 * std::cos(7.0 * f));
+    w.push_back(JointVector{{0.5 + 1.2 * f + 0.05 * std::sin(9.0 * f), 4.9 + 0.9 * f + 0.2 * std::cos(7.0 * f)}});
   }
   return w;
 }
@@ -129,7 +129,7 @@ TEST(OptimizePath, KeepsWaypointsInsideTheLimits) {
   // A prior running along the top of the elevator: the result stays inside by the margin.
   const CollisionWorld world(model(), model().scenes.front(), HeldPieces{});
   std::vector<JointVector> prior;
-  for (int k = 0; k <= 20; ++k) prior.emplace_back(2.0, 1.0 + 0.05 * k);
+  for (int k = 0; k <= 20; ++k) prior.push_back(JointVector{{2.0, 1.0 + 0.05 * k}});
   const SmoothingResult result = optimizePath(world, prior, 1, model(), model().planner.smoothing);
   for (size_t k = 1; k + 1 < result.waypoints.size(); ++k) {
     EXPECT_LE(result.waypoints[k][0], model().range(0).max - model().planner.grid.joint_limit_margin + 1e-12);
@@ -138,13 +138,13 @@ TEST(OptimizePath, KeepsWaypointsInsideTheLimits) {
 
 TEST(OptimizePath, NothingToOptimiseReturnsThePrior) {
   const CollisionWorld world(model(), model().scenes.front(), HeldPieces{});
-  const std::vector<JointVector> two{JointVector(0.2, 1.57), JointVector(0.5, 2.0)};
+  const std::vector<JointVector> two{JointVector{{0.2, 1.57}}, JointVector{{0.5, 2.0}}};
   EXPECT_EQ(optimizePath(world, two, 1, model(), model().planner.smoothing).waypoints, two);
 }
 
 TEST(ResamplePolyline, EqualWeightedSpacingOnThePolylineWithExactEnds) {
-  const std::vector<JointVector> polyline{JointVector(0.0, 0.0), JointVector(0.3, 0.0), JointVector(0.3, 2.0),
-                                          JointVector(0.3, 2.0), JointVector(1.0, 2.5)};
+  const std::vector<JointVector> polyline{JointVector{{0.0, 0.0}}, JointVector{{0.3, 0.0}}, JointVector{{0.3, 2.0}},
+                                          JointVector{{0.3, 2.0}}, JointVector{{1.0, 2.5}}};
   const auto out = resamplePolyline(polyline, model().planner.metric, 0.05);
   ASSERT_GE(out.size(), 3U);
   EXPECT_EQ(out.front(), polyline.front());

@@ -158,7 +158,7 @@ TEST(PathPlanner, DirectPathsAreShapedForTimeWhenThatIsFaster) {
 
 TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
   // Poses between grid nodes: the path starts and ends exactly there.
-  const JointVector start(0.2137, 1.5731), goal(0.7813, 6.0871);
+  const JointVector start{{0.2137, 1.5731}}, goal{{0.7813, 6.0871}};
   ASSERT_EQ(components(test::referencePieces("coral")).of(start), components(test::referencePieces("coral")).of(goal));
   const auto result = planner().plan(start, goal, test::referencePieces("coral"));
   ASSERT_TRUE(result.ok()) << result.error().message;
@@ -167,20 +167,20 @@ TEST(PathPlanner, ExactStartAndGoalAreKeptOffTheGrid) {
 }
 
 TEST(PathPlanner, ZeroLengthMoveIsATrivialPath) {
-  const JointVector q(0.2, 1.57);
+  const JointVector q{{0.2, 1.57}};
   const auto result = planner().plan(q, q, HeldPieces{});
   ASSERT_TRUE(result.ok()) << result.error().message;
   const GeometricPath& path = *result.value().path;
   EXPECT_EQ(path.length(), 0.0);
   const PathPoint p = path.at(0.0);
   EXPECT_EQ(p.q, q);
-  EXPECT_EQ(p.dq_ds, JointVector::Zero());
-  EXPECT_EQ(p.d2q_ds2, JointVector::Zero());
+  EXPECT_EQ(p.dq_ds, JointVector::Zero(2));
+  EXPECT_EQ(p.d2q_ds2, JointVector::Zero(2));
 }
 
 TEST(PathPlanner, VeryShortMovesAreValid) {
   for (double step : {1e-8, 1e-6, 1e-4, 1e-2}) {
-    const JointVector start(0.58, 2.97), goal = start + JointVector(step, -step);
+    const JointVector start{{0.58, 2.97}}, goal = start + JointVector{{step, -step}};
     const auto result = planner().plan(start, goal, test::referencePieces("coral+algae"));
     ASSERT_TRUE(result.ok()) << step << ": " << result.error().message;
     const GeometricPath& path = *result.value().path;
@@ -193,17 +193,17 @@ TEST(PathPlanner, VeryShortMovesAreValid) {
 TEST(PathPlanner, BadInputsGiveTypedErrors) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  const JointVector ok_start(0.2, 1.57), ok_goal(1.93, 1.71);
+  const JointVector ok_start{{0.2, 1.57}}, ok_goal{{1.93, 1.71}};
   const HeldPieces none{};
-  EXPECT_EQ(planner().plan(JointVector(nan, 1.0), ok_goal, none).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(planner().plan(ok_start, JointVector(1.0, inf), none).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(planner().plan(ok_start, ok_goal, none, JointVector(nan, 0.0)).status(), PlanStatus::kInvalidInput);
-  EXPECT_EQ(planner().plan(JointVector(-0.1, 1.57), ok_goal, none).status(), PlanStatus::kStartOutOfRange);
-  EXPECT_EQ(planner().plan(JointVector(0.2, 6.2), ok_goal, none).status(), PlanStatus::kStartOutOfRange);
-  EXPECT_EQ(planner().plan(ok_start, JointVector(2.01, 1.57), none).status(), PlanStatus::kGoalOutOfRange);
-  EXPECT_EQ(planner().plan(ok_start, JointVector(1.0, -0.01), none).status(), PlanStatus::kGoalOutOfRange);
+  EXPECT_EQ(planner().plan(JointVector{{nan, 1.0}}, ok_goal, none).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(planner().plan(ok_start, (JointVector{{1.0, inf}}), none).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(planner().plan(ok_start, ok_goal, none, (JointVector{{nan, 0.0}})).status(), PlanStatus::kInvalidInput);
+  EXPECT_EQ(planner().plan(JointVector{{-0.1, 1.57}}, ok_goal, none).status(), PlanStatus::kStartOutOfRange);
+  EXPECT_EQ(planner().plan(JointVector{{0.2, 6.2}}, ok_goal, none).status(), PlanStatus::kStartOutOfRange);
+  EXPECT_EQ(planner().plan(ok_start, (JointVector{{2.01, 1.57}}), none).status(), PlanStatus::kGoalOutOfRange);
+  EXPECT_EQ(planner().plan(ok_start, (JointVector{{1.0, -0.01}}), none).status(), PlanStatus::kGoalOutOfRange);
   // Arm pointing straight down at the bottom of the rail: through the floor / drivetrain.
-  const JointVector in_floor(0.0, 4.71);
+  const JointVector in_floor{{0.0, 4.71}};
   ASSERT_LT(planner().world(none).distance(in_floor).value, model().clearance_m);
   const auto start_hit = planner().plan(in_floor, ok_goal, none);
   EXPECT_EQ(start_hit.status(), PlanStatus::kStartInCollision);
@@ -214,7 +214,7 @@ TEST(PathPlanner, BadInputsGiveTypedErrors) {
   std::uniform_real_distribution<double> t(0.0, 2.0), th(0.0, 6.1);
   int found = 0;
   for (int i = 0; i < 5000 && found < 5; ++i) {
-    const JointVector q(t(rng), th(rng));
+    const JointVector q{{t(rng), th(rng)}};
     if (planner().world(none).distance(q).value < 0.1) continue;
     if (planner().world(test::referencePieces("algae")).distance(q).value >= model().clearance_m) continue;
     ++found;
@@ -227,7 +227,7 @@ TEST(PathPlanner, BadInputsGiveTypedErrors) {
 TEST(PathPlanner, CagedGoalIsNoPath) {
   // Two bars just above and below the arm pointing forward at t = 1: the pose keeps the
   // clearance, but any motion out of it comes closer than the clearance.
-  const Point2 pivot = linkFrames(model().joints, JointVector(1.0, 0.0))[1].origin_m;
+  const Point2 pivot = linkFrames(model().joints, JointVector{{1.0, 0.0}})[1].origin_m;
   auto box = [](double x0, double y0, double x1, double y1) {
     return ConvexPolygon::fromVertices({Point2(x0, y0), Point2(x1, y0), Point2(x1, y1), Point2(x0, y1)}).value();
   };
@@ -238,7 +238,7 @@ TEST(PathPlanner, CagedGoalIsNoPath) {
   RobotModel caged = model();
   caged.scenes = {scene};
   const PathPlanner cage(caged, scene);
-  const JointVector inside(1.0, 0.0), outside(0.2, 1.57);
+  const JointVector inside{{1.0, 0.0}}, outside{{0.2, 1.57}};
   ASSERT_GE(cage.world(HeldPieces{}).distance(inside).value, caged.clearance_m);
   ASSERT_GE(cage.world(HeldPieces{}).distance(outside).value, caged.clearance_m);
   const auto in = cage.plan(outside, inside, HeldPieces{});
@@ -246,11 +246,11 @@ TEST(PathPlanner, CagedGoalIsNoPath) {
   const auto out = cage.plan(inside, outside, HeldPieces{});
   EXPECT_EQ(out.status(), PlanStatus::kNoPath) << (out.ok() ? "found a path" : out.error().message);
   // The rest of the scene is open: other moves still work.
-  const auto open = cage.plan(outside, JointVector(0.6, 3.0), HeldPieces{});
+  const auto open = cage.plan(outside, JointVector{{0.6, 3.0}}, HeldPieces{});
   EXPECT_TRUE(open.ok()) << open.error().message;
   // A moving start searches from its lead-in's end; the refusal quotes the start asked for, then
   // that end (the lead-in's end alone is a start the user never asked for).
-  const auto moving = cage.plan(outside, inside, HeldPieces{}, JointVector(0.0, 1.0));
+  const auto moving = cage.plan(outside, inside, HeldPieces{}, JointVector{{0.0, 1.0}});
   ASSERT_EQ(moving.status(), PlanStatus::kNoPath) << (moving.ok() ? "found a path" : "");
   EXPECT_EQ(
       moving.error().message.rfind("the goal (1.0000 m, 0.0000 rad) cannot be reached from (0.2000 m, 1.5700 rad) "
@@ -272,7 +272,7 @@ TEST(PathPlanner, ABandsGridWithNoPathGivesWayToTheExactOffsetsGrid) {
   ASSERT_GE(offset, reef.offset_range_m.min);
   ASSERT_LE(offset, reef.offset_range_m.max);
   const PathPlanner shifted = PathPlanner(model(), reef, band).atOffset(offset);
-  const JointVector start(1.42206946, 0.0366818841), goal(1.93, 1.71);  // near l2_branch; NET
+  const JointVector start{{1.42206946, 0.0366818841}}, goal{{1.93, 1.71}};  // near l2_branch; NET
   const CollisionWorld& world = shifted.world(HeldPieces{});
   ASSERT_GE(world.distance(start).value, model().clearance_m);
   ASSERT_LT(world.distance(start).value, model().clearance_m + band.max - band.min);
@@ -291,21 +291,21 @@ TEST(PathPlanner, ABandsGridWithNoPathGivesWayToTheExactOffsetsGrid) {
   EXPECT_GE(check.min_distance, model().clearance_m);
   EXPECT_TRUE(check.within_limits);
   // So does a moving start, which searches from its lead-in's end.
-  const auto moving = shifted.plan(start, goal, HeldPieces{}, JointVector(0.2, 0.0));
+  const auto moving = shifted.plan(start, goal, HeldPieces{}, (JointVector{{0.2, 0.0}}));
   ASSERT_TRUE(moving.ok()) << moving.error().message;
   EXPECT_TRUE(moving.value().lead_in);
   EXPECT_TRUE(moving.value().exact_offset_grid);
   EXPECT_GE(denseCheck(*moving.value().path, world).min_distance, model().clearance_m);
   // A move the band's grid serves keeps to it.
-  const auto open = shifted.plan(JointVector(0.49, 6.07), JointVector(1.97, 5.17), HeldPieces{});  // L1 -> L4
+  const auto open = shifted.plan(JointVector{{0.49, 6.07}}, (JointVector{{1.97, 5.17}}), HeldPieces{});  // L1 -> L4
   ASSERT_TRUE(open.ok()) << open.error().message;
   EXPECT_FALSE(open.value().direct);
   EXPECT_FALSE(open.value().exact_offset_grid);
 }
 
 TEST(PathPlanner, StartVelocitySetsTheStartDirectionWithUnitSpeed) {
-  const JointVector start(1.0, 1.57), goal(0.2, 1.57);
-  const JointVector v0(0.8, 2.0);  // moving up and rotating while the goal is below
+  const JointVector start{{1.0, 1.57}}, goal{{0.2, 1.57}};
+  const JointVector v0{{0.8, 2.0}};  // moving up and rotating while the goal is below
   const auto result = planner().plan(start, goal, HeldPieces{}, v0);
   ASSERT_TRUE(result.ok()) << result.error().message;
   const PathPoint p = result.value().path->at(0.0);
@@ -320,7 +320,7 @@ TEST(PathPlanner, StartVelocitySetsTheStartDirectionWithUnitSpeed) {
 
 TEST(PathPlanner, StartVelocityIntoALimitShortensTheLeadIn) {
   // Moving down fast near the bottom of the rail: the lead-in is halved until it fits.
-  const JointVector start(0.2, 1.57), goal(1.2, 1.57), v0(-5.0, 0.0);
+  const JointVector start{{0.2, 1.57}}, goal{{1.2, 1.57}}, v0{{-5.0, 0.0}};
   const auto result = planner().plan(start, goal, HeldPieces{}, v0);
   ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_TRUE(result.value().lead_in);
@@ -334,7 +334,7 @@ TEST(PathPlanner, StartVelocityIntoALimitShortensTheLeadIn) {
 }
 
 TEST(PathPlanner, MovingStartWithTheSameGoalGoesOutAndBack) {
-  const JointVector q(1.0, 1.57), v0(0.5, 1.0);
+  const JointVector q{{1.0, 1.57}}, v0{{0.5, 1.0}};
   const auto result = planner().plan(q, q, HeldPieces{}, v0);
   ASSERT_TRUE(result.ok()) << result.error().message;
   const GeometricPath& path = *result.value().path;
@@ -350,10 +350,10 @@ TEST(PathPlanner, RandomRequestsGiveValidPathsOrTypedErrors) {
   int ok = 0, refused = 0, no_path = 0;
   while (ok + refused < 40) {
     const HeldPieces pieces = HeldPieces::fromIndex(set(rng));
-    const JointVector start(t(rng), th(rng)), goal(t(rng), th(rng));
+    const JointVector start{{t(rng), th(rng)}}, goal{{t(rng), th(rng)}};
     const CollisionWorld& world = planner().world(pieces);
     if (world.distance(start).value < model().clearance_m || world.distance(goal).value < model().clearance_m) continue;
-    const JointVector v0 = (ok + refused) % 2 == 0 ? JointVector::Zero() : JointVector{v(rng), 3.0 * v(rng)};
+    const JointVector v0 = (ok + refused) % 2 == 0 ? JointVector::Zero(2) : JointVector{{v(rng), 3.0 * v(rng)}};
     const auto result = planner().plan(start, goal, pieces, v0);
     if (!result.ok()) {
       ++refused;

@@ -37,11 +37,11 @@ std::array<int, 2> checkOnPublicMoves(ShapeSearch<Settings> search, const Settin
   int shaped = 0, much_faster = 0, checked = 0;
   for (const test::PublicMove& move : test::publicMoves()) {
     // The search's own smoothed path alone, not yet chosen for time.
-    auto found = planner().candidates(move.from, move.to, move.pieces, JointVector::Zero(), PathAlternatives::kNone);
+    auto found = planner().candidates(move.from, move.to, move.pieces, JointVector::Zero(2), PathAlternatives::kNone);
     if (!found || found.value().front().direct) continue;
     const PlannedPath& path = found.value().front();
     const CollisionWorld& world = planner().world(move.pieces);
-    const ShapedPath result = search(path.waypoints, 1, JointVector::Zero(), world, model(), 0.0, settings);
+    const ShapedPath result = search(path.waypoints, 1, JointVector::Zero(2), world, model(), 0.0, settings);
     ++checked;
     const double before_s = estimateDuration(*path.path, drives, 0.0, grid_points);
     EXPECT_LE(result.evaluations, max_evaluations) << move.label;
@@ -84,7 +84,7 @@ TEST(RefineShapeForTime, NeverSlowerNorCloserAndKeepsTheEnds) {
 // rest of the path can still be made faster.
 TEST(RefineShapeForTime, HoldingTheTouchedPlaceStillFindsAFasterShape) {
   const test::PublicMove& move = test::publicMove("coral:INTAKE->L2");
-  auto found = planner().candidates(move.from, move.to, move.pieces, JointVector::Zero());
+  auto found = planner().candidates(move.from, move.to, move.pieces, JointVector::Zero(2));
   ASSERT_TRUE(found.ok());
   const PlannedPath* shortcut = nullptr;
   for (const PlannedPath& c : found.value()) {
@@ -94,27 +94,27 @@ TEST(RefineShapeForTime, HoldingTheTouchedPlaceStillFindsAFasterShape) {
   const CollisionWorld& world = planner().world(move.pieces);
   // From the first search's shape, as the planner refines it.
   const std::vector<JointVector> start =
-      shapeForTime(shortcut->waypoints, 1, JointVector::Zero(), world, model(), 0.0, ShapeSearchSettings{}).waypoints;
+      shapeForTime(shortcut->waypoints, 1, JointVector::Zero(2), world, model(), 0.0, ShapeSearchSettings{}).waypoints;
   ShapeRefinementSettings held;
   ShapeRefinementSettings whole = held;
   whole.pin_width = 0.0;
-  const ShapedPath with = refineShapeForTime(start, 1, JointVector::Zero(), world, model(), 0.0, held);
-  const ShapedPath without = refineShapeForTime(start, 1, JointVector::Zero(), world, model(), 0.0, whole);
+  const ShapedPath with = refineShapeForTime(start, 1, JointVector::Zero(2), world, model(), 0.0, held);
+  const ShapedPath without = refineShapeForTime(start, 1, JointVector::Zero(2), world, model(), 0.0, whole);
   EXPECT_LT(with.estimate_s, 0.995 * without.estimate_s)
       << "held " << with.estimate_s << " s, whole bumps only " << without.estimate_s << " s";
 }
 
 TEST(ShapeForTime, WithoutFreeKnotsOrBumpsReturnsTheInput) {
   const CollisionWorld& world = planner().world(HeldPieces{});
-  const std::vector<JointVector> segment{JointVector(0.2, 1.57), JointVector(0.3, 1.7)};
-  const ShapedPath two = shapeForTime(segment, 1, JointVector::Zero(), world, model(), 0.0, ShapeSearchSettings{});
+  const std::vector<JointVector> segment{JointVector{{0.2, 1.57}}, JointVector{{0.3, 1.7}}};
+  const ShapedPath two = shapeForTime(segment, 1, JointVector::Zero(2), world, model(), 0.0, ShapeSearchSettings{});
   EXPECT_EQ(two.improvements, 0);
   EXPECT_EQ(two.evaluations, 0);
   EXPECT_EQ(two.waypoints, segment);
-  const std::vector<JointVector> bent{JointVector(0.2, 1.57), JointVector(0.5, 1.9), JointVector(0.6, 2.9)};
+  const std::vector<JointVector> bent{JointVector{{0.2, 1.57}}, JointVector{{0.5, 1.9}}, JointVector{{0.6, 2.9}}};
   ShapeSearchSettings none;
   none.bumps = 0;
-  const ShapedPath unchanged = shapeForTime(bent, 1, JointVector::Zero(), world, model(), 0.0, none);
+  const ShapedPath unchanged = shapeForTime(bent, 1, JointVector::Zero(2), world, model(), 0.0, none);
   EXPECT_EQ(unchanged.improvements, 0);
   EXPECT_EQ(unchanged.waypoints, bent);
 }

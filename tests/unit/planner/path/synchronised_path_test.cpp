@@ -32,8 +32,8 @@ const PathPlanner& planner() { return test::referencePathPlanner(); }
 double slowerJointAloneS(const JointVector& from, const JointVector& to) {
   const DriveModel drives = model().driveModel({});
   double slower = 0.0;
-  for (int j = 0; j < kJointCount; ++j) {
-    JointVector direction = JointVector::Zero();
+  for (int j = 0; j < 2; ++j) {
+    JointVector direction = JointVector::Zero(2);
     direction[j] = to[j] > from[j] ? 1.0 : -1.0;
     slower =
         std::max(slower, estimateDuration(StraightPath(from, direction, std::abs(to[j] - from[j])), drives, 0.0, 1000));
@@ -72,7 +72,7 @@ TEST(SynchronisedPath, OnThePublicMovesEveryPathIsSoundAndSomeReachTheSlowerJoin
 }
 
 TEST(SynchronisedPath, IntakeToStowRunsTheSlowerJointAtItsOwnTime) {
-  const JointVector from(0.58, 2.97), to(0.2, 1.57);
+  const JointVector from{{0.58, 2.97}}, to{{0.2, 1.57}};
   const auto found = synchronisedPath(from, to, planner().world(HeldPieces{}), model(), kNoBound);
   ASSERT_TRUE(found.has_value());
   expectSound(*found, from, to, planner().world(HeldPieces{}));
@@ -80,20 +80,20 @@ TEST(SynchronisedPath, IntakeToStowRunsTheSlowerJointAtItsOwnTime) {
 }
 
 TEST(SynchronisedPath, NothingWhenTheBoundCannotBeBeatenOrAJointStays) {
-  const JointVector from(0.58, 2.97), to(0.2, 1.57);
+  const JointVector from{{0.58, 2.97}}, to{{0.2, 1.57}};
   const CollisionWorld& world = planner().world(HeldPieces{});
   const auto free = synchronisedPath(from, to, world, model(), kNoBound);
   ASSERT_TRUE(free.has_value());
   EXPECT_FALSE(synchronisedPath(from, to, world, model(), 0.999 * free->slower_alone_s).has_value());
-  EXPECT_FALSE(synchronisedPath(from, JointVector(0.58, 1.57), world, model(), kNoBound).has_value());
-  EXPECT_FALSE(synchronisedPath(from, JointVector(0.2, 2.97), world, model(), kNoBound).has_value());
+  EXPECT_FALSE(synchronisedPath(from, (JointVector{{0.58, 1.57}}), world, model(), kNoBound).has_value());
+  EXPECT_FALSE(synchronisedPath(from, (JointVector{{0.2, 2.97}}), world, model(), kNoBound).has_value());
 }
 
 TEST(SynchronisedPath, NothingWhereEveryPairingHitsTheReef) {
   // none L4 -> PROCESSOR: the arm must swing round the reef's posts while the elevator descends;
   // no pairing of the two monotone profiles keeps the clearance.
-  EXPECT_FALSE(synchronisedPath(JointVector(1.97, 5.17), JointVector(0.16, 0.1), planner().world(HeldPieces{}), model(),
-                                kNoBound)
+  EXPECT_FALSE(synchronisedPath(JointVector{{1.97, 5.17}}, (JointVector{{0.16, 0.1}}), planner().world(HeldPieces{}),
+                                model(), kNoBound)
                    .has_value());
 }
 
@@ -106,7 +106,7 @@ TEST(SynchronisedPath, SeededRandomFreeMovesAreSound) {
     for (;;) {
       const double t = elevator(rng);
       const double theta = arm(rng);  // sequenced: the order of two draws in one call is unspecified
-      const JointVector q(t, theta);
+      const JointVector q{{t, theta}};
       if (world.distance(q).value >= model().clearance_m) return q;
     }
   };

@@ -31,7 +31,7 @@ DriveModel accelerationLimited() {
   return testing::drivesOf(elevator, testing::armDrive());
 }
 
-const StraightPath kLine(JointVector(0.5, 1.0), JointVector(1.0, 0.0), kDistance);
+const StraightPath kLine(JointVector{{0.5, 1.0}}, JointVector{{1.0, 0.0}}, kDistance);
 
 // From v0 up at A to the peak, where braking at A just stops at D: v_p^2 = A D + v0^2 / 2.
 double bangBangSeconds(double v0) {
@@ -97,7 +97,7 @@ TEST(PathTiming, FractionsAndTimesFollowTheMotion) {
 }
 
 TEST(PathTiming, AZeroLengthPathTakesNoTime) {
-  const StraightPath point(JointVector(0.5, 1.0), JointVector(1.0, 0.0), 0.0);
+  const StraightPath point(JointVector{{0.5, 1.0}}, JointVector{{1.0, 0.0}}, 0.0);
   const TimedFractions times = reachabilityTimes(point, accelerationLimited(), 0.0, 50);
   ASSERT_EQ(times.fraction.size(), 1u);
   EXPECT_EQ(times.fraction[0], 0.0);

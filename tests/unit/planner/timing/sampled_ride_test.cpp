@@ -94,9 +94,9 @@ TEST(SampledRide, FindsTheSameRideOnUnevenSamples) {
 TEST(SampledRide, GainsAtAMovingStartsTurnShrinkWithTheSpacing) {
   const ShippedRobot& robot = shippedRobot("reefscape-2025");
   PlanRequest request;
-  request.start = JointVector(0.708106406, 3.11534736);
-  request.start_velocity = JointVector(-0.00719163449, 10.2194838);
-  request.goal = JointVector(0.5622, 2.8539);
+  request.start = JointVector{{0.708106406, 3.11534736}};
+  request.start_velocity = JointVector{{-0.00719163449, 10.2194838}};
+  request.goal = JointVector{{0.5622, 2.8539}};
   const auto trajectory = planned(robot, request);
   ASSERT_TRUE(trajectory);
   const double at_1ms = ratio(*trajectory, 1e-3);

@@ -64,7 +64,7 @@ inline DriveParams armDrive() {
 // The reference robot's chain (a carriage on a rail tilted 80 degrees carrying an arm): only the
 // joint types and axes matter to the drives (the gravity angle of each joint).
 inline JointChain referenceChain() {
-  JointChain chain;
+  JointChain chain(2);
   chain[0] =
       ChainJoint{"elevator", JointType::kPrismatic, Point2(-0.4, 0.2), 80.0 * std::numbers::pi / 180.0, {0.0, 2.0}};
   chain[1] = ChainJoint{"arm", JointType::kRevolute, Point2::Zero(), 0.0, {0.0, 6.108652381980153}};
@@ -77,7 +77,7 @@ inline DriveModel drivesOf(const DriveParams& first, const DriveParams& second) 
 }
 inline DriveModel referenceDrives() { return drivesOf(elevatorDrive(), armDrive()); }
 
-inline const JointVector kMetric(1.0, 0.1);  // Sigma of the reference configuration
+inline const JointVector kMetric{{1.0, 0.1}};  // Sigma of the reference configuration
 
 inline double weightedNorm(const JointVector& v) { return std::sqrt(v.dot(kMetric.cwiseProduct(v))); }
 
@@ -89,9 +89,10 @@ class LinePath final : public GeometricPath {
   [[nodiscard]] PathPoint at(double s) const override {
     s = std::clamp(s, 0.0, length_);
     PathPoint p;
-    const JointVector u = length_ > 0.0 ? JointVector((to_ - from_) / length_) : JointVector::Zero();
+    const JointVector u = length_ > 0.0 ? JointVector((to_ - from_) / length_) : JointVector::Zero(2);
     p.q = length_ > 0.0 ? JointVector(from_ + s * u) : from_;
     p.dq_ds = u;
+    p.d2q_ds2 = JointVector::Zero(from_.size());
     return p;
   }
 
@@ -110,11 +111,11 @@ class ArcPath final : public GeometricPath {
     s = std::clamp(s, 0.0, length());
     const double dir = sweep_ >= 0.0 ? 1.0 : -1.0;
     const double phi = from_ + dir * s / radius_;
-    const JointVector inv_sqrt(1.0 / std::sqrt(kMetric[0]), 1.0 / std::sqrt(kMetric[1]));
+    const JointVector inv_sqrt{{1.0 / std::sqrt(kMetric[0]), 1.0 / std::sqrt(kMetric[1])}};
     PathPoint p;
-    p.q = center_ + radius_ * inv_sqrt.cwiseProduct(JointVector(std::cos(phi), std::sin(phi)));
-    p.dq_ds = dir * inv_sqrt.cwiseProduct(JointVector(-std::sin(phi), std::cos(phi)));
-    p.d2q_ds2 = -(1.0 / radius_) * inv_sqrt.cwiseProduct(JointVector(std::cos(phi), std::sin(phi)));
+    p.q = center_ + radius_ * inv_sqrt.cwiseProduct(JointVector{{std::cos(phi), std::sin(phi)}});
+    p.dq_ds = dir * inv_sqrt.cwiseProduct(JointVector{{-std::sin(phi), std::cos(phi)}});
+    p.d2q_ds2 = -(1.0 / radius_) * inv_sqrt.cwiseProduct(JointVector{{std::cos(phi), std::sin(phi)}});
     return p;
   }
 
@@ -235,7 +236,7 @@ class FineReference {
 
 // A sampled, normalised problem on the S-curve (q' of the arm changes sign).
 inline topp::Problem wiggleProblem(int points, double b_start = 0.0) {
-  const WigglePath path(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  const WigglePath path(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}}, JointVector{{0.05, 0.8}}, 3.0, 2.0);
   topp::Problem problem;
   problem.b_start = b_start;
   topp::sampleGrid(path, points, problem);

@@ -33,7 +33,7 @@ TEST(ToppProblem, GridIsDenserWhereThePathBends) {
   EXPECT_GT(largest / smallest, 1.5);
   // A straight line keeps a uniform grid.
   topp::Problem line;
-  topp::sampleGrid(testing::LinePath(JointVector(0.0, 0.0), JointVector(1.0, 1.0)), 50, line);
+  topp::sampleGrid(testing::LinePath(JointVector{{0.0, 0.0}}, JointVector{{1.0, 1.0}}), 50, line);
   for (int k = 0; k < line.intervals(); ++k) EXPECT_NEAR(line.ds(k), 1.0 / 49.0, 1e-12);
 }
 
@@ -59,7 +59,7 @@ TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
   // Rest to rest on a line: even in s, the first and last intervals take far longer than the
   // middle ones; with the profile, 40 % of the points are even in time and the longest interval
   // shrinks, while the grid still spans [0, 1] in increasing order.
-  const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.5, 4.0));
+  const testing::LinePath path(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}});
   topp::Problem even;
   even.speed_bound = 1e3 / path.length();
   topp::sampleGrid(path, 100, even);
@@ -95,7 +95,7 @@ TEST(ToppProblem, AProfileSpreadsTheGridInTime) {
 // Each row at its sample point, for a given drive model: the volts or amps of that model's own
 // volts() at random path speeds and accelerations (a line whose joints never change direction).
 void expectRowsAreTheDriveModel(const DriveModel& drives) {
-  const testing::LinePath path(JointVector(0.2, 1.0), JointVector(1.8, 4.0));
+  const testing::LinePath path(JointVector{{0.2, 1.0}}, JointVector{{1.8, 4.0}});
   topp::Problem p;
   p.b_start = 0.0;
   topp::sampleGrid(path, 20, p);
@@ -138,11 +138,11 @@ TEST(ToppProblem, RowsAreTheFeedforwardAtTheirSamplePoints) { expectRowsAreTheDr
 
 // The coupled model: a double-jointed arm whose shoulder load depends on the elbow.
 TEST(ToppProblem, RowsAreTheRigidBodyDynamicsAtTheirSamplePoints) {
-  JointChain chain;
+  JointChain chain(2);
   chain[0] = ChainJoint{"shoulder", JointType::kRevolute, Point2(0.0, 0.654), 0.0, {0.0, 3.2}};
   chain[1] = ChainJoint{"elbow", JointType::kRevolute, Point2(0.686, 0.0), 0.0, {0.5, 5.8}};
-  const std::array<LinkInertia, kJointCount> bodies{LinkInertia{1.036, Point2(0.4318, 0.0), 0.08},
-                                                    LinkInertia{3.76, Point2(0.769, 0.02), 0.28}};
+  const PerJoint<LinkInertia> bodies{LinkInertia{1.036, Point2(0.4318, 0.0), 0.08},
+                                     LinkInertia{3.76, Point2(0.769, 0.02), 0.28}};
   DriveParams shoulder = testing::armDrive();
   shoulder.kS_volts = 0.2;
   shoulder.gearing = 197.0;
@@ -154,7 +154,7 @@ TEST(ToppProblem, RowsAreTheRigidBodyDynamicsAtTheirSamplePoints) {
 // A joint that does not move along the path still needs its gravity term: held by more than its
 // limits allow it cannot hold whatever the motion, and the error says which limit and where.
 TEST(ToppProblem, ALimitNoMotionCanMeetIsRefusedWithItsPlace) {
-  const testing::LinePath arm_only(JointVector(1.0, 1.0), JointVector(1.0, 3.0));
+  const testing::LinePath arm_only(JointVector{{1.0, 1.0}}, JointVector{{1.0, 3.0}});
   topp::Problem p;
   topp::sampleGrid(arm_only, 20, p);
   topp::LimitMargins margins;

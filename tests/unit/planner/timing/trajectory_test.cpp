@@ -28,7 +28,8 @@ using testing::referenceDrives;
 using testing::WigglePath;
 
 std::shared_ptr<const GeometricPath> wiggle() {
-  return std::make_shared<WigglePath>(JointVector(0.2, 1.0), JointVector(1.5, 4.0), JointVector(0.05, 0.8), 2.0, 2.0);
+  return std::make_shared<WigglePath>(JointVector{{0.2, 1.0}}, JointVector{{1.5, 4.0}}, JointVector{{0.05, 0.8}}, 2.0,
+                                      2.0);
 }
 
 // An arbitrary valid profile: up, along, down, with uneven spacing.
@@ -40,7 +41,7 @@ Trajectory makeTrajectory(std::shared_ptr<const GeometricPath> path) {
 }
 
 TEST(Trajectory, InvalidProfilesAreTypedErrors) {
-  const auto path = std::make_shared<LinePath>(JointVector(0.0, 0.0), JointVector(1.0, 0.0));
+  const auto path = std::make_shared<LinePath>(JointVector{{0.0, 0.0}}, JointVector{{1.0, 0.0}});
   auto make = [&](std::vector<double> s, std::vector<double> b) {
     return Trajectory::create(path, referenceDrives(), std::move(s), std::move(b)).status();
   };
@@ -120,15 +121,15 @@ TEST(Trajectory, EndsAndOutOfRangeTimes) {
   const TrajectorySample before = t.sample(-3.0);
   EXPECT_EQ(before.t, 0.0);
   EXPECT_EQ(before.q, path->at(0.0).q);
-  EXPECT_EQ(before.qdot, JointVector::Zero());
+  EXPECT_EQ(before.qdot, JointVector::Zero(2));
   const TrajectorySample end = t.sample(t.duration_s());
   EXPECT_LT((end.q - path->at(path->length()).q).norm(), 1e-9);
   EXPECT_LT(end.qdot.norm(), 1e-6);
   // After the end the goal is held at rest (gravity feedforward only).
   const TrajectorySample after = t.sample(t.duration_s() + 1.0);
   EXPECT_LT((after.q - path->at(path->length()).q).norm(), 1e-12);
-  EXPECT_EQ(after.qdot, JointVector::Zero());
-  EXPECT_EQ(after.qddot, JointVector::Zero());
+  EXPECT_EQ(after.qdot, JointVector::Zero(2));
+  EXPECT_EQ(after.qddot, JointVector::Zero(2));
   EXPECT_NEAR(after.volts[test::kElevator], elevatorDrive().kG_volts, 1e-12);
   const TrajectorySample nan = t.sample(std::nan(""));
   EXPECT_TRUE(nan.q.allFinite());

@@ -15,15 +15,15 @@
 namespace cyber::daemon {
 
 struct FrameWriterSettings {
-  std::array<std::uint8_t, 2> joint_devices{1, 2};  // setpoint frames of joint 0 and joint 1
+  planner::PerJoint<std::uint8_t> joint_devices{1, 2};  // the setpoint frame of each joint, chain order
   std::uint8_t status_device = 3;
   int status_every_ticks = 20;  // 200 Hz / 10 Hz
 };
 
 // Setpoints as they went on the wire, decoded back (quantised), for ARM_SETPOINT.
 struct WireSetpoints {
-  bool written = false;                   // both frames accepted by the port
-  std::array<can::Setpoint, 2> joints{};  // by joint index
+  bool written = false;                     // every joint's frame accepted by the port
+  planner::PerJoint<can::Setpoint> joints;  // by joint index
 };
 
 struct WriteReport {
@@ -54,7 +54,7 @@ class FrameWriter {
 
   CanPort& port_;
   FrameWriterSettings settings_;
-  std::array<std::uint8_t, 2> joint_sequences_{};
+  std::array<std::uint8_t, planner::kMaxJoints> joint_sequences_{};
   std::uint8_t status_sequence_ = 0;
   int ticks_since_status_ = 0;
   bool failing_ = false;

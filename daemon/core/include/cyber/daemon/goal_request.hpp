@@ -32,7 +32,7 @@ struct GoalRequest {
 
 struct ValidGoal {
   std::int64_t request_id = 0;
-  planner::JointVector q = planner::JointVector::Zero();
+  planner::JointVector q;
   planner::HeldPieces pieces;
   int scene = 0;
   double scene_offset_m = 0.0;

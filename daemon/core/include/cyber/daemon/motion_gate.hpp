@@ -22,8 +22,8 @@ struct GateSettings {
 // Latest inputs as the event loop saw them (receive times on the monotonic clock).
 struct RobotInputs {
   MonoNs state_ns = kNever;  // arrival of the latest valid ARM_STATE
-  planner::JointVector measured_q = planner::JointVector::Zero();
-  planner::JointVector measured_qdot = planner::JointVector::Zero();
+  planner::JointVector measured_q;
+  planner::JointVector measured_qdot;
   MonoNs heartbeat_ns = kNever;           // arrival of the latest robot controller heartbeat
   bool heartbeat_watchdog = false;        // its system-watchdog bit
   bool heartbeat_motor_override = false;  // its FTC motor override flag (Systemcore only)

@@ -14,9 +14,9 @@ enum class MotionKind {
 
 struct MotionRequest {
   MotionKind kind = MotionKind::kMove;
-  JointVector start = JointVector::Zero();
-  JointVector goal = JointVector::Zero();
-  JointVector start_velocity = JointVector::Zero();  // non-zero for a splice into a running motion
+  JointVector start;
+  JointVector goal;
+  JointVector start_velocity;  // non-zero for a splice into a running motion
   planner::HeldPieces pieces;
   int scene = 0;
   double scene_offset_m = 0.0;  // the scene's field elements shifted in x (planner::PlanRequest)

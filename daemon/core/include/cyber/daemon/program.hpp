@@ -46,10 +46,10 @@ class Program {
   // A program with no segments: hold q. Id 0 marks the streamer's own hold programs.
   static Program holdAt(std::uint64_t epoch, const JointVector& q);
 
-  std::uint64_t id = 0;                      // unique per posted program; 0 for the streamer's own
-  std::uint64_t base_id = 0;                 // the program this one was spliced into
-  std::uint64_t epoch = 0;                   // streamer epoch it is valid for (bumped on every stop/re-enable)
-  JointVector rest_q = JointVector::Zero();  // position before the first segment
+  std::uint64_t id = 0;       // unique per posted program; 0 for the streamer's own
+  std::uint64_t base_id = 0;  // the program this one was spliced into
+  std::uint64_t epoch = 0;    // streamer epoch it is valid for (bumped on every stop/re-enable)
+  JointVector rest_q;         // position before the first segment
 
   // The last segment starts at splice_ns (fixed splice), or, when floating, when the streamer
   // adopts the program but not before the previous segments end (start from rest).

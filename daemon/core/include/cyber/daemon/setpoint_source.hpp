@@ -12,9 +12,9 @@ using planner::JointVector;
 
 // Per joint by index (each in its joint's unit, m or rad): what one setpoint frame carries.
 struct JointSetpoints {
-  JointVector position = JointVector::Zero();
-  JointVector velocity = JointVector::Zero();
-  JointVector volts = JointVector::Zero();  // feedforward
+  JointVector position;
+  JointVector velocity;
+  JointVector volts;  // feedforward
 };
 
 class SetpointSource {

@@ -34,7 +34,7 @@ struct StreamEvent {
   std::int64_t request_id = -1;
   std::uint64_t epoch = 0;
   MonoNs start_ns = 0;
-  JointVector position = JointVector::Zero();
+  JointVector position;
   GateReason gate_reason = GateReason::kOpen;
   RejectReason reject_reason = RejectReason::kLate;
   HoldCause hold_cause = HoldCause::kEnabled;

@@ -99,7 +99,7 @@ class Streamer {
   bool shutdown_hold_ = false;
   std::uint64_t epoch_ = 0;
   MonoNs last_sample_ns_ = kNever;
-  JointVector last_position_ = JointVector::Zero();
+  JointVector last_position_;
   std::int64_t executing_request_ = -1;
   MonoNs executing_end_ns_ = kNever;
   std::int64_t last_request_ = -1;

@@ -44,7 +44,7 @@ TEST(PathStrategies, TheWholeListIsWhatCandidatesTries) {
   for (const char* move : {"none:STOW->L4", "none:L1->NET", "coral:STOW->L2"}) {
     const test::PublicMove& m = test::publicMove(move);
     const auto all = planner.candidates(m.from, m.to, m.pieces);
-    const auto listed = planner.candidates(m.from, m.to, m.pieces, JointVector::Zero(), pathStrategies());
+    const auto listed = planner.candidates(m.from, m.to, m.pieces, JointVector::Zero(2), pathStrategies());
     ASSERT_TRUE(all.ok() && listed.ok()) << move;
     ASSERT_EQ(all.value().size(), listed.value().size()) << move;
     for (size_t i = 0; i < all.value().size(); ++i) EXPECT_EQ(all.value()[i].method, listed.value()[i].method);

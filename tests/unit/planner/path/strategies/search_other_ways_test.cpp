@@ -12,8 +12,8 @@ const MadeFor kMadeFor[] = {
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 
 const AddsNothing kAddsNothing[] = {
-    {"OtherWaysBelowTheDetourRatio", "other ways round", "none:L1->NET", true, JointVector::Zero()},
-    {"OtherWaysOfADirectPath", "other ways round", "none:STOW->INTAKE", false, JointVector::Zero()},
+    {"OtherWaysBelowTheDetourRatio", "other ways round", "none:L1->NET", true, JointVector::Zero(2)},
+    {"OtherWaysOfADirectPath", "other ways round", "none:STOW->INTAKE", false, JointVector::Zero(2)},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyAddsNothing, ::testing::ValuesIn(kAddsNothing),
                          [](const ::testing::TestParamInfo<AddsNothing>& info) {

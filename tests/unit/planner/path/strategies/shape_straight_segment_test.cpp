@@ -12,8 +12,8 @@ const MadeFor kMadeFor[] = {
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 
 const AddsNothing kAddsNothing[] = {
-    {"StraightSegmentAboveItsRatio", "shape the straight segment", "none:STOW->INTAKE", true, JointVector::Zero()},
-    {"StraightSegmentOnASearchedPath", "shape the straight segment", "none:INTAKE->L4", false, JointVector::Zero()},
+    {"StraightSegmentAboveItsRatio", "shape the straight segment", "none:STOW->INTAKE", true, JointVector::Zero(2)},
+    {"StraightSegmentOnASearchedPath", "shape the straight segment", "none:INTAKE->L4", false, JointVector::Zero(2)},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyAddsNothing, ::testing::ValuesIn(kAddsNothing),
                          [](const ::testing::TestParamInfo<AddsNothing>& info) {

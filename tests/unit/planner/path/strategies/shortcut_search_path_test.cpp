@@ -12,7 +12,7 @@ const MadeFor kMadeFor[] = {
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 
 const AddsNothing kAddsNothing[] = {
-    {"ShortcutOfADirectPath", "shortcut", "none:STOW->INTAKE", false, JointVector::Zero()},
+    {"ShortcutOfADirectPath", "shortcut", "none:STOW->INTAKE", false, JointVector::Zero(2)},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyAddsNothing, ::testing::ValuesIn(kAddsNothing),
                          [](const ::testing::TestParamInfo<AddsNothing>& info) {

@@ -43,7 +43,7 @@ inline const PathPlanner& gatesShutPlanner() {
 
 inline std::vector<PlannedPath> candidatesOf(const PathPlanner& planner, const std::string& move,
                                              std::span<const PathStrategy> strategies,
-                                             const JointVector& start_velocity = JointVector::Zero()) {
+                                             const JointVector& start_velocity = JointVector::Zero(2)) {
   const test::PublicMove& m = test::publicMove(move);
   auto found = planner.candidates(m.from, m.to, m.pieces, start_velocity, strategies);
   EXPECT_TRUE(found.ok()) << move << ": " << (found.ok() ? "" : found.error().message);

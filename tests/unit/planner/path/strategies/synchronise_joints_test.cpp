@@ -13,8 +13,8 @@ const MadeFor kMadeFor[] = {
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyMadeFor, ::testing::ValuesIn(kMadeFor));
 
 const AddsNothing kAddsNothing[] = {
-    {"SynchroniseOutsideItsWindow", "synchronise the joints", "none:INTAKE->STOW", true, JointVector::Zero()},
-    {"SynchroniseFromAMovingStart", "synchronise the joints", "none:INTAKE->STOW", false, JointVector(0.2, 0.0)},
+    {"SynchroniseOutsideItsWindow", "synchronise the joints", "none:INTAKE->STOW", true, JointVector::Zero(2)},
+    {"SynchroniseFromAMovingStart", "synchronise the joints", "none:INTAKE->STOW", false, JointVector{{0.2, 0.0}}},
 };
 INSTANTIATE_TEST_SUITE_P(Reference, StrategyAddsNothing, ::testing::ValuesIn(kAddsNothing),
                          [](const ::testing::TestParamInfo<AddsNothing>& info) {

@@ -3,7 +3,7 @@
 // deterministically: `--fault KIND@SECONDS` (seconds after start-up) or `--fault
 // KIND@motionN+SECONDS` (seconds after the N-th motion started; `motion+` is `motion1+`). A motion
 // starts with a setpoint frame carrying a non-zero velocity while the stream was at rest (no
-// setpoint yet, or the latest frames of both joints had zero velocity).
+// setpoint yet, or the latest frames of every joint had zero velocity).
 
 #include <optional>
 #include <string>

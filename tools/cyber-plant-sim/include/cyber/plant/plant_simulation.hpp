@@ -1,5 +1,6 @@
 #pragma once
-// The simulated mechanism with its two motor controllers, stepped on a fixed time grid.
+// The simulated mechanism with one motor controller per joint (as many as the plant has), stepped
+// on a fixed time grid.
 // Each controller tracks the latest setpoint it received, its position advanced by its velocity
 // since it arrived (the frames come every 5 ms; holding the position still would lag by v * 5 ms).
 // A controller that has heard nothing for setpoint_timeout_s, or that saw a broadcast disable since
@@ -26,9 +27,9 @@ struct SimulationSettings {
                               double controller_bandwidth_radps = kDefaultControllerBandwidth_radps);
 
   MechanismPlant plant;
-  std::array<PdGains, kJointCount> gains{};  // derived from the plant at the bandwidth given
-  double step_s = 0.001;                     // controller and integration step (a 1 kHz loop)
-  double setpoint_timeout_s = 0.1;           // no setpoint for longer: neutral
+  planner::PerJoint<PdGains> gains;  // one per joint, derived from the plant at the bandwidth given
+  double step_s = 0.001;             // controller and integration step (a 1 kHz loop)
+  double setpoint_timeout_s = 0.1;   // no setpoint for longer: neutral
 };
 
 struct ReceivedSetpoint {
@@ -38,6 +39,7 @@ struct ReceivedSetpoint {
 
 class PlantSimulation {
  public:
+  // initial_q: one position per joint of settings.plant, within its ranges.
   PlantSimulation(const SimulationSettings& settings, const planner::JointVector& initial_q);
 
   // Runs every whole step that starts before t_s: the state is then at the first grid time at or
@@ -47,12 +49,13 @@ class PlantSimulation {
   // A setpoint frame for `joint` arrived at t_s: advances to t_s first, then takes it. Clears a
   // broadcast-disable neutral.
   void receiveSetpoint(int joint, const JointCommand& command, double t_s);
-  // Broadcast disable: both controllers go neutral now, until their next setpoint.
+  // Broadcast disable: every controller goes neutral now, until its next setpoint.
   void disableOutputs();
 
   // The command a controller tracks at t_s, or nothing when it is neutral.
   [[nodiscard]] std::optional<JointCommand> effectiveCommand(int joint, double t_s) const;
 
+  [[nodiscard]] int jointCount() const { return settings_.plant.jointCount(); }
   [[nodiscard]] double time_s() const { return static_cast<double>(steps_) * settings_.step_s; }
   [[nodiscard]] const MechanismState& state() const { return state_; }
   [[nodiscard]] JointState state(int joint) const { return {state_.q[joint], state_.qdot[joint]}; }
@@ -60,7 +63,9 @@ class PlantSimulation {
   [[nodiscard]] const planner::JointVector& velocities() const { return state_.qdot; }
   // Voltage the controller applied during the latest step.
   [[nodiscard]] double appliedVolts(int joint) const { return applied_volts_[joint]; }
-  [[nodiscard]] const std::optional<ReceivedSetpoint>& latestSetpoint(int joint) const { return latest_[joint]; }
+  [[nodiscard]] const std::optional<ReceivedSetpoint>& latestSetpoint(int joint) const {
+    return latest_[static_cast<size_t>(joint)];
+  }
   [[nodiscard]] const SimulationSettings& settings() const { return settings_; }
 
  private:
@@ -69,9 +74,9 @@ class PlantSimulation {
   SimulationSettings settings_;
   long long steps_ = 0;  // time = steps_ * step_s, so long runs do not accumulate rounding
   MechanismState state_;
-  std::array<double, kJointCount> applied_volts_{};
-  std::array<std::optional<ReceivedSetpoint>, kJointCount> latest_{};
-  std::array<bool, kJointCount> disabled_{};
+  planner::JointVector applied_volts_;  // N entries
+  std::array<std::optional<ReceivedSetpoint>, kMaxJoints> latest_{};
+  JointFlags disabled_{};
 };
 
 }  // namespace cyber::plant

@@ -18,7 +18,8 @@ struct SimOptions {
   std::optional<std::string> config_path;    // --config; the embedded reference robot otherwise
   std::optional<std::string> can_interface;  // --can; the config's [daemon] can_interface otherwise
   std::optional<std::string> lcm_url;        // --lcm-url; the config's [daemon] lcm_url otherwise
-  // --initial Q0,Q1; default: the config's first named pose, else the middle of both ranges.
+  // --initial Q0[,Q1[,Q2]], one per joint (checked against the config); default: the config's
+  // first named pose, else the middle of every range.
   std::optional<planner::JointVector> initial_q;
   std::vector<std::string> pieces;          // --pieces NAME[,NAME...]: game pieces held (ARM_STATE, the plant's mass)
   double state_rate_hz = 100.0;             // --state-rate HZ
@@ -30,7 +31,8 @@ struct SimOptions {
   double setpoint_timeout_s = 0.1;          // --setpoint-timeout S
   // --bandwidth RADPS: the closed-loop bandwidth the controllers' gains are derived for.
   double controller_bandwidth_radps = kDefaultControllerBandwidth_radps;
-  std::array<std::optional<PdGains>, kJointCount> joint_gains;  // --joint0-gains / --joint1-gains KP,KD
+  // --joint0-gains, --joint1-gains, --joint2-gains KP,KD (only for joints the config has).
+  std::array<std::optional<PdGains>, kMaxJoints> joint_gains;
   int realtime_priority = 0;  // --realtime PRIO: SCHED_FIFO 1..99 (0: normal scheduling)
 };
 

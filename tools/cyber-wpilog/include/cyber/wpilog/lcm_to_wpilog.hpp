@@ -5,7 +5,6 @@
 // quite time order); trajectory samples are placed on that clock through the offset between the
 // message's receive time and its utime.
 
-#include <array>
 #include <cstdint>
 #include <string>
 
@@ -17,12 +16,13 @@
 
 namespace cyber::wpilog {
 
-// What the mechanism views need of the robot: the rail and the arm's reach.
-// What the logged mechanism drawings need of the robot: its chain and how far each link's
-// outline reaches along its own x axis.
+// What the logged mechanism drawings need of the robot: its chain of N joints (1 to
+// planner::kMaxJoints) and where each link's Mechanism2d ligament ends, in that link's frame: at
+// the next joint's origin for a link that carries one, so that each ligament starts where its
+// joint is; at the far end of its outline along its own x axis for the last link.
 struct MechanismGeometry {
   planner::JointChain chain;
-  std::array<double, planner::kJointCount> link_length_m{};
+  planner::PerJoint<planner::Point2> ligament_end_m;
 };
 MechanismGeometry mechanismGeometry(const planner::RobotModel& robot);
 
@@ -31,6 +31,9 @@ struct ConvertStats {
   int64_t converted = 0;    // decoded messages of the six channels
   int64_t undecodable = 0;  // events on those channels that did not decode
   int64_t other = 0;        // events on other channels
+  // Decoded states, setpoints, goals and trajectories whose joint values were left out because
+  // they have another joint count than the config's chain: another robot's, or the wrong --config.
+  int64_t other_joint_count = 0;
   uint64_t earliest_event_unix_us = 0;
 };
 

@@ -1,5 +1,6 @@
 #pragma once
-// The robot in the world: the side view of the scene (floor, reef, obstacles) with the robot's
+// The robot in the world, for a chain of any joint count: the side view of the scene (floor, reef,
+// obstacles) with the robot's
 // polygons and held pieces at a pose, a filmstrip and an animation of a planned move with its
 // smallest clearance marked, and the preview of a robot description (docs/configuration.md,
 // "Previewing a description").
@@ -34,7 +35,7 @@ WorldCanvas fitWorld(const planner::RobotModel& robot, double box_x, double box_
 struct WorldColors {
   uint8_t sky[3] = {246, 247, 252};
   uint8_t obstacle[3] = {110, 116, 130};
-  uint8_t links[2][3] = {{70, 110, 200}, {230, 115, 25}};                                    // by joint
+  uint8_t links[planner::kMaxJoints][3] = {{70, 110, 200}, {230, 115, 25}, {125, 85, 195}};  // by joint
   uint8_t pieces[4][3] = {{240, 236, 215}, {40, 170, 140}, {200, 60, 160}, {230, 200, 40}};  // by piece index
 };
 inline constexpr WorldColors kWorldColors{};
@@ -47,6 +48,7 @@ struct Clearance {
   planner::Point2 robot_point = planner::Point2::Zero(), obstacle_point = planner::Point2::Zero();
 };
 
+// The poses of a move at its sample times; every pose has one value per joint of the robot drawn.
 struct Move {
   std::vector<double> time_s;
   std::vector<planner::JointVector> q;
@@ -65,18 +67,20 @@ Result<Done, PlotStatus> renderWorldPng(const planner::RobotModel& robot, int sc
                                         const planner::JointVector& q, const std::string& title,
                                         const std::string& path);
 // `frames` poses at even times of the move side by side, the one nearest the smallest clearance
-// moved to it and framed in red; kNothingToDraw for a move without samples.
+// moved to it and framed in red; kNothingToDraw for a move without samples or whose poses are not
+// of the robot's joint count.
 Result<Done, PlotStatus> renderFilmstripPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
                                             const Move& move, int frames, const std::string& title,
                                             const std::string& path);
 // The move as an animated PNG (APNG) at `fps` (at most 200 frames), each frame with its closest
 // pair in grey and the smallest clearance of the move in red; one frame is at that smallest.
-// kNothingToDraw for a move without samples.
+// kNothingToDraw as for the filmstrip.
 Result<Done, PlotStatus> renderAnimationApng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
                                              const Move& move, int fps, const std::string& title,
                                              const std::string& path);
 // A robot description at a glance: the robot at `poses` over the obstacles of `scene`, and the
-// C-space map of `pieces` with the poses marked.
+// C-space view of `pieces` with the poses marked (sampleCSpace: for three joints the first two
+// with the third projected out, since the poses hold the third at different values).
 Result<Done, PlotStatus> renderConfigPreviewPng(const planner::RobotModel& robot, int scene, planner::HeldPieces pieces,
                                                 const std::vector<NamedJointPose>& poses, const std::string& title,
                                                 const std::string& path);

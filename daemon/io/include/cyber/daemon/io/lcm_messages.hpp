@@ -28,8 +28,8 @@ GoalRequest goalFromMessage(const cyberplanner::arm_goal_t& message);
 std::optional<CancelRequest> cancelFromMessage(const cyberplanner::arm_cancel_t& message);
 
 struct MeasuredState {
-  JointVector q = JointVector::Zero();
-  JointVector qdot = JointVector::Zero();
+  JointVector q;
+  JointVector qdot;
 };
 // Accepted when num_joints is the robot's joint count and the values are finite and within the joint ranges widened by
 // `margin` (m or rad): a sensor a little past a limit is still the mechanism's position; nonsense is not held.

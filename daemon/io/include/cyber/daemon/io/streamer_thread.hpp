@@ -24,8 +24,9 @@ namespace cyber::daemon::io {
 // stored by the event loop. The robot fields of RobotInputs are the streamer's (robot_link.hpp).
 struct MeasuredStateData {
   MonoNs state_ns = kNever;
-  double measured_q[2] = {0.0, 0.0};
-  double measured_qdot[2] = {0.0, 0.0};
+  int joint_count = 0;  // of the values below: the robot's, once a state has come
+  double measured_q[planner::kMaxJoints] = {};
+  double measured_qdot[planner::kMaxJoints] = {};
 };
 
 // The gate's inputs: the event loop's measured state, the streamer's reading of the robot link and
@@ -43,7 +44,7 @@ struct StreamSnapshot {
   double remaining_s = 0.0;
   RobotLink robot_link;  // the robot frames as the gate saw them at this tick
   bool setpoints_written = false;
-  std::array<can::Setpoint, 2> joints{};  // as written, by joint index
+  planner::PerJoint<can::Setpoint> joints;  // as written, by joint index
 };
 
 // CAN write bursts, for the log.
