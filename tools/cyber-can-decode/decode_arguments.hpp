@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cyber/cli/argument_status.hpp"
+#include "cyber/planner.hpp"
 #include "decoded_line.hpp"
 
 namespace cyber::tools {
@@ -16,7 +17,7 @@ struct DecodeArguments {
   OutputFormat format = OutputFormat::kText;
   bool strict = false;
   std::optional<std::string> config_path;              // absent: the embedded reference config
-  std::array<std::optional<std::uint8_t>, 2> devices;  // --joint0-device, --joint1-device
+  std::array<std::optional<std::uint8_t>, planner::kMaxJoints> devices;  // --joint0-device ... --joint2-device
   std::optional<std::string> path;                     // absent or "-": stdin
   bool help = false;
 };

@@ -66,7 +66,10 @@ std::string flag(bool value) { return value ? "1" : "0"; }
 
 void fillSetpoint(const can::DeviceSetpoint& decoded, const JointDevices& joints, Row& row, std::string& text) {
   const auto& s = decoded.setpoint;
-  const int joint = decoded.device == joints.devices[0] ? 0 : decoded.device == joints.devices[1] ? 1 : -1;
+  int joint = -1;
+  for (size_t j = 0; j < joints.devices.size() && joint < 0; ++j) {
+    if (decoded.device == joints.devices[j]) joint = static_cast<int>(j);
+  }
   row.joint = joint >= 0 ? joints.names[static_cast<size_t>(joint)] : "";
   row.seq = std::to_string(s.sequence);
   row.position = fmt::format("{:.5f}", s.position);

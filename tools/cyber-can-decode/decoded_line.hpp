@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "cyber/can/candump_log.hpp"
 
@@ -14,9 +15,9 @@ enum class OutputFormat { kText, kCsv };
 // Which device numbers are the joints, and their names and units (from the config's
 // [daemon.devices] and [[joints]]; the defaults are the reference robot's).
 struct JointDevices {
-  std::array<std::uint8_t, 2> devices{1, 2};  // joint 0, joint 1
-  std::array<std::string, 2> names{"elevator", "arm"};
-  std::array<std::string, 2> units{"m", "rad"};  // "m" (prismatic) or "rad" (revolute)
+  std::vector<std::uint8_t> devices{1, 2};  // by joint index
+  std::vector<std::string> names{"elevator", "arm"};
+  std::vector<std::string> units{"m", "rad"};  // "m" (prismatic) or "rad" (revolute)
 };
 
 struct DecodeCounts {

@@ -182,9 +182,8 @@ SmoothingResult optimizePath(const CollisionWorld& world, const std::vector<Join
     const double margin = std::min(limit_margin, 0.5 * (range.max - range.min));
     return std::clamp(v, range.min + margin, range.max - margin);
   };
-  for (int k = 0; k < m; ++k) {
-    x[k] = inside(x[k], model.range(0));
-    x[m + k] = inside(x[m + k], model.range(1));
+  for (int j = 0; j < joints; ++j) {
+    for (int k = 0; k < m; ++k) x[j * m + k] = inside(x[j * m + k], model.range(j));
   }
   result.waypoints = objective.waypoints(x);
   return result;

@@ -61,3 +61,18 @@ TEST(DecodeArguments, BadInputIsNamed) {
 
 }  // namespace
 }  // namespace cyber::tools
+
+// A chain of three joints: a device, a name and a unit per joint, the third overridable too.
+TEST(DecodeArguments, EveryJointOfAThreeJointChain) {
+  const std::string config = CYBER_SOURCE_DIR "/config/reefscape-2025-elevator-pivot-wrist.toml";
+  JointDevices joints = jointDevices(parsedOk(parse, {"--config", config}));
+  ASSERT_EQ(joints.devices.size(), 3u);
+  EXPECT_EQ(joints.names[2], "wrist");
+  EXPECT_EQ(joints.units[2], "rad");
+  EXPECT_EQ(joints.devices[2], 3);
+  joints = jointDevices(parsedOk(parse, {"--config", config, "--joint2-device", "9"}));
+  EXPECT_EQ(joints.devices[2], 9);
+  joints = jointDevices(parsedOk(parse, {"--config", CYBER_SOURCE_DIR "/config/intake-pivot.toml"}));
+  ASSERT_EQ(joints.devices.size(), 1u);
+  EXPECT_EQ(joints.names[0], "pivot");
+}

@@ -19,7 +19,7 @@ inline constexpr int kGridMaxCells = 400;
 // millions, each built at start-up per scene, held set and band. More than any two-joint grid can
 // have (kGridMaxCells squared), so it changes only three-joint chains (docs/algorithm.md
 // section 2.1).
-inline constexpr double kGridMaxNodes = 262144.0;
+inline constexpr double kGridMaxNodes = 65536.0;
 // The potential decays over five clearances of the robot's motion (the shipped robots: 0.15 m
 // with their 0.03 m clearance), and over at least kMinPotentialRange_m for a zero clearance.
 inline constexpr double kPotentialRangeClearances = 5.0;
