@@ -108,7 +108,9 @@ std::string drawPoses(Draws& d, const planner::RobotModel& model) {
       JointVector q = uniformPose(d, model);
       for (int j = 0; j < model.jointCount(); ++j) q[j] = std::round(q[j] * 1000.0) / 1000.0;
       if (!model.withinLimits(q) || world.distance(q).value < model.clearance_m + kPoseMarginM) continue;
-      poses.append(fmt::format("P{} = [{}, {}]\n", found++, q[0], q[1]));
+      std::string pose;
+      for (int j = 0; j < model.jointCount(); ++j) pose.append(j == 0 ? "" : ", ").append(fmt::format("{}", q[j]));
+      poses.append(fmt::format("P{} = [{}]\n", found++, pose));
     }
     if (found < 2) return "";
     out.append(fmt::format("[poses.{}]\n{}\n", model.pieceSetName(pieces), poses));
@@ -139,6 +141,9 @@ RobotDraw drawRobot(Draws& d, unsigned seed, int joint_count) {
   robot.drives = drawDrives(d, robot.joints, robot.pieces, robot.rigid_body);
   robot.scene = drawScene(d, body_height_m);
   robot.planner = referenceModel().planner;
+  // One entry per joint, until derivedSettings replaces them from the loaded chain.
+  robot.planner.metric = JointVector::Ones(joint_count);
+  robot.planner.grid.step = JointVector::Constant(joint_count, 0.02);
   for (const JointDraw& j : robot.joints) {
     robot.summary.append(robot.summary.empty() ? "" : " + ")
         .append(j.type == planner::JointType::kPrismatic ? "prismatic" : "revolute");
@@ -152,9 +157,18 @@ RobotDraw drawRobot(Draws& d, unsigned seed, int joint_count) {
 
 }  // namespace
 
+int randomJointCount(unsigned seed) {
+  // Seeds 1, 4, 7, ... two joints (the robots they drew when every robot had two), 2, 5, ... three,
+  // 3, 6, ... one.
+  return 1 + static_cast<int>(seed % 3);
+}
+
+RandomRobot randomRobot(unsigned seed) { return randomRobot(seed, randomJointCount(seed)); }
+
 RandomRobot randomRobot(unsigned seed, int joint_count) {
-  if (joint_count != 2) {
-    throw std::invalid_argument(fmt::format("the planner plans {} joints, not {}", 2, joint_count));
+  if (joint_count < 1 || joint_count > planner::kMaxJoints) {
+    throw std::invalid_argument(
+        fmt::format("the planner plans 1 to {} joints, not {}", planner::kMaxJoints, joint_count));
   }
   Draws d(seed);
   for (int draw = 0; draw < kMaxRedraws; ++draw) {
