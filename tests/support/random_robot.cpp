@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "cyber/config/derived_defaults.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "random_robot_chain.hpp"
 #include "reference_model.hpp"
@@ -68,8 +69,17 @@ SceneDraw drawScene(Draws& d, double body_height_m) {
 // Issue 35: the loader now derives these when a file leaves them out (config::derivePlannerDefaults;
 // docs/configuration.md, "Defaults derived from the robot"). To switch, write no metric, grid step
 // or potential range in robotToml and drop this function.
+// Robots of one and three joints take the loader's derivation, whose grid of a three-joint chain
+// keeps to config::kGridMaxNodes (this one's would be tens of millions of nodes).
 planner::PlannerSettings derivedSettings(const planner::RobotModel& model) {
   planner::PlannerSettings settings = referenceModel().planner;
+  if (model.jointCount() != 2) {
+    const config::DerivedPlannerDefaults derived = config::derivePlannerDefaults(model);
+    settings.metric = derived.metric;
+    settings.grid.step = derived.grid_step;
+    settings.search.potential_range = derived.potential_range;
+    return settings;
+  }
   const CollisionWorld world(model, model.scenes.front(), model.allPieces());
   settings.metric.resize(model.jointCount());
   settings.grid.step.resize(model.jointCount());
