@@ -75,6 +75,7 @@ void BM_RandomRobotMoves(benchmark::State& state, unsigned seed) {
   }
   report(state, m);
   state.counters["create_ms"] = create_ms;
+  state.counters["joints"] = test::randomJointCount(seed);
   Measured& all = allRobots();
   all.total_ms.insert(all.total_ms.end(), m.total_ms.begin(), m.total_ms.end());
   all.cpu_ms.insert(all.cpu_ms.end(), m.cpu_ms.begin(), m.cpu_ms.end());

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "cyber/config/derived_defaults.hpp"
 #include "cyber/planner/collision_world.hpp"
 #include "random_robot_chain.hpp"
 #include "reference_model.hpp"
@@ -68,8 +69,17 @@ SceneDraw drawScene(Draws& d, double body_height_m) {
 // Issue 35: the loader now derives these when a file leaves them out (config::derivePlannerDefaults;
 // docs/configuration.md, "Defaults derived from the robot"). To switch, write no metric, grid step
 // or potential range in robotToml and drop this function.
+// Robots of one and three joints take the loader's derivation, whose grid of a three-joint chain
+// keeps to config::kGridMaxNodes (this one's would be tens of millions of nodes).
 planner::PlannerSettings derivedSettings(const planner::RobotModel& model) {
   planner::PlannerSettings settings = referenceModel().planner;
+  if (model.jointCount() != 2) {
+    const config::DerivedPlannerDefaults derived = config::derivePlannerDefaults(model);
+    settings.metric = derived.metric;
+    settings.grid.step = derived.grid_step;
+    settings.search.potential_range = derived.potential_range;
+    return settings;
+  }
   const CollisionWorld world(model, model.scenes.front(), model.allPieces());
   settings.metric.resize(model.jointCount());
   settings.grid.step.resize(model.jointCount());
@@ -108,7 +118,9 @@ std::string drawPoses(Draws& d, const planner::RobotModel& model) {
       JointVector q = uniformPose(d, model);
       for (int j = 0; j < model.jointCount(); ++j) q[j] = std::round(q[j] * 1000.0) / 1000.0;
       if (!model.withinLimits(q) || world.distance(q).value < model.clearance_m + kPoseMarginM) continue;
-      poses.append(fmt::format("P{} = [{}, {}]\n", found++, q[0], q[1]));
+      std::string pose;
+      for (int j = 0; j < model.jointCount(); ++j) pose.append(j == 0 ? "" : ", ").append(fmt::format("{}", q[j]));
+      poses.append(fmt::format("P{} = [{}]\n", found++, pose));
     }
     if (found < 2) return "";
     out.append(fmt::format("[poses.{}]\n{}\n", model.pieceSetName(pieces), poses));
@@ -139,6 +151,9 @@ RobotDraw drawRobot(Draws& d, unsigned seed, int joint_count) {
   robot.drives = drawDrives(d, robot.joints, robot.pieces, robot.rigid_body);
   robot.scene = drawScene(d, body_height_m);
   robot.planner = referenceModel().planner;
+  // One entry per joint, until derivedSettings replaces them from the loaded chain.
+  robot.planner.metric = JointVector::Ones(joint_count);
+  robot.planner.grid.step = JointVector::Constant(joint_count, 0.02);
   for (const JointDraw& j : robot.joints) {
     robot.summary.append(robot.summary.empty() ? "" : " + ")
         .append(j.type == planner::JointType::kPrismatic ? "prismatic" : "revolute");
@@ -152,9 +167,18 @@ RobotDraw drawRobot(Draws& d, unsigned seed, int joint_count) {
 
 }  // namespace
 
+int randomJointCount(unsigned seed) {
+  // Seeds 1, 4, 7, ... two joints (the robots they drew when every robot had two), 2, 5, ... three,
+  // 3, 6, ... one.
+  return 1 + static_cast<int>(seed % 3);
+}
+
+RandomRobot randomRobot(unsigned seed) { return randomRobot(seed, randomJointCount(seed)); }
+
 RandomRobot randomRobot(unsigned seed, int joint_count) {
-  if (joint_count != 2) {
-    throw std::invalid_argument(fmt::format("the planner plans {} joints, not {}", 2, joint_count));
+  if (joint_count < 1 || joint_count > planner::kMaxJoints) {
+    throw std::invalid_argument(
+        fmt::format("the planner plans 1 to {} joints, not {}", planner::kMaxJoints, joint_count));
   }
   Draws d(seed);
   for (int draw = 0; draw < kMaxRedraws; ++draw) {

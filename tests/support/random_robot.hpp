@@ -20,12 +20,17 @@ struct RandomRobot {
   double free_share = 0.0;  // of poses uniform in the limits that keep the clearance (no piece, offset 0)
 };
 
-// The robot of `seed` with `joint_count` joints, the same on every machine (its own mt19937 and
-// arithmetic on the draws; no std:: distributions, whose results the standard leaves open). Drawn
-// robots with too little free space for moves (a pose set that fits nowhere, under a quarter of
-// the poses clear) are drawn again from the same stream. The planner plans kJointCount joints
-// today; the generator's chain takes 1-3 once it plans N.
-RandomRobot randomRobot(unsigned seed, int joint_count = 2);
+// How many joints the robot of `seed` has: 1, 2 or 3 in turn (seeds 1, 4, 7, ... two, as every
+// seed had before the planner planned 1 to 3 joints, so those robots are drawn as they were).
+int randomJointCount(unsigned seed);
+
+// The robot of `seed` with `joint_count` joints (1 to 3; randomJointCount(seed) when left out),
+// the same on every machine (its own mt19937 and arithmetic on the draws; no std::
+// distributions, whose results the standard leaves open). Drawn robots with too little free space
+// for moves (a pose set that fits nowhere, under a quarter of the poses clear) are drawn again
+// from the same stream.
+RandomRobot randomRobot(unsigned seed);
+RandomRobot randomRobot(unsigned seed, int joint_count);
 
 // Writes the robot's description and then `trailer` (comments: the failing moves) to `path`, a
 // reproducer; false when it cannot.

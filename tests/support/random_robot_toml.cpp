@@ -15,6 +15,12 @@ using planner::Point2;
 
 std::string num(double x) { return fmt::format("{}", x); }
 std::string point(const Point2& p) { return fmt::format("[{}, {}]", p.x(), p.y()); }
+// One entry per joint.
+std::string joints(const planner::JointVector& v) {
+  std::string out = "[";
+  for (int j = 0; j < v.size(); ++j) out.append(j == 0 ? "" : ", ").append(num(v[j]));
+  return out.append("]");
+}
 
 std::string polygon(const Polygon& polygon) {
   std::string out = "[";
@@ -106,7 +112,7 @@ std::string planner(const planner::PlannerSettings& s) {
       "max_lead_in = {}\n\n[planner.topp]\ngrid_points = {}\nprimal_tolerance = {}\ndual_tolerance = {}\n"
       "max_outer_iterations = {}\nmax_inner_iterations = {}\nlimit_check_step_s = {}\nlimit_check_tolerance = {}\n"
       "max_limit_refinements = {}\npenalty_initial = {}\npenalty_growth = {}\npenalty_max = {}\n\n",
-      point(s.metric), point(s.grid.step), s.search.potential_weight, s.search.potential_range,
+      joints(s.metric), joints(s.grid.step), s.search.potential_weight, s.search.potential_range,
       s.search.offset_band_clearances, m.waypoint_spacing, m.obstacle_weight, m.obstacle_decay_m, m.prior_weight,
       m.length_weight, m.smoothness_weight, m.max_iterations, m.gradient_tolerance, m.relative_cost_tolerance,
       m.lead_in_time_s, m.max_lead_in, t.grid_points, t.solver.primal_tolerance, t.solver.dual_tolerance,
