@@ -7,7 +7,7 @@ doc=docs/testing.md
 [[ -f $doc ]] || { echo "check_docs: $doc missing" >&2; exit 1; }
 
 declare -A run_by_test=()
-for case in prepare smoke failure_propagates script_timeout host_mode plant_sim daemon_motion daemon_faults daemon_link_down daemon_hang; do
+for case in prepare smoke failure_propagates script_timeout host_mode plant_sim daemon_motion daemon_faults daemon_link_down daemon_hang daemon_three_joints; do
   run_by_test[$(tests/hil/run_hil.sh --print "$case" build)]=$case
 done
 

@@ -246,12 +246,12 @@ def decode_daemon_status(data):
 # --- plant simulator ---------------------------------------------------------------------------
 
 def plant_columns(config):
-    """The column names cyber-plant-sim --log gives joint 0 and joint 1 of a loaded config (its
-    [[joints]]: NAME_UNIT, UNIT m for a prismatic joint, rad for a revolute one) as a list of
-    dicts: q (position), v (velocity), cmd_q, cmd_v, ff_volts, volts. The reference robot's are
+    """The column names cyber-plant-sim --log gives each joint of a loaded config, in [[joints]]
+    order (NAME_UNIT, UNIT m for a prismatic joint, rad for a revolute one) as a list of dicts: q
+    (position), v (velocity), cmd_q, cmd_v, ff_volts, volts. The reference robot's are
     elevator_m, elevator_mps, ... and arm_rad, arm_radps, ...."""
     out = []
-    for joint in config["joints"][:2]:
+    for joint in config["joints"]:
         name, unit = joint["name"], "m" if joint["type"] == "prismatic" else "rad"
         out.append(dict(q=f"{name}_{unit}", v=f"{name}_{unit}ps", cmd_q=f"{name}_cmd_{unit}",
                         cmd_v=f"{name}_cmd_{unit}ps", ff_volts=f"{name}_ff_volts", volts=f"{name}_volts"))
@@ -291,19 +291,27 @@ def published_around(rows, t_stop, t_resume):
 
 
 def plant_summary(path):
-    """The counters of cyber-plant-sim's closing 'stopped:' line on stderr (joints by index: the
-    line names them as the config does)."""
+    """The counters of cyber-plant-sim's closing 'stopped:' line on stderr, for any number of
+    joints (the line names them as the config does; here they go by index): joint0, joint1, ...
+    (final positions), setpoints_joint0, ..., the counters after them, and joints (how many)."""
     text = open(path).read()
-    m = re.search(r"stopped: \S+ (\S+) \S+, \S+ (\S+) \S+; setpoints \S+ (\d+) \S+ (\d+), "
+    m = re.search(r"stopped: ([^ ;,]+ \S+ (?:m|rad)(?:, [^ ;,]+ \S+ (?:m|rad))*); setpoints ([^ ;,]+ \d+(?: [^ ;,]+ \d+)*), "
                   r"sequence gaps (\d+), malformed (\d+), other (\d+), bus errors (\d+), read failures (\d+); "
                   r"sent heartbeats (\d+), disables (\d+), write failures (\d+); "
                   r"ARM_STATE published (\d+), failed (\d+); motions (\d+); frozen (\d+) times, (\S+) s", text)
     if not m:
         raise ValueError(f"{path}: no 'stopped:' summary line")
-    keys = ("joint0", "joint1", "setpoints_joint0", "setpoints_joint1", "sequence_gaps", "malformed",
-            "other", "bus_errors", "read_failures", "heartbeats", "disables", "write_failures",
-            "states_published", "publish_failures", "motions", "freezes", "frozen_s")
-    return {k: float(v) for k, v in zip(keys, m.groups())}
+    positions = [float(part.split()[1]) for part in m.group(1).split(", ")]
+    counts = [float(v) for v in m.group(2).split()[1::2]]
+    if len(counts) != len(positions):
+        raise ValueError(f"{path}: {len(positions)} positions but {len(counts)} setpoint counts")
+    summary = {"joints": float(len(positions))}
+    summary.update({f"joint{j}": q for j, q in enumerate(positions)})
+    summary.update({f"setpoints_joint{j}": n for j, n in enumerate(counts)})
+    keys = ("sequence_gaps", "malformed", "other", "bus_errors", "read_failures", "heartbeats", "disables",
+            "write_failures", "states_published", "publish_failures", "motions", "freezes", "frozen_s")
+    summary.update({k: float(v) for k, v in zip(keys, m.groups()[2:])})
+    return summary
 
 
 def percentile(values, p):

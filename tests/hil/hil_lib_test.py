@@ -312,5 +312,49 @@ class StallVerdict(unittest.TestCase):
         self.assertFalse(self.stalled(self.beats(1.0, 2.0) + self.beats(2.4, 3.0)))
 
 
+class PlantReaders(unittest.TestCase):
+    """plant_summary and plant_columns take as many joints as the config has (one to three)."""
+
+    def summary(self, positions, setpoints):
+        line = (f"12.345 info stopped: {positions}; setpoints {setpoints}, sequence gaps 0, malformed 2, other 0, "
+                "bus errors 0, read failures 0; sent heartbeats 500, disables 0, write failures 0; ARM_STATE "
+                "published 1000, failed 0; motions 3; frozen 1 times, 0.250 s\n")
+        with tempfile.NamedTemporaryFile("w", suffix=".err", delete=False) as f:
+            f.write("12.000 info started\n" + line)
+        try:
+            return hil.plant_summary(f.name)
+        finally:
+            os.unlink(f.name)
+
+    def test_two_joints(self):
+        s = self.summary("elevator 0.200000 m, arm 1.570000 rad", "elevator 812 arm 810")
+        self.assertEqual((s["joints"], s["joint0"], s["joint1"]), (2, 0.2, 1.57))
+        self.assertEqual((s["setpoints_joint0"], s["setpoints_joint1"]), (812, 810))
+        self.assertNotIn("joint2", s)
+        self.assertEqual((s["malformed"], s["heartbeats"], s["motions"], s["frozen_s"]), (2, 500, 3, 0.25))
+
+    def test_three_joints(self):
+        s = self.summary("elevator 0.050000 m, pivot 1.570800 rad, wrist -0.100000 rad", "elevator 5 pivot 6 wrist 7")
+        self.assertEqual([s[f"joint{j}"] for j in range(3)], [0.05, 1.5708, -0.1])
+        self.assertEqual([s[f"setpoints_joint{j}"] for j in range(3)], [5, 6, 7])
+        self.assertEqual((s["joints"], s["states_published"], s["freezes"]), (3, 1000, 1))
+
+    def test_one_joint_and_no_line(self):
+        s = self.summary("lift 0.300000 m", "lift 9")
+        self.assertEqual((s["joints"], s["joint0"], s["setpoints_joint0"]), (1, 0.3, 9))
+        with tempfile.NamedTemporaryFile("w", suffix=".err") as f:
+            f.write("nothing here\n")
+            f.flush()
+            with self.assertRaises(ValueError):
+                hil.plant_summary(f.name)
+
+    def test_columns_of_each_joint(self):
+        config = {"joints": [{"name": "elevator", "type": "prismatic"}, {"name": "pivot", "type": "revolute"},
+                             {"name": "wrist", "type": "revolute"}]}
+        columns = hil.plant_columns(config)
+        self.assertEqual([c["q"] for c in columns], ["elevator_m", "pivot_rad", "wrist_rad"])
+        self.assertEqual(columns[2]["cmd_v"], "wrist_cmd_radps")
+
+
 if __name__ == "__main__":
     unittest.main(argv=sys.argv[:1], verbosity=2)

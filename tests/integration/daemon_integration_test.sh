@@ -2,8 +2,9 @@
 # The real cyber-plannerd (--can none) and real LCM peers in a network namespace of their own.
 #   daemon_integration_test.sh CASE DAEMON GOAL_TOOL PEER CONFIG [WALL_CLOCK_JUMP_SHIM]
 # CASE: goal_done | bad_goals | flood | burst | garbage | sigterm | startup_errors | sighup |
-#       lcm_lost | logs_full | wall_clock_jump | cancel   (lcm_lost to wall_clock_jump:
-#       docs/operations.md, "Faults"; cancel: docs/lcm.md, "Cancel and manual override")
+#       lcm_lost | logs_full | wall_clock_jump | cancel | other_robot   (lcm_lost to
+#       wall_clock_jump: docs/operations.md, "Faults"; cancel: docs/lcm.md, "Cancel and manual
+#       override"; other_robot: CONFIG is another robot than the reference one, see the case)
 # Needs root (ip netns). The namespace and every process started here are removed on exit, also
 # on failure.
 set -euo pipefail
@@ -51,7 +52,7 @@ start_daemon() {
   # At a real-time priority below the streamer's (50), as the robot's own sender would be: at
   # normal priority a loaded machine starved it past state_timeout_s (0.25 s) now and then, and
   # the daemon rightly stopped the motion ("ARM_STATE is stale").
-  ip netns exec "$ns" chrt -f 20 "$peer" state --at 0.20,1.57 --rate 100 >/dev/null 2>&1 &
+  ip netns exec "$ns" chrt -f 20 "$peer" state --at "${STATE_AT:-0.20,1.57}" --rate 100 >/dev/null 2>&1 &
   pids+=("$!")
   # The planner builds its grids at start-up: allow for a loaded machine.
   for _ in $(seq 1 600); do
@@ -450,6 +451,31 @@ case "$case_name" in
     cat "$tmp/err"
     [ "$rc" -eq 1 ] && [ "$(wc -l <"$tmp/err")" -eq 1 ] && grep -q "cannot open LCM at 'udpm://" "$tmp/err" ||
       fail "LCM without a multicast route: exit $rc"
+    ;;
+
+  other_robot)
+    # Any robot file the daemon accepts runs it (issue 35: one without [planner] or [daemon],
+    # tests/fixtures/minimal-robot.toml, takes every setting from its defaults; the three-joint
+    # robot streams three joints): from the config's first named pose to each of its other poses
+    # of the first pose set in turn, by name, each done with a trajectory of as many joints.
+    mapfile -t poses < <(python3 -c 'import sys, tomllib
+sets = tomllib.load(open(sys.argv[1], "rb"))["poses"]
+name, table = next(iter(sets.items()))
+print(",".join(f"{float(x):g}" for x in next(iter(table.values()))))
+for pose in list(table)[1:3]: print(pose)' "$config")
+    joints=$(python3 -c 'import sys, tomllib; print(len(tomllib.load(open(sys.argv[1], "rb"))["joints"]))' "$config")
+    ((${#poses[@]} >= 2)) || fail "$config names fewer than two poses"
+    # The state publisher sends as many joints as the pose has: the daemon holds (start_daemon)
+    # only on states of its robot's joint count ($joints here).
+    [[ ${poses[0]} =~ ^[^,]+(,[^,]+){$((joints - 1))}$ ]] || fail "the first pose ${poses[0]} is not $joints joints"
+    STATE_AT=${poses[0]} start_daemon
+    id=41
+    for pose in "${poses[@]:1}"; do
+      expect_goal 0 "request $id done" --config "$config" --to "$pose" --id "$id"
+      grep -q "request $id trajectory: [0-9]* samples" "$tmp/goal.out" || fail "no trajectory for $pose"
+      id=$((id + 1))
+    done
+    [ "$(status_value plans_succeeded)" -eq $((id - 41)) ] || fail "plans_succeeded is not $((id - 41))"
     ;;
 
   *)
