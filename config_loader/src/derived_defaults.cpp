@@ -105,7 +105,7 @@ DerivedPlannerDefaults derivePlannerDefaults(const RobotModel& robot) {
   // same factor, so that a step still moves the robot about as far in every joint.
   double nodes = 1.0;
   for (int j = 0; j < n; ++j) nodes *= (robot.range(j).max - robot.range(j).min) / d.grid_step[j] + 1.0;
-  if (nodes > kGridMaxNodes) {
+  if (n >= 3 && nodes > kGridMaxNodes) {
     const double coarser = std::pow(nodes / kGridMaxNodes, 1.0 / n);
     for (int j = 0; j < n; ++j) d.grid_step[j] = std::clamp(d.grid_step[j] * coarser, kMinGridStep, kMaxGridStep);
   }

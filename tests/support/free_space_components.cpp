@@ -103,4 +103,13 @@ FreeSpaceComponents::Verdict FreeSpaceComponents::separated(const JointVector& a
   }
 }
 
+bool provedSeparated(const planner::RobotModel& model, const planner::CollisionWorld& world,
+                     const planner::JointVector& a, const planner::JointVector& b) {
+  for (const double step_m : {0.02, 0.01, 0.005, 0.0025}) {
+    FreeSpaceComponents components(model, world, step_m);
+    if (components.separated(a, b) == FreeSpaceComponents::Verdict::kSeparated) return true;
+  }
+  return false;
+}
+
 }  // namespace cyber::test

@@ -52,4 +52,9 @@ class FreeSpaceComponents {
   uint8_t query_ = 0;
 };
 
+// Whether a grid of some step, coarsest first (0.02 to 0.0025 m of motion per joint step), proves
+// a and b separated: a pocket a coarse grid's slack joins to the rest may need a finer one.
+bool provedSeparated(const planner::RobotModel& model, const planner::CollisionWorld& world,
+                     const planner::JointVector& a, const planner::JointVector& b);
+
 }  // namespace cyber::test

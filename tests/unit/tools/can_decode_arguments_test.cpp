@@ -59,9 +59,6 @@ TEST(DecodeArguments, BadInputIsNamed) {
   EXPECT_EQ(parseError(parse, {"a.log", "b.log"}), "more than one input file");
 }
 
-}  // namespace
-}  // namespace cyber::tools
-
 // A chain of three joints: a device, a name and a unit per joint, the third overridable too.
 TEST(DecodeArguments, EveryJointOfAThreeJointChain) {
   const std::string config = CYBER_SOURCE_DIR "/config/reefscape-2025-elevator-pivot-wrist.toml";
@@ -76,3 +73,6 @@ TEST(DecodeArguments, EveryJointOfAThreeJointChain) {
   ASSERT_EQ(joints.devices.size(), 1u);
   EXPECT_EQ(joints.names[0], "pivot");
 }
+
+}  // namespace
+}  // namespace cyber::tools

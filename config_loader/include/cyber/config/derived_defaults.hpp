@@ -15,10 +15,10 @@ inline constexpr double kMinReach_m = 0.01;
 // The shipped robots have 45 to 306 cells per joint.
 inline constexpr int kGridMinCells = 20;
 inline constexpr int kGridMaxCells = 400;
-// At most this many nodes in one grid: a three-joint chain at one clearance per step would have
-// millions, each built at start-up per scene, held set and band. More than any two-joint grid can
-// have (kGridMaxCells squared), so it changes only three-joint chains (docs/algorithm.md
-// section 2.1).
+// At most this many nodes in one grid of a three-joint chain (about 40 per joint): at one clearance
+// per step it would have millions, each built at start-up per scene, held set and band; the
+// elevator-pivot-wrist's twelve grids build in about 2 s per scene on a 2-core machine at this
+// budget and 5 s at four times it, with the same plans measured (docs/algorithm.md section 2.1).
 inline constexpr double kGridMaxNodes = 65536.0;
 // The potential decays over five clearances of the robot's motion (the shipped robots: 0.15 m
 // with their 0.03 m clearance), and over at least kMinPotentialRange_m for a zero clearance.
