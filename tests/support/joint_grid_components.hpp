@@ -32,7 +32,7 @@ class JointGridComponents {
       half[j] = 0.5 * steps_.back();
       total *= static_cast<size_t>(counts_.back());
     }
-    const double slack = world.lipschitzBound(half);
+    const double slack = lipschitzBound(world, half);
     constexpr int kUnlabelled = -1;
     label_.assign(total, kBlocked);
     for (size_t i = 0; i < total; ++i) {
@@ -89,6 +89,12 @@ class JointGridComponents {
   static constexpr int kBlocked = -2;
 
  private:
+  // Out of line: inlined beside the loop that fills `abs_dq`, g++ 12 warns (-Warray-bounds) of
+  // Eigen's packet loads past a size it cannot know.
+  [[gnu::noinline]] static double lipschitzBound(const planner::CollisionWorld& world,
+                                                 const planner::JointVector& abs_dq) {
+    return world.lipschitzBound(abs_dq);
+  }
   [[nodiscard]] std::vector<int> coordinates(size_t i) const {
     std::vector<int> at(counts_.size());
     for (size_t j = counts_.size(); j-- > 0;) {
