@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 #include "cyber/planner/collision_world.hpp"
 
@@ -64,11 +65,20 @@ JointVector SeededMoveDraw::clearPose(const CollisionWorld& world) {
 }
 
 std::string cyberPlanArguments(const PlanRequest& request) {
-  char text[200];
-  std::snprintf(text, sizeof text, "--from=%.9g,%.9g --to=%.9g,%.9g --from-velocity=%.9g,%.9g", request.start[0],
-                request.start[1], request.goal[0], request.goal[1], request.start_velocity[0],
-                request.start_velocity[1]);
-  return text;
+  // Each vector in chain order, as many values as the robot has joints.
+  const auto values = [](const JointVector& q) {
+    std::string text;
+    for (Eigen::Index j = 0; j < q.size(); ++j) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%s%.9g", j == 0 ? "" : ",", q[j]);
+      text += value;
+    }
+    return text;
+  };
+  const JointVector velocity = request.start_velocity.size() == request.start.size()
+                                   ? request.start_velocity
+                                   : JointVector::Zero(request.start.size());
+  return "--from=" + values(request.start) + " --to=" + values(request.goal) + " --from-velocity=" + values(velocity);
 }
 
 }  // namespace cyber::test

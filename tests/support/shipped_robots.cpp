@@ -64,7 +64,7 @@ JointVector namedPose(const config::Config& config, const std::string& set, cons
     }
   }
   ADD_FAILURE() << "no pose " << set << ":" << name;
-  return JointVector::Zero(2);
+  return JointVector::Zero(config.robot.jointCount());
 }
 
 void expectSound(const planner::RobotModel& model, const planner::Trajectory& trajectory, planner::HeldPieces pieces,

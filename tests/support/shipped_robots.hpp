@@ -1,5 +1,5 @@
 #pragma once
-// The three shipped robots (config/*.toml in the source tree) for tests: loaded, with their full
+// The shipped robots (config/*.toml in the source tree) for tests: loaded, with their full
 // planners, once per test binary; and what every plan of theirs must be.
 
 #include <gtest/gtest.h>
@@ -17,9 +17,10 @@ struct ShippedRobot {
   planner::MotionPlanner planner;
 };
 
-// The configs tools/demo and the packages ship, by file name without ".toml".
+// The configs tools/demo and the packages ship, by file name without ".toml": the three two-joint
+// robots and the three-joint elevator-pivot-wrist (issue 34).
 inline constexpr const char* kShippedRobotNames[] = {"reefscape-2025", "chargedup-2023-double-jointed",
-                                                     "pivot-telescope"};
+                                                     "pivot-telescope", "reefscape-2025-elevator-pivot-wrist"};
 
 // A shipped robot's name as a GoogleTest parameter name ('-' is not allowed there): for
 // INSTANTIATE_TEST_SUITE_P over kShippedRobotNames.

@@ -9,7 +9,9 @@ format: tests/fixtures/reference/README.md). Every joint, link polygon, piece, o
 motor, drive figure and named pose of the TOML must equal the JSON's, keys as
 docs/configuration.md names them, numbers to 1e-12 relative; nothing may be missing or extra
 (a piece's mass data and a scene's obstacle lists and offset range left out either side count at
-their documented defaults; a drive's cg along the link is [cg, 0]). Then every number of the TOML
+their documented defaults; a drive's cg along the link is [cg, 0]). One key is the project's own
+addition, not the model's: the reef scene's offset_range_m = [0.0, 0.3], the band of scene offsets
+the other shipped robots plan in (the model gives none); it must be exactly that, or absent. Then every number of the TOML
 is changed in turn, by 1e-9 relative (integers by 1), and each change must be reported: the
 comparison cannot pass a file that differs.
 
@@ -37,6 +39,9 @@ DRIVE_KEYS = {"kind": "kind", "motor": "motor", "count": "count", "gearing": "ge
               "moi": "moi_kgm2", "voltage_limit": "voltage_limit_volts", "current_limit": "current_limit_amps"}
 # Joint limits of the model live in the TOML's drive of that joint.
 LIMIT_KEYS = {"velocity": "velocity_limit", "acceleration": "acceleration_limit"}
+# The project's own additions to the model, each allowed exactly as written here: scene name ->
+# offset_range_m where the model gives the scene none (the range the other shipped robots plan in).
+PROJECT_OFFSET_RANGES = {"reef": [0.0, 0.3]}
 # Keys of the model that are words for people, not data.
 PROSE = {"about", "units", "frame", "format", "gearing_units"}
 
@@ -150,8 +155,11 @@ def compare_world(model, toml, report):
         compare(f"scenes[{i}].name", j["name"], t.get("name"), report)
         compare(f"scenes[{i}].obstacles", j.get("obstacles", []), t.get("obstacles", []), report)
         compare(f"scenes[{i}].fixed", j.get("fixed", []), t.get("fixed", []), report)
-        # Without a range a scene is planned as drawn: offset 0 only.
-        compare(f"scenes[{i}].offset_range_m", j.get("offset_range", [0.0, 0.0]), t.get("offset_range_m", [0.0, 0.0]),
+        # Without a range a scene is planned as drawn: offset 0 only, unless the project adds its own.
+        default = [0.0, 0.0]
+        if "offset_range" not in j and "offset_range_m" in t:
+            default = PROJECT_OFFSET_RANGES.get(j["name"], default)
+        compare(f"scenes[{i}].offset_range_m", j.get("offset_range", default), t.get("offset_range_m", [0.0, 0.0]),
                 report)
     compare("clearance_m", model["clearance"], toml.get("clearance_m"), report)
     compare("name", model["name"], toml.get("name"), report)
