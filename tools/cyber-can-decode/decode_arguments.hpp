@@ -16,9 +16,9 @@ namespace cyber::tools {
 struct DecodeArguments {
   OutputFormat format = OutputFormat::kText;
   bool strict = false;
-  std::optional<std::string> config_path;              // absent: the embedded reference config
+  std::optional<std::string> config_path;                                // absent: the embedded reference config
   std::array<std::optional<std::uint8_t>, planner::kMaxJoints> devices;  // --joint0-device ... --joint2-device
-  std::optional<std::string> path;                     // absent or "-": stdin
+  std::optional<std::string> path;                                       // absent or "-": stdin
   bool help = false;
 };
 
