@@ -47,7 +47,10 @@ cyber::planner::JointVector defaultInitialPose(const cyber::config::Config& conf
 // "Q0,Q1,..." as --initial takes it, for messages.
 std::string jointList(const cyber::planner::JointVector& q) {
   std::string out;
-  for (Eigen::Index j = 0; j < q.size(); ++j) out += (j == 0 ? "" : ",") + std::to_string(q[j]);
+  for (Eigen::Index j = 0; j < q.size(); ++j) {
+    if (j > 0) out += ',';
+    out += std::to_string(q[j]);
+  }
   return out;
 }
 
