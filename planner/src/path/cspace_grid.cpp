@@ -203,27 +203,38 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
   grid.metric_ = model.planner.metric;
   grid.setAxes(axes);
   const auto count = static_cast<size_t>(grid.cellCount());
+  const double cutoff = clearance + widest_margin;
+  // Along the last axis (neighbouring nodes in memory) the distance falls by at most one step's
+  // Lipschitz bound per node: a node that a lower bound puts beyond the cutoff needs no query,
+  // and any value beyond the cutoff decides the same below (docs/algorithm.md 2.1).
+  JointVector last_step = JointVector::Zero(n);
+  last_step[n - 1] = axes[n - 1].step;
+  const double last_step_bound = world.lipschitzBound(last_step);
+  const int last_count = axes[n - 1].count;
   std::vector<double> distance(count);
   std::vector<std::uint8_t> blocked(count, 0);
   for (size_t c = 0; c < count; ++c) {
-    distance[c] = world.distance(grid.node(static_cast<int>(c)), clearance + widest_margin).value;
+    const bool row_start = static_cast<int>(c % static_cast<size_t>(last_count)) == 0;
+    if (!row_start && distance[c - 1] - last_step_bound >= cutoff) {
+      distance[c] = distance[c - 1] - last_step_bound;
+      continue;
+    }
+    distance[c] = world.distance(grid.node(static_cast<int>(c)), cutoff).value;
     blocked[c] = distance[c] < clearance;
   }
   grid = CSpaceGrid(axes, std::move(blocked), model.planner.metric, model.planner.search);
   grid.clearance_m_ = clearance;
-  // Steps near obstacles: keep only those a continuous check clears.
+  // Steps near obstacles: keep only those a continuous check clears (the others its ends' distances
+  // clear alone).
   for (int c = 0; c < grid.cellCount(); ++c) {
     if (grid.node_steps_[static_cast<size_t>(c)] == 0) continue;
     for (const GridStep& step : grid.steps_table_) {
       if (step.bit < 0 || ((grid.node_steps_[static_cast<size_t>(c)] >> step.bit) & 1U) == 0) continue;
       const int target = c + step.cell_delta;
-      JointVector span(n);
-      for (int d = 0; d < n; ++d) span[d] = std::abs(step.delta[static_cast<size_t>(d)]) * axes[d].step;
-      const double margin = 0.5 * world.lipschitzBound(span);
-      if (std::min(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]) >= clearance + margin)
-        continue;
-      ++grid.checked_steps_;
-      if (!checkSegment(world, grid.node(c), grid.node(target), clearance).clear) {
+      const StepCheck check = checkStep(world, grid.node(c), grid.node(target), clearance,
+                                        distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]);
+      grid.checked_steps_ += check.evaluations > 0 ? 1 : 0;
+      if (!check.clear) {
         grid.node_steps_[static_cast<size_t>(c)] &= static_cast<std::uint16_t>(~(1U << step.bit));
       }
     }

@@ -14,7 +14,7 @@ namespace cyber::planner {
 // The version of the grids: bumped by hand whenever the code that builds them, or the cache file's
 // layout, changes what a key stands for. GridCacheKey.TheReferenceGridsAreThoseOfThisVersion fails
 // until it is bumped (and the test's fingerprint recorded) when the reference robot's grids change.
-inline constexpr std::uint32_t kGridFormatVersion = 1;
+inline constexpr std::uint32_t kGridFormatVersion = 2;
 
 // FNV-1a, 64 bits: fixed by its definition, the same on every machine and build.
 class Fnv1a64 {

@@ -1,6 +1,7 @@
 #include "path/path_clearance.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace cyber::planner {
@@ -54,6 +55,41 @@ ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, c
   const JointVector delta = b - a;
   walk([&](double u) -> JointVector { return a + u * delta; }, 0.0, 1.0, delta.cwiseAbs(), world, clearance_m, max_step,
        &check, &have_exact);
+  return check;
+}
+
+StepCheck checkStep(const CollisionWorld& world, const JointVector& a, const JointVector& b, double clearance_m,
+                    double distance_a_m, double distance_b_m, double max_step) {
+  StepCheck check;
+  const JointVector delta = b - a;
+  const double lipschitz = world.lipschitzBound(delta.cwiseAbs());  // |dd/du| <= lipschitz
+  const double fastest = delta.cwiseAbs().maxCoeff();
+  const double dense_du = fastest > 0.0 ? max_step / fastest : 1.0;
+  struct Part {
+    double u0, u1, d0, d1;
+  };
+  // Halving from [0, 1] to dense_du >= max_step / fastest takes far fewer levels than this.
+  constexpr int kMaxDepth = 64;
+  std::array<Part, 2 * kMaxDepth> parts{};
+  int count = 0;
+  parts[static_cast<size_t>(count++)] = {0.0, 1.0, distance_a_m, distance_b_m};
+  while (count > 0) {
+    const Part part = parts[static_cast<size_t>(--count)];
+    const double width = part.u1 - part.u0;
+    // The larger of the two ends' cones is lowest where they meet.
+    if (0.5 * (part.d0 + part.d1 - lipschitz * width) >= clearance_m) continue;
+    if (width <= dense_du || count + 2 > static_cast<int>(parts.size())) continue;
+    const double u = 0.5 * (part.u0 + part.u1);
+    // A distance past this clears both halves whatever it is, so it need not be exact.
+    const double d = world.distance(a + u * delta, clearance_m + 0.5 * lipschitz * width + kCutoffSlackM).value;
+    ++check.evaluations;
+    if (d < clearance_m) {
+      check.clear = false;
+      return check;
+    }
+    parts[static_cast<size_t>(count++)] = {u, part.u1, d, part.d1};
+    parts[static_cast<size_t>(count++)] = {part.u0, u, part.d0, d};
+  }
   return check;
 }
 

@@ -31,6 +31,17 @@ inline constexpr double kDenseCheckStep = 1e-3;  // m or rad
 ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, const JointVector& b, double clearance_m,
                             double max_step = kDenseCheckStep);
 
+// A straight step a -> b whose ends' distances are known (exact, or lower bounds: the C-space
+// grid's steps between free nodes). Each part is cleared by the cones of its ends' distances, or
+// halved with a new distance at its middle down to the dense spacing, so the check is at least as
+// strict as sampling at that spacing (docs/algorithm.md 2.1).
+struct StepCheck {
+  bool clear = true;    // no sample closer than the clearance
+  int evaluations = 0;  // distances asked for: 0 when the ends' cones clear the whole step
+};
+StepCheck checkStep(const CollisionWorld& world, const JointVector& a, const JointVector& b, double clearance_m,
+                    double distance_a_m, double distance_b_m, double max_step = kDenseCheckStep);
+
 // The whole spline path, and its exact joint range against the model's limits. Stops at the first
 // violation; on success the minimum is refined by a dense scan around the closest sample.
 ClearanceCheck checkPath(const CubicSplinePath& path, const CollisionWorld& world, const RobotModel& model,

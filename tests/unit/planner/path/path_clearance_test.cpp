@@ -153,6 +153,65 @@ TEST(PathClearance, CertifiedStepsSpendFewerEvaluationsThanDenseSamplingWithRoom
   EXPECT_EQ(free.evaluations, 2);
 }
 
+// Steps between known ends (checkStep, the C-space grid's steps): judged as their dense samples
+// are, with the ends' distances exact or only lower bounds.
+TEST(PathClearance, StepsBetweenKnownEndsAgreeWithDenseSampling) {
+  const Reef reef;
+  const double clearance = reef.model.clearance_m;
+  std::mt19937 rng(53);
+  std::uniform_real_distribution<double> shrink(0.05, 1.0);
+  int clear = 0, refused = 0, lower_bounds = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    // Every third step is centred on a pose closer than the clearance, so that some cross an obstacle.
+    auto [a, delta] = randomSegment(reef.model, rng);
+    delta *= shrink(rng);  // from a grid step's length to a long segment
+    if (trial % 3 == 0) {
+      JointVector middle = randomPose(reef.model, rng);
+      while (!(reef.world.distance(middle).value < clearance)) middle = randomPose(reef.model, rng);
+      // Widened until both ends are free, if they ever are within the joint range.
+      for (double half = 0.05; half < 2.0; half *= 1.25) {
+        a = middle - half * delta;
+        if (reef.model.withinLimits(a) && reef.model.withinLimits(a + 2.0 * half * delta) &&
+            reef.world.distance(a).value >= clearance &&
+            reef.world.distance(a + 2.0 * half * delta).value >= clearance) {
+          delta *= 2.0 * half;
+          break;
+        }
+      }
+    }
+    const JointVector b = a + delta;
+    const double d_a = reef.world.distance(a).value, d_b = reef.world.distance(b).value;
+    if (d_a < clearance || d_b < clearance) continue;  // steps join free nodes only
+    // Half the time an end is known only as a lower bound (a cutoff just above the clearance).
+    const double cutoff = clearance + 0.01;
+    const bool bounded = trial % 2 == 1;
+    const double known_a = bounded ? reef.world.distance(a, cutoff).value : d_a;
+    const double known_b = bounded ? reef.world.distance(b, cutoff).value : d_b;
+    lower_bounds += known_a != d_a || known_b != d_b ? 1 : 0;
+    const StepCheck step = checkStep(reef.world, a, b, clearance, known_a, known_b);
+    const double step_hides =
+        reef.world.lipschitzBound(delta.cwiseAbs()) * kDenseCheckStep / delta.cwiseAbs().maxCoeff();
+    const Scan dense = scan(
+        reef.world, [&](double u) { return JointVector(a + u * delta); }, 0.0, 1.0, delta.cwiseAbs().maxCoeff(),
+        clearance);
+    if (step.clear) {
+      ++clear;
+      EXPECT_GE(dense.min_distance, clearance - 0.5 * step_hides) << "trial " << trial;
+    } else {
+      ++refused;
+      EXPECT_LT(dense.min_distance, clearance) << "trial " << trial;
+      EXPECT_GT(step.evaluations, 0) << "trial " << trial;
+    }
+    // A whole step its ends' cones clear costs no distance at all.
+    if (0.5 * (known_a + known_b - reef.world.lipschitzBound(delta.cwiseAbs())) >= clearance) {
+      EXPECT_EQ(step.evaluations, 0) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(clear, 50);
+  EXPECT_GT(refused, 10);
+  EXPECT_GT(lower_bounds, 20);
+}
+
 // Seeded splines through nearby waypoints: judged as their dense samples are, and on success the
 // reported minimum is an exact distance on the path no further than a dense step from the
 // sampled one.
