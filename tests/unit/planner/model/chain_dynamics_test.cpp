@@ -1,13 +1,21 @@
 // ChainDynamics (docs/algorithm.md section 3, "Coupled rigid-body dynamics") against a numeric
-// Lagrangian built only from linkFrames, against hand-worked static cases, and against the
-// independent referee's numbers for the two rigid-body reference robots.
+// Lagrangian built only from linkFrames for every chain of one, two and three joints and for the
+// shipped elevator-pivot-wrist, against the properties of M and c (M symmetric positive definite,
+// qdot^T (Mdot - 2 C) qdot = 0), against hand-worked static cases, and against the independent
+// referee's numbers for the two rigid-body reference robots.
 #include "cyber/planner/chain.hpp"
 
 #include <cmath>
 #include <random>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
+
+#include "cyber/config/load_config.hpp"
+#include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -23,34 +31,41 @@ double derivative(F&& f, double h) {
 }
 
 struct Model {
-  JointChain chain = JointChain(2);
-  PerJoint<LinkInertia> bodies = PerJoint<LinkInertia>(2);
+  JointChain chain;
+  PerJoint<LinkInertia> bodies;  // one per link
+  // Bodies fixed in a link besides its own (held pieces), each with its link's index: the
+  // Lagrangian sums their energies separately, where ChainDynamics is given them combined.
+  std::vector<std::pair<int, LinkInertia>> extra;
 };
 
-double lagrangian(const Model& model, const JointVector& q, const JointVector& qdot) {
+// T - V of one body fixed in link `link`.
+double bodyLagrangian(const JointChain& chain, int link, const LinkInertia& body, const JointVector& q,
+                      const JointVector& qdot) {
   constexpr double kStep = 1e-3;  // in time; qdot of order one
-  double kinetic = 0.0;
-  double potential = 0.0;
-  const auto frames = linkFrames(model.chain, q);
-  for (int i = 0; i < 2; ++i) {
-    const LinkInertia& body = model.bodies[i];
-    const auto along = [&](double t) { return linkFrames(model.chain, q + t * qdot)[i]; };
-    const Point2 velocity(derivative([&](double t) { return along(t).toWorld(body.cg_m).x(); }, kStep),
-                          derivative([&](double t) { return along(t).toWorld(body.cg_m).y(); }, kStep));
-    // omega = cos(phi) d sin(phi)/dt - sin(phi) d cos(phi)/dt: no angle wrap to unwrap.
-    const double omega = frames[i].cos_angle * derivative([&](double t) { return along(t).sin_angle; }, kStep) -
-                         frames[i].sin_angle * derivative([&](double t) { return along(t).cos_angle; }, kStep);
-    kinetic += 0.5 * body.mass_kg * velocity.squaredNorm() + 0.5 * body.moi_kgm2 * omega * omega;
-    potential += body.mass_kg * kStandardGravityMps2 * frames[i].toWorld(body.cg_m).y();
-  }
-  return kinetic - potential;
+  const LinkFrame frame = linkFrames(chain, q)[link];
+  const auto along = [&](double t) { return linkFrames(chain, q + t * qdot)[link]; };
+  const Point2 velocity(derivative([&](double t) { return along(t).toWorld(body.cg_m).x(); }, kStep),
+                        derivative([&](double t) { return along(t).toWorld(body.cg_m).y(); }, kStep));
+  // omega = cos(phi) d sin(phi)/dt - sin(phi) d cos(phi)/dt: no angle wrap to unwrap.
+  const double omega = frame.cos_angle * derivative([&](double t) { return along(t).sin_angle; }, kStep) -
+                       frame.sin_angle * derivative([&](double t) { return along(t).cos_angle; }, kStep);
+  const double kinetic = 0.5 * body.mass_kg * velocity.squaredNorm() + 0.5 * body.moi_kgm2 * omega * omega;
+  return kinetic - body.mass_kg * kStandardGravityMps2 * frame.toWorld(body.cg_m).y();
+}
+
+double lagrangian(const Model& model, const JointVector& q, const JointVector& qdot) {
+  double sum = 0.0;
+  for (int i = 0; i < model.chain.size(); ++i) sum += bodyLagrangian(model.chain, i, model.bodies[i], q, qdot);
+  for (const auto& [link, body] : model.extra) sum += bodyLagrangian(model.chain, link, body, q, qdot);
+  return sum;
 }
 
 JointVector numericTorque(const Model& model, const JointVector& q, const JointVector& qdot, const JointVector& qddot) {
   constexpr double kStep = 1e-3;
-  JointVector tau(2);
-  for (int j = 0; j < 2; ++j) {
-    const JointVector unit = JointVector::Unit(2, j);
+  const int n = model.chain.size();
+  JointVector tau(n);
+  for (int j = 0; j < n; ++j) {
+    const JointVector unit = JointVector::Unit(n, j);
     const auto momentum = [&](const JointVector& at_q, const JointVector& at_qdot) {
       return derivative([&](double e) { return lagrangian(model, at_q, at_qdot + e * unit); }, kStep);
     };
@@ -63,75 +78,159 @@ JointVector numericTorque(const Model& model, const JointVector& q, const JointV
   return tau;
 }
 
-const char* pairName(JointType first, JointType second) {
-  if (first == JointType::kRevolute) return second == JointType::kRevolute ? "revolute-revolute" : "revolute-prismatic";
-  return second == JointType::kRevolute ? "prismatic-revolute" : "prismatic-prismatic";
+// The bodies ChainDynamics is given: each link's own with the extra bodies on it combined.
+PerJoint<LinkInertia> combinedBodies(const Model& model) {
+  PerJoint<LinkInertia> bodies = model.bodies;
+  for (const auto& [link, body] : model.extra) bodies[link] = combine(bodies[link], body);
+  return bodies;
+}
+
+// The joint types of a chain, first joint first.
+using JointTypes = PerJoint<JointType>;
+
+constexpr std::array<JointType, 2> kTypes = {JointType::kPrismatic, JointType::kRevolute};
+
+// Every chain of `joint_count` joints: prismatic before revolute, the first joint varying slowest.
+std::vector<JointTypes> everyChain(int joint_count) {
+  std::vector<JointTypes> chains;
+  for (int code = 0; code < (1 << joint_count); ++code) {
+    JointTypes types;
+    for (int j = 0; j < joint_count; ++j) {
+      types.push_back(kTypes[static_cast<size_t>((code >> (joint_count - 1 - j)) & 1)]);
+    }
+    chains.push_back(types);
+  }
+  return chains;
+}
+
+// "prismatic-revolute-revolute" and so on.
+std::string chainName(const JointTypes& types) {
+  std::string name;
+  for (const JointType type : types) {
+    name += std::string(name.empty() ? "" : "-") + (type == JointType::kRevolute ? "revolute" : "prismatic");
+  }
+  return name;
 }
 
 // A chain of the given joint types with random origins, axes and bodies (cg off the link's x
 // axis too), so no term is hidden by a zero.
-Model randomModel(JointType first, JointType second, std::mt19937& rng) {
+Model randomModel(const JointTypes& types, std::mt19937& rng) {
   std::uniform_real_distribution<double> coordinate(-0.8, 0.8);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI);
   std::uniform_real_distribution<double> mass(0.5, 6.0);
   std::uniform_real_distribution<double> moi(0.01, 0.4);
+  constexpr std::array<const char*, kMaxJoints> kNames = {"a", "b", "c"};
   Model model;
-  model.chain[0] = ChainJoint{"a", first, Point2(coordinate(rng), coordinate(rng)), angle(rng), {}};
-  model.chain[1] = ChainJoint{"b", second, Point2(coordinate(rng), coordinate(rng)), angle(rng), {}};
-  for (LinkInertia& body : model.bodies) {
-    body = LinkInertia{mass(rng), Point2(coordinate(rng), coordinate(rng)), moi(rng)};
+  for (int j = 0; j < types.size(); ++j) {
+    model.chain.push_back(
+        ChainJoint{kNames[static_cast<size_t>(j)], types[j], Point2(coordinate(rng), coordinate(rng)), angle(rng), {}});
+  }
+  for (int j = 0; j < types.size(); ++j) {
+    model.bodies.push_back(LinkInertia{mass(rng), Point2(coordinate(rng), coordinate(rng)), moi(rng)});
   }
   return model;
 }
 
-constexpr std::array<JointType, 2> kTypes = {JointType::kPrismatic, JointType::kRevolute};
+JointVector randomVector(int n, std::uniform_real_distribution<double>& values, std::mt19937& rng) {
+  JointVector v(n);
+  for (int j = 0; j < n; ++j) v[j] = values(rng);
+  return v;
+}
 
-TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForEveryJointTypePair) {
-  std::mt19937 rng(2024);
+// torque, and its split into M qddot, c and g, against the numeric Lagrangian at one state.
+void expectNumericTorque(const Model& model, const JointVector& q, const JointVector& qdot, const JointVector& qddot) {
+  const ChainDynamics dynamics(model.chain, combinedBodies(model));
+  const int n = model.chain.size();
+  const JointVector expected = numericTorque(model, q, qdot, qddot);
+  const JointVector actual = dynamics.torque(q, qdot, qddot);
+  // Torques are of order 10-100 N m here (up to 420 N on the shipped elevator); the nested
+  // differences agree to 5e-7 relative at worst over all these chains (their round-off is some
+  // 1e-16 / (1e-3)^3 of L), a tenth of the bound.
+  EXPECT_LT((actual - expected).norm(), 5e-6 * (1.0 + expected.norm()))
+      << "q " << q.transpose() << " qdot " << qdot.transpose() << " qddot " << qddot.transpose() << "\nactual "
+      << actual.transpose() << "\nnumeric " << expected.transpose();
+  // The split itself: at rest only gravity remains (exactly: M 0 + c(q, 0) = 0), and c carries
+  // all of the velocity.
+  EXPECT_LT((dynamics.torque(q, JointVector::Zero(n), JointVector::Zero(n)) - dynamics.gravityTerms(q)).norm(), 1e-12);
+  EXPECT_LT(
+      (numericTorque(model, q, qdot, JointVector::Zero(n)) - dynamics.gravityTerms(q) - dynamics.velocityTerms(q, qdot))
+          .norm(),
+      5e-6 * (1.0 + expected.norm()));
+}
+
+// Every chain of `joint_count` joints, `trials` random models and states each.
+void expectTorqueIsTheNumericLagrangians(int joint_count, unsigned seed, int trials) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> position(-2.0, 2.0);
   std::uniform_real_distribution<double> rate(-3.0, 3.0);
-  for (const JointType first : kTypes) {
-    for (const JointType second : kTypes) {
-      SCOPED_TRACE(pairName(first, second));
-      for (int trial = 0; trial < 20; ++trial) {
-        const Model model = randomModel(first, second, rng);
-        const ChainDynamics dynamics(model.chain, model.bodies);
-        const JointVector q{{position(rng), position(rng)}};
-        const JointVector qdot{{rate(rng), rate(rng)}};
-        const JointVector qddot{{rate(rng), rate(rng)}};
-        const JointVector expected = numericTorque(model, q, qdot, qddot);
-        const JointVector actual = dynamics.torque(q, qdot, qddot);
-        // Torques are of order 10-100 N m here; the nested differences agree to 2.5e-7 relative.
-        EXPECT_LT((actual - expected).norm(), 5e-6 * (1.0 + expected.norm()))
-            << "q " << q.transpose() << " qdot " << qdot.transpose() << " qddot " << qddot.transpose() << "\nactual "
-            << actual.transpose() << "\nnumeric " << expected.transpose();
-        // The split itself: at rest only gravity remains, and c carries all of the velocity.
-        EXPECT_LT((dynamics.torque(q, JointVector::Zero(2), JointVector::Zero(2)) - dynamics.gravityTerms(q)).norm(),
-                  1e-12);
-        EXPECT_LT((numericTorque(model, q, qdot, JointVector::Zero(2)) - dynamics.gravityTerms(q) -
-                   dynamics.velocityTerms(q, qdot))
-                      .norm(),
-                  5e-6 * (1.0 + expected.norm()));
-      }
+  for (const JointTypes& types : everyChain(joint_count)) {
+    SCOPED_TRACE(chainName(types));
+    for (int trial = 0; trial < trials; ++trial) {
+      const Model model = randomModel(types, rng);
+      const JointVector q = randomVector(joint_count, position, rng);
+      const JointVector qdot = randomVector(joint_count, rate, rng);
+      expectNumericTorque(model, q, qdot, randomVector(joint_count, rate, rng));
     }
   }
 }
 
-TEST(ChainDynamics, MassMatrixIsSymmetricPositiveDefiniteForEveryJointTypePair) {
-  std::mt19937 rng(7);
+TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForEveryJointTypePair) {
+  expectTorqueIsTheNumericLagrangians(2, 2024, 20);
+}
+
+TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForOneJointOfEitherType) {
+  expectTorqueIsTheNumericLagrangians(1, 1, 20);
+}
+
+// Elevator + pivot + wrist, pivot + telescope + wrist, three pivots and the other five orders.
+TEST(ChainDynamics, TorqueIsTheNumericLagrangiansForEveryChainOfThreeJoints) {
+  expectTorqueIsTheNumericLagrangians(3, 3, 20);
+}
+
+// M(q) symmetric positive definite: v^T M v = sum_k m_k |J_k v|^2 + I_k (dphi_k/dq v)^2 is zero
+// only when every body is still, and link k moves with joints 0..k, joint k's own column never
+// zero (its travel, or its turn with I_k > 0), so by induction on k only for v = 0. The smallest
+// eigenvalues seen are 0.066 (random chains) and 0.013 (the shipped robot).
+void expectSymmetricPositiveDefinite(const JointMatrix& m) {
+  EXPECT_LT((m - m.transpose()).norm(), 1e-12 * m.norm());
+  const Eigen::SelfAdjointEigenSolver<JointMatrix> eigen(m);
+  EXPECT_GT(eigen.eigenvalues().minCoeff(), 1e-6) << m;
+}
+
+// The energy identity qdot^T (Mdot - 2 C) qdot = 0 with C qdot = c(q, qdot): Mdot by central
+// differences of M along q + t qdot.
+void expectEnergyIdentity(const ChainDynamics& dynamics, const JointVector& q, const JointVector& qdot) {
+  constexpr double kStep = 1e-3;
+  const double power_of_mdot =
+      derivative([&](double t) { return qdot.dot(dynamics.massMatrix(q + t * qdot) * qdot); }, kStep);
+  const double power_of_c = qdot.dot(dynamics.velocityTerms(q, qdot));
+  // Both sides are of order 2T |qdot| (2T = qdot^T M qdot); the scale below reaches 2 600 here.
+  // Their difference's error is the truncation of the fourth-order difference, h^4 / 30 times a
+  // fifth derivative of order |qdot|^5 times a side: 1.4e-11 of the scale at worst, against 1e-9.
+  const double scale = 1.0 + qdot.dot(dynamics.massMatrix(q) * qdot) * (1.0 + qdot.norm());
+  EXPECT_NEAR(power_of_mdot, 2.0 * power_of_c, 1e-9 * scale) << "q " << q.transpose() << " qdot " << qdot.transpose();
+}
+
+void expectMassMatrixAndEnergyIdentity(int joint_count, unsigned seed, int trials) {
+  std::mt19937 rng(seed);
   std::uniform_real_distribution<double> position(-2.0, 2.0);
-  for (const JointType first : kTypes) {
-    for (const JointType second : kTypes) {
-      SCOPED_TRACE(pairName(first, second));
-      for (int trial = 0; trial < 50; ++trial) {
-        const Model model = randomModel(first, second, rng);
-        const ChainDynamics dynamics(model.chain, model.bodies);
-        const Eigen::Matrix2d m = dynamics.massMatrix(JointVector{{position(rng), position(rng)}});
-        EXPECT_LT(std::abs(m(0, 1) - m(1, 0)), 1e-12 * m.norm());
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(m);
-        EXPECT_GT(eigen.eigenvalues().minCoeff(), 1e-6) << m;
-      }
+  std::uniform_real_distribution<double> rate(-3.0, 3.0);
+  for (const JointTypes& types : everyChain(joint_count)) {
+    SCOPED_TRACE(chainName(types));
+    for (int trial = 0; trial < trials; ++trial) {
+      const Model model = randomModel(types, rng);
+      const ChainDynamics dynamics(model.chain, model.bodies);
+      const JointVector q = randomVector(joint_count, position, rng);
+      expectSymmetricPositiveDefinite(dynamics.massMatrix(q));
+      expectEnergyIdentity(dynamics, q, randomVector(joint_count, rate, rng));
     }
+  }
+}
+
+TEST(ChainDynamics, MassMatrixIsSymmetricPositiveDefiniteAndConservesEnergyForOneTwoAndThreeJoints) {
+  for (int joint_count = 1; joint_count <= kMaxJoints; ++joint_count) {
+    SCOPED_TRACE(joint_count);
+    expectMassMatrixAndEnergyIdentity(joint_count, static_cast<unsigned>(7 + joint_count), 50);
   }
 }
 
@@ -142,9 +241,9 @@ TEST(ChainDynamics, PathFormIsTheTorqueOfTheMotionAlongThePath) {
   std::uniform_real_distribution<double> speed_squared(0.0, 4.0);
   for (const JointType first : kTypes) {
     for (const JointType second : kTypes) {
-      SCOPED_TRACE(pairName(first, second));
+      SCOPED_TRACE(chainName({first, second}));
       for (int trial = 0; trial < 50; ++trial) {
-        const Model model = randomModel(first, second, rng);
+        const Model model = randomModel({first, second}, rng);
         const ChainDynamics dynamics(model.chain, model.bodies);
         const JointVector q{{position(rng), position(rng)}};
         const JointVector dq_ds{{derivative_value(rng), derivative_value(rng)}};
@@ -245,7 +344,7 @@ MotorParams motorFromReference(double stall_torque, double stall_current, double
 }
 
 struct ReferenceCase {
-  Model model;
+  Model model{JointChain(2), PerJoint<LinkInertia>(2), {}};
   PerJoint<RigidBodyDrive> drives = PerJoint<RigidBodyDrive>(2);
   JointVector q, qdot, qddot;
   JointVector torque, volts, amps;  // the referee's
@@ -333,7 +432,7 @@ TEST(ChainDynamics, PathVoltageIsTheDriveVoltageAlongThePath) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> value(-2.0, 2.0);
   std::uniform_real_distribution<double> speed_squared(0.01, 4.0);
-  const Model model = randomModel(JointType::kRevolute, JointType::kPrismatic, rng);
+  const Model model = randomModel({JointType::kRevolute, JointType::kPrismatic}, rng);
   const ChainDynamics dynamics(model.chain, model.bodies);
   const MotorParams kraken = motorFromReference(7.09, 366.0, 2.0, 6000.0);
   const PerJoint<RigidBodyDrive> drives = {RigidBodyDrive{kraken, 2, 80.0, 0.15, 12.0, 60.0},
@@ -355,6 +454,64 @@ TEST(ChainDynamics, PathVoltageIsTheDriveVoltageAlongThePath) {
       // Current times R: the same row without the back-EMF.
       EXPECT_NEAR(v.alpha * a + v.beta * b + v.offset + coulomb,
                   drives[j].amps(volts, qdot[j]) * drives[j].motor.resistanceOhms(), 1e-9);
+    }
+  }
+}
+
+// --- The three-joint shipped robot: config/reefscape-2025-elevator-pivot-wrist.toml as loaded.
+
+constexpr const char* kElevatorPivotWrist = "reefscape-2025-elevator-pivot-wrist";
+
+// The robot's chain and link bodies, the pieces of `held` as extra bodies on their links.
+Model shippedModel(const RobotModel& robot, HeldPieces held) {
+  Model model{robot.joints, robot.bodies, {}};
+  for (size_t i = 0; i < robot.pieces.size(); ++i) {
+    if (held.holds(static_cast<int>(i))) model.extra.emplace_back(robot.pieces[i].joint, robot.piece_inertias[i]);
+  }
+  return model;
+}
+
+// A state within the joint ranges, at rates and accelerations of the robot's moves (up to
+// 4 m/s or rad/s and 20 m/s^2 or rad/s^2).
+struct State {
+  JointVector q, qdot, qddot;
+};
+State randomState(const RobotModel& robot, std::mt19937& rng) {
+  std::uniform_real_distribution<double> rate(-4.0, 4.0);
+  std::uniform_real_distribution<double> acceleration(-20.0, 20.0);
+  const int n = robot.jointCount();
+  State s{JointVector(n), randomVector(n, rate, rng), randomVector(n, acceleration, rng)};
+  for (int j = 0; j < n; ++j) {
+    s.q[j] = std::uniform_real_distribution<double>(robot.range(j).min, robot.range(j).max)(rng);
+  }
+  return s;
+}
+
+TEST(ChainDynamics, ShippedElevatorPivotWristIsTheNumericLagrangiansAtRandomStates) {
+  const config::Config config =
+      config::loadConfigFile(test::sourceFile(std::string("config/") + kElevatorPivotWrist + ".toml"));
+  const RobotModel& robot = config.robot;
+  ASSERT_EQ(robot.jointCount(), 3);
+  ASSERT_EQ(robot.drive_kind, DriveKind::kRigidBody);
+  ASSERT_EQ(robot.piece_inertias.size(), robot.pieces.size());  // coral and algae, each with its mass
+  std::mt19937 rng(34);
+  for (int set = 0; set < robot.pieceSetCount(); ++set) {
+    const HeldPieces held = HeldPieces::fromIndex(set);
+    SCOPED_TRACE(robot.pieceSetName(held));
+    const Model model = shippedModel(robot, held);
+    const ChainDynamics dynamics(model.chain, combinedBodies(model));
+    double lifted_kg = 0.0;
+    for (const LinkInertia& body : model.bodies) lifted_kg += body.mass_kg;
+    for (const auto& [link, piece] : model.extra) lifted_kg += piece.mass_kg;
+    for (int trial = 0; trial < 25; ++trial) {
+      const State s = randomState(robot, rng);
+      expectNumericTorque(model, s.q, s.qdot, s.qddot);
+      expectSymmetricPositiveDefinite(dynamics.massMatrix(s.q));
+      expectEnergyIdentity(dynamics, s.q, s.qdot);
+      // The carriage slides straight up without turning: the elevator holds up and accelerates
+      // everything it lifts, whatever the arm's pose (to round-off: sin 90 deg, cos 90 deg).
+      EXPECT_NEAR(dynamics.gravityTerms(s.q)[0], lifted_kg * kStandardGravityMps2, 1e-9);
+      EXPECT_NEAR(dynamics.massMatrix(s.q)(0, 0), lifted_kg, 1e-12);
     }
   }
 }
