@@ -225,12 +225,22 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
   grid = CSpaceGrid(axes, std::move(blocked), model.planner.metric, model.planner.search);
   grid.clearance_m_ = clearance;
   // Steps near obstacles: keep only those a continuous check clears (the others its ends' distances
-  // clear alone).
+  // clear alone, with each step's bound, the same for every node).
+  std::vector<double> step_bound(grid.steps_table_.size(), 0.0);
+  for (size_t i = 0; i < grid.steps_table_.size(); ++i) {
+    JointVector span(n);
+    for (int d = 0; d < n; ++d) span[d] = std::abs(grid.steps_table_[i].delta[static_cast<size_t>(d)]) * axes[d].step;
+    step_bound[i] = world.lipschitzBound(span);
+  }
   for (int c = 0; c < grid.cellCount(); ++c) {
     if (grid.node_steps_[static_cast<size_t>(c)] == 0) continue;
-    for (const GridStep& step : grid.steps_table_) {
+    for (size_t i = 0; i < grid.steps_table_.size(); ++i) {
+      const GridStep& step = grid.steps_table_[i];
       if (step.bit < 0 || ((grid.node_steps_[static_cast<size_t>(c)] >> step.bit) & 1U) == 0) continue;
       const int target = c + step.cell_delta;
+      // checkStep's first test, without placing the step in the world.
+      if (0.5 * (distance[static_cast<size_t>(c)] + distance[static_cast<size_t>(target)] - step_bound[i]) >= clearance)
+        continue;
       const StepCheck check = checkStep(world, grid.node(c), grid.node(target), clearance,
                                         distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]);
       grid.checked_steps_ += check.evaluations > 0 ? 1 : 0;
