@@ -53,7 +53,7 @@ void BM_ShippedRobotMoves(benchmark::State& state, const std::string& robot) {
 }
 
 const bool kRegistered = [] {
-  for (const char* robot : {"reefscape-2025", "chargedup-2023-double-jointed", "pivot-telescope"}) {
+  for (const char* robot : test::kShippedRobotNames) {
     benchmark::RegisterBenchmark((std::string("BM_ShippedRobotMoves/") + robot).c_str(), BM_ShippedRobotMoves,
                                  std::string(robot))
         ->Unit(benchmark::kMillisecond)

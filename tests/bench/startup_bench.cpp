@@ -19,6 +19,7 @@
 #include "bench_measures.hpp"
 #include "cyber/config/load_config.hpp"
 #include "cyber/planner/motion_planner.hpp"
+#include "shipped_robots.hpp"
 
 namespace cyber::planner {
 namespace {
@@ -69,7 +70,7 @@ void BM_StartUp(benchmark::State& state, const std::string& robot, Cache cache) 
 }
 
 const bool kRegistered = [] {
-  for (const char* robot : {"reefscape-2025", "chargedup-2023-double-jointed", "pivot-telescope"}) {
+  for (const char* robot : test::kShippedRobotNames) {
     for (const auto& [name, cache] :
          {std::pair{"cold", Cache::kCold}, std::pair{"warm", Cache::kWarm}, std::pair{"none", Cache::kNone}}) {
       benchmark::RegisterBenchmark((std::string("BM_StartUp/") + name + "/" + robot).c_str(), BM_StartUp,
