@@ -43,6 +43,32 @@ constexpr int64_t kSyntheticT0 = 1'700'000'000'000'000;  // Unix µs of the earl
 // synthetic log's first event is as late after its second.
 constexpr int64_t kFirstEventLateUs = 36;
 
+// A random trajectory of `joints` joints for request `k`, published at `utime` and starting 5 ms
+// later: `min_samples` to `min_samples` + 19 samples 10 ms apart, the positions drawn by
+// position(joint), the velocities and volts from -3 to 3. Each sample draws its values array by
+// array: the joints' positions, then their velocities, then their volts.
+cyberplanner::arm_trajectory_t randomTrajectory(std::mt19937_64& rng, size_t joints, int64_t utime, int k,
+                                                int min_samples, const std::function<double(size_t)>& position) {
+  std::uniform_real_distribution<double> u(-3, 3);
+  cyberplanner::arm_trajectory_t m{};
+  m.utime = utime;
+  m.request_id = k;
+  m.start_utime = utime + 5000;
+  m.dt_s = 0.01;
+  m.num_samples = min_samples + static_cast<int>(rng() % 20);
+  m.num_joints = static_cast<int8_t>(joints);
+  for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(joints);
+  for (int i = 0; i < m.num_samples; ++i) {
+    m.t_s.push_back(i * m.dt_s);
+    for (size_t j = 0; j < joints; ++j) m.position[j].push_back(position(j));
+    for (auto* table : {&m.velocity, &m.volts}) {
+      for (auto& row : *table) row.push_back(u(rng));
+    }
+  }
+  m.duration_s = m.t_s.back();
+  return m;
+}
+
 struct Session {
   int64_t t0 = 0;  // Unix µs of the log's earliest event, wherever it is in the file
   std::vector<std::pair<int64_t, cyberplanner::arm_state_t>> states;
@@ -359,25 +385,9 @@ class LcmToWpilog : public ::testing::Test, protected ConvertedLog {
           event(log, "ARM_PLAN_STATUS", t, m);
           break;
         }
-        case 4: {
-          cyberplanner::arm_trajectory_t m{};
-          m.utime = utime;
-          m.request_id = k;
-          m.start_utime = utime + 5000;
-          m.dt_s = 0.01;
-          m.num_samples = 5 + static_cast<int>(rng() % 20);
-          m.num_joints = 2;
-          for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(2);
-          for (int i = 0; i < m.num_samples; ++i) {
-            m.t_s.push_back(i * m.dt_s);
-            for (auto* table : {&m.position, &m.velocity, &m.volts}) {
-              for (auto& row : *table) row.push_back(u(rng));
-            }
-          }
-          m.duration_s = m.t_s.back();
-          event(log, "ARM_TRAJECTORY", t, m);
+        case 4:
+          event(log, "ARM_TRAJECTORY", t, randomTrajectory(rng, 2, utime, k, 5, [&](size_t) { return u(rng); }));
           break;
-        }
         case 5: {
           cyberplanner::arm_daemon_status_t m{};
           m.utime = utime;
@@ -780,25 +790,7 @@ class LcmToWpilogChains : public ::testing::TestWithParam<ChainCase>, protected 
           event(log, "ARM_GOAL", t, m);
           break;
         }
-        case 3: {
-          cyberplanner::arm_trajectory_t m{};
-          m.utime = utime;
-          m.request_id = k;
-          m.start_utime = utime + 5000;
-          m.dt_s = 0.01;
-          m.num_samples = 10 + static_cast<int>(rng() % 20);
-          m.num_joints = static_cast<int8_t>(n);
-          for (auto* table : {&m.position, &m.velocity, &m.volts}) table->resize(n);
-          for (int i = 0; i < m.num_samples; ++i) {
-            m.t_s.push_back(i * m.dt_s);
-            for (size_t j = 0; j < n; ++j) {
-              m.position[j].push_back(within(j)), m.velocity[j].push_back(u(rng)), m.volts[j].push_back(u(rng));
-            }
-          }
-          m.duration_s = m.t_s.back();
-          event(log, "ARM_TRAJECTORY", t, m);
-          break;
-        }
+        case 3: event(log, "ARM_TRAJECTORY", t, randomTrajectory(rng, n, utime, k, 10, within)); break;
       }
     }
     cyberplanner::arm_state_t other{};
