@@ -8,6 +8,7 @@ work=${EVIDENCE_DIR:-$(mktemp -d "${TMPDIR:-/tmp}/hil.XXXXXX")}
 control=$work/control
 pids=""
 
+# shellcheck disable=SC2154 # script_name: set by the script that sources this file
 say() { echo "$script_name: $*" | tee -a "$work/script.log"; }
 
 # Names what the script is doing now: a failure or a timeout reports it, with the evidence.
@@ -105,12 +106,56 @@ start_plant() {
   plant=$!
 }
 
+# The grid cache the host built natively (tests/hil/grid_cache.sh), handed over as --file
+# DIR:grid-cache: the daemon reads its grids from it instead of building them, many times slower,
+# in the guest. A file whose key does not match (another robot, binary or planner version) or that
+# fails its checks is rebuilt by the daemon and renamed over the old one: a new inode.
+grid_cache=$FILES_DIR/grid-cache
+# With GRID_CACHE_STRICT=1 (the HIL tests) a file rebuilt in the guest fails the run at once.
+GRID_CACHE_STRICT=${GRID_CACHE_STRICT:-0}
+
+# Each cache file's inode and name, one a line (ls sorts them by name).
+# shellcheck disable=SC2012 # our own file names, no blanks
+cache_listing() { ls -i "$grid_cache" 2>/dev/null | sed -n 's/^ *\([0-9]* .*\.grids\)$/\1/p'; }
+
+# The cache files rebuilt in the guest so far (names, space-separated): new ones and those whose
+# inode changed since the daemon started.
+cache_rebuilt() {
+  cache_listing | CACHE_BEFORE=$cache_before awk 'BEGIN { n = split(ENVIRON["CACHE_BEFORE"], b, "\n"); for (i = 1; i <= n; i++) old[b[i]] = 1 }
+    !($0 in old) { printf "%s%s", sep, $2; sep = " " }'
+}
+
 start_daemon() {
   step "starting cyber-plannerd"
   read -r daemon_started_s _ </proc/uptime
   daemon_started_s=${daemon_started_s%.*}
-  cyber-plannerd --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" >"$work/daemon.log" 2>&1 &
+  if [ -d "$grid_cache" ]; then
+    cache_before=$(cache_listing)
+    say "grid cache: $(printf '%s\n' "$cache_before" | grep -c .) files from the host in $grid_cache (CACHE_DIRECTORY)"
+    CACHE_DIRECTORY=$grid_cache cyber-plannerd --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" >"$work/daemon.log" 2>&1 &
+  else
+    cyber-plannerd --config "$FILES_DIR/robot.toml" --can "$CAN_IFACE" >"$work/daemon.log" 2>&1 &
+  fi
   daemon=$!
+}
+
+# Says which cache files the daemon has rebuilt so far (a cache miss: each costs what it would
+# without a cache), when that changed; fails the run on one in strict mode.
+cache_misses_said=""
+check_cache() {
+  [ -d "$grid_cache" ] || return 0
+  rebuilt=$(cache_rebuilt)
+  [ -n "$rebuilt" ] || return 0
+  [ "$rebuilt" != "$cache_misses_said" ] || return 0
+  new=""
+  for name in $rebuilt; do
+    case " $cache_misses_said " in *" $name "*) ;; *) new="$new${new:+ }$name" ;; esac
+  done
+  cache_misses_said=$rebuilt
+  # shellcheck disable=SC2086 # the names, counted
+  set -- $rebuilt
+  say "grid cache MISS: the daemon has built $new itself in the guest ($# so far; slower: the host's file was missing or did not match)"
+  [ "$GRID_CACHE_STRICT" -eq 0 ] || fail "grid cache miss in the guest ($rebuilt) with GRID_CACHE_STRICT=1"
 }
 
 # Waits until the daemon takes goals: its first hold, once it has a state and the robot's enabled
@@ -121,11 +166,41 @@ start_daemon() {
 await_ready() {
   ready_s=${VCAN_START_S:-0}
   [ "$ready_s" -gt 0 ] || ready_s=60
-  wait_for_line "$work/daemon.log" "holding [^ ]+ -?[0-9]" "$ready_s"
+  step "waiting up to $ready_s s for the daemon's first hold"
+  start_deadline "$ready_s"
+  checked_s=0
+  until grep -Eqs "holding [^ ]+ -?[0-9]" "$work/daemon.log"; do
+    if past_deadline; then
+      check_cache
+      fail "no 'holding' in daemon.log after $ready_s s${cache_misses_said:+ (grid cache misses: $cache_misses_said)}"
+    fi
+    # A cache miss is said as it happens (a look every 10 s of the guest's clock: it forks).
+    if [ "${now_s%.*}" -ge $((checked_s + 10)) ]; then
+      checked_s=${now_s%.*}
+      check_cache
+    fi
+    sleep 0.05
+  done
+  check_cache
   # The start-up is over: tools/vcan-vm's watchdog gives back the rest of the allowance.
   [ -z "${VCAN_STARTED_FILE:-}" ] || : >"$VCAN_STARTED_FILE"
   read -r now_s _ </proc/uptime
   say "daemon ready (holding) $((${now_s%.*} - daemon_started_s)) s after its start (deadline $ready_s s; guest ${VCAN_SLOWDOWN:-?}x slower than natively)"
+  # The daemon's own line: its planner's start-up and the cache folder it used.
+  say "$(grep -o 'planner ready in .*' "$work/daemon.log" | head -n 1)"
+  if [ -d "$grid_cache" ]; then
+    total=$(cache_listing | grep -c . || true)
+    rebuilt=$(cache_rebuilt)
+    # shellcheck disable=SC2086 # the names, counted
+    set -- $rebuilt
+    note "grid_cache_files=$total"
+    note "grid_cache_rebuilt=$#"
+    if [ "$#" -eq 0 ]; then
+      say "grid cache: all $total files read, none built in the guest"
+    else
+      say "grid cache: $# of $total files built in the guest (cache miss: see above)"
+    fi
+  fi
 }
 
 # The whole set-up of a daemon run: bus capture, LCM log, the simulator (with arguments "$@") and
@@ -216,7 +291,7 @@ wait_goal() {
 during_motion() {
   id=$2
   target=$3
-  for attempt in 1 2 3; do
+  for _try in 1 2 3; do
     start_goal "$id" "$target"
     wait_for_line "$work/goal$id.out" "executing|$finals" "$GOAL_TIMEOUT_S"
     sleep "$4"
@@ -237,7 +312,7 @@ during_motion() {
 # it on a stale heartbeat or state (see during_motion), up to three times.
 goal_done() {
   id=$1
-  for attempt in 1 2 3; do
+  for _try in 1 2 3; do
     start_goal "$id" "$2"
     step "waiting for goal $id to end"
     status=0
