@@ -239,7 +239,8 @@ CSpaceGrid CSpaceGrid::build(const CollisionWorld& world, const RobotModel& mode
       if (step.bit < 0 || ((grid.node_steps_[static_cast<size_t>(c)] >> step.bit) & 1U) == 0) continue;
       const int target = c + step.cell_delta;
       // checkStep's first test, without placing the step in the world.
-      if (0.5 * (distance[static_cast<size_t>(c)] + distance[static_cast<size_t>(target)] - step_bound[i]) >= clearance)
+      if (endsClearStep(distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)], step_bound[i],
+                        clearance))
         continue;
       const StepCheck check = checkStep(world, grid.node(c), grid.node(target), clearance,
                                         distance[static_cast<size_t>(c)], distance[static_cast<size_t>(target)]);

@@ -76,8 +76,7 @@ StepCheck checkStep(const CollisionWorld& world, const JointVector& a, const Joi
   while (count > 0) {
     const Part part = parts[static_cast<size_t>(--count)];
     const double width = part.u1 - part.u0;
-    // The larger of the two ends' cones is lowest where they meet.
-    if (0.5 * (part.d0 + part.d1 - lipschitz * width) >= clearance_m) continue;
+    if (endsClearStep(part.d0, part.d1, lipschitz * width, clearance_m)) continue;
     if (width <= dense_du || count + 2 > static_cast<int>(parts.size())) continue;
     const double u = 0.5 * (part.u0 + part.u1);
     // A distance past this clears both halves whatever it is, so it need not be exact.

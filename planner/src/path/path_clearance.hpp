@@ -35,6 +35,13 @@ ClearanceCheck checkSegment(const CollisionWorld& world, const JointVector& a, c
 // grid's steps between free nodes). Each part is cleared by the cones of its ends' distances, or
 // halved with a new distance at its middle down to the dense spacing, so the check is at least as
 // strict as sampling at that spacing (docs/algorithm.md 2.1).
+// Along a straight step whose ends are distance_a_m and distance_b_m from the obstacles, and whose
+// motion can change the distance by at most bound_m, the distance is at least the larger of the two
+// ends' cones, lowest where they meet: (a + b - bound) / 2. True when that keeps the clearance.
+inline bool endsClearStep(double distance_a_m, double distance_b_m, double bound_m, double clearance_m) {
+  return 0.5 * (distance_a_m + distance_b_m - bound_m) >= clearance_m;
+}
+
 struct StepCheck {
   bool clear = true;    // no sample closer than the clearance
   int evaluations = 0;  // distances asked for: 0 when the ends' cones clear the whole step
