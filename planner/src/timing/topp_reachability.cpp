@@ -115,7 +115,7 @@ double largestWithinBelow(const Quadratic& r, double t) {
 double largestFeasible(const std::array<Quadratic, kMaxCandidates>& q, int rows, double t_max) {
   double t = t_max;
   int satisfied = 0;  // rows in a row, cyclically, found within bounds at the current t
-  for (int j = 0; satisfied < rows; j = j + 1 == rows ? 0 : j + 1) {
+  for (int j = 0; satisfied < rows; j = (j + 1) % rows) {
     const Quadratic& r = q[static_cast<size_t>(j)];
     if (withinBounds(r, t)) {
       ++satisfied;
