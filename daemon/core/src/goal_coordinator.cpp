@@ -135,6 +135,14 @@ void GoalCoordinator::startPlanning(MonoNs now) {
   if (!job.attempt.stop && (job.attempt.from_rest || !at_branch.moving)) {
     // From rest: no deadline, the plan starts when it is ready (or when the motion ends).
     job.floating = true;
+    if (!job.attempt.stop && !job.attempt.from_rest && mirror_.endNs() > now) {
+      // Said, because a goal not spliced into the running motion is otherwise a surprise: a
+      // slow planner's budget outlasts the motion (docs/operations.md, "What it does").
+      sink_.note(NoteLevel::kInfo, "request " + std::to_string(job.attempt.goal.request_id) +
+                                       ": the running motion ends in " + ms(nsToSeconds(mirror_.endNs() - now)) +
+                                       ", within the planning budget of " + ms(budget_.budgetS()) +
+                                       "; planning from where it ends");
+    }
     request.start = mirror_.restPosition();
     request.start_velocity = JointVector::Zero(request.start.size());
   } else {

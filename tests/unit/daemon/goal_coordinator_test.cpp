@@ -423,6 +423,26 @@ TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinThe
   EXPECT_EQ(h.sink.jobs_started[2].request.start_velocity, JointVector::Zero(2));
 }
 
+// Motion 1 (1.4 s) is still running when the late plan is back, 0.6 s from its end: the new budget
+// (1.25 * 0.6 s + a margin) outlasts it, the goal is planned from its end, and the log says why.
+TEST(GoalCoordinator, ABudgetOutlastingTheRunningMotionPlansFromItsEndAndSaysSo) {
+  Harness h(false, 0.002);
+  h.start(kStow);
+  h.goal(1, kHigh);
+  h.run(0.2);
+  h.setPlanTime(0.6);
+  h.goal(2, kLow);
+  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  EXPECT_EQ(h.sink.last(1)->status, S::kDone);
+  EXPECT_EQ(h.sink.last(2)->status, S::kDone);
+  ASSERT_EQ(h.sink.jobs_started.size(), 3u);
+  EXPECT_TRUE(h.sink.jobs_started[2].request.start.isApprox(kHigh));
+  ASSERT_EQ(h.sink.notes.size(), 2u);
+  EXPECT_EQ(h.sink.notes[1],
+            "request 2: the running motion ends in 601.6 ms, within the planning budget of 756.0 ms; planning from "
+            "where it ends");
+}
+
 TEST(GoalCoordinator, PlansThatAreAlwaysLateFallBackToStartingWhereTheMotionEnds) {
   Harness h(false, 0.002);
   // Motion 1 is long (8 s) so every re-plan from a later point is still a splice into it.
