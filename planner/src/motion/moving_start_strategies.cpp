@@ -11,6 +11,7 @@
 
 #include "motion/fastest_stop.hpp"
 #include "motion/timed_plan.hpp"
+#include "path/path_folds.hpp"
 #include "timing/topp.hpp"
 
 namespace cyber::planner {
@@ -114,8 +115,19 @@ MovingStartCandidate leaveAlongVelocity(const MovingStartInputs& in) {
     out.refused = found.error();
     return out;
   }
-  out.estimate_s = estimatedSeconds(in.model, found, request.start_velocity);
-  out.lower_bound_s = in.model.planner.motion.moving_estimate_low * out.estimate_s;
+  const MotionSettings& settings = in.model.planner.motion;
+  const double fold_spacing = in.model.planner.smoothing.waypoint_spacing / settings.fold_samples_per_waypoint;
+  if (!found.value().empty() && sharpestTurnCosine(*found.value().front().path, fold_spacing) < settings.fold_cosine) {
+    // The path folds back on itself (the goal lies behind the motion): the mechanism comes to rest
+    // at the fold, as stopping first does with the fastest stop, and TOPP converges badly on the
+    // fold. Timed only when stopping first has no plan (its braking line may run into a joint
+    // limit that the fold, a little earlier, does not reach).
+    out.estimate_s = std::numeric_limits<double>::infinity();
+    out.lower_bound_s = out.estimate_s;
+  } else {
+    out.estimate_s = estimatedSeconds(in.model, found, request.start_velocity);
+    out.lower_bound_s = settings.moving_estimate_low * out.estimate_s;
+  }
   auto paths = std::make_shared<const std::vector<PlannedPath>>(std::move(found).value());
   out.time = [in, paths] { return timePaths(in.model, *paths, in.request.start_velocity); };
   return out;
@@ -193,8 +205,18 @@ Result<Plan> planMovingStart(const MovingStartInputs& in, std::span<const Moving
     }
     return false;
   };
+  // A last resort (a candidate that promises nothing: an infinite bound) only when no other has a
+  // plan at all, even one whose columns disagree.
+  const auto anyPlan = [&] {
+    for (const Judged& j : judged) {
+      if (j.timed && j.plan) return true;
+    }
+    return false;
+  };
   for (size_t i = 0; i < candidates.size() && !anyAgrees(); ++i) {
-    if (!candidates[i].refused && !judged[i].timed) time(i);
+    if (candidates[i].refused || judged[i].timed) continue;
+    if (std::isinf(candidates[i].lower_bound_s) && anyPlan()) continue;
+    time(i);
   }
   size_t best = candidates.size();
   for (size_t i = 0; i < candidates.size(); ++i) {

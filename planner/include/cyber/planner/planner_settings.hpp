@@ -251,6 +251,15 @@ struct MotionSettings {
   int estimate_grid_points = 60;
   double moving_estimate_low = 0.85;
   double rest_estimate_low = 0.95;
+  /// A path leaving along the start velocity whose tangent turns by more than a right angle
+  /// (cosine below fold_cosine) between samples fold_samples_per_waypoint to a waypoint spacing
+  /// folds back on itself: the mechanism must come to rest at the fold, as stopping first does
+  /// with the fastest stop, and TOPP converges badly there (a one-joint random robot moving away
+  /// from its goal: 2 s and 25 000 L-BFGS iterations for no plan). That candidate is timed only
+  /// when stopping first has no plan (docs/moving-starts.md). A spline's corner of a right
+  /// angle turns by a quarter of that per sample; a reversal, by half a turn.
+  double fold_cosine = 0.0;
+  int fold_samples_per_waypoint = 4;
 };
 
 /// The fastest stop along a start velocity (planner/src/motion/fastest_stop.hpp; docs/moving-starts.md):

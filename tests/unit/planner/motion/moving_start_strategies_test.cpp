@@ -2,6 +2,7 @@
 // times a candidate only while it can still win.
 
 #include <array>
+#include <limits>
 #include <random>
 #include <string>
 #include <string_view>
@@ -64,6 +65,26 @@ TEST(MovingStartStrategies, LeavingAlongTheVelocityStartsWithThatVelocity) {
   EXPECT_LT((trajectory.sample(trajectory.duration_s()).q - request.goal).norm(), 1e-6);
   // Its estimate is what the chooser compares: within the reachability pass's error of the time.
   EXPECT_GE(trajectory.duration_s(), candidate.lower_bound_s);
+}
+
+// Moving straight away from the goal, the path leaving along the velocity would fold back on
+// itself: it promises nothing (the mechanism would stop at the fold), so stopping first is timed
+// and the plan is its; without that candidate the folding one is timed after all.
+TEST(MovingStartStrategies, LeavingAlongTheVelocityOnAPathThatFoldsBackIsTheLastResort) {
+  PlanRequest request = aheadRequest();
+  request.goal = request.start - 0.4 * request.start_velocity.normalized();
+  const MovingStartInputs inputs{test::referenceModel(), drawnPathPlanner(referencePlanner(), 0), request};
+  const MovingStartCandidate candidate = leaveAlongVelocity(inputs);
+  ASSERT_FALSE(candidate.refused) << candidate.refused->message;
+  EXPECT_EQ(candidate.estimate_s, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(candidate.lower_bound_s, std::numeric_limits<double>::infinity());
+  const Result<Plan> plan = planMovingStart(inputs, movingStartStrategies());
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
+  EXPECT_TRUE(plan.value().method.has(PlanMethod::kStoppedFirst)) << plan.value().method.name();
+  const Result<Plan> alone = planMovingStart(inputs, movingStartStrategies().first(1));
+  ASSERT_TRUE(alone.ok()) << alone.error().message;
+  EXPECT_FALSE(alone.value().method.has(PlanMethod::kStoppedFirst)) << alone.value().method.name();
+  EXPECT_LT((alone.value().trajectory->sample(0.0).qdot - request.start_velocity).norm(), 1e-6);
 }
 
 TEST(MovingStartStrategies, StoppingFirstComesToRestAlongTheVelocityThenPlans) {
@@ -152,6 +173,19 @@ Plan restPlan(std::string_view method) {  // a literal: the plan keeps a view of
   return plan;
 }
 
+// A plan whose columns disagree at 1 ms: along the rest plan's path in 15.5 ms, accelerating
+// uniformly to halfway and braking after (the trapezoid across that jump errs most mid-sample).
+Plan disagreeingPlan(std::string_view method) {
+  Plan plan = restPlan(method);
+  const double length = plan.trajectory->path().length();
+  const double mid_speed = 2.0 * length / 0.0155;
+  plan.trajectory = std::make_shared<const Trajectory>(
+      Trajectory::create(plan.trajectory->sharedPath(), plan.trajectory->drives(), {0.0, 0.5 * length, length},
+                         {0.0, mid_speed * mid_speed, 0.0})
+          .value());
+  return plan;
+}
+
 template <int I>
 MovingStartCandidate fakePrepare(const MovingStartInputs&) {
   ++fakes[I].prepared;
@@ -220,6 +254,47 @@ TEST_F(MovingStartChooser, TimesACandidateLeftOutWhenTheOneThatPromisedMoreFails
   EXPECT_EQ(chosen.value().method.strategy, "first");
   EXPECT_EQ(fakes[0].timed, 1);
   EXPECT_EQ(fakes[1].timed, 1);
+}
+
+// A candidate that promises nothing (an infinite bound: leaving along the velocity on a path
+// that folds back) is timed only when the other has no plan: refused, or failed when timed.
+TEST_F(MovingStartChooser, ALastResortIsTimedOnlyWhenNoOtherCandidateHasAPlan) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const Plan plan = restPlan("second");
+  const double duration = plan.trajectory->duration_s();
+  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
+  fakes[1].candidate = timedAs(duration, 0.9 * duration, plan);
+  Result<Plan> chosen = chooseFakes();
+  ASSERT_TRUE(chosen.ok());
+  EXPECT_EQ(chosen.value().method.strategy, "second");
+  EXPECT_EQ(fakes[0].timed, 0);
+
+  // Nor when the other's plan is there but its columns disagree.
+  fakes = {};
+  const Plan disagreeing = disagreeingPlan("second");
+  ASSERT_FALSE(columnsAgree(test::referenceModel().planner.motion, *disagreeing.trajectory));
+  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
+  fakes[1].candidate = timedAs(duration, 0.9 * duration, disagreeing);
+  chosen = chooseFakes();
+  ASSERT_TRUE(chosen.ok());
+  EXPECT_EQ(chosen.value().method.strategy, "second");
+  EXPECT_EQ(fakes[0].timed, 0);
+
+  fakes = {};
+  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
+  fakes[1].candidate = timedAs(duration, 0.9 * duration, Result<Plan>(inconsistentPlan()));
+  chosen = chooseFakes();
+  ASSERT_TRUE(chosen.ok());
+  EXPECT_EQ(chosen.value().method.strategy, "first");
+  EXPECT_EQ(fakes[0].timed, 1);
+
+  fakes = {};
+  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
+  fakes[1].candidate = refusedAs(PlanStatus::kInfeasibleStart, "cannot brake inside the joint limits");
+  chosen = chooseFakes();
+  ASSERT_TRUE(chosen.ok());
+  EXPECT_EQ(chosen.value().method.strategy, "first");
+  EXPECT_EQ(fakes[0].timed, 1);
 }
 
 TEST_F(MovingStartChooser, TheShorterAgreeingPlanWinsAndTiesGoToTheEarlierStrategy) {
