@@ -284,6 +284,11 @@ LbfgsResult minimizeInner(const Problem& problem, const AlSettings& settings, Al
     inner_used += std::max(1, r.iterations);
     report.evaluations += r.evaluations;
     if (r.status != LbfgsStatus::kMaxIterations) break;
+    // The preconditioned test is only sufficient (|g| <= |L| |g_z|): stop once the gradient itself
+    // meets the target.
+    augmentedLagrangian(problem, state.multipliers, rho, x, w.gradient);
+    ++report.evaluations;
+    if (w.gradient.lpNorm<Eigen::Infinity>() <= target) break;
   }
   report.inner_iterations += inner_used;
   return r;

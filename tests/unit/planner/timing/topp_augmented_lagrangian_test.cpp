@@ -1,19 +1,23 @@
 // The augmented Lagrangian of the time-optimal parameterisation (topp_augmented_lagrangian.hpp):
 // the variable layout against a count of its slots, the warm start against its closed form, L_rho
-// against the cost at a feasible point and its gradient against finite differences, and the
-// solver from a cold start against the warm-started one.
+// against the cost at a feasible point and its gradient against finite differences, the solver
+// from a cold start against the warm-started one, and a stiff solve of a random robot.
 
 #include "timing/topp_augmented_lagrangian.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
 #include <Eigen/Core>
 #include <gtest/gtest.h>
 
+#include "cyber/planner/motion_planner.hpp"
+#include "random_moves.hpp"
+#include "random_robot.hpp"
 #include "timing/topp_reachability.hpp"
 #include "topp_fixtures.hpp"
 
@@ -178,6 +182,23 @@ TEST(ToppAugmentedLagrangian, ColdStartReachesTheSameOptimumAsTheWarmStart) {
   EXPECT_NEAR(c.cost, w.cost, 1e-4 * w.cost);
   EXPECT_LE(c.primal_residual, settings.primal_tolerance);
   EXPECT_LE(c.dual_residual, settings.dual_tolerance);
+}
+
+// A stiff solve: random robot 4's move 8, from rest. There the preconditioned test of an inner
+// minimisation (|g| <= |L| |g_z|) is far stricter than the gradient's own, and when only it
+// ended one, every outer step ran to its 500 iterations: 19 368 in 44 steps. Ended as soon as the
+// gradient meets the step's target, the plan takes 2 115.
+TEST(ToppAugmentedLagrangian, AnInnerMinimisationEndsOnceTheGradientMeetsItsTarget) {
+  const test::RandomRobot robot = test::randomRobot(4);
+  const MotionPlanner planner = MotionPlanner::create(robot.config.robot).value();
+  test::RandomMoveDraw draw(robot, planner, robot.seed);
+  std::optional<PlanRequest> request;
+  for (int move = 0; move <= 8; ++move) request = draw.next(move);
+  ASSERT_TRUE(request);
+  ASSERT_EQ(request->start_velocity.norm(), 0.0);
+  const Result<Plan> plan = planner.plan(*request);
+  ASSERT_TRUE(plan.ok()) << plan.error().message;
+  EXPECT_LT(plan.value().solver.inner_iterations, 5000);
 }
 
 }  // namespace
