@@ -407,14 +407,20 @@ TEST(GoalCoordinator, ALatePlanIsReplannedFromALaterPointAndStillSplicesSmoothly
   EXPECT_LE(velocity_step, usual + 1e-12);
 }
 
-TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinTheNewBudget) {
-  Harness h(false, 0.002);
+// Goal 1 from kStow to kHigh and, 0.2 s into it, goal 2 to kLow, every plan from then on taking
+// plan_time_s: true once goal 2 has its final status.
+bool secondGoalPlannedIn(Harness& h, double plan_time_s) {
   h.start(kStow);
   h.goal(1, kHigh);
   h.run(0.2);
-  h.setPlanTime(1.5);  // longer than the rest of motion 1
+  h.setPlanTime(plan_time_s);
   h.goal(2, kLow);
-  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  return h.runUntilFinal(2, 30.0);
+}
+
+TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinTheNewBudget) {
+  Harness h(false, 0.002);
+  ASSERT_TRUE(secondGoalPlannedIn(h, 1.5));  // longer than the rest of motion 1
   EXPECT_EQ(h.sink.last(1)->status, S::kDone);
   EXPECT_EQ(h.sink.last(2)->status, S::kDone);
   EXPECT_EQ(h.coordinator().counters().plans_late, 1);
@@ -427,12 +433,7 @@ TEST(GoalCoordinator, APlanLateOnceIsReplannedFromRestWhenTheMotionEndsWithinThe
 // (1.25 * 0.6 s + a margin) outlasts it, the goal is planned from its end, and the log says why.
 TEST(GoalCoordinator, ABudgetOutlastingTheRunningMotionPlansFromItsEndAndSaysSo) {
   Harness h(false, 0.002);
-  h.start(kStow);
-  h.goal(1, kHigh);
-  h.run(0.2);
-  h.setPlanTime(0.6);
-  h.goal(2, kLow);
-  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  ASSERT_TRUE(secondGoalPlannedIn(h, 0.6));
   EXPECT_EQ(h.sink.last(1)->status, S::kDone);
   EXPECT_EQ(h.sink.last(2)->status, S::kDone);
   ASSERT_EQ(h.sink.jobs_started.size(), 3u);
@@ -452,13 +453,8 @@ TEST(GoalCoordinator, PlansThatAreAlwaysLateFallBackToStartingWhereTheMotionEnds
     motion.trajectory = test::makeHermite(request.start, request.start_velocity, request.goal, duration, h.robot);
     return planner::Result<PlannedMotion>(motion);
   };
-  h.start(kStow);
-  h.goal(1, kHigh);
-  h.run(0.2);
   // Every plan takes longer than any budget can absorb (the budget is capped at 1 s).
-  h.setPlanTime(1.5);
-  h.goal(2, kLow);
-  ASSERT_TRUE(h.runUntilFinal(2, 30.0));
+  ASSERT_TRUE(secondGoalPlannedIn(h, 1.5));
   EXPECT_EQ(h.sink.last(2)->status, S::kDone);
   EXPECT_EQ(h.sink.last(1)->status, S::kDone);  // request 1 was finished, not cut
   bool fell_back = false;

@@ -262,39 +262,23 @@ TEST_F(MovingStartChooser, ALastResortIsTimedOnlyWhenNoOtherCandidateHasAPlan) {
   const double inf = std::numeric_limits<double>::infinity();
   const Plan plan = restPlan("second");
   const double duration = plan.trajectory->duration_s();
-  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
-  fakes[1].candidate = timedAs(duration, 0.9 * duration, plan);
-  Result<Plan> chosen = chooseFakes();
-  ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().method.strategy, "second");
-  EXPECT_EQ(fakes[0].timed, 0);
-
+  // The strategy chosen, and whether the last resort (the first) was timed, beside `second`.
+  const auto chooseBeside = [&](MovingStartCandidate second, std::string_view strategy, int timed) {
+    fakes = {};
+    fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
+    fakes[1].candidate = std::move(second);
+    const Result<Plan> chosen = chooseFakes();
+    ASSERT_TRUE(chosen.ok());
+    EXPECT_EQ(chosen.value().method.strategy, strategy);
+    EXPECT_EQ(fakes[0].timed, timed);
+  };
+  chooseBeside(timedAs(duration, 0.9 * duration, plan), "second", 0);
   // Nor when the other's plan is there but its columns disagree.
-  fakes = {};
   const Plan disagreeing = disagreeingPlan("second");
   ASSERT_FALSE(columnsAgree(test::referenceModel().planner.motion, *disagreeing.trajectory));
-  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
-  fakes[1].candidate = timedAs(duration, 0.9 * duration, disagreeing);
-  chosen = chooseFakes();
-  ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().method.strategy, "second");
-  EXPECT_EQ(fakes[0].timed, 0);
-
-  fakes = {};
-  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
-  fakes[1].candidate = timedAs(duration, 0.9 * duration, Result<Plan>(inconsistentPlan()));
-  chosen = chooseFakes();
-  ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().method.strategy, "first");
-  EXPECT_EQ(fakes[0].timed, 1);
-
-  fakes = {};
-  fakes[0].candidate = timedAs(inf, inf, restPlan("first"));
-  fakes[1].candidate = refusedAs(PlanStatus::kInfeasibleStart, "cannot brake inside the joint limits");
-  chosen = chooseFakes();
-  ASSERT_TRUE(chosen.ok());
-  EXPECT_EQ(chosen.value().method.strategy, "first");
-  EXPECT_EQ(fakes[0].timed, 1);
+  chooseBeside(timedAs(duration, 0.9 * duration, disagreeing), "second", 0);
+  chooseBeside(timedAs(duration, 0.9 * duration, Result<Plan>(inconsistentPlan())), "first", 1);
+  chooseBeside(refusedAs(PlanStatus::kInfeasibleStart, "cannot brake inside the joint limits"), "first", 1);
 }
 
 TEST_F(MovingStartChooser, TheShorterAgreeingPlanWinsAndTiesGoToTheEarlierStrategy) {
