@@ -135,11 +135,11 @@ void GoalCoordinator::startPlanning(MonoNs now) {
   if (!job.attempt.stop && (job.attempt.from_rest || !at_branch.moving)) {
     // From rest: no deadline, the plan starts when it is ready (or when the motion ends).
     job.floating = true;
-    if (!job.attempt.stop && !job.attempt.from_rest && mirror_.endNs() > now) {
+    if (const MonoNs end = mirror_.endNs(); !job.attempt.from_rest && end > now) {
       // Said, because a goal not spliced into the running motion is otherwise a surprise: a
       // slow planner's budget outlasts the motion (docs/operations.md, "What it does").
       sink_.note(NoteLevel::kInfo, "request " + std::to_string(job.attempt.goal.request_id) +
-                                       ": the running motion ends in " + ms(nsToSeconds(mirror_.endNs() - now)) +
+                                       ": the running motion ends in " + ms(nsToSeconds(end - now)) +
                                        ", within the planning budget of " + ms(budget_.budgetS()) +
                                        "; planning from where it ends");
     }
